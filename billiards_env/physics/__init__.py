@@ -1,0 +1,19 @@
+"""billiards_env.physics: the billiards engine (no Gymnasium, no pygame).
+
+Models (see README "Physics"): two friction laws (``rolling``, ``drag``), cushions and ball-ball collisions with
+restitution, pockets as capture circles. Two solvers of the same model: ``exact`` (event-driven, closed-form,
+the reference) and ``step`` (the lecture's per-frame algorithm).
+"""
+from .balls import BALL_MASS, BALL_RADIUS, OVERLAP_TOLERANCE, Balls, validate_balls
+from .errors import SceneError
+from .model import G, Physics
+from .result import EventLog, ShotResult
+from .simulate import SOLVERS, Simulator, kinetic_energy, momentum, simulate
+from .table import Table, default_pockets
+from .trajectory import Trajectory
+
+__all__ = [
+    "BALL_MASS", "BALL_RADIUS", "OVERLAP_TOLERANCE", "Balls", "validate_balls", "SceneError", "G", "Physics",
+    "EventLog", "ShotResult", "SOLVERS", "Simulator", "kinetic_energy", "momentum", "simulate", "Table",
+    "default_pockets", "Trajectory",
+]

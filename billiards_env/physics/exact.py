@@ -1,0 +1,406 @@
+"""The ``exact`` solver: event-driven simulation with closed-form motion between events (numba kernel).
+
+Every ball carries its state at the time of its last event (``t0``, ``p0``, ``v0``) and its absolute stop
+time; its position at any later time is the closed form of :mod:`.motion`. The solver keeps the next event
+time of every ball (stop, cushion, pocket) and of every pair (collision) and repeatedly jumps to the
+earliest one. After an event only the involved balls' times are recomputed, so resting and pocketed
+balls cost nothing until something hits them.
+
+Simultaneous events are taken in a fixed order: the earliest time first; among equal times, ball events
+(in ball order) before pair events (in ``(i, j)`` order, ``i < j``). A chain of contacts at one instant (a
+touching rack, Newton's cradle) therefore unfolds as a deterministic sequence of pairwise collisions.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from .collide import resolve_ball_ball, resolve_cushion
+from .motion import ROLLING, distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
+from .roots import first_entry
+
+# Event kinds (the event log's ``kind`` column).
+EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP = 0, 1, 2, 3
+EVENT_KINDS = ("collision", "cushion", "pocket", "stop")
+# Shot status codes.
+STATUS_REST, STATUS_TIME_CAP, STATUS_EVENT_CAP = 0, 1, 2
+STATUS_NAMES = ("rest", "time_cap", "event_cap")
+
+# Packed parameter vector layout (``prm``), shared with the step solver.
+P_LENGTH, P_WIDTH, P_E_CUSHION, P_E_BALL, P_LAW, P_DECEL, P_DRAG_K, P_MIN_SPEED, P_MAX_TIME, P_SPEED_FLOOR = range(10)
+N_PARAMS = 10
+
+
+@njit(cache=True, inline="always")
+def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
+    """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state."""
+    vx = v0[i, 0]
+    vy = v0[i, 1]
+    s = math.hypot(vx, vy)
+    if s == 0.0:
+        return p0[i, 0], p0[i, 1], 0.0, 0.0
+    tt = min(t, tstop[i]) - t0[i]
+    ux = vx / s
+    uy = vy / s
+    d = distance(s, tt, law, a, k)
+    x = p0[i, 0] + ux * d
+    y = p0[i, 1] + uy * d
+    if t >= tstop[i]:
+        return x, y, 0.0, 0.0
+    sp = speed_after(s, tt, law, a, k)
+    return x, y, ux * sp, uy * sp
+
+
+@njit(cache=True)
+def _advance(i, t, t0, p0, v0, tstop, law, a, k):
+    """Move ball ``i``'s reference state to time ``t``."""
+    x, y, vx, vy = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
+    p0[i, 0] = x
+    p0[i, 1] = y
+    v0[i, 0] = vx
+    v0[i, 1] = vy
+    t0[i] = t
+
+
+@njit(cache=True, inline="always")
+def _set_stop_time(i, t0, v0, tstop, law, a, k, v_min):
+    s = math.hypot(v0[i, 0], v0[i, 1])
+    if s <= v_min or s == 0.0:
+        v0[i, 0] = 0.0
+        v0[i, 1] = 0.0
+        tstop[i] = t0[i]
+    else:
+        tstop[i] = t0[i] + time_to_stop(s, law, a, k, v_min)
+
+
+@njit(cache=True)
+def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
+    """Next stop, cushion or pocket event of ball ``i``: ``(time, kind, other)``."""
+    vx = v0[i, 0]
+    vy = v0[i, 1]
+    s = math.hypot(vx, vy)
+    if s == 0.0:
+        return math.inf, -1, -1
+    law = int(prm[P_LAW])
+    a = prm[P_DECEL]
+    k = prm[P_DRAG_K]
+    ux = vx / s
+    uy = vy / s
+    x = p0[i, 0]
+    y = p0[i, 1]
+    r = radius[i]
+    best_d = math.inf
+    kind = -1
+    other = -1
+    # Pockets first, so that a pocket and a cushion at the same point go to the pocket.
+    for p in range(pocket_r.shape[0]):
+        dx = x - pocket_xy[p, 0]
+        dy = y - pocket_xy[p, 1]
+        c = dx * dx + dy * dy - pocket_r[p] * pocket_r[p]
+        if c <= 0.0:
+            d = 0.0
+        else:
+            b = ux * dx + uy * dy
+            if b >= 0.0:
+                continue
+            disc = b * b - c
+            if disc < 0.0:
+                continue
+            d = c / (-b + math.sqrt(disc))
+        if d < best_d:
+            best_d = d
+            kind = EV_POCKET
+            other = p
+    if ux != 0.0:
+        cush = 1 if ux > 0.0 else 0
+        wall = prm[P_LENGTH] - r if ux > 0.0 else r
+        d = max((wall - x) / ux, 0.0)
+        if d < best_d:
+            best_d = d
+            kind = EV_CUSHION
+            other = cush
+    if uy != 0.0:
+        cush = 3 if uy > 0.0 else 2
+        wall = prm[P_WIDTH] - r if uy > 0.0 else r
+        d = max((wall - y) / uy, 0.0)
+        if d < best_d:
+            best_d = d
+            kind = EV_CUSHION
+            other = cush
+    t_stop = tstop[i]
+    if kind >= 0:
+        tau = time_for_distance(s, best_d, law, a, k)
+        if t0[i] + tau <= t_stop:
+            return t0[i] + tau, kind, other
+        if tau == math.inf and t_stop == math.inf:
+            return math.inf, -1, -1
+    return t_stop, EV_STOP, -1
+
+
+@njit(cache=True)
+def _predict_pair(i, j, t, t0, p0, v0, tstop, radius, prm):
+    """Time of the next collision of balls ``i`` and ``j`` after ``t`` (``inf`` if none before a stop)."""
+    law = int(prm[P_LAW])
+    a = prm[P_DECEL]
+    k = prm[P_DRAG_K]
+    xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
+    xj, yj, vxj, vyj = _state_at(j, t, t0, p0, v0, tstop, law, a, k)
+    si = math.hypot(vxi, vyi)
+    sj = math.hypot(vxj, vyj)
+    if si == 0.0 and sj == 0.0:
+        return math.inf
+    window = prm[P_MAX_TIME] - t
+    if si > 0.0:
+        window = min(window, tstop[i] - t)
+    if sj > 0.0:
+        window = min(window, tstop[j] - t)
+    if not window > 0.0:
+        return math.inf
+    dc = radius[i] + radius[j]
+    ax = xi - xj
+    ay = yi - yj
+    bx = vxi - vxj
+    by = vyi - vyj
+    closing_tol = 2.0 * dc * (1e-12 + 1e-14 * (si + sj))
+    c0 = ax * ax + ay * ay - dc * dc
+    c1 = 2.0 * (ax * bx + ay * by)
+    if law == ROLLING and a > 0.0:
+        cx = 0.0
+        cy = 0.0
+        if si > 0.0:
+            cx -= 0.5 * a * vxi / si
+            cy -= 0.5 * a * vyi / si
+        if sj > 0.0:
+            cx += 0.5 * a * vxj / sj
+            cy += 0.5 * a * vyj / sj
+        c4 = cx * cx + cy * cy
+        c3 = 2.0 * (bx * cx + by * cy)
+        c2 = bx * bx + by * by + 2.0 * (ax * cx + ay * cy)
+        tau = first_entry(c4, c3, c2, c1, c0, window, closing_tol)
+        return t + tau
+    # Drag or no friction: both balls follow p + v * phi(t) with the same phi, so |A + B phi|^2 is quadratic.
+    c2 = bx * bx + by * by
+    phi = first_entry(0.0, 0.0, c2, c1, c0, drag_phi(window, k), closing_tol)
+    if phi == math.inf:
+        return math.inf
+    return t + min(drag_time_for_phi(phi, k), window)
+
+
+@njit(cache=True)
+def _grow(arr):
+    out = np.empty((arr.shape[0] * 2,) + arr.shape[1:], arr.dtype)
+    out[: arr.shape[0]] = arr
+    return out
+
+
+@njit(cache=True)
+def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table):
+    sc_t[n_sc] = t
+    sc_ball[n_sc] = i
+    sc_state[n_sc, 0] = p0[i, 0]
+    sc_state[n_sc, 1] = p0[i, 1]
+    sc_state[n_sc, 2] = v0[i, 0]
+    sc_state[n_sc, 3] = v0[i, 1]
+    sc_state[n_sc, 4] = 1.0 if on_table[i] else 0.0
+
+
+@njit(cache=True)
+def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, max_events, record):
+    """Simulate one shot from ``pos``/``vel`` (updated in place to the final state) until rest or a cap.
+
+    Returns ``(status, t_end, n_events, pocket_of, pocket_time, ev_t, ev_int, ev_speed, sc_t, sc_ball,
+    sc_state)``: the event log (time; kind, ball, other; impact speed) and, when ``record``, the log of state
+    changes (time, ball, ``x y vx vy on_table`` after each event) from which the trajectory is exact.
+    """
+    n = pos.shape[0]
+    law = int(prm[P_LAW])
+    a = prm[P_DECEL]
+    k = prm[P_DRAG_K]
+    v_min = prm[P_MIN_SPEED]
+    e_c = prm[P_E_CUSHION]
+    e_b = prm[P_E_BALL]
+    max_time = prm[P_MAX_TIME]
+    floor = prm[P_SPEED_FLOOR]
+
+    t0 = np.zeros(n)
+    p0 = pos.copy()
+    v0 = vel.copy()
+    tstop = np.zeros(n)
+    pocket_of = np.full(n, -1, np.int64)
+    pocket_time = np.full(n, np.nan)
+    for i in range(n):
+        if on_table[i]:
+            _set_stop_time(i, t0, v0, tstop, law, a, k, v_min)
+        else:
+            v0[i, 0] = 0.0
+            v0[i, 1] = 0.0
+
+    ball_t = np.full(n, math.inf)
+    ball_kind = np.full(n, -1, np.int64)
+    ball_other = np.full(n, -1, np.int64)
+    pair_t = np.full((n, n), math.inf)
+    for i in range(n):
+        if on_table[i]:
+            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm)
+    for i in range(n):
+        for j in range(i + 1, n):
+            if on_table[i] and on_table[j]:
+                pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, tstop, radius, prm)
+
+    cap = 64
+    ev_t = np.empty(cap)
+    ev_int = np.empty((cap, 3), np.int64)
+    ev_speed = np.empty(cap)
+    sc_cap = 2 * n + 16 if record else 1
+    sc_t = np.empty(sc_cap)
+    sc_ball = np.empty(sc_cap, np.int64)
+    sc_state = np.empty((sc_cap, 5))
+    n_sc = 0
+    if record:
+        for i in range(n):
+            _log_state(n_sc, sc_t, sc_ball, sc_state, 0.0, i, p0, v0, on_table)
+            n_sc += 1
+
+    involved = np.empty(2, np.int64)
+    t = 0.0
+    n_events = 0
+    status = STATUS_REST
+    while True:
+        best = math.inf
+        kind = -1
+        bi = -1
+        bj = -1
+        for i in range(n):
+            if ball_t[i] < best:
+                best = ball_t[i]
+                kind = ball_kind[i]
+                bi = i
+                bj = ball_other[i]
+        for i in range(n):
+            for j in range(i + 1, n):
+                if pair_t[i, j] < best:
+                    best = pair_t[i, j]
+                    kind = EV_COLLISION
+                    bi = i
+                    bj = j
+        if not best <= max_time:
+            moving = False
+            for i in range(n):
+                if on_table[i] and (v0[i, 0] != 0.0 or v0[i, 1] != 0.0):
+                    moving = True
+            if moving:
+                status = STATUS_TIME_CAP
+                t = max_time
+            else:
+                status = STATUS_REST
+            break
+        if n_events >= max_events:
+            status = STATUS_EVENT_CAP
+            break
+        t = max(best, t)
+        n_inv = 1
+        involved[0] = bi
+        speed = 0.0
+        if kind == EV_COLLISION:
+            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
+            _advance(bj, t, t0, p0, v0, tstop, law, a, k)
+            dx = p0[bi, 0] - p0[bj, 0]
+            dy = p0[bi, 1] - p0[bj, 1]
+            dist = math.hypot(dx, dy)
+            if dist > 0.0:
+                speed = resolve_ball_ball(v0, bi, bj, dx / dist, dy / dist, mass[bi], mass[bj], e_b, law, floor)
+            _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
+            _set_stop_time(bj, t0, v0, tstop, law, a, k, v_min)
+            involved[1] = bj
+            n_inv = 2
+        elif kind == EV_CUSHION:
+            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
+            r = radius[bi]
+            if bj == 0:
+                p0[bi, 0] = r
+            elif bj == 1:
+                p0[bi, 0] = prm[P_LENGTH] - r
+            elif bj == 2:
+                p0[bi, 1] = r
+            else:
+                p0[bi, 1] = prm[P_WIDTH] - r
+            speed = resolve_cushion(v0, bi, bj, e_c)
+            _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
+        elif kind == EV_POCKET:
+            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
+            speed = math.hypot(v0[bi, 0], v0[bi, 1])
+            on_table[bi] = False
+            v0[bi, 0] = 0.0
+            v0[bi, 1] = 0.0
+            tstop[bi] = t
+            pocket_of[bi] = bj
+            pocket_time[bi] = t
+        else:  # EV_STOP
+            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
+            v0[bi, 0] = 0.0
+            v0[bi, 1] = 0.0
+            tstop[bi] = t
+
+        if n_events >= ev_t.shape[0]:
+            ev_t = _grow(ev_t)
+            ev_int = _grow(ev_int)
+            ev_speed = _grow(ev_speed)
+        ev_t[n_events] = t
+        ev_int[n_events, 0] = kind
+        ev_int[n_events, 1] = bi
+        ev_int[n_events, 2] = bj
+        ev_speed[n_events] = speed
+        n_events += 1
+
+        for q in range(n_inv):
+            i = involved[q]
+            if record:
+                if n_sc >= sc_t.shape[0]:
+                    sc_t = _grow(sc_t)
+                    sc_ball = _grow(sc_ball)
+                    sc_state = _grow(sc_state)
+                _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table)
+                n_sc += 1
+            if on_table[i]:
+                ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(
+                    i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm
+                )
+            else:
+                ball_t[i] = math.inf
+            for m in range(n):
+                if m == i:
+                    continue
+                lo = min(i, m)
+                hi = max(i, m)
+                if on_table[i] and on_table[m]:
+                    pair_t[lo, hi] = _predict_pair(lo, hi, t, t0, p0, v0, tstop, radius, prm)
+                else:
+                    pair_t[lo, hi] = math.inf
+
+    for i in range(n):
+        if on_table[i]:
+            x, y, vx, vy = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
+            pos[i, 0] = x
+            pos[i, 1] = y
+            vel[i, 0] = vx
+            vel[i, 1] = vy
+        else:
+            pos[i, 0] = p0[i, 0]
+            pos[i, 1] = p0[i, 1]
+            vel[i, 0] = 0.0
+            vel[i, 1] = 0.0
+    return (
+        status,
+        t,
+        n_events,
+        pocket_of,
+        pocket_time,
+        ev_t[:n_events],
+        ev_int[:n_events],
+        ev_speed[:n_events],
+        sc_t[:n_sc],
+        sc_ball[:n_sc],
+        sc_state[:n_sc],
+    )

@@ -1,0 +1,60 @@
+"""Physics parameters of a scene: friction law, its constants, and ball-ball restitution."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import SceneError, check_non_negative, check_positive, check_unit_interval
+
+G = 9.81  #: gravitational acceleration (m/s^2), fixed by the spec
+FRICTION_LAWS = ("rolling", "drag")
+ROLLING, DRAG = 0, 1  #: friction law codes used by the compiled kernels
+
+
+@dataclass(frozen=True)
+class Physics:
+    """How balls slow down and bounce.
+
+    ``rolling``: constant deceleration ``mu_roll * g`` against the velocity until the ball stops.
+    ``drag``: ``dv/dt = -drag_k * v`` (the lecture's per-frame friction factor ``f`` over a frame ``dt0`` is
+    ``drag_k = -ln(f) / dt0``, see :meth:`drag_k_from_factor`); a ball stops when its speed falls below
+    ``min_speed``. ``min_speed`` also applies under ``rolling`` (default 0: roll until the closed-form stop).
+    """
+
+    friction: str = "rolling"
+    mu_roll: float = 0.01
+    drag_k: float = 0.0
+    min_speed: float = 0.0
+    ball_restitution: float = 0.95
+
+    def __post_init__(self) -> None:
+        if self.friction not in FRICTION_LAWS:
+            raise SceneError(
+                f"physics.friction: unknown law {self.friction!r}; use one of {', '.join(FRICTION_LAWS)}"
+            )
+        check_non_negative("physics.mu_roll", self.mu_roll)
+        check_non_negative("physics.drag_k", self.drag_k)
+        check_non_negative("physics.min_speed", self.min_speed)
+        check_unit_interval("physics.ball_restitution", self.ball_restitution)
+
+    @property
+    def law_code(self) -> int:
+        return ROLLING if self.friction == "rolling" else DRAG
+
+    @property
+    def deceleration(self) -> float:
+        """Rolling deceleration ``mu_roll * g`` (m/s^2); 0 under ``drag``."""
+        return self.mu_roll * G if self.friction == "rolling" else 0.0
+
+    @property
+    def drag_rate(self) -> float:
+        """Drag rate ``k`` (1/s); 0 under ``rolling``."""
+        return self.drag_k if self.friction == "drag" else 0.0
+
+    @staticmethod
+    def drag_k_from_factor(factor: float, frame_dt: float) -> float:
+        """The drag rate ``k`` equivalent to the lecture's friction factor ``factor`` applied every ``frame_dt`` s."""
+        if not 0.0 < factor <= 1.0:
+            raise SceneError(f"friction factor: must be in (0, 1], got {factor}")
+        check_positive("frame_dt", frame_dt)
+        return -math.log(factor) / frame_dt

@@ -1,0 +1,89 @@
+"""Closed-form motion of one ball between events, for both friction laws (compiled with numba).
+
+A moving ball keeps its direction ``u`` between events; only its speed changes. Its path is
+``p(t) = p0 + u * dist(t)``, with ``dist`` increasing:
+
+- rolling: ``dist = s t - a t^2 / 2`` until ``t_stop = (s - v_min) / a`` (``a = mu g``);
+- drag:    ``dist = s (1 - e^{-k t}) / k`` until the speed ``s e^{-k t}`` falls to ``v_min``.
+
+``law``: 0 rolling, 1 drag (see ``model.ROLLING``/``model.DRAG``).
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+ROLLING = 0
+DRAG = 1
+
+
+@njit(cache=True, inline="always")
+def time_to_stop(speed: float, law: int, a: float, k: float, v_min: float) -> float:
+    """Seconds until a ball moving at ``speed`` stops (``inf`` if it never does)."""
+    if speed <= v_min:
+        return 0.0
+    if law == ROLLING:
+        if a > 0.0:
+            return (speed - v_min) / a
+        return math.inf
+    if k > 0.0 and v_min > 0.0:
+        return math.log(speed / v_min) / k
+    return math.inf
+
+
+@njit(cache=True, inline="always")
+def distance(speed: float, t: float, law: int, a: float, k: float) -> float:
+    """Path length covered in ``t`` seconds (``t`` not past the stop)."""
+    if law == ROLLING:
+        return t * (speed - 0.5 * a * t)
+    if k > 0.0:
+        return -speed * math.expm1(-k * t) / k
+    return speed * t
+
+
+@njit(cache=True, inline="always")
+def speed_after(speed: float, t: float, law: int, a: float, k: float) -> float:
+    """Speed after ``t`` seconds of motion (``t`` not past the stop)."""
+    if law == ROLLING:
+        return max(speed - a * t, 0.0)
+    if k > 0.0:
+        return speed * math.exp(-k * t)
+    return speed
+
+
+@njit(cache=True, inline="always")
+def time_for_distance(speed: float, d: float, law: int, a: float, k: float) -> float:
+    """Seconds to cover path length ``d`` (``inf`` if the ball never gets that far)."""
+    if d <= 0.0:
+        return 0.0
+    if law == ROLLING:
+        disc = speed * speed - 2.0 * a * d
+        if disc < 0.0:
+            return math.inf
+        return 2.0 * d / (speed + math.sqrt(disc))
+    if k > 0.0:
+        x = k * d / speed
+        if x >= 1.0:
+            return math.inf
+        return -math.log1p(-x) / k
+    return d / speed
+
+
+@njit(cache=True, inline="always")
+def drag_phi(t: float, k: float) -> float:
+    """The drag law's common path parameter ``(1 - e^{-k t}) / k`` (``t`` when ``k = 0``)."""
+    if k > 0.0:
+        return -math.expm1(-k * t) / k
+    return t
+
+
+@njit(cache=True, inline="always")
+def drag_time_for_phi(phi: float, k: float) -> float:
+    """Inverse of :func:`drag_phi`."""
+    if k > 0.0:
+        x = k * phi
+        if x >= 1.0:
+            return math.inf
+        return -math.log1p(-x) / k
+    return phi

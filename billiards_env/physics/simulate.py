@@ -1,0 +1,144 @@
+"""The Python entry point to both solvers: ``Simulator(table, physics, ...).run(balls)`` or ``simulate(...)``."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .balls import Balls, validate_balls
+from .errors import SceneError, check_positive
+from .exact import N_PARAMS, P_DECEL, P_DRAG_K, P_E_BALL, P_E_CUSHION, P_LAW, P_LENGTH, P_MAX_TIME, P_MIN_SPEED, \
+    P_SPEED_FLOOR, P_WIDTH, STATUS_NAMES, simulate_exact
+from .model import Physics
+from .result import EventLog, ShotResult
+from .step import CONTACT_MODES, simulate_step
+from .table import Table
+from .trajectory import Trajectory
+
+SOLVERS = ("exact", "step")
+DEFAULT_MAX_TIME = 600.0  #: simulated-time cap per shot (s)
+DEFAULT_MAX_EVENTS = 100_000  #: event cap per shot (exact solver)
+DEFAULT_DT = 1e-3  #: step solver time step (s)
+#: Separation-speed floor of the inelastic-collapse guard (m/s), see :mod:`.collide`.
+CONTACT_SPEED_FLOOR = 1e-3
+
+
+def pack_params(table: Table, physics: Physics, max_time: float) -> np.ndarray:
+    """The parameter vector the compiled kernels read (layout: ``exact.P_*``)."""
+    prm = np.zeros(N_PARAMS)
+    prm[P_LENGTH] = table.length
+    prm[P_WIDTH] = table.width
+    prm[P_E_CUSHION] = table.cushion_restitution
+    prm[P_E_BALL] = physics.ball_restitution
+    prm[P_LAW] = physics.law_code
+    prm[P_DECEL] = physics.deceleration
+    prm[P_DRAG_K] = physics.drag_rate
+    prm[P_MIN_SPEED] = physics.min_speed
+    prm[P_MAX_TIME] = max_time
+    prm[P_SPEED_FLOOR] = CONTACT_SPEED_FLOOR
+    return prm
+
+
+@dataclass
+class Simulator:
+    """A table, its physics and a solver, ready to run shots.
+
+    ``solver="exact"`` (event-driven, the reference) or ``"step"`` (the lecture's per-frame algorithm with
+    time step ``dt`` and ``contact="lecture"`` push-apart or ``"rewind"`` to the time of impact).
+    ``max_time`` caps simulated seconds; ``max_events`` caps events (exact) — a capped shot says so in its status.
+    """
+
+    table: Table
+    physics: Physics
+    solver: str = "exact"
+    dt: float = DEFAULT_DT
+    contact: str = "lecture"
+    max_time: float = DEFAULT_MAX_TIME
+    max_events: int = DEFAULT_MAX_EVENTS
+
+    def __post_init__(self) -> None:
+        if self.solver not in SOLVERS:
+            raise SceneError(f"solver.name: unknown solver {self.solver!r}; use one of {', '.join(SOLVERS)}")
+        if self.contact not in CONTACT_MODES:
+            raise SceneError(f"solver.contact: unknown contact treatment {self.contact!r}; "
+                             f"use one of {', '.join(CONTACT_MODES)}")
+        check_positive("solver.dt", self.dt)
+        check_positive("max_time", self.max_time)
+        if isinstance(self.max_events, bool) or not isinstance(self.max_events, (int, np.integer)) \
+                or self.max_events < 1:
+            raise SceneError(f"max_events: must be a positive integer, got {self.max_events!r}")
+        if self.solver == "step" and self.max_time / self.dt > 1e10:
+            raise SceneError(f"solver.dt: {self.dt} s with max_time {self.max_time} s needs over 1e10 steps; "
+                             "raise dt or lower max_time")
+        self._prm = pack_params(self.table, self.physics, self.max_time)
+        self._pocket_xy = np.ascontiguousarray(self.table.pocket_xy, dtype=float)
+        self._pocket_r = np.ascontiguousarray(self.table.pocket_radius, dtype=float)
+
+    @property
+    def name(self) -> str:
+        return "exact" if self.solver == "exact" else f"step-{self.contact}"
+
+    def run(self, balls: Balls, record: bool = False, validate: bool = True) -> ShotResult:
+        """Simulate from ``balls`` (not modified) until rest or a cap. ``record`` keeps the trajectory."""
+        if validate:
+            validate_balls(balls, self.table)
+        out = balls.copy()
+        pos = np.ascontiguousarray(out.pos, dtype=float)
+        vel = np.ascontiguousarray(out.vel, dtype=float)
+        on = np.ascontiguousarray(out.on_table, dtype=np.bool_)
+        radius = np.ascontiguousarray(out.radius, dtype=float)
+        mass = np.ascontiguousarray(out.mass, dtype=float)
+        n_steps = n_tunnelled = 0
+        if self.solver == "exact":
+            (status, t_end, n_events, pocket, pocketed_at, ev_t, ev_int, ev_speed, sc_t, sc_ball,
+             sc_state) = simulate_exact(pos, vel, radius, mass, on, self._pocket_xy, self._pocket_r, self._prm,
+                                        self.max_events, record)
+        else:
+            record_dt = 1.0 / 240.0 if record else 0.0
+            (status, t_end, n_events, pocket, pocketed_at, ev_t, ev_int, ev_speed, sc_t, sc_ball, sc_state,
+             n_steps, n_tunnelled) = simulate_step(pos, vel, radius, mass, on, self._pocket_xy, self._pocket_r,
+                                                   self._prm, self.dt, CONTACT_MODES.index(self.contact),
+                                                   record_dt)
+        final = Balls(out.ids, pos, vel, radius, mass, on)
+        traj = None
+        if record:
+            traj = Trajectory(sc_t, sc_ball, sc_state, len(out), float(t_end), self.physics.law_code,
+                              self.physics.deceleration, self.physics.drag_rate, self.physics.min_speed,
+                              interpolate=self.solver != "exact")
+        events = EventLog(ev_t, ev_int[:, 0], ev_int[:, 1], ev_int[:, 2], ev_speed)
+        return ShotResult(STATUS_NAMES[status], float(t_end), int(n_events), final, pocket, pocketed_at, events,
+                          self.name, traj, int(n_steps), int(n_tunnelled))
+
+
+def simulate(
+    table: Table,
+    physics: Physics,
+    balls: Balls,
+    solver: str = "exact",
+    *,
+    dt: float = DEFAULT_DT,
+    contact: str = "lecture",
+    max_time: float = DEFAULT_MAX_TIME,
+    max_events: int = DEFAULT_MAX_EVENTS,
+    record: bool = False,
+) -> ShotResult:
+    """Simulate one shot (see :class:`Simulator`)."""
+    sim = Simulator(table, physics, solver=solver, dt=dt, contact=contact, max_time=max_time,
+                    max_events=max_events)
+    return sim.run(balls, record=record)
+
+
+def kinetic_energy(balls: Balls) -> float:
+    """Total translational kinetic energy of the balls on the table (J)."""
+    on = balls.on_table
+    return float(0.5 * np.sum(balls.mass[on] * np.sum(balls.vel[on] ** 2, axis=1)))
+
+
+def momentum(balls: Balls) -> np.ndarray:
+    """Total momentum ``(px, py)`` of the balls on the table (kg m/s)."""
+    on = balls.on_table
+    return (balls.mass[on, None] * balls.vel[on]).sum(axis=0)
+
+
+__all__ = ["Simulator", "simulate", "pack_params", "kinetic_energy", "momentum", "SOLVERS"]

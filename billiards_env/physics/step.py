@@ -1,0 +1,274 @@
+"""The ``step`` solver: the lecture's per-frame algorithm with a fixed time step ``dt`` (numba kernel).
+
+Each step, in this order: friction and minimum speed (rolling: speed minus ``a dt``; drag: velocity times
+``e^{-k dt}``, the lecture's friction factor), position update ``x += v dt``, cushions (overshoot
+repositioning and bounce), ball pairs in ``(i, j)`` order (overlap resolution and the collision law of
+:mod:`.collide`), pocket test. Two contact treatments:
+
+- ``lecture``: as the seed does — cushions put the ball back on the wall; overlapping balls are pushed
+  apart by half the overlap each along the line of centres, then their normal velocities are exchanged.
+- ``rewind``: go back to the time of impact inside the step (linear motion over the step), resolve the
+  collision there and finish the step with the new velocities: a cushion reflects the overshoot, a ball pair
+  is moved back to touching, bounced, and moved on.
+
+Neither sees a pair that passes through each other within one step; those are counted as tunnelled
+(``n_tunnelled``) by checking each pair's closest approach along the step's straight-line motion.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from .collide import resolve_ball_ball, resolve_cushion
+from .exact import (EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, P_DECEL, P_DRAG_K, P_E_BALL, P_E_CUSHION, P_LAW,
+                    P_LENGTH, P_MAX_TIME, P_MIN_SPEED, P_SPEED_FLOOR, P_WIDTH, STATUS_REST, STATUS_TIME_CAP, _grow)
+from .motion import ROLLING
+
+CONTACT_MODES = ("lecture", "rewind")
+LECTURE, REWIND = 0, 1
+
+
+@njit(cache=True)
+def _log_event(n_ev, ev_t, ev_int, ev_speed, t, kind, i, j, speed):
+    if n_ev >= ev_t.shape[0]:
+        ev_t = _grow(ev_t)
+        ev_int = _grow(ev_int)
+        ev_speed = _grow(ev_speed)
+    ev_t[n_ev] = t
+    ev_int[n_ev, 0] = kind
+    ev_int[n_ev, 1] = i
+    ev_int[n_ev, 2] = j
+    ev_speed[n_ev] = speed
+    return ev_t, ev_int, ev_speed
+
+
+@njit(cache=True)
+def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on, only):
+    n = pos.shape[0]
+    for i in range(n):
+        if only >= 0 and i != only:
+            continue
+        if n_sc >= sc_t.shape[0]:
+            sc_t = _grow(sc_t)
+            sc_ball = _grow(sc_ball)
+            sc_state = _grow(sc_state)
+        sc_t[n_sc] = t
+        sc_ball[n_sc] = i
+        sc_state[n_sc, 0] = pos[i, 0]
+        sc_state[n_sc, 1] = pos[i, 1]
+        sc_state[n_sc, 2] = vel[i, 0]
+        sc_state[n_sc, 3] = vel[i, 1]
+        sc_state[n_sc, 4] = 1.0 if on[i] else 0.0
+        n_sc += 1
+    return n_sc, sc_t, sc_ball, sc_state
+
+
+@njit(cache=True)
+def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt, contact, record_dt):
+    """Run the per-frame algorithm from ``pos``/``vel`` (updated in place) until rest or ``max_time``.
+
+    Returns the same first eleven items as ``simulate_exact`` (snapshots every ``record_dt`` s as the state
+    log when ``record_dt > 0``), then ``n_steps`` and ``n_tunnelled``.
+    """
+    n = pos.shape[0]
+    law = int(prm[P_LAW])
+    a = prm[P_DECEL]
+    k = prm[P_DRAG_K]
+    v_min = prm[P_MIN_SPEED]
+    e_c = prm[P_E_CUSHION]
+    e_b = prm[P_E_BALL]
+    length = prm[P_LENGTH]
+    width = prm[P_WIDTH]
+    max_time = prm[P_MAX_TIME]
+    floor = prm[P_SPEED_FLOOR]
+    drag_factor = math.exp(-k * dt)
+    max_steps = int(math.ceil(max_time / dt - 1e-9))
+
+    pocket_of = np.full(n, -1, np.int64)
+    pocket_time = np.full(n, np.nan)
+    ev_t = np.empty(64)
+    ev_int = np.empty((64, 3), np.int64)
+    ev_speed = np.empty(64)
+    n_ev = 0
+    record = record_dt > 0.0
+    sc_t = np.empty(4 * n + 16)
+    sc_ball = np.empty(4 * n + 16, np.int64)
+    sc_state = np.empty((4 * n + 16, 5))
+    n_sc = 0
+    if record:
+        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, 0.0, pos, vel, on_table, -1)
+    next_record = record_dt
+
+    for i in range(n):
+        if not on_table[i]:
+            vel[i, 0] = 0.0
+            vel[i, 1] = 0.0
+
+    t = 0.0
+    step = 0
+    n_tunnelled = 0
+    status = STATUS_REST
+    moving = np.zeros(n, np.bool_)
+    while True:
+        any_moving = False
+        for i in range(n):
+            moving[i] = on_table[i] and (vel[i, 0] != 0.0 or vel[i, 1] != 0.0)
+            any_moving = any_moving or moving[i]
+        if not any_moving:
+            status = STATUS_REST
+            break
+        if step >= max_steps:
+            status = STATUS_TIME_CAP
+            break
+        step += 1
+        t = step * dt
+
+        # 1. friction and minimum speed; 2. position update.
+        for i in range(n):
+            if not moving[i]:
+                continue
+            s = math.hypot(vel[i, 0], vel[i, 1])
+            if law == ROLLING:
+                s_new = max(s - a * dt, 0.0)
+                f = s_new / s
+            else:
+                f = drag_factor
+                s_new = s * f
+            if s_new <= v_min or s_new == 0.0:
+                vel[i, 0] = 0.0
+                vel[i, 1] = 0.0
+                ev_t, ev_int, ev_speed = _log_event(n_ev, ev_t, ev_int, ev_speed, t, EV_STOP, i, -1, 0.0)
+                n_ev += 1
+                continue
+            vel[i, 0] *= f
+            vel[i, 1] *= f
+            pos[i, 0] += vel[i, 0] * dt
+            pos[i, 1] += vel[i, 1] * dt
+
+        # 3. cushions: overshoot repositioning and bounce.
+        for i in range(n):
+            if not moving[i]:
+                continue
+            r = radius[i]
+            for cush in range(4):
+                axis = 0 if cush < 2 else 1
+                lim = r if cush % 2 == 0 else (length if axis == 0 else width) - r
+                over = (lim - pos[i, axis]) if cush % 2 == 0 else (pos[i, axis] - lim)
+                if over > 0.0:
+                    speed = resolve_cushion(vel, i, cush, e_c)
+                    if contact == 1 and speed > 0.0:
+                        pos[i, axis] = lim + (over if cush % 2 == 0 else -over) * e_c
+                    else:
+                        pos[i, axis] = lim
+                    if speed > 0.0:
+                        ev_t, ev_int, ev_speed = _log_event(n_ev, ev_t, ev_int, ev_speed, t, EV_CUSHION, i, cush,
+                                                            speed)
+                        n_ev += 1
+
+        # 4. ball pairs in (i, j) order.
+        for i in range(n):
+            if not on_table[i]:
+                continue
+            for j in range(i + 1, n):
+                if not on_table[j] or not (moving[i] or moving[j]):
+                    continue
+                dx = pos[i, 0] - pos[j, 0]
+                dy = pos[i, 1] - pos[j, 1]
+                dc = radius[i] + radius[j]
+                dist2 = dx * dx + dy * dy
+                if dist2 >= dc * dc:
+                    # Tunnelling check: closest approach along this step's straight-line relative motion.
+                    bx = vel[i, 0] - vel[j, 0]
+                    by = vel[i, 1] - vel[j, 1]
+                    bb = bx * bx + by * by
+                    if bb > 0.0:
+                        s_min = min(max((dx * bx + dy * by) / bb, 0.0), dt)  # seconds back from now
+                        mx = dx - bx * s_min
+                        my = dy - by * s_min
+                        if 0.0 < s_min < dt and mx * mx + my * my < dc * dc:
+                            n_tunnelled += 1
+                    continue
+                dist = math.sqrt(dist2)
+                if dist == 0.0:
+                    nx, ny = 1.0, 0.0
+                else:
+                    nx = dx / dist
+                    ny = dy / dist
+                back = -1.0
+                if contact == 1:
+                    # Rewind to the time of impact: |d - b s| = dc for the smallest s >= 0 going back.
+                    bx = vel[i, 0] - vel[j, 0]
+                    by = vel[i, 1] - vel[j, 1]
+                    bb = bx * bx + by * by
+                    db = dx * bx + dy * by
+                    if bb > 0.0:
+                        disc = db * db - bb * (dist2 - dc * dc)
+                        s_hit = (db + math.sqrt(max(disc, 0.0))) / bb
+                        if 0.0 <= s_hit <= dt:
+                            back = s_hit
+                if back >= 0.0:
+                    pos[i, 0] -= vel[i, 0] * back
+                    pos[i, 1] -= vel[i, 1] * back
+                    pos[j, 0] -= vel[j, 0] * back
+                    pos[j, 1] -= vel[j, 1] * back
+                    dx = pos[i, 0] - pos[j, 0]
+                    dy = pos[i, 1] - pos[j, 1]
+                    dist = math.hypot(dx, dy)
+                    nx = dx / dist
+                    ny = dy / dist
+                    speed = resolve_ball_ball(vel, i, j, nx, ny, mass[i], mass[j], e_b, law, floor)
+                    pos[i, 0] += vel[i, 0] * back
+                    pos[i, 1] += vel[i, 1] * back
+                    pos[j, 0] += vel[j, 0] * back
+                    pos[j, 1] += vel[j, 1] * back
+                else:
+                    half = 0.5 * (dc - dist)
+                    pos[i, 0] += nx * half
+                    pos[i, 1] += ny * half
+                    pos[j, 0] -= nx * half
+                    pos[j, 1] -= ny * half
+                    speed = resolve_ball_ball(vel, i, j, nx, ny, mass[i], mass[j], e_b, law, floor)
+                if speed > 0.0:
+                    moving[i] = True
+                    moving[j] = True
+                    ev_t, ev_int, ev_speed = _log_event(n_ev, ev_t, ev_int, ev_speed, t, EV_COLLISION, i, j, speed)
+                    n_ev += 1
+
+        # Pushes can leave a ball past a cushion: put it back on the table.
+        for i in range(n):
+            if on_table[i]:
+                r = radius[i]
+                pos[i, 0] = min(max(pos[i, 0], r), length - r)
+                pos[i, 1] = min(max(pos[i, 1], r), width - r)
+
+        # 5. pockets.
+        for i in range(n):
+            if not on_table[i]:
+                continue
+            for p in range(pocket_r.shape[0]):
+                dx = pos[i, 0] - pocket_xy[p, 0]
+                dy = pos[i, 1] - pocket_xy[p, 1]
+                if dx * dx + dy * dy <= pocket_r[p] * pocket_r[p]:
+                    speed = math.hypot(vel[i, 0], vel[i, 1])
+                    on_table[i] = False
+                    vel[i, 0] = 0.0
+                    vel[i, 1] = 0.0
+                    pocket_of[i] = p
+                    pocket_time[i] = t
+                    ev_t, ev_int, ev_speed = _log_event(n_ev, ev_t, ev_int, ev_speed, t, EV_POCKET, i, p, speed)
+                    n_ev += 1
+                    if record:
+                        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel,
+                                                                  on_table, i)
+                    break
+
+        if record and t >= next_record - 1e-12:
+            n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on_table, -1)
+            next_record += record_dt
+
+    if record:
+        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on_table, -1)
+    return (status, t, n_ev, pocket_of, pocket_time, ev_t[:n_ev], ev_int[:n_ev], ev_speed[:n_ev], sc_t[:n_sc],
+            sc_ball[:n_sc], sc_state[:n_sc], step, n_tunnelled)
