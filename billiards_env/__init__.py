@@ -1,0 +1,1 @@
+"""billiards_env: Gymnasium pool environments on an exact, fast billiards physics engine."""

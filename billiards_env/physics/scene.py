@@ -1,0 +1,200 @@
+"""Scene files: a table, physics parameters, balls, and optionally a shot and solver settings (JSON/YAML dicts).
+
+Every field is checked; an error names the field (``balls[2].radius``) and what to do about it.
+See the README for the full format and an example.
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+
+from .balls import BALL_MASS, BALL_RADIUS, Balls, validate_balls
+from .errors import SceneError, check_finite, check_non_negative, check_number, check_positive
+from .model import Physics
+from .result import ShotResult
+from .simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, Simulator
+from .table import Table
+
+TABLE_FIELDS = {"length", "width", "cushion_restitution", "pockets"}
+POCKET_FIELDS = {"x", "y", "radius"}
+PHYSICS_FIELDS = {"friction", "mu_roll", "drag_k", "min_speed", "ball_restitution"}
+BALL_FIELDS = {"id", "x", "y", "vx", "vy", "radius", "mass"}
+SHOT_FIELDS = {"ball", "angle", "speed"}
+SOLVER_FIELDS = {"name", "dt", "contact"}
+SCENE_FIELDS = {"table", "physics", "balls", "shot", "solver", "max_time", "max_events"}
+
+
+@dataclass(frozen=True)
+class Shot:
+    """Strike ball ``ball`` at ``speed`` m/s in direction ``angle`` rad (0 = +x, counter-clockwise)."""
+
+    ball: str
+    angle: float
+    speed: float
+
+
+@dataclass(frozen=True)
+class Scene:
+    table: Table
+    physics: Physics
+    balls: Balls
+    shot: Shot | None = None
+    solver: str = "exact"
+    dt: float = DEFAULT_DT
+    contact: str = "lecture"
+    max_time: float = DEFAULT_MAX_TIME
+    max_events: int = DEFAULT_MAX_EVENTS
+
+    def simulator(self, solver: str | None = None, dt: float | None = None, contact: str | None = None) -> Simulator:
+        """A simulator for this scene; arguments override the scene's solver settings."""
+        return Simulator(self.table, self.physics, solver=solver or self.solver,
+                         dt=self.dt if dt is None else dt, contact=contact or self.contact,
+                         max_time=self.max_time, max_events=self.max_events)
+
+    def initial_balls(self) -> Balls:
+        """The balls with the shot applied (if the scene has one)."""
+        if self.shot is None:
+            return self.balls.copy()
+        return self.balls.strike(self.shot.ball, self.shot.angle, self.shot.speed)
+
+    def run(self, solver: str | None = None, dt: float | None = None, contact: str | None = None,
+            record: bool = False) -> ShotResult:
+        """Strike (if the scene has a shot) and simulate until rest or a cap."""
+        return self.simulator(solver, dt, contact).run(self.initial_balls(), record=record)
+
+    @classmethod
+    def load(cls, path: str | Path) -> "Scene":
+        """Read a scene from a JSON (or YAML, by extension) file."""
+        p = Path(path)
+        try:
+            text = p.read_text()
+        except OSError as exc:
+            raise SceneError(f"{path}: cannot read the scene file ({exc.strerror})") from None
+        if p.suffix.lower() in (".yaml", ".yml"):
+            import yaml
+
+            try:
+                data = yaml.safe_load(text)
+            except yaml.YAMLError as exc:
+                raise SceneError(f"{path}: not valid YAML ({exc})") from None
+        else:
+            try:
+                data = json.loads(text)
+            except json.JSONDecodeError as exc:
+                raise SceneError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno} column {exc.colno}") from None
+        return cls.from_dict(data)
+
+    @classmethod
+    def from_dict(cls, data: Any) -> "Scene":
+        """Build and check a scene from a parsed JSON/YAML document."""
+        d = _mapping("scene", data, SCENE_FIELDS)
+        table = _table(d.get("table", {}))
+        physics = _physics(d.get("physics", {}))
+        if "balls" not in d:
+            raise SceneError("scene: missing 'balls'; give a list of balls, e.g. [{\"id\": \"cue\", \"x\": 0.6, \"y\": 0.6}]")
+        balls = _balls(d["balls"])
+        validate_balls(balls, table)
+        shot = _shot(d["shot"], balls) if d.get("shot") is not None else None
+        solver = _mapping("solver", d.get("solver", {}), SOLVER_FIELDS)
+        max_time = check_positive("max_time", d.get("max_time", DEFAULT_MAX_TIME))
+        max_events = d.get("max_events", DEFAULT_MAX_EVENTS)
+        if isinstance(max_events, bool) or not isinstance(max_events, int) or max_events < 1:
+            raise SceneError(f"max_events: must be a positive integer, got {max_events!r}")
+        scene = cls(table, physics, balls, shot, solver=_string("solver.name", solver.get("name", "exact")),
+                    dt=check_positive("solver.dt", solver.get("dt", DEFAULT_DT)),
+                    contact=_string("solver.contact", solver.get("contact", "lecture")),
+                    max_time=max_time, max_events=max_events)
+        scene.simulator()  # checks solver name, contact and dt
+        return scene
+
+
+def _mapping(name: str, value: Any, allowed: set[str]) -> Mapping[str, Any]:
+    if not isinstance(value, Mapping):
+        raise SceneError(f"{name}: expected an object with fields {sorted(allowed)}, got {type(value).__name__}")
+    unknown = sorted(set(map(str, value)) - allowed)
+    if unknown:
+        raise SceneError(f"{name}: unknown field(s) {unknown}; allowed: {sorted(allowed)}")
+    return value
+
+
+def _string(name: str, value: Any) -> str:
+    if not isinstance(value, str):
+        raise SceneError(f"{name}: expected a string, got {value!r}")
+    return value
+
+
+def _table(value: Any) -> Table:
+    t = _mapping("table", value, TABLE_FIELDS)
+    kw: dict[str, Any] = {}
+    for f in ("length", "width", "cushion_restitution"):
+        if f in t:
+            kw[f] = check_number(f"table.{f}", t[f])
+    if "pockets" in t:
+        pockets = t["pockets"]
+        if not isinstance(pockets, list):
+            raise SceneError("table.pockets: expected a list of {x, y, radius} objects ([] for no pockets)")
+        xy = np.zeros((len(pockets), 2))
+        r = np.zeros(len(pockets))
+        for k, p in enumerate(pockets):
+            pm = _mapping(f"table.pockets[{k}]", p, POCKET_FIELDS)
+            for f in POCKET_FIELDS:
+                if f not in pm:
+                    raise SceneError(f"table.pockets[{k}]: missing '{f}'")
+            xy[k] = (check_finite(f"table.pockets[{k}].x", pm["x"]), check_finite(f"table.pockets[{k}].y", pm["y"]))
+            r[k] = check_positive(f"table.pockets[{k}].radius", pm["radius"])
+        kw["pocket_xy"] = xy
+        kw["pocket_radius"] = r
+    return Table(**kw)
+
+
+def _physics(value: Any) -> Physics:
+    p = _mapping("physics", value, PHYSICS_FIELDS)
+    kw: dict[str, Any] = {}
+    if "friction" in p:
+        kw["friction"] = _string("physics.friction", p["friction"])
+    for f in PHYSICS_FIELDS - {"friction"}:
+        if f in p:
+            kw[f] = check_number(f"physics.{f}", p[f])
+    return Physics(**kw)
+
+
+def _balls(value: Any) -> Balls:
+    if not isinstance(value, list):
+        raise SceneError("balls: expected a list of ball objects with at least x and y")
+    if not value:
+        raise SceneError("balls: the scene has no balls; add at least one")
+    n = len(value)
+    ids, pos, vel = [], np.zeros((n, 2)), np.zeros((n, 2))
+    radius, mass = np.full(n, BALL_RADIUS), np.full(n, BALL_MASS)
+    for i, b in enumerate(value):
+        name = f"balls[{i}]"
+        bm = _mapping(name, b, BALL_FIELDS)
+        for f in ("x", "y"):
+            if f not in bm:
+                raise SceneError(f"{name}: missing '{f}'")
+        bid = bm.get("id", "cue" if i == 0 else str(i))
+        if not isinstance(bid, (str, int)) or isinstance(bid, bool):
+            raise SceneError(f"{name}.id: expected a string, got {bid!r}")
+        ids.append(str(bid))
+        pos[i] = (check_finite(f"{name}.x", bm["x"]), check_finite(f"{name}.y", bm["y"]))
+        vel[i] = (check_finite(f"{name}.vx", bm.get("vx", 0.0)), check_finite(f"{name}.vy", bm.get("vy", 0.0)))
+        radius[i] = check_positive(f"{name}.radius", bm.get("radius", BALL_RADIUS))
+        mass[i] = check_positive(f"{name}.mass", bm.get("mass", BALL_MASS))
+    return Balls(tuple(ids), pos, vel, radius, mass, np.ones(n, dtype=bool))
+
+
+def _shot(value: Any, balls: Balls) -> Shot:
+    s = _mapping("shot", value, SHOT_FIELDS)
+    ball = s.get("ball", balls.ids[0])
+    if str(ball) not in balls.ids:
+        raise SceneError(f"shot.ball: unknown ball id {ball!r}; the scene's balls are {', '.join(balls.ids)}")
+    for f in ("angle", "speed"):
+        if f not in s:
+            raise SceneError(f"shot: missing '{f}' (angle in radians, speed in m/s)")
+    angle = check_finite("shot.angle", s["angle"])
+    speed = check_non_negative("shot.speed", s["speed"])
+    return Shot(str(ball), angle, speed)
