@@ -57,7 +57,7 @@ def resolve_ball_ball(
     return v_close
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def resolve_cushion(vel, i: int, cushion: int, e_c: float) -> float:
     """Reflect the normal component of ``vel[i]`` off cushion ``cushion`` (0 left, 1 right, 2 bottom, 3 top),
     scaled by ``e_c``; returns the normal speed into the cushion before the hit (0 if moving away)."""

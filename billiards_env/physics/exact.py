@@ -33,7 +33,7 @@ P_LENGTH, P_WIDTH, P_E_CUSHION, P_E_BALL, P_LAW, P_DECEL, P_DRAG_K, P_MIN_SPEED,
 N_PARAMS = 10
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
     """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state."""
     vx = v0[i, 0]
@@ -64,7 +64,7 @@ def _advance(i, t, t0, p0, v0, tstop, law, a, k):
     t0[i] = t
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _set_stop_time(i, t0, v0, tstop, law, a, k, v_min):
     s = math.hypot(v0[i, 0], v0[i, 1])
     if s <= v_min or s == 0.0:
@@ -140,8 +140,9 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
 
 
 @njit(cache=True)
-def _predict_pair(i, j, t, t0, p0, v0, tstop, radius, prm):
-    """Time of the next collision of balls ``i`` and ``j`` after ``t`` (``inf`` if none before a stop)."""
+def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
+    """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
+    next own event (stop, cushion, pocket), since that event recomputes the pair anyway."""
     law = int(prm[P_LAW])
     a = prm[P_DECEL]
     k = prm[P_DRAG_K]
@@ -151,16 +152,20 @@ def _predict_pair(i, j, t, t0, p0, v0, tstop, radius, prm):
     sj = math.hypot(vxj, vyj)
     if si == 0.0 and sj == 0.0:
         return math.inf
-    window = prm[P_MAX_TIME] - t
-    if si > 0.0:
-        window = min(window, tstop[i] - t)
-    if sj > 0.0:
-        window = min(window, tstop[j] - t)
+    window = min(prm[P_MAX_TIME], ball_t[i], ball_t[j]) - t
     if not window > 0.0:
         return math.inf
     dc = radius[i] + radius[j]
     ax = xi - xj
     ay = yi - yj
+    # Cull pairs too far apart to meet within the window: the gap exceeds both balls' remaining paths.
+    reach = 0.0
+    if si > 0.0:
+        reach += distance(si, window, law, a, k)
+    if sj > 0.0:
+        reach += distance(sj, window, law, a, k)
+    if math.hypot(ax, ay) - dc > reach * (1.0 + 1e-9) + 1e-12:
+        return math.inf
     bx = vxi - vxj
     by = vyi - vyj
     closing_tol = 2.0 * dc * (1e-12 + 1e-14 * (si + sj))
@@ -190,8 +195,20 @@ def _predict_pair(i, j, t, t0, p0, v0, tstop, radius, prm):
 
 @njit(cache=True)
 def _grow(arr):
-    out = np.empty((arr.shape[0] * 2,) + arr.shape[1:], arr.dtype)
-    out[: arr.shape[0]] = arr
+    """``arr`` (1-D) copied into an array twice as long."""
+    out = np.empty(arr.shape[0] * 2, arr.dtype)
+    for r in range(arr.shape[0]):
+        out[r] = arr[r]
+    return out
+
+
+@njit(cache=True)
+def _grow_rows(arr):
+    """``arr`` (2-D) copied into an array with twice the rows."""
+    out = np.empty((arr.shape[0] * 2, arr.shape[1]), arr.dtype)
+    for r in range(arr.shape[0]):
+        for c in range(arr.shape[1]):
+            out[r, c] = arr[r, c]
     return out
 
 
@@ -247,7 +264,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
     for i in range(n):
         for j in range(i + 1, n):
             if on_table[i] and on_table[j]:
-                pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, tstop, radius, prm)
+                pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, tstop, ball_t, radius, prm)
 
     cap = 64
     ev_t = np.empty(cap)
@@ -345,7 +362,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
 
         if n_events >= ev_t.shape[0]:
             ev_t = _grow(ev_t)
-            ev_int = _grow(ev_int)
+            ev_int = _grow_rows(ev_int)
             ev_speed = _grow(ev_speed)
         ev_t[n_events] = t
         ev_int[n_events, 0] = kind
@@ -360,7 +377,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
                 if n_sc >= sc_t.shape[0]:
                     sc_t = _grow(sc_t)
                     sc_ball = _grow(sc_ball)
-                    sc_state = _grow(sc_state)
+                    sc_state = _grow_rows(sc_state)
                 _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table)
                 n_sc += 1
             if on_table[i]:
@@ -375,7 +392,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
                 lo = min(i, m)
                 hi = max(i, m)
                 if on_table[i] and on_table[m]:
-                    pair_t[lo, hi] = _predict_pair(lo, hi, t, t0, p0, v0, tstop, radius, prm)
+                    pair_t[lo, hi] = _predict_pair(lo, hi, t, t0, p0, v0, tstop, ball_t, radius, prm)
                 else:
                     pair_t[lo, hi] = math.inf
 

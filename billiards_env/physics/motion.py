@@ -18,7 +18,7 @@ ROLLING = 0
 DRAG = 1
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def time_to_stop(speed: float, law: int, a: float, k: float, v_min: float) -> float:
     """Seconds until a ball moving at ``speed`` stops (``inf`` if it never does)."""
     if speed <= v_min:
@@ -32,7 +32,7 @@ def time_to_stop(speed: float, law: int, a: float, k: float, v_min: float) -> fl
     return math.inf
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def distance(speed: float, t: float, law: int, a: float, k: float) -> float:
     """Path length covered in ``t`` seconds (``t`` not past the stop)."""
     if law == ROLLING:
@@ -42,7 +42,7 @@ def distance(speed: float, t: float, law: int, a: float, k: float) -> float:
     return speed * t
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def speed_after(speed: float, t: float, law: int, a: float, k: float) -> float:
     """Speed after ``t`` seconds of motion (``t`` not past the stop)."""
     if law == ROLLING:
@@ -52,7 +52,7 @@ def speed_after(speed: float, t: float, law: int, a: float, k: float) -> float:
     return speed
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def time_for_distance(speed: float, d: float, law: int, a: float, k: float) -> float:
     """Seconds to cover path length ``d`` (``inf`` if the ball never gets that far)."""
     if d <= 0.0:
@@ -70,7 +70,7 @@ def time_for_distance(speed: float, d: float, law: int, a: float, k: float) -> f
     return d / speed
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def drag_phi(t: float, k: float) -> float:
     """The drag law's common path parameter ``(1 - e^{-k t}) / k`` (``t`` when ``k = 0``)."""
     if k > 0.0:
@@ -78,7 +78,7 @@ def drag_phi(t: float, k: float) -> float:
     return t
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def drag_time_for_phi(phi: float, k: float) -> float:
     """Inverse of :func:`drag_phi`."""
     if k > 0.0:

@@ -10,13 +10,12 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 _MAX_ITER = 200
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def poly4(c4: float, c3: float, c2: float, c1: float, c0: float, t: float) -> float:
     return (((c4 * t + c3) * t + c2) * t + c1) * t + c0
 
@@ -59,61 +58,76 @@ def bracketed_root(c4: float, c3: float, c2: float, c1: float, c0: float, lo: fl
 
 
 @njit(cache=True)
-def quadratic_roots_in(a: float, b: float, c: float, lo: float, hi: float, out: np.ndarray) -> int:
-    """Real roots of ``a t^2 + b t + c`` strictly inside ``(lo, hi)``, ascending, into ``out``; returns the count."""
-    n = 0
+def quadratic_roots_in(a: float, b: float, c: float, lo: float, hi: float) -> tuple:
+    """Real roots of ``a t^2 + b t + c`` strictly inside ``(lo, hi)``: ``(count, r1, r2)`` ascending."""
+    r1 = math.inf
+    r2 = math.inf
     if a == 0.0:
         if b != 0.0:
             r = -c / b
             if lo < r < hi:
-                out[0] = r
-                n = 1
-        return n
+                return 1, r, r2
+        return 0, r1, r2
     disc = b * b - 4.0 * a * c
     if disc < 0.0:
-        return 0
+        return 0, r1, r2
     sq = math.sqrt(disc)
     q = -0.5 * (b + sq) if b >= 0.0 else -0.5 * (b - sq)
     if q == 0.0:
-        r1 = 0.0
-        r2 = 0.0
+        x1 = 0.0
+        x2 = 0.0
     else:
-        r1 = q / a
-        r2 = c / q
-    if r1 > r2:
-        r1, r2 = r2, r1
-    if lo < r1 < hi:
-        out[n] = r1
+        x1 = q / a
+        x2 = c / q
+    if x1 > x2:
+        x1, x2 = x2, x1
+    n = 0
+    if lo < x1 < hi:
+        r1 = x1
+        n = 1
+    if lo < x2 < hi and x2 != x1:
+        if n == 0:
+            r1 = x2
+        else:
+            r2 = x2
         n += 1
-    if lo < r2 < hi and r2 != r1:
-        out[n] = r2
-        n += 1
-    return n
+    return n, r1, r2
 
 
 @njit(cache=True)
-def cubic_roots_in(a: float, b: float, c: float, d: float, lo: float, hi: float, out: np.ndarray) -> int:
-    """Real roots of ``a t^3 + b t^2 + c t + d`` inside ``(lo, hi)``, ascending; isolated by the derivative."""
+def cubic_roots_in(a: float, b: float, c: float, d: float, lo: float, hi: float) -> tuple:
+    """Real roots of ``a t^3 + b t^2 + c t + d`` inside ``(lo, hi)``: ``(count, r1, r2, r3)`` ascending,
+    isolated by the derivative's roots (each monotone piece holds at most one)."""
     if a == 0.0:
-        return quadratic_roots_in(b, c, d, lo, hi, out)
-    crit = np.empty(2)
-    nc = quadratic_roots_in(3.0 * a, 2.0 * b, c, lo, hi, crit)
+        n, r1, r2 = quadratic_roots_in(b, c, d, lo, hi)
+        return n, r1, r2, math.inf
+    nc, c1, c2 = quadratic_roots_in(3.0 * a, 2.0 * b, c, lo, hi)
+    ra = math.inf
+    rb = math.inf
+    rc = math.inf
     n = 0
     left = lo
     f_left = ((a * left + b) * left + c) * left + d
     for k in range(nc + 1):
-        right = crit[k] if k < nc else hi
+        right = hi if k == nc else (c1 if k == 0 else c2)
         f_right = ((a * right + b) * right + c) * right + d
+        root = math.inf
         if f_left == 0.0 and left > lo:
-            out[n] = left
-            n += 1
+            root = left
         elif (f_left < 0.0 < f_right) or (f_right < 0.0 < f_left):
             r_lo, r_hi = bracketed_root(0.0, a, b, c, d, left, right)
-            out[n] = 0.5 * (r_lo + r_hi)
+            root = 0.5 * (r_lo + r_hi)
+        if root < math.inf:
+            if n == 0:
+                ra = root
+            elif n == 1:
+                rb = root
+            else:
+                rc = root
             n += 1
         left = right
         f_left = f_right
-    return n
+    return n, ra, rb, rc
 
 
 @njit(cache=True)
@@ -125,20 +139,25 @@ def first_entry(c4: float, c3: float, c2: float, c1: float, c0: float, t_max: fl
     Returns the left end of the final bracket, so ``f`` at the returned time is not negative.
     """
     if not t_max > 0.0:
-        return np.inf
-    f0 = c0
-    if f0 <= 0.0 and c1 < -closing_tol:
+        return math.inf
+    if c0 <= 0.0 and c1 < -closing_tol:
         return 0.0
-    crit = np.empty(3)
-    nc = cubic_roots_in(4.0 * c4, 3.0 * c3, 2.0 * c2, c1, 0.0, t_max, crit)
+    nc, k1, k2, k3 = cubic_roots_in(4.0 * c4, 3.0 * c3, 2.0 * c2, c1, 0.0, t_max)
     left = 0.0
-    f_left = f0
+    f_left = c0
     for k in range(nc + 1):
-        right = crit[k] if k < nc else t_max
+        if k == nc:
+            right = t_max
+        elif k == 0:
+            right = k1
+        elif k == 1:
+            right = k2
+        else:
+            right = k3
         f_right = poly4(c4, c3, c2, c1, c0, right)
         if f_left > 0.0 and f_right <= 0.0:
             r_lo, _ = bracketed_root(c4, c3, c2, c1, c0, left, right)
             return r_lo
         left = right
         f_left = f_right
-    return np.inf
+    return math.inf

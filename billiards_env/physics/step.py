@@ -23,7 +23,8 @@ from numba import njit
 
 from .collide import resolve_ball_ball, resolve_cushion
 from .exact import (EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, P_DECEL, P_DRAG_K, P_E_BALL, P_E_CUSHION, P_LAW,
-                    P_LENGTH, P_MAX_TIME, P_MIN_SPEED, P_SPEED_FLOOR, P_WIDTH, STATUS_REST, STATUS_TIME_CAP, _grow)
+                    P_LENGTH, P_MAX_TIME, P_MIN_SPEED, P_SPEED_FLOOR, P_WIDTH, STATUS_REST, STATUS_TIME_CAP, _grow,
+                    _grow_rows)
 from .motion import ROLLING
 
 CONTACT_MODES = ("lecture", "rewind")
@@ -34,7 +35,7 @@ LECTURE, REWIND = 0, 1
 def _log_event(n_ev, ev_t, ev_int, ev_speed, t, kind, i, j, speed):
     if n_ev >= ev_t.shape[0]:
         ev_t = _grow(ev_t)
-        ev_int = _grow(ev_int)
+        ev_int = _grow_rows(ev_int)
         ev_speed = _grow(ev_speed)
     ev_t[n_ev] = t
     ev_int[n_ev, 0] = kind
@@ -53,7 +54,7 @@ def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on, only):
         if n_sc >= sc_t.shape[0]:
             sc_t = _grow(sc_t)
             sc_ball = _grow(sc_ball)
-            sc_state = _grow(sc_state)
+            sc_state = _grow_rows(sc_state)
         sc_t[n_sc] = t
         sc_ball[n_sc] = i
         sc_state[n_sc, 0] = pos[i, 0]
