@@ -15,3 +15,5 @@ if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
   .venv/bin/python -m pip install -q -e ".[agents,dev]"
   echo "$want" > "$stamp"
 fi
+# Compile the physics kernels into numba's cache now, so the first shot a user runs is fast.
+.venv/bin/python -m billiards_env.physics.warmup
