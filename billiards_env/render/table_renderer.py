@@ -1,0 +1,647 @@
+"""Draw a pool table and its balls from a given state (positions, on-table flags, ball numbers).
+
+The renderer holds no physics: it turns metres into pixels and paints. Everything is drawn on plain
+``pygame.Surface`` objects with only ``pygame.font`` initialised, so ``rgb_array`` rendering needs no display
+or video driver. The static table (rails, cloth, cushions, pockets) is painted once and cached; balls are
+pre-rendered shaded sprites (supersampled, so their edges and numbers are anti-aliased) cached per number
+and pixel radius, so a frame is one background copy plus a few blits.
+
+Conventions: table origin at a corner, x along the length, y along the width, angles counter-clockwise from
++x. The image shows table y = 0 at the BOTTOM (screen y is flipped).
+"""
+from __future__ import annotations
+
+import math
+import os
+from typing import TYPE_CHECKING, Sequence
+
+import numpy as np
+
+os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
+import pygame  # noqa: E402  (after the banner switch)
+
+from . import colors as C  # noqa: E402
+
+if TYPE_CHECKING:
+    from billiards_env.physics.table import Table
+
+# --- geometry of the furniture around the playing area (metres) -------------------------------------------
+CUSHION_WIDTH = 0.045  #: cushion nose to the wooden rail
+RAIL_WIDTH = 0.115  #: wooden rail, cushion back to outer edge
+BORDER = CUSHION_WIDTH + RAIL_WIDTH  #: playing-area edge to image edge
+RAIL_CORNER_RADIUS = 0.05  #: rounding of the rail's outer corners
+DIAMOND_HALF = (0.010, 0.0055)  #: half-diagonals of a rail sight (along, across the rail)
+SPOT_RADIUS = 0.005  #: head and foot spots
+#: Cushion shading strips (fraction of the way from nose to rail, brightness): the rubber's rounded top.
+CUSHION_PROFILE = ((0.0, 0.10, 0.86), (0.10, 0.22, 1.06), (0.22, 0.40, 1.12), (0.40, 0.65, 1.04),
+                   (0.65, 0.88, 0.96), (0.88, 1.0, 0.86))
+
+# --- ball sprite look (angles in radians, lengths in ball radii) ------------------------------------------
+SUPERSAMPLE = 5  #: sub-samples per pixel side for sprites (anti-aliasing)
+DISC_ANGLE = math.radians(27.0)  #: angular radius of the number disc on the sphere
+DISC_TILT = math.radians(41.0)  #: how far the number disc is turned away from the viewer (keeps the centre free)
+STRIPE_HALF_ANGLE = math.radians(33.0)  #: half-width of a stripe band, as an angle
+FLAT_CORE = 0.42  #: radius (in ball radii) inside which shading leaves the main colour untouched
+HIGHLIGHT_AT = (-0.36, -0.40)  #: specular highlight centre (screen x right, y down): light from the top left
+HIGHLIGHT_SIGMA = 0.10
+SHADOW_OFFSET = (0.20, 0.26)  #: ball shadow offset on the cloth (ball radii, down-right)
+CUE_SHADOW_OFFSET = (0.012, 0.016)  #: cue stick shadow offset (metres, down-right: the cue is higher)
+GOLDEN_ANGLE = math.radians(137.50776)  #: spreads the ball orientations so the rack looks natural
+
+#: Cue stick from the tip backwards: (length m, half-width at start m, half-width at end m, colour).
+CUE_SEGMENTS: tuple[tuple[float, float, float, tuple[int, int, int]], ...] = (
+    (0.010, 0.0064, 0.0064, (62, 104, 168)),  # chalked tip
+    (0.020, 0.0065, 0.0066, (238, 234, 220)),  # ferrule
+    (0.700, 0.0066, 0.0100, (226, 198, 150)),  # maple shaft
+    (0.012, 0.0104, 0.0104, (200, 200, 206)),  # joint ring
+    (0.020, 0.0104, 0.0106, (34, 30, 30)),  # joint collar
+    (0.360, 0.0106, 0.0130, (92, 40, 22)),  # forearm
+    (0.008, 0.0130, 0.0130, (214, 200, 160)),  # inlay ring
+    (0.250, 0.0131, 0.0142, (30, 30, 34)),  # wrap
+    (0.008, 0.0142, 0.0142, (214, 200, 160)),  # inlay ring
+    (0.100, 0.0142, 0.0148, (104, 46, 24)),  # butt sleeve
+    (0.012, 0.0148, 0.0146, (14, 14, 14)),  # bumper
+)
+CUE_TIP_GAP = 0.030  #: gap between the cue ball's surface and the cue tip (metres)
+
+
+class TableRenderer:
+    """Paints a table and balls into a ``pygame.Surface`` / ``(H, W, 3) uint8`` array.
+
+    ``ball_radius`` is in metres: one value for all balls or one per ball (``(N,)``, matching ``draw``).
+    The image is ``width_px`` wide; its height follows the table's aspect ratio plus the rail border, plus a
+    tray strip below the table for pocketed balls when ``tray`` is true.
+    """
+
+    def __init__(
+        self, table: "Table", ball_radius: float | np.ndarray, width_px: int = 800, tray: bool = True
+    ) -> None:
+        if int(width_px) < 64:
+            raise ValueError(f"width_px must be at least 64, got {width_px!r}")
+        radius = np.asarray(ball_radius, dtype=float)
+        if radius.ndim > 1 or radius.size == 0 or not np.all(np.isfinite(radius)) or np.any(radius <= 0):
+            raise ValueError(f"ball_radius must be a positive number or a 1-D array of them, got {ball_radius!r}")
+        if not pygame.font.get_init():
+            pygame.font.init()
+        self.table = table
+        self.ball_radius = radius
+        self.length = float(table.length)
+        self.width = float(table.width)
+        self.width_px = int(width_px)
+        self.pixels_per_metre = self.width_px / (self.length + 2.0 * BORDER)
+        self.table_height_px = int(round((self.width + 2.0 * BORDER) * self.pixels_per_metre))
+        self._origin = BORDER * self.pixels_per_metre  # pixel coordinate of the playing area's edge
+        max_r = float(radius.max()) * self.pixels_per_metre
+        self.tray_height_px = int(math.ceil(2.0 * max_r + max(8.0, 1.2 * max_r))) if tray else 0
+        self.height_px = self.table_height_px + self.tray_height_px
+        self._sprites: dict[tuple[int, int], tuple[pygame.Surface, int]] = {}
+        self._shadows: dict[int, tuple[pygame.Surface, int]] = {}
+        self._overlay: pygame.Surface | None = None
+        self._background = self._paint_background()
+
+    # --- coordinates ------------------------------------------------------------------------------------
+    @property
+    def size(self) -> tuple[int, int]:
+        """Image size ``(width, height)`` in pixels."""
+        return self.width_px, self.height_px
+
+    @property
+    def playing_rect(self) -> pygame.Rect:
+        """Pixel rectangle of the playing area (inside the cushion noses)."""
+        o = int(round(self._origin))
+        return pygame.Rect(o, o, int(round(self.length * self.pixels_per_metre)),
+                           int(round(self.width * self.pixels_per_metre)))
+
+    def to_pixels_float(self, xy: np.ndarray) -> np.ndarray:
+        """Table points ``(N,2)`` in metres to sub-pixel image coordinates ``(N,2)`` (column, row)."""
+        p = np.asarray(xy, dtype=float).reshape(-1, 2)
+        col = self._origin + p[:, 0] * self.pixels_per_metre
+        row = self._origin + (self.width - p[:, 1]) * self.pixels_per_metre
+        return np.stack([col, row], axis=1)
+
+    def to_pixels(self, xy: np.ndarray) -> np.ndarray:
+        """Table points ``(N,2)`` in metres to integer pixels ``(N,2)`` as (column, row); y is flipped."""
+        return np.rint(self.to_pixels_float(xy)).astype(int)
+
+    # --- frames -----------------------------------------------------------------------------------------
+    def draw(
+        self,
+        positions: np.ndarray,
+        on_table: np.ndarray,
+        numbers: Sequence[int],
+        cue: tuple[float, float, float] | None = None,
+    ) -> pygame.Surface:
+        """A new surface with the balls on the table, pocketed balls in the tray, and the cue if given.
+
+        ``cue = (x, y, angle)``: the cue ball position (m) and shot direction (radians, CCW from +x) of the
+        last shot; an aim line runs from there to the cushion and the stick lies behind the ball.
+        """
+        pos, flags, nums, radii = self._check_state(positions, on_table, numbers)
+        frame = self._background.copy()
+        centres = self.to_pixels(pos)
+        radii_px = radii * self.pixels_per_metre
+        live = np.flatnonzero(flags)
+        cue_radius = float(radii[nums == 0][0]) if np.any(nums == 0) else float(self.ball_radius.max())
+        if cue is not None:
+            self._draw_aim_line(frame, cue, cue_radius)
+        for k in live:
+            self._blit_shadow(frame, centres[k], radii_px[k])
+        for k in live:
+            self._blit_ball(frame, nums[k], centres[k], radii_px[k])
+        if cue is not None:
+            self._draw_cue_stick(frame, cue, cue_radius)
+        if self.tray_height_px:
+            self._draw_tray_balls(frame, nums[~flags], radii_px[~flags])
+        return frame
+
+    def render_array(
+        self,
+        positions: np.ndarray,
+        on_table: np.ndarray,
+        numbers: Sequence[int],
+        cue: tuple[float, float, float] | None = None,
+    ) -> np.ndarray:
+        """``draw`` as a contiguous ``(H, W, 3) uint8`` array (rows top to bottom, like an image)."""
+        return surface_to_array(self.draw(positions, on_table, numbers, cue))
+
+    def background(self) -> pygame.Surface:
+        """A copy of the static table without balls."""
+        return self._background.copy()
+
+    def _check_state(
+        self, positions: np.ndarray, on_table: np.ndarray, numbers: Sequence[int]
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Validated arrays: positions (N,2), flags (N,) bool, numbers (N,) int, radii (N,) metres."""
+        pos = np.asarray(positions, dtype=float)
+        if pos.ndim != 2 or pos.shape[1] != 2:
+            raise ValueError(f"positions must have shape (N, 2), got {pos.shape}")
+        n = len(pos)
+        flags = np.asarray(on_table).reshape(-1).astype(bool)
+        raw = list(numbers)
+        for num in set(raw):
+            C.ball_colour(num)  # raises on anything but an integer 0-15
+        nums = np.asarray(raw, dtype=int).reshape(-1)
+        if len(flags) != n or len(nums) != n:
+            raise ValueError(f"{n} positions but {len(flags)} on_table flags and {len(nums)} numbers")
+        if not np.all(np.isfinite(pos[flags])):
+            raise ValueError("positions of balls on the table must be finite")
+        if self.ball_radius.ndim == 0:
+            radii = np.full(n, float(self.ball_radius))
+        elif len(self.ball_radius) == n:
+            radii = self.ball_radius
+        else:
+            raise ValueError(f"renderer has {len(self.ball_radius)} ball radii but the state has {n} balls")
+        return pos, flags, nums, radii
+
+    # --- balls ------------------------------------------------------------------------------------------
+    def _blit_ball(self, frame: pygame.Surface, number: int, centre: np.ndarray, radius_px: float) -> None:
+        sprite, half = self._ball_sprite(int(number), radius_px)
+        frame.blit(sprite, (int(centre[0]) - half, int(centre[1]) - half))
+
+    def _blit_shadow(self, frame: pygame.Surface, centre: np.ndarray, radius_px: float) -> None:
+        key = _radius_key(radius_px)
+        if key not in self._shadows:
+            self._shadows[key] = _shadow_sprite(key / 10.0)
+        sprite, half = self._shadows[key]
+        dx, dy = (round(o * radius_px) for o in SHADOW_OFFSET)
+        frame.blit(sprite, (int(centre[0]) - half + dx, int(centre[1]) - half + dy))
+
+    def _ball_sprite(self, number: int, radius_px: float) -> tuple[pygame.Surface, int]:
+        """Cached shaded sprite of ball ``number`` and its centre offset (the sprite's middle pixel)."""
+        key = (number, _radius_key(radius_px))
+        if key not in self._sprites:
+            rgba = ball_rgba(number, key[1] / 10.0)
+            self._sprites[key] = (_surface_from_rgba(rgba), rgba.shape[0] // 2)
+        return self._sprites[key]
+
+    def _draw_tray_balls(self, frame: pygame.Surface, numbers: np.ndarray, radii_px: np.ndarray) -> None:
+        """Pocketed balls in number order along the tray strip below the table."""
+        if len(numbers) == 0:
+            return
+        order = np.argsort(numbers, kind="stable")
+        r = float(radii_px.max())
+        row = self.table_height_px + self.tray_height_px // 2
+        pad = max(self.width_px * 0.03, r * 2.0)
+        step = min(2.0 * r + max(3.0, 0.3 * r), (self.width_px - 2 * pad) / max(len(numbers), 1))
+        for i, k in enumerate(order):
+            col = int(round(pad + r + i * step))
+            self._blit_ball(frame, numbers[k], np.array([col, row]), radii_px[k])
+
+    # --- cue --------------------------------------------------------------------------------------------
+    def _cue_geometry(self, cue: tuple[float, float, float]) -> tuple[np.ndarray, np.ndarray]:
+        """Sub-pixel start point and unit screen direction (y down) of a cue ``(x, y, angle)``."""
+        x, y, angle = (float(v) for v in cue)
+        if not all(math.isfinite(v) for v in (x, y, angle)):
+            raise ValueError(f"cue must be finite (x, y, angle), got {cue!r}")
+        start = self.to_pixels_float(np.array([x, y]))[0]
+        return start, np.array([math.cos(angle), -math.sin(angle)])
+
+    def _draw_aim_line(self, frame: pygame.Surface, cue: tuple[float, float, float], radius: float) -> None:
+        """A light line from the cue ball's edge along the shot to where its centre would meet a cushion."""
+        x, y, angle = (float(v) for v in cue)
+        reach = _ray_to_box(x, y, angle, radius, self.length - radius, radius, self.width - radius)
+        start, direction = self._cue_geometry(cue)
+        r_px = radius * self.pixels_per_metre
+        length = reach * self.pixels_per_metre
+        if length <= r_px + 2:
+            return
+        colour = _mix(C.CLOTH, C.AIM_LINE, 0.55)
+        p0 = start + direction * (r_px + 1.5)
+        p1 = start + direction * length
+        width = max(1, int(round(self.pixels_per_metre * 0.004)))
+        pygame.draw.aaline(frame, colour, p0.tolist(), p1.tolist(), width)
+        _aa_disc(frame, colour, p1, max(1.5, 0.3 * r_px))
+
+    def _draw_cue_stick(self, frame: pygame.Surface, cue: tuple[float, float, float], radius: float) -> None:
+        """The cue stick lying behind the cue ball along the shot line, with its shadow on the table."""
+        start, direction = self._cue_geometry(cue)
+        ppm = self.pixels_per_metre
+        back = -direction
+        normal = np.array([-back[1], back[0]])
+        if normal @ np.array([-1.0, -1.0]) < 0:  # make ``normal`` point to the lit (top-left) side
+            normal = -normal
+        s = (radius + CUE_TIP_GAP) * ppm
+        outline_near, outline_far, pieces = [], [], []
+        for length, w0, w1, colour in CUE_SEGMENTS:
+            s1 = s + length * ppm
+            a, b = start + back * s, start + back * s1
+            pieces.append((a, b, w0 * ppm, w1 * ppm, colour))
+            outline_near += [a + normal * w0 * ppm, b + normal * w1 * ppm]
+            outline_far += [a - normal * w0 * ppm, b - normal * w1 * ppm]
+            s = s1
+        frame.set_clip(pygame.Rect(0, 0, self.width_px, self.table_height_px))
+        shadow = np.array(outline_near + outline_far[::-1]) + np.array(CUE_SHADOW_OFFSET) * ppm
+        self._blend_polygon(frame, shadow, (0, 0, 0, 80))
+        for a, b, w0, w1, colour in pieces:
+            _cylinder_quad(frame, a, b, w0, w1, normal, colour)
+        frame.set_clip(None)
+
+    def _blend_polygon(self, frame: pygame.Surface, points: np.ndarray, rgba: tuple[int, int, int, int]) -> None:
+        """Fill a polygon with a translucent colour (via a reusable full-frame alpha overlay)."""
+        if self._overlay is None:
+            self._overlay = pygame.Surface(self.size, pygame.SRCALPHA)
+        self._overlay.fill((0, 0, 0, 0))
+        pygame.draw.polygon(self._overlay, rgba, points.tolist())
+        frame.blit(self._overlay, (0, 0))
+
+    # --- static background ------------------------------------------------------------------------------
+    def _paint_background(self) -> pygame.Surface:
+        """The table without balls: rails, pocket liners, cloth, cushions, pockets, sights, spots, tray."""
+        surface = pygame.Surface(self.size)
+        image = np.empty((self.height_px, self.width_px, 3))
+        image[:] = C.BACKGROUND
+        self._paint_rails(image)
+        pygame.surfarray.blit_array(surface, np.clip(np.rint(image), 0, 255).astype(np.uint8).transpose(1, 0, 2))
+        self._paint_pocket_liners(surface)
+        self._paint_cloth(surface)
+        self._paint_cushions(surface)
+        self._paint_pockets(surface)
+        self._paint_sights(surface)
+        if self.tray_height_px:
+            self._paint_tray(surface)
+        return surface
+
+    def _paint_rails(self, image: np.ndarray) -> None:
+        """Wooden rails with grain along each rail, mitred corners, rounded outer corners and a soft bevel.
+
+        Only the border ring is computed (the middle is covered by cloth and cushions anyway).
+        """
+        h, w, ppm = self.table_height_px, self.width_px, self.pixels_per_metre
+        ring = int(math.ceil(BORDER * ppm)) + 2
+        rows, cols = np.mgrid[0:h, 0:w]
+        d_long = np.minimum(rows, h - 1 - rows)
+        d_short = np.minimum(cols, w - 1 - cols)
+        rows, cols = rows[np.minimum(d_long, d_short) < ring], cols[np.minimum(d_long, d_short) < ring]
+        yy, xx = rows + 0.5, cols + 0.5
+        d_long, d_short = np.minimum(yy, h - yy), np.minimum(xx, w - xx)  # distances to the outer edges
+        long_rail = d_long <= d_short
+        along = np.where(long_rail, xx, yy) / ppm
+        across = np.where(long_rail, yy, xx) / ppm
+        phase = np.where(long_rail, 0.0, 2.1)
+        grain = across * 420.0 + 2.2 * np.sin(along * 9.0 + phase) + 0.9 * np.sin(along * 31.0 + across * 60.0)
+        streak = (0.5 + 0.5 * np.sin(grain)) ** 4
+        noise = np.random.default_rng(11).normal(0.0, 0.015, streak.shape)
+        shade = 1.0 - 0.10 * streak + 0.05 * np.sin(along * 3.0 + phase) + noise
+        d_out = np.minimum(d_long, d_short) / ppm
+        shade *= 0.72 + 0.28 * _smoothstep(0.0, 0.014, d_out)  # rounded outer edge
+        shade *= 1.0 + 0.10 * np.exp(-((d_out - 0.02) / 0.008) ** 2)  # light catching the top of the rail
+        wood = np.array(C.RAIL, dtype=float) * shade[:, None]
+        cover = _rounded_rect_coverage(xx, yy, w, h, RAIL_CORNER_RADIUS * ppm)[:, None]
+        image[rows, cols] = image[rows, cols] * (1.0 - cover) + wood * cover
+
+    def _paint_pocket_liners(self, surface: pygame.Surface) -> None:
+        """Dark leather around each pocket hole, seen on the rail."""
+        centres = self.to_pixels_float(self.table.pocket_xy)
+        for c, r in zip(centres, np.asarray(self.table.pocket_radius) * self.pixels_per_metre):
+            _aa_disc(surface, C.RAIL_DARK, c, r * 1.32)
+            _aa_disc(surface, C.POCKET_LINER, c, r * 1.20)
+
+    def _paint_cloth(self, surface: pygame.Surface) -> None:
+        """The cushion band (black where no cushion covers it: pocket throats) and the lit cloth."""
+        ppm, o = self.pixels_per_metre, self._origin
+        band = CUSHION_WIDTH * ppm
+        outer = pygame.Rect(int(round(o - band)), int(round(o - band)),
+                            int(round((self.length * ppm) + 2 * band)), int(round((self.width * ppm) + 2 * band)))
+        surface.fill(C.POCKET_LINER, outer)  # what no cushion covers is pocket opening
+        rect = self.playing_rect
+        u = ((np.arange(rect.w, dtype=np.float32) + 0.5) / rect.w - 0.5) * 2.0
+        v = ((np.arange(rect.h, dtype=np.float32) + 0.5) / rect.h - 0.5) * 2.0
+        light = 1.06 - 0.07 * (v[:, None] ** 2 + u[None, :] ** 2)  # overhead lamp: brightest in the middle
+        light -= 0.06 * np.maximum(np.abs(v)[:, None], np.abs(u)[None, :]) ** 8  # darker toward the cushions
+        light += 0.010 * np.random.default_rng(5).standard_normal(light.shape, dtype=np.float32)  # felt
+        pixels = np.empty((rect.h, rect.w, 4), np.uint8)
+        pixels[..., :3] = np.clip(np.array(C.CLOTH, np.float32) * light[..., None] + 0.5, 0, 255)
+        pixels[..., 3] = 255
+        surface.blit(_surface_from_rgba(pixels), rect.topleft)
+
+    def _paint_cushions(self, surface: pygame.Surface) -> None:
+        """Cushions along the four sides, cut at the pockets with angled jaws."""
+        for quad in self._cushion_quads():
+            pts = self.to_pixels_float(quad)
+            pygame.draw.polygon(surface, C.CUSHION, pts.tolist())
+            pygame.draw.aalines(surface, C.CUSHION, True, pts.tolist())
+            for t0, t1, gain in CUSHION_PROFILE:  # strips from the nose (t=0) back to the rail (t=1)
+                strip = [pts[0] + (pts[3] - pts[0]) * t0, pts[1] + (pts[2] - pts[1]) * t0,
+                         pts[1] + (pts[2] - pts[1]) * t1, pts[0] + (pts[3] - pts[0]) * t1]
+                colour = _scale(C.CUSHION, gain)
+                pygame.draw.polygon(surface, colour, [p.tolist() for p in strip])
+            nose = pts[:2]
+            pygame.draw.aaline(surface, _mix(C.CUSHION, (0, 0, 0), 0.45), nose[0].tolist(), nose[1].tolist())
+            back = pts[2:]
+            pygame.draw.aaline(surface, C.RAIL_DARK, back[0].tolist(), back[1].tolist())
+
+    def _cushion_quads(self) -> list[np.ndarray]:
+        """Cushion pieces as (4,2) quads in metres: nose start, nose end, back end, back start."""
+        L, W, c = self.length, self.width, CUSHION_WIDTH
+        sides = (  # origin of the nose line, unit along, unit outward, side length
+            (np.array([0.0, 0.0]), np.array([1.0, 0.0]), np.array([0.0, -1.0]), L),
+            (np.array([0.0, W]), np.array([1.0, 0.0]), np.array([0.0, 1.0]), L),
+            (np.array([0.0, 0.0]), np.array([0.0, 1.0]), np.array([-1.0, 0.0]), W),
+            (np.array([L, 0.0]), np.array([0.0, 1.0]), np.array([1.0, 0.0]), W),
+        )
+        quads = []
+        for origin, along, out, side_len in sides:
+            for a, b, ext_a, ext_b in self._cushion_pieces(origin, along, out, side_len):
+                quads.append(np.array([
+                    origin + along * a, origin + along * b,
+                    origin + along * (b + ext_b) + out * c, origin + along * (a - ext_a) + out * c,
+                ]))
+        return quads
+
+    def _cushion_pieces(
+        self, origin: np.ndarray, along: np.ndarray, out: np.ndarray, side_len: float
+    ) -> list[tuple[float, float, float, float]]:
+        """Intervals ``(a, b, jaw_a, jaw_b)`` of one side's nose line not cut by a pocket.
+
+        A pocket whose capture circle reaches the nose line cuts it; the cushion back reaches ``jaw`` further
+        toward that pocket (45 degrees at corner pockets, steeper at side pockets; a mitre at bare corners).
+        """
+        c = CUSHION_WIDTH
+        cuts: list[tuple[float, float, float]] = []
+        for p, r in zip(np.asarray(self.table.pocket_xy), np.asarray(self.table.pocket_radius)):
+            rel = p - origin
+            dist = abs(rel @ out)
+            if dist >= r:
+                continue
+            half = math.sqrt(r * r - dist * dist)
+            centre = rel @ along
+            corner = min(centre, side_len - centre) < r
+            cuts.append((centre - half, centre + half, c if corner else 0.3 * c))
+        pieces = []
+        start, jaw_start = 0.0, c
+        for lo, hi, jaw in sorted(cuts):
+            if lo > start:
+                pieces.append((start, min(lo, side_len), jaw_start, jaw))
+            if hi > start:
+                start, jaw_start = hi, jaw
+        if start < side_len:
+            pieces.append((start, side_len, jaw_start, c))
+        return pieces
+
+    def _paint_pockets(self, surface: pygame.Surface) -> None:
+        """Pockets as black circles of their capture radius, with a faint rim for depth."""
+        centres = self.to_pixels_float(self.table.pocket_xy)
+        for c, r in zip(centres, np.asarray(self.table.pocket_radius) * self.pixels_per_metre):
+            _aa_disc(surface, (14, 14, 14), c, r)
+            _aa_disc(surface, C.POCKET, c, r - max(1.0, 0.08 * r))
+
+    def _paint_sights(self, surface: pygame.Surface) -> None:
+        """Diamond sights on the rails (thirds between pockets) and the head and foot spots on the cloth."""
+        L, W = self.length, self.width
+        mid = CUSHION_WIDTH + RAIL_WIDTH * 0.5
+        ax, ac = DIAMOND_HALF
+        marks = [((L * k / 8, -mid), True) for k in (1, 2, 3, 5, 6, 7)]
+        marks += [((L * k / 8, W + mid), True) for k in (1, 2, 3, 5, 6, 7)]
+        marks += [((-mid, W * k / 4), False) for k in (1, 2, 3)] + [((L + mid, W * k / 4), False) for k in (1, 2, 3)]
+        for (x, y), horizontal in marks:
+            da, dc = (np.array([ax, 0.0]), np.array([0.0, ac])) if horizontal else (np.array([0.0, ax]),
+                                                                                    np.array([ac, 0.0]))
+            p = np.array([x, y])
+            pts = self.to_pixels_float(np.array([p + da, p + dc, p - da, p - dc])).tolist()
+            pygame.draw.polygon(surface, C.DIAMOND, pts)
+            pygame.draw.aalines(surface, C.DIAMOND, True, pts)
+        spot = _mix(C.CLOTH, (0, 0, 0), 0.25)
+        for x in (L * 0.25, L * 0.75):
+            _aa_disc(surface, spot, self.to_pixels_float(np.array([x, W / 2]))[0], SPOT_RADIUS * self.pixels_per_metre)
+
+    def _paint_tray(self, surface: pygame.Surface) -> None:
+        """A dark channel below the table that holds pocketed balls."""
+        top, h = self.table_height_px, self.tray_height_px
+        inset = max(2, h // 8)
+        rect = pygame.Rect(inset, top + inset, self.width_px - 2 * inset, h - 2 * inset)
+        pygame.draw.rect(surface, C.TRAY, rect, border_radius=max(2, rect.h // 2))
+        pygame.draw.rect(surface, _mix(C.TRAY, (0, 0, 0), 0.5), rect, width=1, border_radius=max(2, rect.h // 2))
+
+
+# --- sprites (pure numpy, cached by the renderer) -------------------------------------------------------------
+def ball_rgba(number: int, radius_px: float, supersample: int = SUPERSAMPLE) -> np.ndarray:
+    """A shaded, anti-aliased ``(S, S, 4) uint8`` sprite of ball ``number``; the ball's centre is pixel ``S//2``.
+
+    Shading (rim darkening, a highlight to the top left) and the number disc stay outside a central core,
+    so the centre pixel is the ball's main colour exactly (also enforced for tiny radii).
+    """
+    half = int(math.ceil(radius_px)) + 1
+    size = 2 * half + 1
+    coords = (np.arange(size * supersample) + 0.5) / supersample - (half + 0.5)
+    v, u = np.meshgrid(coords / radius_px, coords / radius_px, indexing="ij")  # u right, v down, in radii
+    r2 = u * u + v * v
+    inside = r2 <= 1.0
+    nz = np.sqrt(np.clip(1.0 - r2, 0.0, 1.0))
+    normal = np.stack([u, v, nz], axis=-1)
+    colour = _ball_albedo(number, normal)
+    colour = _shade(colour, u, v, np.sqrt(r2))
+    w = inside.astype(float)
+    block = (size, supersample, size, supersample)
+    cover = w.reshape(block).mean(axis=(1, 3))
+    summed = (colour * w[..., None]).reshape(block + (3,)).sum(axis=(1, 3))
+    rgb = summed / np.maximum(cover * supersample * supersample, 1e-9)[..., None]
+    rgba = np.dstack([np.clip(np.rint(rgb), 0, 255), np.rint(cover * 255)]).astype(np.uint8)
+    rgba[half, half] = (*C.ball_colour(number), 255)
+    return rgba
+
+
+def _ball_albedo(number: int, normal: np.ndarray) -> np.ndarray:
+    """Surface colour at each sample's normal: body, stripe band, number disc and printed number."""
+    main = np.array(C.ball_colour(number), dtype=float)
+    shape = normal.shape[:-1]
+    if number == 0:
+        return np.broadcast_to(np.array(C.CUE_BALL, dtype=float), shape + (3,)).copy()
+    phi = number * GOLDEN_ANGLE + 0.35
+    toward = np.array([math.cos(phi), math.sin(phi), 0.0])  # screen direction the disc is turned to
+    disc_dir = np.array([toward[0] * math.sin(DISC_TILT), toward[1] * math.sin(DISC_TILT), math.cos(DISC_TILT)])
+    if C.is_stripe(number):
+        band_axis = np.array([-toward[1], toward[0], 0.0])  # band runs through the centre and the disc
+        in_band = np.abs(normal @ band_axis) < math.sin(STRIPE_HALF_ANGLE)
+        colour = np.where(in_band[..., None], main, np.array(C.STRIPE_WHITE, dtype=float))
+    else:
+        colour = np.broadcast_to(main, shape + (3,)).copy()
+    in_disc = normal @ disc_dir > math.cos(DISC_ANGLE)
+    colour[in_disc] = C.NUMBER_DISC
+    ink = _number_ink(number, normal, disc_dir) * in_disc
+    return colour * (1.0 - ink[..., None]) + np.array(C.NUMBER_INK, dtype=float) * ink[..., None]
+
+
+def _number_ink(number: int, normal: np.ndarray, disc_dir: np.ndarray) -> np.ndarray:
+    """Ink coverage 0..1 of the printed number, mapped onto the (tilted) disc so it foreshortens with it."""
+    glyph = _glyph(str(number))
+    gh, gw = glyph.shape
+    e1 = np.array([1.0, 0.0, 0.0]) - disc_dir[0] * disc_dir  # screen-right projected onto the disc plane
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(disc_dir, e1)  # points screen-down, like glyph rows
+    disc_r = math.sin(DISC_ANGLE)
+    scale = min(1.10 * disc_r / gh, 1.45 * disc_r / gw)  # sphere units per glyph pixel
+    col = np.floor(normal @ e1 / scale + gw / 2.0).astype(int)
+    row = np.floor(normal @ e2 / scale + gh / 2.0).astype(int)
+    ok = (col >= 0) & (col < gw) & (row >= 0) & (row < gh)
+    ink = np.zeros(normal.shape[:-1])
+    ink[ok] = glyph[row[ok], col[ok]]
+    return ink
+
+
+_GLYPHS: dict[str, np.ndarray] = {}
+
+
+def _glyph(text: str) -> np.ndarray:
+    """High-resolution ink mask (rows, cols) in 0..1 of ``text`` in pygame's default bold font, cropped."""
+    if text not in _GLYPHS:
+        if not pygame.font.get_init():
+            pygame.font.init()
+        surf = pygame.font.Font(None, 120).render(text, True, (255, 255, 255))
+        alpha = pygame.surfarray.array_alpha(surf).T.astype(float) / 255.0
+        rows, cols = np.flatnonzero(alpha.any(axis=1)), np.flatnonzero(alpha.any(axis=0))
+        _GLYPHS[text] = alpha[rows[0]:rows[-1] + 1, cols[0]:cols[-1] + 1]
+    return _GLYPHS[text]
+
+
+def _shade(colour: np.ndarray, u: np.ndarray, v: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """Sphere shading that leaves the core (r < FLAT_CORE) untouched: rim darkening, a darker lower-right
+    side, a soft specular highlight at the top left and a faint cloth-green bounce light on the lower rim."""
+    rim = _smoothstep(FLAT_CORE, 1.02, r)
+    away = np.clip((u + v) * 0.7071, 0.0, 1.0)  # toward the lower right, away from the light
+    shade = 1.0 - 0.30 * rim**1.6 - 0.22 * rim * away
+    out = colour * shade[..., None]
+    bounce = (rim**3 * away * 0.10)[..., None]
+    out = out * (1.0 - bounce) + np.array(C.CLOTH, dtype=float) * bounce
+    hx, hy = HIGHLIGHT_AT
+    spec = np.exp(-((u - hx) ** 2 + (v - hy) ** 2) / (2.0 * HIGHLIGHT_SIGMA**2))
+    spec = np.where(r < FLAT_CORE * 0.6, 0.0, spec)  # the core keeps the main colour
+    return out + (255.0 - out) * (0.85 * spec)[..., None]
+
+
+def _shadow_sprite(radius_px: float) -> tuple[pygame.Surface, int]:
+    """Soft translucent black disc (the ball's shadow on the cloth) and its centre offset."""
+    half = int(math.ceil(radius_px * 1.35)) + 1
+    yy, xx = np.mgrid[-half:half + 1, -half:half + 1].astype(float)
+    d = np.hypot(xx, yy) / radius_px
+    alpha = 105.0 * (1.0 - _smoothstep(0.55, 1.25, d))
+    rgba = np.zeros(d.shape + (4,), np.uint8)
+    rgba[..., 3] = np.rint(alpha).astype(np.uint8)
+    return _surface_from_rgba(rgba), half
+
+
+def surface_to_array(surface: pygame.Surface) -> np.ndarray:
+    """A surface's pixels as a contiguous ``(H, W, 3) uint8`` array.
+
+    Same values as ``surfarray.array3d(surface).transpose(1, 0, 2)``, but read row-major in one copy,
+    which is several times faster for full frames.
+    """
+    w, h = surface.get_size()
+    return np.frombuffer(pygame.image.tobytes(surface, "RGB"), dtype=np.uint8).reshape(h, w, 3).copy()
+
+
+# --- small drawing helpers -------------------------------------------------------------------------------
+def _aa_disc(surface: pygame.Surface, colour: tuple[int, int, int], centre: np.ndarray, radius: float) -> None:
+    """An anti-aliased filled circle at a sub-pixel centre (coverage computed by supersampling)."""
+    if radius <= 0:
+        return
+    x0, y0 = int(math.floor(centre[0] - radius)) - 1, int(math.floor(centre[1] - radius)) - 1
+    n_x, n_y = int(math.ceil(radius * 2)) + 3, int(math.ceil(radius * 2)) + 3
+    ss = 4
+    ys = y0 + (np.arange(n_y * ss) + 0.5) / ss - 0.5 - centre[1]
+    xs = x0 + (np.arange(n_x * ss) + 0.5) / ss - 0.5 - centre[0]
+    inside = (ys[:, None] ** 2 + xs[None, :] ** 2) <= radius * radius
+    cover = inside.reshape(n_y, ss, n_x, ss).mean(axis=(1, 3))
+    rgba = np.zeros((n_y, n_x, 4), np.uint8)
+    rgba[..., :3] = colour
+    rgba[..., 3] = np.rint(cover * 255).astype(np.uint8)
+    surface.blit(_surface_from_rgba(rgba), (x0, y0))
+
+
+def _cylinder_quad(
+    surface: pygame.Surface, a: np.ndarray, b: np.ndarray, w0: float, w1: float, lit: np.ndarray,
+    colour: tuple[int, int, int],
+) -> None:
+    """One cue segment from ``a`` to ``b`` (half-widths ``w0``, ``w1`` px) shaded as a lit cylinder."""
+    bands = ((-1.0, 1.0, 1.0), (-1.0, -0.45, 0.72), (0.15, 0.62, 1.22), (0.28, 0.45, 1.38))
+    for lo, hi, gain in bands:
+        pts = [a + lit * w0 * lo, b + lit * w1 * lo, b + lit * w1 * hi, a + lit * w0 * hi]
+        c = tuple(int(min(255, round(ch * gain))) for ch in colour)
+        flat = [p.tolist() for p in pts]
+        pygame.draw.polygon(surface, c, flat)
+        if lo == -1.0 and hi == 1.0:
+            pygame.draw.aalines(surface, c, True, flat)
+
+
+def _ray_to_box(x: float, y: float, angle: float, x0: float, x1: float, y0: float, y1: float) -> float:
+    """Distance along direction ``angle`` from ``(x, y)`` to the boundary of the box (0 if outside it)."""
+    dx, dy = math.cos(angle), math.sin(angle)
+    best = math.inf
+    for p, d, lo, hi in ((x, dx, x0, x1), (y, dy, y0, y1)):
+        if abs(d) > 1e-12:
+            t = ((hi if d > 0 else lo) - p) / d
+            best = min(best, t)
+    return max(0.0, best) if math.isfinite(best) else 0.0
+
+
+def _rounded_rect_coverage(xx: np.ndarray, yy: np.ndarray, w: float, h: float, radius: float) -> np.ndarray:
+    """Approximate pixel coverage (0..1) of a ``w`` x ``h`` rectangle with rounded corners."""
+    cx = np.clip(xx, radius, w - radius)
+    cy = np.clip(yy, radius, h - radius)
+    dist = np.hypot(xx - cx, yy - cy)
+    return np.clip(radius - dist + 0.5, 0.0, 1.0)
+
+
+def _smoothstep(edge0: float, edge1: float, x: np.ndarray) -> np.ndarray:
+    t = np.clip((x - edge0) / (edge1 - edge0), 0.0, 1.0)
+    return t * t * (3.0 - 2.0 * t)
+
+
+def _mix(a: tuple[int, int, int], b: tuple[int, int, int], t: float) -> tuple[int, int, int]:
+    """Colour ``a`` moved a fraction ``t`` toward ``b``."""
+    return tuple(int(round(x + (y - x) * t)) for x, y in zip(a, b))  # type: ignore[return-value]
+
+
+def _scale(colour: tuple[int, int, int], gain: float) -> tuple[int, int, int]:
+    """Colour brightened (gain > 1) or darkened (gain < 1), clipped to 0-255."""
+    return tuple(int(min(255, max(0, round(c * gain)))) for c in colour)  # type: ignore[return-value]
+
+
+def _radius_key(radius_px: float) -> int:
+    """Cache key of a pixel radius: tenths of a pixel."""
+    return max(1, int(round(radius_px * 10)))
+
+
+def _surface_from_rgba(rgba: np.ndarray) -> pygame.Surface:
+    """A per-pixel-alpha surface from an ``(H, W, 4) uint8`` array (no display needed)."""
+    h, w = rgba.shape[:2]
+    return pygame.image.frombuffer(np.ascontiguousarray(rgba).tobytes(), (w, h), "RGBA").copy()
