@@ -5,7 +5,7 @@ separation speed ``e * v_close``; tangential components are kept. With masses ``
 ``mu = m1 m2 / (m1 + m2)`` the impulse is ``J = mu (1 + e) v_close``: momentum is conserved exactly
 and kinetic energy drops by ``mu (1 - e^2) v_close^2 / 2`` (none at ``e = 1``).
 
-Inelastic-collapse guard (rolling friction only): after an oblique inelastic hit the two balls
+Inelastic-collapse guard (rolling friction with ``mu_roll > 0`` only): after an oblique inelastic hit the two balls
 decelerate along different directions and can close on each other again at once, which with
 ``e -> 0`` means endless zero-speed contacts. When the separation speed would be below
 ``speed_floor`` and their decelerations close the gap, the pair separates at
@@ -18,15 +18,15 @@ import math
 
 from numba import njit
 
-from .motion import ROLLING
 
 
 @njit(cache=True)
 def resolve_ball_ball(
-    vel, i: int, j: int, nx: float, ny: float, mi: float, mj: float, e: float, law: int, speed_floor: float
+    vel, i: int, j: int, nx: float, ny: float, mi: float, mj: float, e: float, decel: float, speed_floor: float
 ) -> float:
     """Apply the ball-ball impulse to ``vel[i]``, ``vel[j]`` for unit normal ``n`` (from j to i).
 
+    ``decel`` is the rolling deceleration (0 under drag or without friction: no guard needed).
     Returns the closing speed before the hit (0 and no change if the pair is not closing).
     """
     rvx = vel[i, 0] - vel[j, 0]
@@ -36,7 +36,7 @@ def resolve_ball_ball(
         return 0.0
     v_sep = e * v_close
     mu = mi * mj / (mi + mj)
-    if law == ROLLING and v_sep < speed_floor and e < 1.0:
+    if decel > 0.0 and v_sep < speed_floor and e < 1.0:
         # Would the decelerations (along each ball's new direction) close the gap again?
         j_imp = mu * (v_close + v_sep)
         uix = vel[i, 0] + j_imp / mi * nx

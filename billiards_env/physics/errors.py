@@ -13,7 +13,10 @@ def check_number(name: str, value: object) -> float:
     """``value`` as a float, or a SceneError naming ``name`` if it is not a real number."""
     if isinstance(value, bool) or not isinstance(value, Real):
         raise SceneError(f"{name}: expected a number, got {type(value).__name__} {value!r}")
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:
+        raise SceneError(f"{name}: must be a finite number, got an integer too large for a float") from None
 
 
 def check_finite(name: str, value: object) -> float:

@@ -327,7 +327,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
             dy = p0[bi, 1] - p0[bj, 1]
             dist = math.hypot(dx, dy)
             if dist > 0.0:
-                speed = resolve_ball_ball(v0, bi, bj, dx / dist, dy / dist, mass[bi], mass[bj], e_b, law, floor)
+                speed = resolve_ball_ball(v0, bi, bj, dx / dist, dy / dist, mass[bi], mass[bj], e_b, a, floor)
             _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
             _set_stop_time(bj, t0, v0, tstop, law, a, k, v_min)
             involved[1] = bj

@@ -71,9 +71,11 @@ class Scene:
         """Read a scene from a JSON (or YAML, by extension) file."""
         p = Path(path)
         try:
-            text = p.read_text()
+            text = p.read_text(encoding="utf-8")
         except OSError as exc:
             raise SceneError(f"{path}: cannot read the scene file ({exc.strerror})") from None
+        except UnicodeDecodeError:
+            raise SceneError(f"{path}: not UTF-8 text; save the scene as UTF-8 JSON or YAML") from None
         if p.suffix.lower() in (".yaml", ".yml"):
             import yaml
 
@@ -86,6 +88,8 @@ class Scene:
                 data = json.loads(text)
             except json.JSONDecodeError as exc:
                 raise SceneError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno} column {exc.colno}") from None
+            except ValueError as exc:  # e.g. an integer literal longer than Python's digit limit
+                raise SceneError(f"{path}: not valid JSON: {exc}") from None
         return cls.from_dict(data)
 
     @classmethod
