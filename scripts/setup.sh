@@ -16,4 +16,4 @@ if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
   echo "$want" > "$stamp"
 fi
 # Compile the physics kernels into numba's cache now, so the first shot a user runs is fast.
-.venv/bin/python -m billiards_env.physics.warmup
+.venv/bin/python -m billiards_env.warmup

@@ -79,6 +79,23 @@ class Simulator:
     def name(self) -> str:
         return "exact" if self.solver == "exact" else f"step-{self.contact}"
 
+    def run_in_place(self, balls: Balls) -> tuple[str, float, int, np.ndarray, np.ndarray]:
+        """The hot path for RL: simulate ``balls`` in place (its ``pos``/``vel``/``on_table`` arrays become the
+        final state; they must be C-contiguous float64/bool arrays) with no validation, copies or result objects.
+
+        Returns ``(status, time, n_events, pocket (N,), events (M, 3) int: kind, ball, other)``.
+        """
+        if self.solver != "exact":
+            res = self.run(balls, validate=False)
+            balls.pos[...] = res.balls.pos
+            balls.vel[...] = res.balls.vel
+            balls.on_table[...] = res.balls.on_table
+            ev = res.events
+            return res.status, res.time, res.n_events, res.pocket, np.stack([ev.kind, ev.ball, ev.other], axis=1)
+        out = simulate_exact(balls.pos, balls.vel, balls.radius, balls.mass, balls.on_table, self._pocket_xy,
+                             self._pocket_r, self._prm, self.max_events, False)
+        return STATUS_NAMES[out[0]], out[1], out[2], out[3], out[6]
+
     def run(self, balls: Balls, record: bool = False, validate: bool = True) -> ShotResult:
         """Simulate from ``balls`` (not modified) until rest or a cap. ``record`` keeps the trajectory."""
         if validate:

@@ -1,0 +1,524 @@
+"""The shared machinery of the billiards environments: configuration, action mapping, ball placement, the shot,
+observation, reward, episode end, info and rendering hooks. Each registered id is a small subclass that names
+its packaged scene (``scene``) and documents itself (see :mod:`.one_ball`, :mod:`.three_balls`, :mod:`.rack`).
+
+Layers (as in panda-gym): the physics (:mod:`billiards_env.physics`: table, balls, simulator) knows nothing of
+Gymnasium; this module turns actions into shots and shot results into observations and rewards; drawing is
+delegated to :mod:`billiards_env.render`, imported only when a render mode is set (training needs no display).
+
+Speed: ``step`` runs the compiled exact solver on the live ball arrays in place (no validation, no copies, no
+result objects), the same kernel ``Simulator.run`` calls; the placements that ``reset`` draws are valid by
+construction, and scenes given through ``reset(options=...)`` are validated there.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Callable, ClassVar, Sequence
+
+import gymnasium as gym
+import numpy as np
+from gymnasium import spaces
+
+from billiards_env.physics.balls import Balls, validate_balls
+from billiards_env.physics.errors import SceneError
+from billiards_env.physics.model import Physics
+from billiards_env.physics.rack import RACK_ORDER, triangle_positions
+from billiards_env.physics.simulate import Simulator
+from billiards_env.physics.table import Table, default_pockets
+
+from ._kernels import observation
+from .config import ConfigError, EnvConfig, _rack_rows, load_config
+
+RENDER_MODES = ["human", "rgb_array", "rgb_array_list"]
+#: Candidate points drawn per batch by the random placement (one ``np_random`` call per batch).
+_PLACE_BATCH = 8
+#: Batches tried per ball before the placement gives up (the config is then infeasible).
+_PLACE_TRIES = 500
+_TWO_PI = 2.0 * math.pi
+_EV_COLLISION = 0
+
+
+class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
+    """Base class of the billiards environments (see the subclasses for each id's manual).
+
+    Constructor: ``BilliardsEnv(render_mode=None, config=None, **overrides)``; ``config`` is a YAML path, a
+    mapping or an :class:`~billiards_env.envs.config.EnvConfig` layered over the class's packaged scene, and
+    ``overrides`` are config keys (see :mod:`billiards_env.envs.config`).
+
+    Live state for players and tools: ``balls`` (a :class:`~billiards_env.physics.Balls`, updated IN PLACE by
+    every shot: ``copy()`` it to keep a snapshot), ``table``, ``physics``, ``simulator`` (to try shots:
+    ``simulator.run(balls.strike(0, angle, speed), validate=False)``), ``config``, ``shots`` (shots taken in
+    this episode), ``last_shot`` (``(x, y, angle, speed)`` of the last shot or None).
+    """
+
+    metadata: ClassVar[dict[str, Any]] = {"render_modes": RENDER_MODES, "render_fps": 30}
+    #: Packaged scene file (``billiards_env/envs/scenes/<scene>.yaml``) holding this id's defaults.
+    scene: ClassVar[str | None] = None
+    #: Registered id (for window titles and messages).
+    env_id: ClassVar[str] = "Billiards"
+
+    def __init__(self, render_mode: str | None = None, config: Any = None, **overrides: Any) -> None:
+        if render_mode is not None and render_mode not in RENDER_MODES:
+            raise ValueError(f"render_mode: unknown mode {render_mode!r}; use one of {RENDER_MODES} or None")
+        self.config: EnvConfig = load_config(self.scene, config, **overrides)
+        c = self.config
+        self.render_mode = render_mode
+        self.metadata = {**type(self).metadata, "render_fps": c.render_fps}
+
+        xy, r = default_pockets(c.table_length, c.table_width, c.corner_pocket_radius, c.side_pocket_radius)
+        self.table = Table(c.table_length, c.table_width, c.cushion_restitution, xy, r)
+        self.physics = Physics(friction=c.friction, mu_roll=c.mu_roll, drag_k=c.drag_k, min_speed=c.min_speed,
+                               ball_restitution=c.ball_restitution)
+        self.simulator = Simulator(self.table, self.physics, solver=c.solver, max_time=c.max_time,
+                                   max_events=c.max_events)
+
+        n = c.n_object_balls + 1
+        self.n_balls = n
+        self.ball_ids: tuple[str, ...] = ("cue",) + tuple(str(k) for k in range(1, n))
+        #: Ball number of each row for drawing (0 = cue ball).
+        self.ball_numbers: tuple[int, ...] = tuple(range(n))
+        self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
+        self.observation_space = spaces.Box(0.0, 1.0, shape=(3 * n,), dtype=np.float32)
+
+        # Live state: one Balls object whose arrays the kernel updates in place.
+        self.balls = Balls.from_positions(np.zeros((n, 2)), ids=self.ball_ids, radius=c.ball_radius,
+                                          mass=c.ball_mass)
+        self.shots = 0
+        self.last_shot: tuple[float, float, float, float] | None = None
+        self._needs_reset = True
+
+        # Fast path: Simulator.run_in_place on the live arrays (exact solver, no copies, no result objects).
+        self._fast = c.solver == "exact"
+        self._sx = 1.0 / c.table_length
+        self._sy = 1.0 / c.table_width
+        self._pockets = [(float(px), float(py)) for px, py in self.table.pocket_xy]
+        self._head_spot = (0.25 * c.table_length, 0.5 * c.table_width)
+        self._speed_lo = float(c.speed_min)
+        self._speed_span = float(c.speed_max - c.speed_min)
+        self._relative = c.aim == "relative"
+
+        # Fixed part of the starting layout (rack and/or head-spot cue), checked once here.
+        self._fixed_rows, self._fixed_xy = self._fixed_layout()
+        self._fixed_points = [(float(x), float(y)) for x, y in self._fixed_xy]
+        self._random_rows = [i for i in range(n) if i not in self._fixed_rows]
+        self._regions = {i: self._region(i) for i in self._random_rows}
+        self._pocket_margin2 = c.pocket_margin ** 2
+        self._min_dist2 = (2.0 * c.ball_radius + c.ball_gap) ** 2
+        self._check_layout()
+
+        # Rendering (created lazily: pygame is imported only when something is drawn).
+        self._record = render_mode in ("human", "rgb_array_list")
+        self._renderer: Any = None
+        self._window: Any = None
+        self._frames: list[np.ndarray] = []
+
+    # ======================================================================================================
+    # Gymnasium API
+    # ======================================================================================================
+    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None
+              ) -> tuple[np.ndarray, dict[str, Any]]:
+        """Start an episode. ``options`` may set the scene: ``{"positions": (N,2) metres}`` (rows: cue, 1..n)
+        with an optional ``"pocketed": (N,) bool`` (object balls already off the table); it is validated."""
+        super().reset(seed=seed)
+        b = self.balls
+        b.vel.fill(0.0)
+        b.on_table.fill(True)
+        if options:
+            self._set_positions(options)
+        else:
+            self._place(self.np_random, b.pos)
+        self.shots = 0
+        self.last_shot = None
+        self._needs_reset = False
+        if self.render_mode == "rgb_array_list":
+            self._frames = [self._draw_state()]
+        elif self.render_mode == "human":
+            self._show(None)
+        return self._obs(), {}
+
+    def step(self, action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
+        """Strike the cue ball with ``action``, simulate until every ball is at rest, score the shot."""
+        if self._needs_reset:
+            raise gym.error.ResetNeeded("call reset() before step(): the table has no balls yet")
+        angle, speed = self.shot_from_action(action)
+        rng = self.np_random
+        c = self.config
+        if c.angle_noise > 0.0:
+            angle += float(rng.normal(0.0, c.angle_noise))
+        if c.speed_noise > 0.0:
+            speed *= max(0.0, 1.0 + float(rng.normal(0.0, c.speed_noise)))
+        b = self.balls
+        x0, y0 = float(b.pos[0, 0]), float(b.pos[0, 1])
+        b.vel[0, 0] = speed * math.cos(angle)
+        b.vel[0, 1] = speed * math.sin(angle)
+        self.last_shot = (x0, y0, angle, speed)
+
+        trajectory = None
+        if self._fast and not self._record:
+            status, sim_time, n_events, pocket_of, ev_int = self.simulator.run_in_place(b)
+        else:
+            res = self.simulator.run(b, record=self._record, validate=False)
+            fb = res.balls
+            b.pos[...] = fb.pos
+            b.on_table[...] = fb.on_table
+            status, sim_time, n_events, pocket_of = res.status, res.time, res.n_events, res.pocket
+            ev = res.events
+            ev_int = np.stack([ev.kind, ev.ball, ev.other], axis=1) if len(ev) else np.zeros((0, 3), np.int64)
+            trajectory = res.trajectory
+        b.vel.fill(0.0)  # at rest (a capped shot is stopped where it is)
+        self.shots += 1
+
+        pocketed_rows = [i for i, p in enumerate(pocket_of.tolist()) if p >= 0]
+        scratch = bool(pocket_of[0] >= 0)
+        first = _first_contact(ev_int)
+        if scratch:
+            self._respot_cue()
+        n_potted = len(pocketed_rows) - (1 if scratch else 0)
+        cleared = not b.on_table[1:].any()
+
+        reward = self._reward(n_potted, scratch, first)
+        terminated = bool(cleared or c.single_shot)
+        truncated = bool(not terminated and self.shots >= c.max_shots)
+        ids = self.ball_ids
+        info = {
+            "is_success": bool(cleared and not scratch),
+            "pocketed": tuple(ids[i] for i in pocketed_rows),
+            "scratch": scratch,
+            "first_contact": ids[first] if first >= 0 else None,
+            "n_events": int(n_events),
+            "sim_time": float(sim_time),
+            "status": status,
+            "shots": self.shots,
+            "angle": angle,
+            "speed": speed,
+        }
+        if self._record:
+            self._animate(trajectory)
+        return self._obs(), reward, terminated, truncated, info
+
+    def render(self) -> np.ndarray | list[np.ndarray] | None:
+        """``rgb_array``: the table now, ``(H, W, 3) uint8`` (the last shot's cue line drawn).
+        ``rgb_array_list``: the frames since the last ``render``/``reset`` (every shot animated), then cleared.
+        ``human``: shows the table now in the window (shots animate during ``step``); returns None."""
+        if self.render_mode is None:
+            gym.logger.warn("render() called without a render_mode; make the env with render_mode='rgb_array', "
+                            "'rgb_array_list' or 'human'")
+            return None
+        if self.render_mode == "rgb_array":
+            return self._draw_state()
+        if self.render_mode == "rgb_array_list":
+            frames, self._frames = self._frames, []
+            return frames
+        self._show(None)
+        return None
+
+    def close(self) -> None:
+        if self._window is not None:
+            self._window.close()
+            self._window = None
+        self._renderer = None
+        self._frames = []
+
+    # ======================================================================================================
+    # Actions
+    # ======================================================================================================
+    def shot_from_action(self, action: Any) -> tuple[float, float]:
+        """The ``(angle rad, speed m/s)`` an action means now (no noise). NaN/inf raise ValueError; finite
+        values outside [-1, 1] are clipped."""
+        try:
+            a0, a1 = np.asarray(action, dtype=np.float64).reshape(-1).tolist()
+        except (ValueError, TypeError):
+            raise ValueError(f"action: expected 2 numbers (angle, speed) in [-1, 1], got {action!r}") from None
+        if not (math.isfinite(a0) and math.isfinite(a1)):
+            raise ValueError(f"action: must be finite numbers, got {[a0, a1]}; check the policy's output for "
+                             "NaN/inf")
+        a0 = -1.0 if a0 < -1.0 else (1.0 if a0 > 1.0 else a0)
+        a1 = -1.0 if a1 < -1.0 else (1.0 if a1 > 1.0 else a1)
+        angle = math.pi * a0
+        if self._relative:
+            angle += self._aim_base()
+        return angle, self._speed_lo + 0.5 * (a1 + 1.0) * self._speed_span
+
+    def action_from_shot(self, angle: float, speed: float) -> np.ndarray:
+        """The action that strikes the cue ball at ``angle`` (rad, 0 = +x, CCW) and ``speed`` (m/s) in the
+        active aim mode (inverse of :meth:`shot_from_action`). Speeds outside [speed_min, speed_max] clip."""
+        for name, v in (("angle", angle), ("speed", speed)):
+            if not math.isfinite(float(v)):
+                raise ValueError(f"action_from_shot: {name} must be finite, got {v!r}")
+        base = self._aim_base() if self._relative else 0.0
+        d = (float(angle) - base + math.pi) % _TWO_PI - math.pi  # in [-pi, pi)
+        a1 = 2.0 * (float(speed) - self._speed_lo) / self._speed_span - 1.0
+        return np.array([d / math.pi, min(1.0, max(-1.0, a1))], dtype=np.float32)
+
+    def target_ball(self) -> int | None:
+        """Row of the lowest-numbered object ball on the table (the relative-aim target), or None."""
+        on = self.balls.on_table
+        for i in range(1, self.n_balls):
+            if on[i]:
+                return i
+        return None
+
+    def _aim_base(self) -> float:
+        t = self.target_ball()
+        if t is None:
+            return 0.0
+        p = self.balls.pos
+        return math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0])
+
+    # ======================================================================================================
+    # Observation, reward (hooks a subclass may override)
+    # ======================================================================================================
+    def _obs(self) -> np.ndarray:
+        b = self.balls
+        return observation(b.pos, b.on_table, self._sx, self._sy)
+
+    def _reward(self, n_potted: int, scratch: bool, first_contact: int) -> float:
+        c = self.config
+        r = c.pot_reward * n_potted - c.step_penalty
+        if scratch:
+            r -= c.scratch_penalty
+        if first_contact < 0:
+            r -= c.miss_penalty
+        return float(r)
+
+    # ======================================================================================================
+    # Placement
+    # ======================================================================================================
+    def _fixed_layout(self) -> tuple[list[int], np.ndarray]:
+        """Rows placed at fixed points every reset (the rack, a head-spot cue) and their positions."""
+        c = self.config
+        rows: list[int] = []
+        pts: list[tuple[float, float]] = []
+        if c.cue_placement == "head_spot":
+            rows.append(0)
+            pts.append(self._head_spot)
+        if c.placement == "rack":
+            m = c.n_object_balls
+            apex = (0.75 * c.table_length, 0.5 * c.table_width)
+            tri = triangle_positions(apex, c.ball_radius, rows=_rack_rows(m), gap=c.rack_gap)
+            order = RACK_ORDER if m == len(RACK_ORDER) else tuple(range(1, m + 1))
+            for slot, number in enumerate(order):
+                rows.append(number)
+                pts.append((float(tri[slot, 0]), float(tri[slot, 1])))
+        return rows, np.array(pts, dtype=float).reshape(-1, 2)
+
+    def _check_layout(self) -> None:
+        """Validate the fixed layout and make sure the random placement can succeed (raise at make time)."""
+        c = self.config
+        if c.placement == "random" and c.pocket_margin <= max(c.corner_pocket_radius, c.side_pocket_radius):
+            raise ConfigError(f"pocket_margin: {c.pocket_margin} m would let a ball start inside a pocket's "
+                             f"capture radius; use more than {max(c.corner_pocket_radius, c.side_pocket_radius)}")
+        trial = self.balls.copy()
+        self._place(np.random.default_rng(0), trial.pos)
+        try:
+            validate_balls(trial, self.table)
+        except SceneError as exc:
+            raise ConfigError(f"starting layout of {self.env_id}: {exc}") from None
+
+    def _region(self, row: int) -> tuple[float, float, float, float]:
+        """Random-placement region of ``row`` as ``(x0, x_span, y0, y_span)``."""
+        c = self.config
+        m = c.ball_radius + c.cushion_margin
+        x1 = c.table_length - m
+        if row == 0 and c.cue_placement == "kitchen":
+            x1 = 0.25 * c.table_length
+        return m, x1 - m, m, c.table_width - 2.0 * m
+
+    def _place(self, rng: np.random.Generator, pos: np.ndarray) -> None:
+        """Fill ``pos`` with a starting layout: fixed rows, then each random row uniformly in its region,
+        rejecting points near a pocket or another ball. All draws come from ``rng``: one call for a first batch
+        of candidates for every random ball, more only when a ball rejects its whole batch."""
+        if self._fixed_rows:
+            pos[self._fixed_rows] = self._fixed_xy
+        placed = list(self._fixed_points)
+        rows = self._random_rows
+        if not rows:
+            return
+        pm2 = self._pocket_margin2
+        d2 = self._min_dist2
+        pockets = self._pockets
+        first = rng.random(2 * _PLACE_BATCH * len(rows)).tolist()
+        for m, row in enumerate(rows):
+            x0, sx, y0, sy = self._regions[row]
+            u = first[2 * _PLACE_BATCH * m: 2 * _PLACE_BATCH * (m + 1)]
+            for attempt in range(_PLACE_TRIES):
+                if attempt:
+                    u = rng.random(2 * _PLACE_BATCH).tolist()
+                for k in range(0, 2 * _PLACE_BATCH, 2):
+                    x = x0 + sx * u[k]
+                    y = y0 + sy * u[k + 1]
+                    ok = True
+                    for px, py in pockets:
+                        if (x - px) * (x - px) + (y - py) * (y - py) < pm2:
+                            ok = False
+                            break
+                    if ok:
+                        for qx, qy in placed:
+                            if (x - qx) * (x - qx) + (y - qy) * (y - qy) < d2:
+                                ok = False
+                                break
+                    if ok:
+                        break
+                else:
+                    continue
+                break
+            else:
+                raise ConfigError(
+                    f"{self.env_id}: could not place ball {self.ball_ids[row]!r} at random after "
+                    f"{_PLACE_TRIES * _PLACE_BATCH} tries; lower n_object_balls, pocket_margin, ball_gap or "
+                    "cushion_margin")
+            pos[row, 0] = x
+            pos[row, 1] = y
+            placed.append((x, y))
+
+    def _set_positions(self, options: dict[str, Any]) -> None:
+        b = self.balls
+        unknown = sorted(set(options) - {"positions", "pocketed"})
+        if unknown:
+            raise ValueError(f"reset options: unknown key(s) {unknown}; allowed: 'positions' ((N,2) metres, rows "
+                             "cue, 1..n) and 'pocketed' ((N,) bool)")
+        if "positions" in options:
+            p = np.asarray(options["positions"], dtype=float)
+            if p.shape != (self.n_balls, 2):
+                raise ValueError(f"reset options['positions']: expected shape ({self.n_balls}, 2) (rows: "
+                                 f"{', '.join(self.ball_ids)}), got {p.shape}")
+            b.pos[...] = p
+        else:
+            self._place(self.np_random, b.pos)
+        if "pocketed" in options:
+            off = np.asarray(options["pocketed"], dtype=bool).reshape(-1)
+            if off.shape != (self.n_balls,) or off[0]:
+                raise ValueError(f"reset options['pocketed']: expected {self.n_balls} booleans with the cue ball "
+                                 "(first) on the table")
+            b.on_table[...] = ~off
+        validate_balls(b, self.table)
+
+    def _respot_cue(self) -> None:
+        """Put a pocketed cue ball back: the head spot, or the nearest free point along the head string
+        (x = length/4, searching outwards in y in steps of a quarter radius), or failing that the same search
+        on lines further towards the head cushion."""
+        b = self.balls
+        c = self.config
+        r = c.ball_radius
+        on = b.on_table.tolist()
+        others = [(x, y) for (x, y), o in zip(b.pos.tolist()[1:], on[1:]) if o]
+        need2 = (2.0 * r + 1e-6) ** 2
+        hx, hy = self._head_spot
+        step = r / 4.0
+        k_max = int((0.5 * c.table_width - r) / step)
+        x = hx
+        while x >= r:
+            for k in range(2 * k_max + 1):
+                y = hy + step * ((k + 1) // 2) * (1 if k % 2 else -1)
+                if all((x - qx) * (x - qx) + (y - qy) * (y - qy) >= need2 for qx, qy in others):
+                    b.pos[0, 0] = x
+                    b.pos[0, 1] = y
+                    b.on_table[0] = True
+                    return
+            x -= 2.0 * r
+        raise SceneError("could not re-spot the cue ball: the head of the table is full")  # pragma: no cover
+
+    # ======================================================================================================
+    # Rendering (drawing itself lives in billiards_env.render)
+    # ======================================================================================================
+    @property
+    def renderer(self) -> Any:
+        """The :class:`~billiards_env.render.TableRenderer` drawing this env (created, and pygame imported,
+        on first use); front-ends such as ``billiards-play`` use its pixel mapping (``to_pixels``)."""
+        return self._ensure_renderer()
+
+    def _ensure_renderer(self) -> Any:
+        if self._renderer is None:
+            from billiards_env.render import TableRenderer
+
+            self._renderer = TableRenderer(self.table, self.config.ball_radius, width_px=self.config.render_width)
+        return self._renderer
+
+    def _cue_overlay(self) -> tuple[float, float, float] | None:
+        s = self.last_shot
+        return None if s is None else (s[0], s[1], s[2])
+
+    def _draw_state(self, positions: np.ndarray | None = None, on_table: np.ndarray | None = None,
+                    surface: bool = False) -> Any:
+        """The table with the balls at ``positions`` (default: now), as an array (or a pygame surface)."""
+        r = self._ensure_renderer()
+        pos = self.balls.pos if positions is None else positions
+        on = self.balls.on_table if on_table is None else on_table
+        draw = r.draw if surface else r.render_array
+        return draw(pos, on, self.ball_numbers, cue=self._cue_overlay())
+
+    def animation_times(self, duration: float) -> np.ndarray:
+        """Simulated instants (s) drawn for a shot lasting ``duration`` s: ``frame_times(duration, render_fps)``
+        (with ``render_speedup`` s != 1: ``frame_times(duration / s, render_fps) * s``); the last is ``duration``."""
+        from billiards_env.render import frame_times
+
+        s = self.config.render_speedup
+        if s == 1.0:
+            return frame_times(duration, self.config.render_fps)
+        times = frame_times(duration / s, self.config.render_fps) * s
+        times[-1] = duration
+        return times
+
+    def _animate(self, trajectory: Any) -> None:
+        """Draw the shot just simulated: frames at :meth:`animation_times` of its trajectory, the last one
+        being the state after the shot (cue ball re-spotted if it was pocketed)."""
+        if trajectory is None:  # pragma: no cover - the record path always has one
+            return
+        times = self.animation_times(trajectory.duration)
+        pos, on = trajectory.sample(times[:-1]) if len(times) > 1 else (np.zeros((0, self.n_balls, 2)), None)
+        if self.render_mode == "rgb_array_list":
+            for k in range(len(pos)):
+                self._frames.append(self._draw_state(pos[k], on[k]))
+            self._frames.append(self._draw_state())
+        else:
+            for k in range(len(pos)):
+                if not self._show((pos[k], on[k])):
+                    return
+            self._show(None)
+
+    def _show(self, state: tuple[np.ndarray, np.ndarray] | None) -> bool:
+        """Human mode: show one frame (``state`` or now) at render_fps; False once the user closed the window."""
+        import pygame
+
+        from billiards_env.render import HumanWindow
+
+        r = self._ensure_renderer()
+        w = self._window
+        if w is not None and not pygame.display.get_init():
+            # pygame has one display per process: another window's close() (e.g. a second env) shut it down.
+            try:
+                if w.closed:  # closed by the user (or by us): stays closed
+                    return False
+            except pygame.error:
+                w = None
+        if w is None:
+            w = self._window = HumanWindow(r.size, title=self.env_id)
+        if w.closed:
+            return False
+        surf = self._draw_state(surface=True) if state is None else self._draw_state(state[0], state[1], True)
+        w.show(surf, self.config.render_fps)
+        return True
+
+
+def _first_contact(ev_int: np.ndarray) -> int:
+    """Row of the first ball the cue ball (row 0) collided with, or -1."""
+    for kind, ball, other in ev_int.tolist():
+        if kind == _EV_COLLISION and (ball == 0 or other == 0):
+            return other if ball == 0 else ball
+    return -1
+
+
+def make_policy(policy: Any, env: gym.Env) -> Callable[[np.ndarray], np.ndarray]:
+    """A callable ``obs -> action`` from a callable, an SB3-style model (``predict``), or None (random
+    actions from the env's action space)."""
+    if policy is None:
+        return lambda obs: env.action_space.sample()
+    if hasattr(policy, "predict"):
+        return lambda obs: policy.predict(obs, deterministic=True)[0]
+    if callable(policy):
+        return policy
+    raise TypeError(f"policy: expected a callable obs -> action, a model with predict(), or None; got "
+                    f"{type(policy).__name__}")
+
+
+__all__: Sequence[str] = ["BilliardsEnv", "RENDER_MODES", "make_policy"]
