@@ -4,14 +4,41 @@ The set-up script runs this, so a user's first shot or first ``env.step`` loads 
 """
 from __future__ import annotations
 
+import hashlib
 import time
+from pathlib import Path
 
 from .physics.warmup import warm_up as warm_up_physics
+
+_PACKAGE = Path(__file__).resolve().parent
+_STAMP = _PACKAGE / "__pycache__" / "kernels.sha256"
+
+
+def clear_stale_cache() -> bool:
+    """Delete numba's cached machine code if any package source changed since it was compiled.
+
+    numba keys each cached function on its own file only, so a kernel that calls into another module would
+    otherwise keep stale code after that module changes. Returns True if the cache was cleared.
+    """
+    digest = hashlib.sha256()
+    for path in sorted(_PACKAGE.rglob("*.py")):
+        digest.update(path.relative_to(_PACKAGE).as_posix().encode())
+        digest.update(path.read_bytes())
+    want = digest.hexdigest()
+    if _STAMP.exists() and _STAMP.read_text() == want:
+        return False
+    for pattern in ("*.nbi", "*.nbc"):
+        for f in _PACKAGE.rglob(pattern):
+            f.unlink(missing_ok=True)
+    _STAMP.parent.mkdir(exist_ok=True)
+    _STAMP.write_text(want)
+    return True
 
 
 def warm_up() -> float:
     """Physics kernels, then one reset and step of each registered env; returns the seconds it took."""
     start = time.perf_counter()
+    clear_stale_cache()
     warm_up_physics()
     import gymnasium as gym
 

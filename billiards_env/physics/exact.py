@@ -17,13 +17,13 @@ import math
 import numpy as np
 from numba import njit
 
-from .collide import resolve_ball_ball, resolve_cushion
+from .collide import CONTACT_TIME, JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .motion import ROLLING, distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
 from .roots import first_entry
 
 # Event kinds (the event log's ``kind`` column).
-EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP = 0, 1, 2, 3
-EVENT_KINDS = ("collision", "cushion", "pocket", "stop")
+EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, EV_JAM = 0, 1, 2, 3, 4
+EVENT_KINDS = ("collision", "cushion", "pocket", "stop", "jam")
 # Shot status codes.
 STATUS_REST, STATUS_TIME_CAP, STATUS_EVENT_CAP = 0, 1, 2
 STATUS_NAMES = ("rest", "time_cap", "event_cap")
@@ -81,7 +81,12 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     vx = v0[i, 0]
     vy = v0[i, 1]
     s = math.hypot(vx, vy)
-    if s == 0.0:
+    if s == 0.0:  # at rest: only a ball placed inside a capture circle has an event (pocketed at once)
+        for p in range(pocket_r.shape[0]):
+            dx = p0[i, 0] - pocket_xy[p, 0]
+            dy = p0[i, 1] - pocket_xy[p, 1]
+            if dx * dx + dy * dy <= pocket_r[p] * pocket_r[p]:
+                return t0[i], EV_POCKET, p
         return math.inf, -1, -1
     law = int(prm[P_LAW])
     a = prm[P_DECEL]
@@ -194,6 +199,70 @@ def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
 
 
 @njit(cache=True)
+def _count_burst(i, t, t_hit, burst):
+    """Record a collision of ball ``i`` at ``t``; True if it follows its previous one within ``CONTACT_TIME``."""
+    clustered = t - t_hit[i] <= CONTACT_TIME
+    burst[i] = burst[i] + 1 if clustered else 0
+    t_hit[i] = t
+    return clustered
+
+
+@njit(cache=True)
+def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved):
+    """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
+    through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
+    member touches. Writes the members into ``involved``; returns their count."""
+    n = p0.shape[0]
+    law = int(prm[P_LAW])
+    a = prm[P_DECEL]
+    k = prm[P_DRAG_K]
+    px = np.empty(n)
+    py = np.empty(n)
+    for m in range(n):
+        if on_table[m]:
+            px[m], py[m], _, _ = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
+    member = np.zeros(n, np.bool_)
+    member[seed] = True
+    involved[0] = seed
+    count = 1
+    head = 0
+    while head < count:
+        q = involved[head]
+        head += 1
+        for m in range(n):
+            if on_table[m] and not member[m]:
+                if math.hypot(px[q] - px[m], py[q] - py[m]) <= radius[q] + radius[m] + 1e-9:
+                    member[m] = True
+                    involved[count] = m
+                    count += 1
+    total = 0.0
+    mom_x = 0.0
+    mom_y = 0.0
+    for h in range(count):
+        m = involved[h]
+        _advance(m, t, t0, p0, v0, tstop, law, a, k)
+        total += mass[m]
+        mom_x += mass[m] * v0[m, 0]
+        mom_y += mass[m] * v0[m, 1]
+    cx = mom_x / total
+    cy = mom_y / total
+    for h in range(count):
+        m = involved[h]
+        r = radius[m] + 1e-9
+        if (p0[m, 0] <= r and cx < 0.0) or (p0[m, 0] >= prm[P_LENGTH] - r and cx > 0.0):
+            cx = 0.0
+        if (p0[m, 1] <= r and cy < 0.0) or (p0[m, 1] >= prm[P_WIDTH] - r and cy > 0.0):
+            cy = 0.0
+    for h in range(count):
+        m = involved[h]
+        v0[m, 0] = cx
+        v0[m, 1] = cy
+        burst[m] = 0
+        _set_stop_time(m, t0, v0, tstop, law, a, k, prm[P_MIN_SPEED])
+    return count
+
+
+@njit(cache=True)
 def _grow(arr):
     """``arr`` (1-D) copied into an array twice as long."""
     out = np.empty(arr.shape[0] * 2, arr.dtype)
@@ -240,8 +309,11 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
     e_b = prm[P_E_BALL]
     max_time = prm[P_MAX_TIME]
     floor = prm[P_SPEED_FLOOR]
+    decel = a if law == ROLLING else 0.0
 
     t0 = np.zeros(n)
+    t_hit = np.full(n, -math.inf)  # time of each ball's last collision (ball or cushion)
+    burst = np.zeros(n, np.int64)  # collisions of each ball in its current contact cluster
     p0 = pos.copy()
     v0 = vel.copy()
     tstop = np.zeros(n)
@@ -280,7 +352,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
             _log_state(n_sc, sc_t, sc_ball, sc_state, 0.0, i, p0, v0, on_table)
             n_sc += 1
 
-    involved = np.empty(2, np.int64)
+    involved = np.empty(n, np.int64)
     t = 0.0
     n_events = 0
     status = STATUS_REST
@@ -326,12 +398,19 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
             dx = p0[bi, 0] - p0[bj, 0]
             dy = p0[bi, 1] - p0[bj, 1]
             dist = math.hypot(dx, dy)
-            if dist > 0.0:
-                speed = resolve_ball_ball(v0, bi, bj, dx / dist, dy / dist, mass[bi], mass[bj], e_b, a, floor)
-            _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
-            _set_stop_time(bj, t0, v0, tstop, law, a, k, v_min)
-            involved[1] = bj
-            n_inv = 2
+            clustered = _count_burst(bi, t, t_hit, burst) | _count_burst(bj, t, t_hit, burst)
+            if burst[bi] > JAM_EVENTS or burst[bj] > JAM_EVENTS:
+                n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
+                kind = EV_JAM
+                bj = n_inv
+            else:
+                if dist > 0.0:
+                    speed = resolve_ball_ball(v0, bi, bj, dx / dist, dy / dist, dist, mass[bi], mass[bj], e_b,
+                                              decel, floor, clustered)
+                _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
+                _set_stop_time(bj, t0, v0, tstop, law, a, k, v_min)
+                involved[1] = bj
+                n_inv = 2
         elif kind == EV_CUSHION:
             _advance(bi, t, t0, p0, v0, tstop, law, a, k)
             r = radius[bi]
@@ -343,8 +422,14 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
                 p0[bi, 1] = r
             else:
                 p0[bi, 1] = prm[P_WIDTH] - r
-            speed = resolve_cushion(v0, bi, bj, e_c)
-            _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
+            _count_burst(bi, t, t_hit, burst)
+            if burst[bi] > JAM_EVENTS:
+                n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
+                kind = EV_JAM
+                bj = n_inv
+            else:
+                speed = resolve_cushion(v0, bi, bj, e_c)
+                _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
         elif kind == EV_POCKET:
             _advance(bi, t, t0, p0, v0, tstop, law, a, k)
             speed = math.hypot(v0[bi, 0], v0[bi, 1])

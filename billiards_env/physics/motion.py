@@ -18,6 +18,25 @@ ROLLING = 0
 DRAG = 1
 
 
+_SERIES = 1e-5  # below this k*t, the drag formulas use their series (exact to round-off, and safe for tiny k)
+
+
+@njit(cache=True)
+def _expm1_ratio(x: float) -> float:
+    """``(1 - e^{-x}) / x`` for ``x >= 0``, accurate also for tiny (even subnormal) ``x``."""
+    if x < _SERIES:
+        return 1.0 - x * (0.5 - x / 6.0)
+    return -math.expm1(-x) / x
+
+
+@njit(cache=True)
+def _log1p_ratio(x: float) -> float:
+    """``-ln(1 - x) / x`` for ``0 <= x < 1``, accurate also for tiny ``x``."""
+    if x < _SERIES:
+        return 1.0 + x * (0.5 + x / 3.0)
+    return -math.log1p(-x) / x
+
+
 @njit(cache=True)
 def time_to_stop(speed: float, law: int, a: float, k: float, v_min: float) -> float:
     """Seconds until a ball moving at ``speed`` stops (``inf`` if it never does)."""
@@ -37,9 +56,7 @@ def distance(speed: float, t: float, law: int, a: float, k: float) -> float:
     """Path length covered in ``t`` seconds (``t`` not past the stop)."""
     if law == ROLLING:
         return t * (speed - 0.5 * a * t)
-    if k > 0.0:
-        return -speed * math.expm1(-k * t) / k
-    return speed * t
+    return speed * t * _expm1_ratio(k * t)
 
 
 @njit(cache=True)
@@ -62,28 +79,22 @@ def time_for_distance(speed: float, d: float, law: int, a: float, k: float) -> f
         if disc < 0.0:
             return math.inf
         return 2.0 * d / (speed + math.sqrt(disc))
-    if k > 0.0:
-        x = k * d / speed
-        if x >= 1.0:
-            return math.inf
-        return -math.log1p(-x) / k
-    return d / speed
+    x = k * d / speed
+    if x >= 1.0:
+        return math.inf
+    return d / speed * _log1p_ratio(x)
 
 
 @njit(cache=True)
 def drag_phi(t: float, k: float) -> float:
     """The drag law's common path parameter ``(1 - e^{-k t}) / k`` (``t`` when ``k = 0``)."""
-    if k > 0.0:
-        return -math.expm1(-k * t) / k
-    return t
+    return t * _expm1_ratio(k * t)
 
 
 @njit(cache=True)
 def drag_time_for_phi(phi: float, k: float) -> float:
     """Inverse of :func:`drag_phi`."""
-    if k > 0.0:
-        x = k * phi
-        if x >= 1.0:
-            return math.inf
-        return -math.log1p(-x) / k
-    return phi
+    x = k * phi
+    if x >= 1.0:
+        return math.inf
+    return phi * _log1p_ratio(x)

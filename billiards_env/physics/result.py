@@ -8,15 +8,16 @@ from typing import Any
 import numpy as np
 
 from .balls import Balls
-from .exact import EV_COLLISION, EV_CUSHION, EV_POCKET, EVENT_KINDS
+from .exact import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, EVENT_KINDS
 from .table import CUSHION_NAMES
 from .trajectory import Trajectory
 
 
 @dataclass(frozen=True)
 class EventLog:
-    """Events in time order, as columns: ``time`` (s), ``kind`` (0 collision, 1 cushion, 2 pocket, 3 stop),
-    ``ball`` (row), ``other`` (other ball's row, cushion 0-3 left/right/bottom/top, pocket index, or -1),
+    """Events in time order, as columns: ``time`` (s), ``kind`` (0 collision, 1 cushion, 2 pocket, 3 stop,
+    4 jam), ``ball`` (row), ``other`` (other ball's row, cushion 0-3 left/right/bottom/top, pocket index, the
+    number of balls in a jammed cluster, or -1),
     ``speed`` (normal impact speed, or the ball's speed when pocketed)."""
 
     time: np.ndarray
@@ -40,7 +41,9 @@ class EventLog:
                 ev["cushion"] = CUSHION_NAMES[o]
             elif k == EV_POCKET:
                 ev["pocket"] = o
-            if k != 3:
+            elif k == EV_JAM:
+                ev["cluster_size"] = o
+            if k not in (EV_STOP, EV_JAM):
                 ev["speed"] = s
             out.append(ev)
         return out

@@ -134,14 +134,18 @@ def cubic_roots_in(a: float, b: float, c: float, d: float, lo: float, hi: float)
 def first_entry(c4: float, c3: float, c2: float, c1: float, c0: float, t_max: float, closing_tol: float) -> float:
     """First time in ``[0, t_max]`` at which the quartic ``f`` enters ``f <= 0`` from above; ``inf`` if none.
 
-    At ``t = 0`` an already-touching pair (``f(0) <= 0``) counts only if it is closing,
-    ``f'(0) = c1 < -closing_tol``; otherwise the search starts where ``f`` is next positive.
+    At ``t = 0`` an already-touching pair (``f(0) <= 0``) counts if it is closing (``f'(0) = c1 < -closing_tol``)
+    or neither closing nor separating while ``f'' < 0`` (friction presses it together); otherwise the search
+    starts where ``f`` is next positive.
     Returns the left end of the final bracket, so ``f`` at the returned time is not negative.
     """
     if not t_max > 0.0:
         return math.inf
-    if c0 <= 0.0 and c1 < -closing_tol:
-        return 0.0
+    if c0 <= 0.0:
+        if c1 < -closing_tol:
+            return 0.0  # touching and closing
+        if c1 <= closing_tol and c2 < 0.0:
+            return 0.0  # touching, not separating, and about to press into each other (sticky contact)
     nc, k1, k2, k3 = cubic_roots_in(4.0 * c4, 3.0 * c3, 2.0 * c2, c1, 0.0, t_max)
     left = 0.0
     f_left = c0

@@ -219,7 +219,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt
                     dist = math.hypot(dx, dy)
                     nx = dx / dist
                     ny = dy / dist
-                    speed = resolve_ball_ball(vel, i, j, nx, ny, mass[i], mass[j], e_b, a, floor)
+                    speed = resolve_ball_ball(vel, i, j, nx, ny, dist, mass[i], mass[j], e_b, 0.0, floor, False)
                     pos[i, 0] += vel[i, 0] * back
                     pos[i, 1] += vel[i, 1] * back
                     pos[j, 0] += vel[j, 0] * back
@@ -230,7 +230,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt
                     pos[i, 1] += ny * half
                     pos[j, 0] -= nx * half
                     pos[j, 1] -= ny * half
-                    speed = resolve_ball_ball(vel, i, j, nx, ny, mass[i], mass[j], e_b, a, floor)
+                    speed = resolve_ball_ball(vel, i, j, nx, ny, dist, mass[i], mass[j], e_b, 0.0, floor, False)
                 if speed > 0.0:
                     moving[i] = True
                     moving[j] = True

@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from billiards_env.physics import G, Balls, Physics, Table, simulate
-from billiards_env.physics.exact import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP  # noqa: F401
+from billiards_env.physics.exact import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP  # noqa: F401
 
 R = 0.028575  #: default ball radius (m)
 M = 0.17  #: default ball mass (kg)
@@ -122,7 +122,8 @@ def collision_velocities(result, physics: Physics):
     ev = result.events
     n = len(result.balls)
     times, who, state = tr.times, tr.ball, tr.state
-    assert len(times) == n + len(ev) + int(np.sum(ev.kind == EV_COLLISION))
+    n_rows = np.where(ev.kind == EV_COLLISION, 2, np.where(ev.kind == EV_JAM, ev.other, 1))
+    assert len(times) == n + int(np.sum(n_rows))
     cur_t = np.array(times[:n], dtype=float)
     cur = np.array(state[:n], dtype=float)
     assert np.array_equal(who[:n], np.arange(n))
@@ -130,7 +131,10 @@ def collision_velocities(result, physics: Physics):
     out = []
     for q in range(len(ev)):
         t = float(ev.time[q])
-        inv = [int(ev.ball[q])] + ([int(ev.other[q])] if ev.kind[q] == EV_COLLISION else [])
+        if ev.kind[q] == EV_JAM:  # a jammed cluster: its rows name its members
+            inv = [int(b) for b in who[p:p + int(ev.other[q])]]
+        else:
+            inv = [int(ev.ball[q])] + ([int(ev.other[q])] if ev.kind[q] == EV_COLLISION else [])
         before = {}
         for b in inv:
             v = cur[b, 2:4]

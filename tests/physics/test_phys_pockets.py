@@ -23,7 +23,7 @@ def test_default_pocket_order():
 def test_ball_at_rest_outside_pockets_stays(solver):
     # Resting balls near every pocket (but outside its capture circle) and one in the middle.
     table = pool()
-    pos = [[L / 2, W / 2], [0.1, 0.1], [L / 2, 0.1], [L - 0.1, W - 0.1], [L / 2, W - R]]
+    pos = [[L / 2, W / 2], [0.1, 0.1], [L / 2, 0.1], [L - 0.1, W - 0.1], [L / 2 + 0.06, W - R]]
     b = balls(pos)
     res = run(table, rolling(), b, solver=solver)
     assert res.status == "rest"

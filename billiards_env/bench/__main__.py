@@ -1,0 +1,63 @@
+"""``python -m billiards_env.bench [--quick] [--only speed|accuracy|pooltool|latency] [--out docs/bench]``.
+
+Without ``--only`` every part runs: the accuracy suite (speed against error, ``speed_vs_error.md/.json/.png``),
+then the speed benchmarks, pooltool and the first-call latency (``speed.md/.json``). ``--quick`` runs a small
+configuration of everything (about a minute); the full run is sized for about ten minutes on two cores.
+"""
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+SECTIONS = ("speed", "accuracy", "pooltool", "latency")
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(
+        prog="billiards-bench",
+        description="Benchmarks of billiards_env: speed against error of the step solver vs exact "
+                    "(speed_vs_error.md/.json/.png), and speed: time per shot, env.step/s, first-call latency, "
+                    "pooltool (speed.md/.json).")
+    ap.add_argument("--quick", action="store_true", help="small configuration (about a minute)")
+    ap.add_argument("--only", choices=SECTIONS, action="append",
+                    help="run only this part (repeatable); default: all")
+    ap.add_argument("--out", type=Path, default=Path("docs/bench"), help="output directory (default docs/bench)")
+    ap.add_argument("--pooltool-python", default=None,
+                    help="python of the pooltool venv (default .venv-pooltool/bin/python in the repo, or "
+                         "$BILLIARDS_BENCH_POOLTOOL_PYTHON)")
+    ap.add_argument("--no-pooltool-setup", action="store_true",
+                    help="do not run benchmarks/pooltool_setup.sh when the pooltool venv is missing")
+    ap.add_argument("--render-only", action="store_true",
+                    help="measure nothing: re-write the Markdown (and the plot) from the JSON files in --out")
+    args = ap.parse_args(argv)
+    only = tuple(args.only) if args.only else SECTIONS
+    t0 = time.perf_counter()
+    # Import everything now: other people may be editing the engine while a long run goes on, and modules
+    # imported later would then not match the ones already loaded.
+    from . import accuracy, speed
+    from .common import log
+    try:
+        import billiards_env.envs  # noqa: F401
+    except Exception:  # the envs are optional here: their section says why it was skipped
+        pass
+
+    if args.render_only:
+        if "accuracy" in only and (args.out / "speed_vs_error.json").exists():
+            accuracy.render(args.out)
+        if (args.out / "speed.json").exists():
+            speed.render(args.out)
+        log(f"[bench] re-rendered the reports in {args.out}")
+        return 0
+    if "accuracy" in only:
+        accuracy.main(args.out, quick=args.quick)
+    rest = tuple(s for s in ("speed", "pooltool", "latency") if s in only)
+    if rest:
+        speed.main(args.out, quick=args.quick, sections=rest, pooltool_python=args.pooltool_python,
+                   allow_setup=not args.no_pooltool_setup)
+    log(f"[bench] done in {time.perf_counter() - t0:.0f} s; outputs in {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,305 @@
+"""Shared pieces of the benchmark suite: the seeded shot sets, the physics settings, timing and the machine."""
+from __future__ import annotations
+
+import json
+import math
+import os
+import platform
+import statistics
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from billiards_env.physics import BALL_RADIUS, Balls, Physics, Table
+from billiards_env.physics.rack import rack_balls
+
+#: The lecture's per-frame friction factor and its frame, from which the drag law's rate is derived.
+DRAG_FACTOR = 0.999
+DRAG_FRAME_DT = 1.0 / 60.0
+DRAG_MIN_SPEED = 0.005  #: m/s
+ROLLING_MU = 0.01
+
+
+def physics_laws() -> dict[str, Physics]:
+    """The two friction laws every accuracy cell is run under."""
+    return {
+        "rolling": Physics("rolling", mu_roll=ROLLING_MU),
+        "drag": Physics("drag", drag_k=Physics.drag_k_from_factor(DRAG_FACTOR, DRAG_FRAME_DT),
+                        min_speed=DRAG_MIN_SPEED),
+    }
+
+
+def physics_description() -> dict[str, str]:
+    k = Physics.drag_k_from_factor(DRAG_FACTOR, DRAG_FRAME_DT)
+    return {
+        "rolling": f"rolling, mu_roll = {ROLLING_MU} (deceleration {ROLLING_MU * 9.81:.4f} m/s^2), min_speed 0",
+        "drag": f"drag, k = -ln({DRAG_FACTOR}) / (1/{1 / DRAG_FRAME_DT:.0f} s) = {k:.5f} 1/s, "
+                f"min_speed {DRAG_MIN_SPEED} m/s",
+    }
+
+
+@dataclass(frozen=True)
+class Shot:
+    """One benchmark shot: balls at rest, then ball ``ball`` struck at ``angle`` (rad) with ``speed`` (m/s)."""
+
+    category: str
+    index: int
+    balls: Balls
+    ball: int
+    angle: float
+    speed: float
+
+    def struck(self, nudge: float = 0.0) -> Balls:
+        """The balls just after the strike, the aim turned by ``nudge`` rad."""
+        return self.balls.strike(self.ball, self.angle + nudge, self.speed)
+
+    def spec(self) -> dict[str, Any]:
+        """JSON form (for the pooltool subprocess)."""
+        return {"ids": list(self.balls.ids), "pos": self.balls.pos.tolist(), "ball": self.ball,
+                "angle": self.angle, "speed": self.speed}
+
+
+def _place(rng: np.random.Generator, table: Table, n: int, r: float = BALL_RADIUS) -> np.ndarray:
+    """``n`` centres uniform on the table, clear of each other (1 mm), the cushions and the pockets' mouths."""
+    margin = r + 0.002
+    while True:
+        pos = np.column_stack([rng.uniform(margin, table.length - margin, n),
+                               rng.uniform(margin, table.width - margin, n)])
+        d_pocket = np.linalg.norm(pos[:, None, :] - table.pocket_xy[None, :, :], axis=-1)
+        if np.any(d_pocket < table.pocket_radius[None, :] + 2 * r):
+            continue
+        d = np.linalg.norm(pos[:, None, :] - pos[None, :, :], axis=-1) + np.eye(n) * 1e9
+        if np.all(d > 2 * r + 0.001):
+            return pos
+
+
+def _aim_with_cut(rng: np.random.Generator, pos: np.ndarray, target: int, r: float = BALL_RADIUS) -> float:
+    """An angle from ball 0 towards ball ``target``, turned by a random cut of up to 1.2x the widest angle
+    that still hits it (so most shots hit, some miss)."""
+    dx, dy = pos[target] - pos[0]
+    d = math.hypot(dx, dy)
+    widest = math.asin(min(1.0, 2 * r / d))
+    return math.atan2(dy, dx) + rng.uniform(-1.2, 1.2) * widest
+
+
+def one_ball_shots(n: int, seed: int = 1, table: Table | None = None) -> list[Shot]:
+    """Cue ball and one object ball at random places; the cue aimed at the object ball with a random cut;
+    speed uniform in [0.5, 3] m/s."""
+    table = table or Table()
+    rng = np.random.default_rng(seed)
+    shots = []
+    for k in range(n):
+        pos = _place(rng, table, 2)
+        angle = _aim_with_cut(rng, pos, 1)
+        speed = float(rng.uniform(0.5, 3.0))
+        shots.append(Shot("one_ball", k, Balls.from_positions(pos), 0, angle, speed))
+    return shots
+
+
+def three_ball_shots(n: int, seed: int = 2, table: Table | None = None) -> list[Shot]:
+    """Cue ball and two object balls at random places; the cue aimed at the first with a random cut; speed
+    uniform in [0.5, 4] m/s."""
+    table = table or Table()
+    rng = np.random.default_rng(seed)
+    shots = []
+    for k in range(n):
+        pos = _place(rng, table, 3)
+        angle = _aim_with_cut(rng, pos, 1)
+        speed = float(rng.uniform(0.5, 4.0))
+        shots.append(Shot("three_ball", k, Balls.from_positions(pos), 0, angle, speed))
+    return shots
+
+
+def break_shots(n: int, table: Table | None = None, speed: float = 8.0) -> list[Shot]:
+    """15-ball breaks: touching triangle at the foot spot, the cue ball on the head string at ``n`` places
+    spread over the middle 60 % of the width (the centre one first), aimed at the apex ball's centre."""
+    table = table or Table()
+    if n == 1:
+        offsets = [0.0]
+    else:
+        offsets = sorted(np.linspace(-0.3, 0.3, n).tolist(), key=lambda o: (abs(o), o))
+    shots = []
+    for k, off in enumerate(offsets):
+        cue = (0.25 * table.length, (0.5 + off) * table.width)
+        balls = rack_balls(table, cue_xy=cue)
+        dx, dy = balls.pos[1] - balls.pos[0]
+        shots.append(Shot("break", k, balls, 0, math.atan2(dy, dx), speed))
+    return shots
+
+
+def straight_shot(table: Table | None = None, speed: float = 2.0) -> Shot:
+    """The fixed single-ball shot: cue ball at the head spot, object ball at the table's centre, struck
+    straight at it along the length."""
+    table = table or Table()
+    pos = [(0.25 * table.length, 0.5 * table.width), (0.5 * table.length, 0.5 * table.width)]
+    return Shot("straight", 0, Balls.from_positions(pos), 0, 0.0, speed)
+
+
+def time_call(fn: Callable[[], Any], min_total: float = 0.002, max_reps: int = 20, min_reps: int = 3,
+              once_above: float = 0.05) -> tuple[float, Any]:
+    """Median wall time of ``fn()`` (seconds) and its last result. A call slower than ``once_above`` s is timed
+    once; faster ones at least ``min_reps`` times and until the calls total ``min_total`` s (at most
+    ``max_reps``), so that a fast call is not judged on one sample that a hiccup of the machine may spoil."""
+    times = []
+    total = 0.0
+    out = None
+    while True:
+        t = time.perf_counter()
+        out = fn()
+        el = time.perf_counter() - t
+        times.append(el)
+        total += el
+        if len(times) >= max_reps or (len(times) == 1 and el >= once_above):
+            break
+        if total >= min_total and len(times) >= min_reps:
+            break
+    return statistics.median(times), out
+
+
+def repeat_median(fn: Callable[[], Any], repeats: int, warmup: int = 1) -> float:
+    """Median of ``repeats`` timed calls after ``warmup`` untimed ones (seconds)."""
+    for _ in range(warmup):
+        fn()
+    times = []
+    for _ in range(repeats):
+        t = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t)
+    return statistics.median(times)
+
+
+def machine_info() -> dict[str, Any]:
+    """CPU model, cores, load, and the versions that matter for the timings."""
+    cpu = platform.processor() or "unknown"
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    info: dict[str, Any] = {
+        "cpu": cpu,
+        "cores": os.cpu_count(),
+        "python": platform.python_version(),
+        "platform": platform.platform(),
+        "numpy": np.__version__,
+    }
+    try:
+        import numba
+        info["numba"] = numba.__version__
+    except ImportError:  # pragma: no cover
+        info["numba"] = None
+    try:
+        info["load_avg"] = [round(x, 2) for x in os.getloadavg()]
+    except OSError:  # pragma: no cover
+        info["load_avg"] = None
+    info["time"] = time.strftime("%Y-%m-%d %H:%M:%S %z")
+    info["engine"] = engine_version()
+    return info
+
+
+def engine_version() -> str | None:
+    """The repository's commit and whether the engine (``billiards_env/physics``) has uncommitted changes
+    (read-only git queries; None outside a git checkout)."""
+    import subprocess
+
+    repo = Path(__file__).resolve().parents[2]
+    try:
+        head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=repo, capture_output=True, text=True,
+                              timeout=10)
+        if head.returncode != 0:
+            return None
+        dirty = subprocess.run(["git", "status", "--porcelain", "--", "billiards_env/physics"], cwd=repo,
+                               capture_output=True, text=True, timeout=10)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    out = head.stdout.strip()
+    if dirty.stdout.strip():
+        out += " + uncommitted changes in billiards_env/physics"
+    return out
+
+
+def machine_markdown(info: dict[str, Any], end_load: list[float] | None = None) -> str:
+    load = info.get("load_avg")
+    s = (f"Machine: {info['cpu']}, {info['cores']} cores; Python {info['python']}, numpy {info['numpy']}, "
+         f"numba {info['numba']}; {info['platform']}. Engine: commit {info.get('engine') or 'unknown'}. "
+         f"Run at {info['time']}")
+    if load:
+        s += f"; load average (1/5/15 min) at start {load[0]}/{load[1]}/{load[2]}"
+    if end_load:
+        s += f", at end {end_load[0]}/{end_load[1]}/{end_load[2]}"
+    s += "."
+    if load and load[0] > 0.5 * (info["cores"] or 1):
+        s += (" The machine was shared with other work during the run (load above half the cores): absolute "
+              "times are noisy; ratios measured in one run are more robust.")
+    return s
+
+
+def load_now() -> list[float] | None:
+    try:
+        return [round(x, 2) for x in os.getloadavg()]
+    except OSError:  # pragma: no cover
+        return None
+
+
+def fmt_time(s: float | None) -> str:
+    """Seconds as a short human string (us / ms / s)."""
+    if s is None or (isinstance(s, float) and math.isnan(s)):
+        return "-"
+    if s < 1e-3:
+        return f"{s * 1e6:.1f} us"
+    if s < 1.0:
+        return f"{s * 1e3:.2f} ms"
+    return f"{s:.2f} s"
+
+
+def fmt_num(x: float | None, digits: int = 3) -> str:
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "-"
+    if x == 0:
+        return "0"
+    if abs(x) >= 1e4 or abs(x) < 1e-3:
+        return f"{x:.{digits - 1}e}"
+    return f"{x:.{digits}g}"
+
+
+def fmt_rate(x: float | None) -> str:
+    """A count per second: thousands separators from 100 up, 3 significant digits below."""
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "-"
+    return f"{x:,.0f}" if x >= 100 else f"{x:.3g}"
+
+
+def write_json(path: Path, data: Any) -> None:
+    """Strict JSON (NaN and infinities become null)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(_finite(data), indent=1, default=_json_default, allow_nan=False) + "\n")
+
+
+def _finite(o: Any) -> Any:
+    if isinstance(o, dict):
+        return {k: _finite(v) for k, v in o.items()}
+    if isinstance(o, (list, tuple)):
+        return [_finite(v) for v in o]
+    if isinstance(o, (float, np.floating)):
+        return float(o) if math.isfinite(o) else None
+    return o
+
+
+def _json_default(o: Any) -> Any:
+    if isinstance(o, np.integer):
+        return int(o)
+    if isinstance(o, np.floating):
+        return float(o)
+    if isinstance(o, np.ndarray):
+        return o.tolist()
+    raise TypeError(f"not JSON serialisable: {type(o)}")
+
+
+def log(msg: str) -> None:
+    print(msg, file=sys.stderr, flush=True)

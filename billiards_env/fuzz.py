@@ -1,0 +1,946 @@
+"""Numerical-stability fuzzing of the physics engine: random scenes, random shots, invariant checks.
+
+``python -m billiards_env.fuzz --shots 100000 [--seed S] [--solver exact|step|both] [--workers 2] [--out DIR]``
+
+Every shot is a random scene (1 to 16 balls placed at random, touching each other and the cushions on purpose,
+random friction law and constants, restitutions, solver settings) and a random cue strike. After the shot the
+invariants of :func:`check_shot` are checked; a failing case is saved as a scene file (the format of
+``billiards_env.physics.scene``) under ``--out`` so that ``billiards-sim FILE --events`` reproduces it, and
+listed with its violations in ``--out/violations.jsonl``.
+
+The scene generator (:func:`random_scene`) draws through a small :class:`Source` interface, so the Hypothesis
+tests in ``tests/stability`` drive the very same generator (and shrink its draws) and the same checks.
+
+Invariants (tolerances are the module constants below):
+
+- ``finite``: no NaN or infinity in the final state, the event log or the state log.
+- ``bounds``: every ball on the table has its centre in ``[r, L-r] x [r, W-r]`` (up to ``BOUNDS_TOL``), in the
+  final state and in every logged state.
+- ``overlap``: no two balls on the table closer than the sum of their radii minus the solver's tolerance
+  (``EXACT_OVERLAP_TOL``; step: :func:`step_overlap_tolerance`) in the final state. ``overlap_during`` (exact):
+  the same at every event time and half-way between consecutive event times (a missed collision shows here).
+- ``energy`` (exact, per event from the state log): the kinetic energy of the two balls of a collision, or of the
+  ball of a cushion hit, does not rise by more than ``ENERGY_REL_TOL`` relative. ``energy`` (step): the total
+  kinetic energy over the solver's snapshots never rises.
+- ``momentum`` (exact, per collision): the pair's momentum is unchanged up to ``MOMENTUM_REL_TOL`` relative (plus
+  ``m * min_speed`` for a ball stopped by the minimum-speed rule right after the hit).
+- ``contact`` (exact): two balls collide at contact distance (``|d - (r_i + r_j)| <= CONTACT_TOL``); a cushion hit
+  happens with the ball on the wall; a pocketed ball's centre is within the capture radius.
+- ``continuity`` (exact): the position logged after an event is where the closed-form motion from the ball's
+  previous logged state puts it (up to ``CONTINUITY_TOL``): no jumps.
+- ``pocket``: a pocketed ball stays pocketed (its on-table flag never comes back), takes part in no later event,
+  and the result's pocket list agrees with the final on-table flags.
+- ``status``: the shot ended with ``rest`` (then every ball on the table has zero velocity), ``time_cap`` (at
+  ``max_time``) or ``event_cap`` (exact, at ``max_events``); event times are ascending and within the cap.
+- ``zeno`` (exact): more than ``ZENO_BURST`` events at one instant (consecutive events less than ``ZENO_SPAN``
+  apart), or an event cap reached while the last half of the events spans less than ``ZENO_SPAN``: endless
+  micro-collisions instead of progress in time.
+- ``exception``: the solver raised.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import multiprocessing as mp
+import sys
+import time
+import traceback
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+# --------------------------------------------------------------------------------------------- tolerances
+BOUNDS_TOL = 1e-9  #: a centre may sit this far outside [r, L - r] (m)
+EXACT_OVERLAP_TOL = 1e-9  #: exact solver: largest overlap of two balls on the table (m)
+#: Step solver (both contact modes): the push-apart / rewind is one pass over the pairs in (i, j) order, and a later
+#: push or the cushion clamp that follows can re-open an overlap already resolved; balls that come to rest keep it.
+#: The residual overlap is bounded by the penetration a step allows, ``STEP_OVERLAP_FACTOR * v_max * dt``
+#: (``v_max`` the cue speed), plus ``STEP_OVERLAP_ABS``. Measured by the fuzz (see the report / module docstring of
+#: tests/stability/test_properties.py).
+STEP_OVERLAP_FACTOR = 2.0
+STEP_OVERLAP_ABS = 1e-9
+ENERGY_REL_TOL = 1e-12  #: relative kinetic-energy rise allowed at one event (rounding)
+MOMENTUM_REL_TOL = 1e-12  #: relative momentum change allowed at one ball-ball collision (rounding)
+CONTACT_TOL = 1e-9  #: a collision happens at contact distance up to this (m)
+CONTINUITY_TOL = 1e-9  #: largest jump of a ball's position at an event (m)
+ZENO_SPAN = 1e-9  #: events closer than this (s) form one burst (one instant, up to rounding)
+#: A burst of more events than this at one instant is an inelastic-collapse storm (a 16-ball break needs a few
+#: hundred at most); an event cap reached inside a burst is a Zeno hang.
+ZENO_BURST = 5000
+
+DEFAULT_MAX_TIME = 60.0
+DEFAULT_STEP_MAX_TIME = 20.0
+DEFAULT_MAX_EVENTS = 20_000
+STEP_DTS = (5e-4, 1e-3, 2e-3)
+CONTACT_MODES = ("lecture", "rewind")
+
+INVARIANTS = ("exception", "finite", "bounds", "overlap", "overlap_during", "energy", "momentum", "contact",
+              "continuity", "pocket", "status", "zeno")
+
+L_DEFAULT = 2.54
+W_DEFAULT = 1.27
+R_DEFAULT = 0.028575
+
+
+def step_overlap_tolerance(speed: float, dt: float) -> float:
+    """Largest final overlap (m) allowed of the step solver for a shot of cue speed ``speed`` and time step ``dt``."""
+    return STEP_OVERLAP_FACTOR * max(speed, 0.0) * dt + STEP_OVERLAP_ABS
+
+
+# --------------------------------------------------------------------------------------------- random source
+class Source:
+    """Where the scene generator gets its random decisions (numpy for the fuzz, Hypothesis in the tests)."""
+
+    def uniform(self, lo: float, hi: float) -> float:
+        raise NotImplementedError
+
+    def integer(self, lo: int, hi: int) -> int:
+        """An integer in ``[lo, hi]`` (both included)."""
+        raise NotImplementedError
+
+    def choice(self, options: Sequence[Any]) -> Any:
+        return options[self.integer(0, len(options) - 1)]
+
+    def chance(self, p: float) -> bool:
+        return self.uniform(0.0, 1.0) < p
+
+    def log_uniform(self, lo: float, hi: float) -> float:
+        return float(math.exp(self.uniform(math.log(lo), math.log(hi))))
+
+
+class NumpySource(Source):
+    def __init__(self, rng: np.random.Generator) -> None:
+        self.rng = rng
+
+    def uniform(self, lo: float, hi: float) -> float:
+        return float(self.rng.uniform(lo, hi))
+
+    def integer(self, lo: int, hi: int) -> int:
+        return int(self.rng.integers(lo, hi + 1))
+
+
+def shot_rng(seed: int, index: int) -> np.random.Generator:
+    """The random generator of shot ``index`` of a fuzz run with ``seed``: every shot is reproducible alone."""
+    return np.random.default_rng(np.random.SeedSequence([int(seed), int(index)]))
+
+
+# --------------------------------------------------------------------------------------------- scene generator
+def _unit_or_special(src: Source) -> float:
+    """A restitution: the ends 0 and 1 often, otherwise uniform."""
+    return float(src.choice((0.0, 1.0, src.uniform(0.0, 1.0), src.uniform(0.0, 1.0), src.uniform(0.9, 1.0))))
+
+
+def _fits(p: tuple[float, float], placed: list[tuple[float, float]], r: float, length: float, width: float) -> bool:
+    x, y = p
+    if not (r <= x <= length - r and r <= y <= width - r):
+        return False
+    for q in placed:
+        # validate_balls accepts overlaps up to 1e-9; touching placements from cos/sin are off by ~1e-17.
+        if math.hypot(x - q[0], y - q[1]) < 2.0 * r - 1e-12:
+            return False
+    return True
+
+
+def _gap(src: Source) -> float:
+    return float(src.choice((0.0, 0.0, 0.0, 1e-12, src.log_uniform(1e-12, 1e-3), src.uniform(0.0, 0.05))))
+
+
+def _place(src: Source, placed: list[tuple[float, float]], r: float, length: float, width: float
+           ) -> tuple[float, float] | None:
+    """One more ball position (or None if the drawn placement does not fit)."""
+    mode = src.choice(("free", "free", "touch_ball", "touch_ball", "touch_cushion", "touch_both", "corner"))
+    if mode == "free" or not placed and mode in ("touch_ball", "touch_both"):
+        p = (src.uniform(r, length - r), src.uniform(r, width - r))
+    elif mode == "touch_ball":
+        q = placed[src.integer(0, len(placed) - 1)]
+        th = src.choice((src.uniform(-math.pi, math.pi), src.integer(0, 11) * math.pi / 6.0))
+        d = 2.0 * r + _gap(src)
+        p = (q[0] + d * math.cos(th), q[1] + d * math.sin(th))
+    elif mode == "touch_cushion":
+        side = src.integer(0, 3)
+        if side < 2:
+            p = (r if side == 0 else length - r, src.uniform(r, width - r))
+        else:
+            p = (src.uniform(r, length - r), r if side == 2 else width - r)
+    elif mode == "touch_both":  # on a cushion and touching a ball
+        q = placed[src.integer(0, len(placed) - 1)]
+        side = src.integer(0, 3)
+        d = 2.0 * r + _gap(src)
+        sgn = src.choice((-1.0, 1.0))
+        if side < 2:
+            x = r if side == 0 else length - r
+            h = d * d - (x - q[0]) ** 2
+            if h < 0.0:
+                return None
+            p = (x, q[1] + sgn * math.sqrt(h))
+        else:
+            y = r if side == 2 else width - r
+            h = d * d - (y - q[1]) ** 2
+            if h < 0.0:
+                return None
+            p = (q[0] + sgn * math.sqrt(h), y)
+    else:  # corner
+        p = (src.choice((r, length - r)), src.choice((r, width - r)))
+    return p if _fits(p, placed, r, length, width) else None
+
+
+def _rack(src: Source, n: int, r: float, length: float, width: float) -> list[tuple[float, float]]:
+    from .physics.rack import triangle_positions
+
+    gap = float(src.choice((0.0, 0.0, 1e-12, src.log_uniform(1e-12, 1e-4))))
+    apex = (0.75 * length, 0.5 * width)
+    tri = triangle_positions(apex, r, gap=gap)
+    cue = (src.choice((0.25 * length, src.uniform(r, 0.6 * length))), src.choice((0.5 * width, src.uniform(r, width - r))))
+    return [cue] + [(float(x), float(y)) for x, y in tri[: n - 1]]
+
+
+def random_scene(src: Source, solver: str | None = None, max_time: float | None = None,
+                 max_events: int = DEFAULT_MAX_EVENTS) -> dict[str, Any]:
+    """A random scene dict in the scene-file format, with a shot and solver settings.
+
+    ``solver``: ``"exact"``, ``"step"`` or None (drawn). The cue is ball 0 (id ``"cue"``).
+    """
+    length, width, r = L_DEFAULT, W_DEFAULT, R_DEFAULT
+    # table
+    table: dict[str, Any] = {"length": length, "width": width, "cushion_restitution": _unit_or_special(src)}
+    if src.chance(0.3):
+        table["pockets"] = []
+    # physics
+    friction = src.choice(("rolling", "drag"))
+    physics: dict[str, Any] = {"friction": friction, "ball_restitution": _unit_or_special(src)}
+    if friction == "rolling":
+        physics["mu_roll"] = float(src.choice((0.0, 0.01, src.uniform(0.0, 0.05), src.uniform(0.0, 0.05))))
+        physics["min_speed"] = float(src.choice((0.0, 0.0, 0.0, src.uniform(0.0, 0.05))))
+    else:
+        physics["drag_k"] = float(src.choice((0.0, src.uniform(0.0, 2.0), src.uniform(0.0, 2.0))))
+        physics["min_speed"] = float(src.choice((0.0, 0.01, src.uniform(0.0, 0.05), src.uniform(0.0, 0.05))))
+    # balls
+    n = src.integer(1, 16)
+    if n >= 2 and src.chance(0.15):
+        placed = _rack(src, n, r, length, width)
+    else:
+        placed = []
+        for _ in range(n):
+            p = _place(src, placed, r, length, width)
+            if p is not None:
+                placed.append(p)
+        if not placed:
+            placed.append((src.uniform(r, length - r), src.uniform(r, width - r)))
+    balls = [{"id": "cue" if i == 0 else str(i), "x": float(x), "y": float(y)} for i, (x, y) in enumerate(placed)]
+    # shot: a random direction, or aimed at a ball (head-on, tiny offset, or grazing at 2R +- eps), or a cushion
+    aim = src.choice(("random", "random", "ball", "ball", "axis"))
+    cx, cy = placed[0]
+    if aim == "ball" and len(placed) > 1:
+        tx, ty = placed[src.integer(1, len(placed) - 1)]
+        d = math.hypot(tx - cx, ty - cy)
+        base = math.atan2(ty - cy, tx - cx)
+        off = src.choice(("head", "head", "tiny", "graze"))
+        if off == "head":
+            angle = base
+        elif off == "tiny":
+            angle = base + src.choice((-1.0, 1.0)) * src.log_uniform(1e-15, 1e-3)
+        else:
+            b = 2.0 * r + src.choice((-1.0, 1.0)) * float(src.choice((0.0, src.log_uniform(1e-14, 1e-4))))
+            angle = base + src.choice((-1.0, 1.0)) * math.asin(min(b / d, 1.0))
+    elif aim == "axis":
+        angle = src.integer(0, 7) * math.pi / 4.0
+    else:
+        angle = src.uniform(-math.pi, math.pi)
+    speed = src.log_uniform(1e-3, 10.0)
+    # solver
+    if solver is None:
+        solver = src.choice(("exact", "step"))
+    solver_d: dict[str, Any] = {"name": solver}
+    if solver == "step":
+        solver_d["dt"] = float(src.choice(STEP_DTS))
+        solver_d["contact"] = src.choice(CONTACT_MODES)
+    if max_time is None:
+        max_time = DEFAULT_MAX_TIME if solver == "exact" else DEFAULT_STEP_MAX_TIME
+    return {"table": table, "physics": physics, "balls": balls,
+            "shot": {"ball": "cue", "angle": float(angle), "speed": float(speed)},
+            "solver": solver_d, "max_time": float(max_time), "max_events": int(max_events)}
+
+
+# --------------------------------------------------------------------------------------------- invariants
+@dataclass
+class Report:
+    """The outcome of checking one shot: violations (invariant -> first message) and measurements."""
+
+    solver: str = ""
+    status: str = ""
+    n_events: int = 0
+    n_collisions: int = 0
+    sim_time: float = 0.0
+    violations: dict[str, str] = field(default_factory=dict)
+    counts: Counter = field(default_factory=Counter)
+    max_overlap: float = 0.0  #: deepest overlap in the final state (m)
+    max_overlap_during: float = 0.0  #: deepest overlap at/between events (exact) or at snapshots (step) (m)
+    max_energy_gain: float = 0.0  #: largest relative energy rise at one event
+    max_momentum_err: float = 0.0  #: largest relative momentum change at one collision
+    max_contact_err: float = 0.0  #: largest |d - (ri + rj)| at a collision (m)
+    max_jump: float = 0.0  #: largest position jump at an event (m)
+    max_burst: int = 0  #: most events at one instant
+    overlap_tol: float = 0.0
+
+    def fail(self, name: str, msg: str) -> None:
+        self.counts[name] += 1
+        self.violations.setdefault(name, msg)
+
+    @property
+    def ok(self) -> bool:
+        return not self.violations
+
+
+def _pairwise_overlap(pos: np.ndarray, radius: np.ndarray, on: np.ndarray) -> tuple[float, tuple[int, int]]:
+    """Deepest overlap ``(ri + rj) - d`` over pairs on the table (``-inf`` with fewer than two) and its pair."""
+    idx = np.flatnonzero(on)
+    if len(idx) < 2:
+        return -math.inf, (-1, -1)
+    p = pos[idx]
+    d = np.sqrt(((p[:, None, :] - p[None, :, :]) ** 2).sum(-1))
+    need = radius[idx][:, None] + radius[idx][None, :]
+    ov = need - d
+    np.fill_diagonal(ov, -math.inf)
+    k = int(np.argmax(ov))
+    a, b = divmod(k, len(idx))
+    return float(ov[a, b]), (int(idx[a]), int(idx[b]))
+
+
+def _overlap_series(pos: np.ndarray, radius: np.ndarray, on: np.ndarray) -> tuple[float, int, tuple[int, int]]:
+    """Deepest overlap over samples: ``pos (T, N, 2)``, ``on (T, N)``; returns (overlap, sample, pair)."""
+    n = pos.shape[1]
+    if n < 2 or pos.shape[0] == 0:
+        return -math.inf, -1, (-1, -1)
+    iu, ju = np.triu_indices(n, 1)
+    d = np.hypot(pos[:, iu, 0] - pos[:, ju, 0], pos[:, iu, 1] - pos[:, ju, 1])
+    ov = (radius[iu] + radius[ju])[None, :] - d
+    ov = np.where(on[:, iu] & on[:, ju], ov, -math.inf)
+    k = int(np.argmax(ov))
+    s, q = divmod(k, len(iu))
+    return float(ov[s, q]), s, (int(iu[q]), int(ju[q]))
+
+
+def _np_closed_form(x, y, vx, vy, dt, law, a, k, v_min):
+    """Vectorised closed-form state ``dt`` after a logged state (the exact solver's ``_state_at``)."""
+    s = np.hypot(vx, vy)
+    moving = s > 0.0
+    ss = np.where(moving, s, 1.0)
+    ux, uy = vx / ss, vy / ss
+    # time to stop (from the logged speed), as motion.time_to_stop
+    if law == 0:
+        tts = np.where(s <= v_min, 0.0, (s - v_min) / a) if a > 0.0 else np.where(s <= v_min, 0.0, math.inf)
+    else:
+        if k > 0.0 and v_min > 0.0:
+            tts = np.where(s <= v_min, 0.0, np.log(np.maximum(ss, v_min) / v_min) / k)
+        else:
+            tts = np.where(s <= v_min, 0.0, math.inf)
+    tt = np.minimum(dt, tts)
+    if law == 0:
+        dist = tt * (s - 0.5 * a * tt)
+        sp = np.maximum(s - a * tt, 0.0)
+    elif k > 0.0:
+        kt = k * tt
+        small = kt < 1e-5  # series, as motion._expm1_ratio (exact for tiny, even subnormal, k)
+        ratio = np.where(small, 1.0 - kt * (0.5 - kt / 6.0), -np.expm1(-kt) / np.where(small, 1.0, kt))
+        dist = s * tt * ratio
+        sp = s * np.exp(-kt)
+    else:
+        dist = s * tt
+        sp = s
+    stopped = dt >= tts
+    sp = np.where(stopped | ~moving, 0.0, sp)
+    dist = np.where(moving, dist, 0.0)
+    return x + ux * dist, y + uy * dist, ux * sp, uy * sp
+
+
+def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
+    """Check every invariant of the module docstring on ``result`` (a ``ShotResult`` recorded with
+    ``record=True``) of ``scene`` (a ``Scene``). Returns a :class:`Report`."""
+    from .physics.exact import EV_COLLISION, EV_POCKET, STATUS_NAMES
+
+    rep = Report(solver=result.solver, status=result.status, n_events=int(result.n_events),
+                 sim_time=float(result.time))
+    table, phys = scene.table, scene.physics
+    L, W = table.length, table.width
+    b0 = scene.initial_balls()
+    radius, mass = b0.radius, b0.mass
+    n = len(b0)
+    fin = result.balls
+    ev = result.events
+    tr = result.trajectory
+    exact = result.solver == "exact"
+    law, a, k, v_min = phys.law_code, phys.deceleration, phys.drag_rate, phys.min_speed
+    speed0 = float(np.max(np.hypot(b0.vel[:, 0], b0.vel[:, 1]))) if n else 0.0
+
+    # ---- finite
+    arrays = {"final pos": fin.pos, "final vel": fin.vel, "event time": ev.time, "event speed": ev.speed}
+    if tr is not None:
+        arrays["state log"] = tr.state
+        arrays["state-log time"] = tr.times
+    for name, arr in arrays.items():
+        if not np.all(np.isfinite(arr)):
+            rep.fail("finite", f"{name} holds NaN/inf")
+    if not math.isfinite(result.time):
+        rep.fail("finite", f"end time {result.time}")
+
+    # ---- status
+    if result.status not in STATUS_NAMES:
+        rep.fail("status", f"unknown status {result.status!r}")
+    on_f = np.asarray(fin.on_table, bool)
+    if result.status == "rest":
+        mv = on_f & ((fin.vel[:, 0] != 0.0) | (fin.vel[:, 1] != 0.0))
+        if mv.any():
+            rep.fail("status", f"status rest but balls {np.flatnonzero(mv).tolist()} still moving")
+    elif result.status == "time_cap":
+        if not result.time >= scene.max_time - (scene.dt if not exact else 0.0) - 1e-9:
+            rep.fail("status", f"time_cap at t={result.time} < max_time {scene.max_time}")
+    elif result.status == "event_cap":
+        if not exact or result.n_events != scene.max_events:
+            rep.fail("status", f"event_cap with {result.n_events} events (max_events {scene.max_events})")
+    if result.time > scene.max_time + 1e-9:
+        rep.fail("status", f"end time {result.time} past max_time {scene.max_time}")
+    if len(ev) and (np.any(np.diff(ev.time) < 0) or ev.time[-1] > scene.max_time + 1e-9 or ev.time[0] < 0):
+        rep.fail("status", "event times not ascending within [0, max_time]")
+    kinds = np.asarray(ev.kind)
+    rep.n_collisions = int(np.sum(kinds == EV_COLLISION))
+
+    # ---- zeno: a burst of events at one instant, or an event cap hit while time (almost) stands still
+    if len(ev) >= 2:
+        brk = np.flatnonzero(np.diff(ev.time) > ZENO_SPAN)
+        edges = np.concatenate([[0], brk + 1, [len(ev)]])
+        sizes = np.diff(edges)
+        q = int(np.argmax(sizes))
+        rep.max_burst = int(sizes[q])
+        if sizes[q] > ZENO_BURST:
+            rep.fail("zeno", f"{int(sizes[q])} events within {float(ev.time[edges[q + 1] - 1] - ev.time[edges[q]]):.3g} s "
+                             f"at t={float(ev.time[edges[q]])!r}")
+    if result.status == "event_cap" and len(ev) >= 2:
+        half = len(ev) // 2
+        span = float(ev.time[-1] - ev.time[half])
+        if span < ZENO_SPAN:
+            rep.fail("zeno", f"event cap: the last {len(ev) - half} events span {span:.3g} s at t={float(ev.time[-1])!r}")
+
+    # ---- bounds (final and every logged state)
+    def bounds_bad(x, y, r):
+        return (x < r - BOUNDS_TOL) | (x > L - r + BOUNDS_TOL) | (y < r - BOUNDS_TOL) | (y > W - r + BOUNDS_TOL)
+
+    bad = on_f & bounds_bad(fin.pos[:, 0], fin.pos[:, 1], radius)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        rep.fail("bounds", f"final: ball {i} at ({float(fin.pos[i, 0])!r}, {float(fin.pos[i, 1])!r}) off the table")
+    if tr is not None and len(tr.times):
+        st = tr.state
+        rb = radius[tr.ball]
+        bad = (st[:, 4] > 0.5) & bounds_bad(st[:, 0], st[:, 1], rb)
+        if bad.any():
+            q = int(np.flatnonzero(bad)[0])
+            rep.fail("bounds", f"logged state at t={float(tr.times[q])!r}: ball {int(tr.ball[q])} at "
+                               f"({float(st[q, 0])!r}, {float(st[q, 1])!r}) off the table")
+
+    # ---- overlap (final)
+    tol = EXACT_OVERLAP_TOL if exact else step_overlap_tolerance(speed0, scene.dt)
+    rep.overlap_tol = tol
+    ov, (i, j) = _pairwise_overlap(fin.pos, radius, on_f)
+    rep.max_overlap = max(ov, 0.0)
+    if ov > tol:
+        rep.fail("overlap", f"final: balls {i} and {j} overlap by {ov:.3g} m (tolerance {tol:.3g})")
+
+    # ---- pocket
+    pocket = np.asarray(result.pocket)
+    b_on0 = np.asarray(b0.on_table, bool)
+    bad = b_on0 & ((pocket >= 0) == on_f)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        rep.fail("pocket", f"ball {i}: pocket {int(pocket[i])} but on_table {bool(on_f[i])}")
+    if tr is not None and len(tr.times):
+        for b in range(n):
+            flags = tr.state[tr.ball == b, 4] > 0.5
+            if len(flags) and np.any(~flags):
+                first_off = int(np.argmax(~flags))
+                if flags[first_off:].any():
+                    rep.fail("pocket", f"ball {b} back on the table after being pocketed")
+    pocket_t = {}
+    for q in np.flatnonzero(kinds == EV_POCKET):
+        pocket_t.setdefault(int(ev.ball[q]), q)
+    if pocket_t:
+        for q in range(len(ev)):
+            kd, bb, oo = int(kinds[q]), int(ev.ball[q]), int(ev.other[q])
+            involved = (bb, oo) if kd == EV_COLLISION else (bb,)
+            for x in involved:
+                if x in pocket_t and q > pocket_t[x]:
+                    rep.fail("pocket", f"ball {x} in event {q} ({kd}) after it was pocketed (event {pocket_t[x]})")
+
+    if tr is None:
+        return rep
+    if exact:
+        _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, sample_between)
+    else:
+        _check_step_snapshots(rep, result, mass)
+    return rep
+
+
+def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, sample_between):
+    from .physics.exact import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET
+
+    tr, ev = result.trajectory, result.events
+    n = len(radius)
+    L, W = scene.table.length, scene.table.width
+    kinds = np.asarray(ev.kind)
+    n_ev = len(ev)
+    # State-log rows: n initial rows, then one row per ball involved in each event (two for a collision, the
+    # cluster's size for a jam).
+    n_inv = np.where(kinds == EV_COLLISION, 2, np.where(kinds == EV_JAM, np.asarray(ev.other), 1))
+    start = n + np.concatenate([[0], np.cumsum(n_inv)[:-1]]) if n_ev else np.zeros(0, int)
+    if len(tr.times) != n + int(n_inv.sum()):
+        rep.fail("continuity", f"state log has {len(tr.times)} rows, expected {n + int(n_inv.sum())}")
+        return
+    # previous row of the same ball, for every row
+    prev = np.full(len(tr.times), -1)
+    last = {}
+    for q, b in enumerate(tr.ball.tolist()):
+        prev[q] = last.get(b, -1)
+        last[b] = q
+    rows = np.arange(n, len(tr.times))
+    if len(rows) == 0:
+        return
+    if np.any(prev[rows] < 0):
+        rep.fail("continuity", "a logged event state has no earlier state of its ball")
+        return
+    st = tr.state
+    p = prev[rows]
+    dt = tr.times[rows] - tr.times[p]
+    # closed-form state just before each logged event (pocketed balls do not move)
+    on_prev = st[p, 4] > 0.5
+    bx, by, bvx, bvy = _np_closed_form(st[p, 0], st[p, 1], np.where(on_prev, st[p, 2], 0.0),
+                                       np.where(on_prev, st[p, 3], 0.0), dt, law, a, k, v_min)
+    before = np.zeros((len(tr.times), 4))
+    before[rows] = np.stack([bx, by, bvx, bvy], axis=1)
+    # continuity: logged position after the event vs the closed form before it
+    jump = np.hypot(st[rows, 0] - bx, st[rows, 1] - by)
+    if len(jump):
+        q = int(np.argmax(jump))
+        rep.max_jump = float(jump[q])
+        if jump[q] > CONTINUITY_TOL:
+            rep.fail("continuity", f"ball {int(tr.ball[rows[q]])} jumps {jump[q]:.3g} m at t={float(tr.times[rows[q]])!r}")
+    if n_ev == 0:
+        return
+    # row bookkeeping check
+    r0 = start
+    if np.any(tr.ball[r0] != ev.ball) or np.any(tr.times[r0] != ev.time):
+        rep.fail("continuity", "state log rows do not line up with the event log")
+        return
+    # ---- collisions
+    ci = np.flatnonzero(kinds == EV_COLLISION)
+    if len(ci):
+        ri = start[ci]
+        rj = ri + 1
+        i = ev.ball[ci]
+        j = ev.other[ci]
+        mi, mj = mass[i], mass[j]
+        vbi, vbj = before[ri, 2:4], before[rj, 2:4]
+        vai, vaj = st[ri, 2:4], st[rj, 2:4]
+        ke_b = 0.5 * (mi * (vbi ** 2).sum(1) + mj * (vbj ** 2).sum(1))
+        ke_a = 0.5 * (mi * (vai ** 2).sum(1) + mj * (vaj ** 2).sum(1))
+        gain = np.where(ke_b > 0, (ke_a - ke_b) / np.where(ke_b > 0, ke_b, 1.0), np.where(ke_a > 0, np.inf, 0.0))
+        q = int(np.argmax(gain))
+        rep.max_energy_gain = max(rep.max_energy_gain, float(gain[q]))
+        if gain[q] > ENERGY_REL_TOL:
+            rep.fail("energy", f"collision event {int(ci[q])} (balls {int(i[q])},{int(j[q])}) at t={float(ev.time[ci[q]])!r}: "
+                               f"kinetic energy {float(ke_b[q])!r} -> {float(ke_a[q])!r} (relative {gain[q]:.3g})")
+        dp = mi[:, None] * (vai - vbi) + mj[:, None] * (vaj - vbj)
+        scale = mi * np.hypot(vbi[:, 0], vbi[:, 1]) + mj * np.hypot(vbj[:, 0], vbj[:, 1])
+        zero_i = (vai[:, 0] == 0.0) & (vai[:, 1] == 0.0)
+        zero_j = (vaj[:, 0] == 0.0) & (vaj[:, 1] == 0.0)
+        allow = v_min * (mi * zero_i + mj * zero_j) * (1.0 + 1e-9)
+        err = np.hypot(dp[:, 0], dp[:, 1])
+        rel = np.where(scale > 0, np.maximum(err - allow, 0.0) / np.where(scale > 0, scale, 1.0), np.where(err > allow, np.inf, 0.0))
+        q = int(np.argmax(rel))
+        rep.max_momentum_err = max(rep.max_momentum_err, float(rel[q]))
+        if rel[q] > MOMENTUM_REL_TOL:
+            rep.fail("momentum", f"collision event {int(ci[q])} (balls {int(i[q])},{int(j[q])}) at t={float(ev.time[ci[q]])!r}: "
+                                 f"momentum change {err[q]:.3g} (relative {rel[q]:.3g})")
+        dist = np.hypot(st[ri, 0] - st[rj, 0], st[ri, 1] - st[rj, 1])
+        cerr = np.abs(dist - (radius[i] + radius[j]))
+        q = int(np.argmax(cerr))
+        rep.max_contact_err = max(rep.max_contact_err, float(cerr[q]))
+        if cerr[q] > CONTACT_TOL:
+            rep.fail("contact", f"collision event {int(ci[q])} (balls {int(i[q])},{int(j[q])}) at t={float(ev.time[ci[q]])!r}: "
+                                f"centres {float(dist[q])!r} m apart, contact at {float(radius[i[q]] + radius[j[q]])!r}")
+    # ---- cushions
+    cu = np.flatnonzero(kinds == EV_CUSHION)
+    if len(cu):
+        rr = start[cu]
+        sb = np.hypot(before[rr, 2], before[rr, 3])
+        sa = np.hypot(st[rr, 2], st[rr, 3])
+        gain = np.where(sb > 0, (sa * sa - sb * sb) / np.where(sb > 0, sb * sb, 1.0), np.where(sa > 0, np.inf, 0.0))
+        q = int(np.argmax(gain))
+        rep.max_energy_gain = max(rep.max_energy_gain, float(gain[q]))
+        if gain[q] > ENERGY_REL_TOL:
+            rep.fail("energy", f"cushion event {int(cu[q])} (ball {int(ev.ball[cu[q]])}) at t={float(ev.time[cu[q]])!r}: "
+                               f"speed {float(sb[q])!r} -> {float(sa[q])!r}")
+        b = ev.ball[cu]
+        c = ev.other[cu]
+        wall = np.where(c == 0, radius[b], np.where(c == 1, L - radius[b], np.where(c == 2, radius[b], W - radius[b])))
+        coord = np.where(c < 2, st[rr, 0], st[rr, 1])
+        werr = np.abs(coord - wall)
+        q = int(np.argmax(werr))
+        if werr[q] > CONTACT_TOL:
+            rep.fail("contact", f"cushion event {int(cu[q])}: ball {int(b[q])} {werr[q]:.3g} m off cushion {int(c[q])}")
+    # ---- jams: the cluster's kinetic energy never rises
+    for q in np.flatnonzero(kinds == EV_JAM).tolist():
+        rr = np.arange(start[q], start[q] + int(ev.other[q]))
+        mb = mass[tr.ball[rr]]
+        ke_b = 0.5 * float(np.sum(mb * (before[rr, 2] ** 2 + before[rr, 3] ** 2)))
+        ke_a = 0.5 * float(np.sum(mb * (st[rr, 2] ** 2 + st[rr, 3] ** 2)))
+        if ke_a > ke_b * (1.0 + ENERGY_REL_TOL) + 1e-300:
+            rep.fail("energy", f"jam event {q} at t={float(ev.time[q])!r}: cluster kinetic energy {ke_b!r} -> {ke_a!r}")
+    # ---- pockets
+    po = np.flatnonzero(kinds == EV_POCKET)
+    if len(po):
+        rr = start[po]
+        pk = ev.other[po]
+        pxy = scene.table.pocket_xy[pk]
+        dd = np.hypot(st[rr, 0] - pxy[:, 0], st[rr, 1] - pxy[:, 1]) - scene.table.pocket_radius[pk]
+        q = int(np.argmax(dd))
+        if dd[q] > CONTACT_TOL:
+            rep.fail("contact", f"pocket event {int(po[q])}: ball {int(ev.ball[po[q]])} {dd[q]:.3g} m outside the "
+                                f"capture radius of pocket {int(pk[q])}")
+    # ---- overlap at every event time and half-way between
+    if n >= 2:
+        tu = np.unique(ev.time)
+        if sample_between and len(tu) > 1:
+            tu = np.sort(np.concatenate([tu, 0.5 * (tu[1:] + tu[:-1])]))
+        if len(tu) > 40_000:
+            tu = tu[np.linspace(0, len(tu) - 1, 40_000).astype(int)]
+        pos, on = tr.sample(tu)
+        ov, s, (i, j) = _overlap_series(pos, radius, on)
+        rep.max_overlap_during = max(ov, 0.0)
+        if ov > EXACT_OVERLAP_TOL:
+            rep.fail("overlap_during", f"balls {i} and {j} overlap by {ov:.3g} m at t={float(tu[s])!r}")
+
+
+def _check_step_snapshots(rep, result, mass):
+    """Step solver: rebuild the full state at each all-ball snapshot (pocket rows in between only remove balls);
+    the total kinetic energy must never rise from one snapshot to the next. Also measures overlaps."""
+    tr = result.trajectory
+    n = int(tr.n_balls)
+    if len(tr.times) == 0:
+        return
+    tu, cnt = np.unique(tr.times, return_counts=True)
+    full = tu[cnt >= n]
+    if len(full) == 0:
+        return
+    pos = np.zeros((len(full), n, 2))
+    vel = np.zeros((len(full), n, 2))
+    on = np.zeros((len(full), n), bool)
+    for b in range(n):
+        rows = np.flatnonzero(tr.ball == b)
+        k = np.searchsorted(tr.times[rows], full, side="right") - 1
+        ok = k >= 0
+        r = rows[np.maximum(k, 0)]
+        pos[:, b] = np.where(ok[:, None], tr.state[r, 0:2], np.nan)
+        vel[:, b] = np.where(ok[:, None], tr.state[r, 2:4], 0.0)
+        on[:, b] = ok & (tr.state[r, 4] > 0.5)
+    ke = 0.5 * np.sum(np.where(on, mass[None, :] * (vel ** 2).sum(-1), 0.0), axis=1)
+    if len(ke) > 1:
+        prev, nxt = ke[:-1], ke[1:]
+        gain = np.where(prev > 0, (nxt - prev) / np.where(prev > 0, prev, 1.0), np.where(nxt > 0, np.inf, 0.0))
+        q = int(np.argmax(gain))
+        rep.max_energy_gain = max(rep.max_energy_gain, float(gain[q]))
+        if gain[q] > ENERGY_REL_TOL:
+            rep.fail("energy", f"step: total kinetic energy rises {float(prev[q])!r} -> {float(nxt[q])!r} between the snapshots at "
+                               f"t={float(full[q])!r} and t={float(full[q + 1])!r}")
+    ov, _, _ = _overlap_series(pos, result.balls.radius, on)
+    rep.max_overlap_during = max(ov, 0.0)
+
+
+# --------------------------------------------------------------------------------------------- running cases
+def run_case(scene_dict: dict[str, Any], sample_between: bool = True):
+    """Build the scene, run it with ``record=True`` and check it. Returns ``(report, result or None)``."""
+    from .physics.scene import Scene
+
+    try:
+        scene = Scene.from_dict(scene_dict)
+        result = scene.run(record=True)
+    except Exception as exc:  # noqa: BLE001 - a crash is a finding
+        rep = Report(solver=str(scene_dict.get("solver", {}).get("name", "exact")))
+        rep.fail("exception", f"{type(exc).__name__}: {exc}\n{traceback.format_exc(limit=4)}")
+        return rep, None
+    return check_shot(scene, result, sample_between=sample_between), result
+
+
+def shrink_case(scene_dict: dict[str, Any], invariant: str | None = None, max_rounds: int = 4,
+                log: Callable[[str], None] | None = None) -> dict[str, Any]:
+    """A smaller scene that still violates ``invariant`` (default: any invariant the given scene violates):
+    balls other than the cue are removed one by one, then parameters are set to round values where the
+    violation persists. Greedy (delta debugging by single removals); deterministic."""
+    import copy
+
+    def violates(d: dict[str, Any]) -> bool:
+        try:
+            rep, _ = run_case(d)
+        except Exception:  # noqa: BLE001 - e.g. a simplified scene that is no longer valid
+            return False
+        return invariant in rep.violations if invariant else bool(rep.violations)
+
+    cur = copy.deepcopy(scene_dict)
+    if invariant is None:
+        rep, _ = run_case(cur)
+        if not rep.violations:
+            return cur
+        invariant = sorted(rep.violations)[0]
+    if not violates(cur):
+        return cur
+    done: set = set()
+    for _ in range(max_rounds):
+        changed = False
+        k = len(cur["balls"]) - 1
+        while k >= 1:
+            trial = copy.deepcopy(cur)
+            del trial["balls"][k]
+            if violates(trial):
+                cur = trial
+                changed = True
+                if log:
+                    log(f"shrink: removed ball {k}, {len(cur['balls'])} left")
+            k -= 1
+        simplifications = [("table", "pockets", ([],)), ("table", "cushion_restitution", (1.0, 0.0, 0.85)),
+                           ("physics", "min_speed", (0.0,)), ("physics", "mu_roll", (0.01,)),
+                           ("physics", "drag_k", (0.0, 1.0)), ("physics", "ball_restitution", (1.0, 0.0, 0.5)),
+                           ("max_events", None, (2000,)), ("max_time", None, (10.0,))]
+        for sec, key, values in simplifications:
+            if (sec, key) in done:
+                continue
+            for val in values:
+                trial = copy.deepcopy(cur)
+                holder, name = (trial, sec) if key is None else (trial[sec], key)
+                if sec == "physics" and key not in holder and key != "min_speed":
+                    break
+                if holder.get(name) == val:
+                    break
+                holder[name] = val
+                if violates(trial):
+                    cur = trial
+                    changed = True
+                    done.add((sec, key))
+                    if log:
+                        log(f"shrink: {sec}{'.' + key if key else ''} = {val}")
+                    break
+        if not changed:
+            break
+    return cur
+
+
+def _solver_for(mode: str, rng: np.random.Generator) -> str:
+    if mode == "both":
+        return "exact" if rng.random() < 0.5 else "step"
+    return mode
+
+
+@dataclass
+class Stats:
+    shots: int = 0
+    failing_shots: int = 0
+    per_solver: Counter = field(default_factory=Counter)
+    violations: Counter = field(default_factory=Counter)
+    violation_shots: Counter = field(default_factory=Counter)
+    statuses: Counter = field(default_factory=Counter)
+    events: int = 0
+    collisions: int = 0
+    max_events: int = 0
+    worst_overlap: dict = field(default_factory=lambda: {"exact": 0.0, "step": 0.0})
+    worst_overlap_ratio: float = 0.0  #: step: final overlap / (speed * dt)
+    worst_overlap_during: dict = field(default_factory=lambda: {"exact": 0.0, "step": 0.0})
+    worst_energy_gain: float = 0.0
+    worst_momentum_err: float = 0.0
+    worst_contact_err: float = 0.0
+    worst_jump: float = 0.0
+    max_burst: int = 0
+    sim_seconds: float = 0.0
+    failures: list = field(default_factory=list)
+
+    def add(self, rep: Report, scene_dict: dict, tag: str, keep_failure: bool) -> None:
+        self.shots += 1
+        solver = scene_dict["solver"]["name"]
+        self.per_solver[solver] += 1
+        self.statuses[f"{solver}:{rep.status or 'crash'}"] += 1
+        self.events += rep.n_events
+        self.collisions += rep.n_collisions
+        self.max_events = max(self.max_events, rep.n_events)
+        self.worst_overlap[solver] = max(self.worst_overlap[solver], rep.max_overlap)
+        if solver == "step":
+            sd = scene_dict["shot"]["speed"] * scene_dict["solver"]["dt"]
+            if sd > 0:
+                self.worst_overlap_ratio = max(self.worst_overlap_ratio, rep.max_overlap / sd)
+        self.worst_overlap_during[solver] = max(self.worst_overlap_during[solver], rep.max_overlap_during)
+        self.worst_energy_gain = max(self.worst_energy_gain, rep.max_energy_gain)
+        self.worst_momentum_err = max(self.worst_momentum_err, rep.max_momentum_err)
+        self.worst_contact_err = max(self.worst_contact_err, rep.max_contact_err)
+        self.worst_jump = max(self.worst_jump, rep.max_jump)
+        self.max_burst = max(self.max_burst, rep.max_burst)
+        self.sim_seconds += rep.sim_time
+        self.failing_shots += bool(rep.violations)
+        for name in rep.violations:
+            self.violations[name] += rep.counts[name]
+            self.violation_shots[name] += 1
+        if rep.violations and keep_failure:
+            self.failures.append({"tag": tag, "solver": solver, "violations": rep.violations, "scene": scene_dict})
+
+    def merge(self, other: "Stats") -> None:
+        self.shots += other.shots
+        self.failing_shots += other.failing_shots
+        for name in ("per_solver", "violations", "violation_shots", "statuses"):
+            getattr(self, name).update(getattr(other, name))
+        self.events += other.events
+        self.collisions += other.collisions
+        self.max_events = max(self.max_events, other.max_events)
+        for s in ("exact", "step"):
+            self.worst_overlap[s] = max(self.worst_overlap[s], other.worst_overlap[s])
+            self.worst_overlap_during[s] = max(self.worst_overlap_during[s], other.worst_overlap_during[s])
+        for name in ("worst_overlap_ratio", "worst_energy_gain", "worst_momentum_err", "worst_contact_err",
+                     "worst_jump", "max_burst"):
+            setattr(self, name, max(getattr(self, name), getattr(other, name)))
+        self.sim_seconds += other.sim_seconds
+        self.failures.extend(other.failures)
+
+
+def _run_chunk(args: tuple) -> Stats:
+    seed, lo, hi, mode, max_time, max_events, keep = args
+    stats = Stats()
+    for idx in range(lo, hi):
+        rng = shot_rng(seed, idx)
+        solver = _solver_for(mode, rng)
+        scene_dict = random_scene(NumpySource(rng), solver=solver, max_time=max_time, max_events=max_events)
+        rep, _ = run_case(scene_dict)
+        stats.add(rep, scene_dict, f"seed{seed}-shot{idx}", keep_failure=len(stats.failures) < keep)
+    return stats
+
+
+def _warm_up() -> None:
+    """Compile (or load from cache) the numba kernels once per process before timing."""
+    rng = shot_rng(0, 0)
+    for solver in ("exact", "step"):
+        run_case(random_scene(NumpySource(rng), solver=solver, max_time=1.0))
+
+
+def format_summary(stats: Stats, wall: float) -> str:
+    lines = [f"shots run: {stats.shots}  ({', '.join(f'{k} {v}' for k, v in sorted(stats.per_solver.items()))})",
+             f"wall time: {wall:.1f} s  ({stats.shots / max(wall, 1e-9):.0f} shots/s); simulated {stats.sim_seconds:.0f} s",
+             f"events/shot: {stats.events / max(stats.shots, 1):.1f} (max {stats.max_events}); "
+             f"collisions/shot: {stats.collisions / max(stats.shots, 1):.1f}",
+             f"most events at one instant: {stats.max_burst} (zeno above {ZENO_BURST})",
+             "statuses: " + ", ".join(f"{k} {v}" for k, v in sorted(stats.statuses.items())),
+             f"failing shots: {stats.failing_shots}",
+             "violations (shots with / total occurrences):"]
+    for name in INVARIANTS:
+        lines.append(f"  {name:15s} {stats.violation_shots.get(name, 0):7d} / {stats.violations.get(name, 0)}")
+    lines += [f"worst final overlap: exact {stats.worst_overlap['exact']:.3g} m (tol {EXACT_OVERLAP_TOL:g}), "
+              f"step {stats.worst_overlap['step']:.3g} m (= {stats.worst_overlap_ratio:.3g} x speed*dt; "
+              f"tol {STEP_OVERLAP_FACTOR:g} x speed*dt + {STEP_OVERLAP_ABS:g})",
+              f"worst overlap during shot: exact {stats.worst_overlap_during['exact']:.3g} m, "
+              f"step {stats.worst_overlap_during['step']:.3g} m",
+              f"worst energy gain (relative, per event): {stats.worst_energy_gain:.3g} (tol {ENERGY_REL_TOL:g})",
+              f"worst momentum error (relative, per collision): {stats.worst_momentum_err:.3g} (tol {MOMENTUM_REL_TOL:g})",
+              f"worst contact-distance error at a collision: {stats.worst_contact_err:.3g} m (tol {CONTACT_TOL:g})",
+              f"worst position jump at an event: {stats.worst_jump:.3g} m (tol {CONTINUITY_TOL:g})"]
+    return "\n".join(lines)
+
+
+def save_failures(failures: list[dict], out: Path) -> list[Path]:
+    """Write every failing case as a scene file plus one line of ``violations.jsonl``; returns the files."""
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    with open(out / "violations.jsonl", "a") as index:
+        for f in failures:
+            kinds = "+".join(sorted(f["violations"]))
+            path = out / f"{f['tag']}-{f['solver']}-{kinds}.json"
+            path.write_text(json.dumps(f["scene"], indent=1) + "\n")
+            index.write(json.dumps({"file": path.name, "solver": f["solver"], "violations": f["violations"]}) + "\n")
+            paths.append(path)
+    return paths
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="python -m billiards_env.fuzz",
+                                description="Fuzz the physics engine with random shots and check its invariants.")
+    p.add_argument("--shots", type=int, default=100_000, help="number of random shots (default 100000)")
+    p.add_argument("--seed", type=int, default=0, help="run seed; shot i of seed S is reproducible alone")
+    p.add_argument("--solver", choices=("exact", "step", "both"), default="exact",
+                   help="solver of every shot; 'both' draws one per shot")
+    p.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
+    p.add_argument("--out", default="fuzz-failures", help="folder for failing cases (scene files)")
+    p.add_argument("--max-time", type=float, default=None,
+                   help=f"simulated-time cap per shot (default {DEFAULT_MAX_TIME:g} s exact, "
+                        f"{DEFAULT_STEP_MAX_TIME:g} s step)")
+    p.add_argument("--max-events", type=int, default=DEFAULT_MAX_EVENTS, help="event cap per shot (exact)")
+    p.add_argument("--chunk", type=int, default=250, help="shots per work unit")
+    p.add_argument("--keep", type=int, default=50, help="failing cases saved per work unit at most")
+    p.add_argument("--start", type=int, default=0, help="index of the first shot (to resume or replay)")
+    p.add_argument("--shrink", metavar="SCENE", help="instead of fuzzing: shrink this failing scene file (fewer balls, "
+                                                    "round parameters) and print the smaller scene")
+    p.add_argument("--invariant", help="with --shrink: the invariant to keep violating (default: the first)")
+    p.add_argument("--check", metavar="SCENE", help="instead of fuzzing: run one scene file and print its report")
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    if args.shots < 1 or args.workers < 1 or args.chunk < 1:
+        print("fuzz: --shots, --workers and --chunk must be positive", file=sys.stderr)
+        return 2
+    if args.check or args.shrink:
+        d = json.loads(Path(args.check or args.shrink).read_text())
+        if args.shrink:
+            d = shrink_case(d, args.invariant, log=lambda m: print(m, file=sys.stderr))
+            print(json.dumps(d, indent=1))
+        rep, _ = run_case(d)
+        print(f"status {rep.status}, {rep.n_events} events; violations:", file=sys.stderr)
+        for name, msg in rep.violations.items():
+            print(f"  {name}: {msg}", file=sys.stderr)
+        return 1 if rep.violations else 0
+    out = Path(args.out)
+    chunks = [(args.seed, lo, min(lo + args.chunk, args.start + args.shots), args.solver, args.max_time,
+               args.max_events, args.keep) for lo in range(args.start, args.start + args.shots, args.chunk)]
+    total = Stats()
+    _warm_up()
+    t0 = time.perf_counter()
+    last_print = t0
+    saved: list[Path] = []
+    if args.workers == 1:
+        results = map(_run_chunk, chunks)
+        pool = None
+    else:
+        ctx = mp.get_context("fork" if sys.platform != "win32" else "spawn")
+        pool = ctx.Pool(args.workers, initializer=_warm_up)
+        results = pool.imap_unordered(_run_chunk, chunks)
+    try:
+        for st in results:
+            saved += save_failures(st.failures, out) if st.failures else []
+            st.failures = []
+            total.merge(st)
+            now = time.perf_counter()
+            if now - last_print > 30 or total.shots == args.shots:
+                last_print = now
+                print(f"[fuzz] {total.shots}/{args.shots} shots, {now - t0:.0f} s, {total.failing_shots} failing "
+                      f"({dict(total.violation_shots)})", file=sys.stderr, flush=True)
+    finally:
+        if pool is not None:
+            pool.close()
+            pool.join()
+    wall = time.perf_counter() - t0
+    print(f"fuzz: seed {args.seed}, solver {args.solver}, workers {args.workers}")
+    print(format_summary(total, wall))
+    if saved:
+        print(f"failing cases: {len(saved)} scene files under {out}/ (index: {out}/violations.jsonl); "
+              f"reproduce with `billiards-sim FILE --events`")
+    else:
+        print("failing cases: none")
+    return 1 if total.failing_shots else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
