@@ -86,6 +86,27 @@ class Balls:
         return out
 
 
+def _raise_ball_error(balls: Balls, table: Table, i: int) -> None:
+    """Raise the SceneError that names what is wrong with ball row ``i``."""
+    bid = balls.ids[i]
+    for what, vals in (("x, y", balls.pos[i]), ("vx, vy", balls.vel[i]),
+                       ("radius", balls.radius[i:i + 1]), ("mass", balls.mass[i:i + 1])):
+        if not np.all(np.isfinite(vals)):
+            raise SceneError(f"ball {bid!r}: {what} must be finite numbers, got {vals.tolist()}")
+    if balls.radius[i] <= 0:
+        raise SceneError(f"ball {bid!r}: radius must be > 0, got {balls.radius[i]}")
+    if balls.mass[i] <= 0:
+        raise SceneError(f"ball {bid!r}: mass must be > 0, got {balls.mass[i]}")
+    r = balls.radius[i]
+    if 2 * r > min(table.length, table.width):
+        raise SceneError(f"ball {bid!r}: radius {r} is too large for a {table.length} x {table.width} table")
+    x, y = balls.pos[i]
+    raise SceneError(
+        f"ball {bid!r}: centre ({x}, {y}) is off the table; it must lie in "
+        f"[{r}, {table.length - r}] x [{r}, {table.width - r}] (radius {r} from each cushion)"
+    )
+
+
 def validate_balls(balls: Balls, table: Table) -> None:
     """Raise :class:`SceneError` naming the first bad ball: non-finite values, non-positive radius or mass,
     a centre off the table, two balls overlapping, or repeated ids."""
@@ -100,27 +121,16 @@ def validate_balls(balls: Balls, table: Table) -> None:
                              (balls.on_table, "on_table", (n,))):
         if np.shape(arr) != shape:
             raise SceneError(f"balls: {name} array has shape {np.shape(arr)}, expected {shape}")
-    for i in range(n):
-        bid = balls.ids[i]
-        for what, vals in (("x, y", balls.pos[i]), ("vx, vy", balls.vel[i]),
-                           ("radius", balls.radius[i:i + 1]), ("mass", balls.mass[i:i + 1])):
-            if not np.all(np.isfinite(vals)):
-                raise SceneError(f"ball {bid!r}: {what} must be finite numbers, got {vals.tolist()}")
-        if balls.radius[i] <= 0:
-            raise SceneError(f"ball {bid!r}: radius must be > 0, got {balls.radius[i]}")
-        if balls.mass[i] <= 0:
-            raise SceneError(f"ball {bid!r}: mass must be > 0, got {balls.mass[i]}")
-        if not balls.on_table[i]:
-            continue
-        r = balls.radius[i]
-        x, y = balls.pos[i]
-        if 2 * r > min(table.length, table.width):
-            raise SceneError(f"ball {bid!r}: radius {r} is too large for a {table.length} x {table.width} table")
-        if not (r <= x <= table.length - r and r <= y <= table.width - r):
-            raise SceneError(
-                f"ball {bid!r}: centre ({x}, {y}) is off the table; it must lie in "
-                f"[{r}, {table.length - r}] x [{r}, {table.width - r}] (radius {r} from each cushion)"
-            )
+    finite = (np.isfinite(balls.pos).all(axis=1) & np.isfinite(balls.vel).all(axis=1)
+              & np.isfinite(balls.radius) & np.isfinite(balls.mass))
+    r = balls.radius
+    x, y = balls.pos[:, 0], balls.pos[:, 1]
+    with np.errstate(invalid="ignore"):
+        bad = ~finite | (r <= 0) | (balls.mass <= 0)
+        bad |= balls.on_table & ((2 * r > min(table.length, table.width))
+                                 | ~((r <= x) & (x <= table.length - r) & (r <= y) & (y <= table.width - r)))
+    if bad.any():
+        _raise_ball_error(balls, table, int(np.argmax(bad)))
     on = np.flatnonzero(balls.on_table)
     if len(on) > 1:
         p = balls.pos[on]

@@ -32,17 +32,13 @@ LECTURE, REWIND = 0, 1
 
 
 @njit(cache=True)
-def _log_event(n_ev, ev_t, ev_int, ev_speed, t, kind, i, j, speed):
-    if n_ev >= ev_t.shape[0]:
-        ev_t = _grow(ev_t)
-        ev_int = _grow_rows(ev_int)
-        ev_speed = _grow(ev_speed)
+def _put_event(ev_t, ev_int, ev_speed, n_ev, t, kind, i, j, speed):
+    """Write event ``n_ev`` (capacity is reserved once per step, so the hot loops never reallocate)."""
     ev_t[n_ev] = t
     ev_int[n_ev, 0] = kind
     ev_int[n_ev, 1] = i
     ev_int[n_ev, 2] = j
     ev_speed[n_ev] = speed
-    return ev_t, ev_int, ev_speed
 
 
 @njit(cache=True)
@@ -125,6 +121,13 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt
             break
         step += 1
         t = step * dt
+        # Reserve room for this step's events (at most a stop, 4 cushions and a pocket per ball, one per pair)
+        # and snapshots, so the loops below never reallocate.
+        need = n_ev + 6 * n + n * (n - 1) // 2 + 1
+        while ev_t.shape[0] < need:
+            ev_t = _grow(ev_t)
+            ev_int = _grow_rows(ev_int)
+            ev_speed = _grow(ev_speed)
 
         # 1. friction and minimum speed; 2. position update.
         for i in range(n):
@@ -140,7 +143,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt
             if s_new <= v_min or s_new == 0.0:
                 vel[i, 0] = 0.0
                 vel[i, 1] = 0.0
-                ev_t, ev_int, ev_speed = _log_event(n_ev, ev_t, ev_int, ev_speed, t, EV_STOP, i, -1, 0.0)
+                _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_STOP, i, -1, 0.0)
                 n_ev += 1
                 continue
             vel[i, 0] *= f
@@ -164,8 +167,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt
                     else:
                         pos[i, axis] = lim
                     if speed > 0.0:
-                        ev_t, ev_int, ev_speed = _log_event(n_ev, ev_t, ev_int, ev_speed, t, EV_CUSHION, i, cush,
-                                                            speed)
+                        _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, cush, speed)
                         n_ev += 1
 
         # 4. ball pairs in (i, j) order.
@@ -234,7 +236,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt
                 if speed > 0.0:
                     moving[i] = True
                     moving[j] = True
-                    ev_t, ev_int, ev_speed = _log_event(n_ev, ev_t, ev_int, ev_speed, t, EV_COLLISION, i, j, speed)
+                    _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_COLLISION, i, j, speed)
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
@@ -258,7 +260,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt
                     vel[i, 1] = 0.0
                     pocket_of[i] = p
                     pocket_time[i] = t
-                    ev_t, ev_int, ev_speed = _log_event(n_ev, ev_t, ev_int, ev_speed, t, EV_POCKET, i, p, speed)
+                    _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, p, speed)
                     n_ev += 1
                     if record:
                         n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel,
