@@ -1,0 +1,298 @@
+"""Training configs: RL Baselines3 Zoo hyperparameter files plus a ``billiards:`` section for ``agents.train``.
+
+A config file is a YAML mapping. The entry named after the env id is in the RL Zoo format, so
+``python -m rl_zoo3.train --algo sac --env BilliardsOneBall-v0 --gym-packages billiards_env
+--conf-file configs/train/one_ball_sac.yaml`` trains from the same file::
+
+    BilliardsOneBall-v0:
+      n_timesteps: !!float 1e6
+      policy: MlpPolicy
+      n_envs: 8
+      learning_rate: !!float 1e-3        # or "lin_1e-3" for a linear schedule
+      batch_size: 256
+      policy_kwargs: "dict(net_arch=[128, 128])"
+      env_wrapper: [agents.wrappers.CutAimWrapper]
+      env_kwargs: {aim: relative}        # RL Zoo >= 2.7 reads this; older: pass --env-kwargs
+      ...                                # any other constructor argument of the algorithm
+
+    billiards:                           # agents.train only (the RL Zoo ignores other top-level keys)
+      algo: sac                          # sac | td3 | ppo | a2c | ddpg
+      env_id: BilliardsOneBall-v0        # which entry above to use (default: the only env entry)
+      seed: 0
+      name: one_ball_sac                 # run folder runs/<name>-<timestamp>/
+      max_seconds: 780                   # wall-clock training budget (0 = none)
+      eval_freq: 20000                   # env steps between evaluations (EvalCallback)
+      n_eval_episodes: 500
+      checkpoint_freq: 50000             # env steps between checkpoints
+      ...                                # see TrainSettings
+
+Zoo keys understood here: ``n_timesteps``, ``policy``, ``n_envs``, ``env_kwargs``, ``env_wrapper`` (a dotted
+name, a list of them, or ``{name: kwargs}`` items), ``normalize`` (bool, dict or "dict(...)" string),
+``policy_kwargs`` (dict or "dict(...)" string), ``learning_rate`` / ``clip_range`` (number or ``lin_<x>``),
+``train_freq`` (int or list), ``noise_type`` / ``noise_std`` (action noise), ``monitor_kwargs``,
+``frame_stack`` (not supported: an error). Everything else goes to the algorithm's constructor.
+"""
+from __future__ import annotations
+
+import copy
+import importlib
+from dataclasses import asdict, dataclass, field, fields
+from pathlib import Path
+from typing import Any, Callable, Mapping
+
+import yaml
+
+SECTION = "billiards"
+ALGOS = ("sac", "td3", "ppo", "a2c", "ddpg")
+OFF_POLICY = ("sac", "td3", "ddpg")
+#: Zoo keys consumed by the training script (never passed to the algorithm).
+ZOO_META_KEYS = ("n_timesteps", "policy", "n_envs", "env_kwargs", "env_wrapper", "normalize", "monitor_kwargs",
+                 "noise_type", "noise_std", "frame_stack", "callback", "vec_env_wrapper")
+
+
+class TrainConfigError(ValueError):
+    """A bad training config: the message names the key and the fix."""
+
+
+@dataclass
+class TrainSettings:
+    """The ``billiards:`` section (``agents.train`` settings; every key optional)."""
+
+    algo: str = "sac"
+    env_id: str | None = None
+    seed: int = 0
+    name: str | None = None  #: run folder prefix (default: derived from the config file name)
+    run_root: str = "runs"  #: where run folders are created
+    max_seconds: float = 0.0  #: wall-clock budget for training (0 = until n_timesteps)
+    eval_freq: int = 20_000  #: env steps (all envs together) between evaluations; 0 = no evaluation
+    n_eval_episodes: int = 500
+    n_eval_envs: int = 10  #: parallel eval envs (batched predictions)
+    eval_seed: int = 10_000  #: every evaluation replays the same episodes (seeds eval_seed + k)
+    checkpoint_freq: int = 50_000  #: env steps between checkpoints (0 = none)
+    checkpoint_seconds: float = 120.0  #: also checkpoint after this many wall seconds (0 = only by steps)
+    keep_checkpoints: int = 3  #: model checkpoints kept (the replay buffer: only the latest)
+    save_replay_buffer: bool = True  #: off-policy: save the replay buffer with each checkpoint (for --resume)
+    torch_threads: int = 1
+    device: str = "cpu"
+    stop_at_success: float = 0.0  #: stop when an evaluation's success rate reaches this (0 = never)
+    progress_bar: bool = True
+    log_interval: int = 0  #: SB3 console log interval (episodes for off-policy, rollouts for on-policy; 0 = off)
+    verbose: int = 0
+
+    @classmethod
+    def from_mapping(cls, data: Mapping[str, Any] | None, source: str) -> "TrainSettings":
+        data = dict(data or {})
+        known = {f.name for f in fields(cls)}
+        unknown = sorted(set(data) - known)
+        if unknown:
+            raise TrainConfigError(f"{source}: unknown key(s) {unknown} in '{SECTION}:'; allowed: {sorted(known)}")
+        s = cls(**data)
+        if s.algo not in ALGOS:
+            raise TrainConfigError(f"{source}: {SECTION}.algo: unknown algorithm {s.algo!r}; use one of {ALGOS}")
+        return s
+
+
+@dataclass
+class TrainConfig:
+    """A resolved training config: the settings, the env id, the zoo hyperparameters (raw, as in the file)."""
+
+    settings: TrainSettings
+    env_id: str
+    hyperparams: dict[str, Any]
+    source: str = "<dict>"
+    extra: dict[str, Any] = field(default_factory=dict)  #: other top-level entries, kept for the run folder
+
+    @property
+    def algo(self) -> str:
+        return self.settings.algo
+
+    @property
+    def n_timesteps(self) -> int:
+        return int(float(self.hyperparams.get("n_timesteps", 100_000)))
+
+    @property
+    def n_envs(self) -> int:
+        return int(self.hyperparams.get("n_envs", 1))
+
+    @property
+    def env_kwargs(self) -> dict[str, Any]:
+        return dict(self.hyperparams.get("env_kwargs") or {})
+
+    def to_yaml_dict(self) -> dict[str, Any]:
+        """The config as a file (zoo entry + ``billiards:`` section) that reproduces this run."""
+        out: dict[str, Any] = {self.env_id: copy.deepcopy(self.hyperparams)}
+        s = asdict(self.settings)
+        s["env_id"] = self.env_id
+        out[SECTION] = s
+        return out
+
+
+def load_train_config(path: str | Path | Mapping[str, Any], env_id: str | None = None,
+                      overrides: Mapping[str, Any] | None = None,
+                      hyper_overrides: Mapping[str, Any] | None = None) -> TrainConfig:
+    """Read a config file (or mapping), pick the env entry, apply overrides (``overrides`` for the
+    ``billiards:`` section, ``hyper_overrides`` for the zoo entry)."""
+    if isinstance(path, Mapping):
+        data, source = copy.deepcopy(dict(path)), "<dict>"
+    else:
+        source = str(path)
+        try:
+            text = Path(path).read_text()
+        except OSError as exc:
+            raise TrainConfigError(f"{source}: cannot read the config ({exc.strerror}); see configs/train/") from None
+        try:
+            data = yaml.safe_load(text) or {}
+        except yaml.YAMLError as exc:
+            raise TrainConfigError(f"{source}: not valid YAML ({exc})") from None
+    if not isinstance(data, Mapping):
+        raise TrainConfigError(f"{source}: expected a mapping at the top level")
+    settings = TrainSettings.from_mapping(data.get(SECTION), source)
+    if overrides:
+        settings = TrainSettings.from_mapping({**asdict(settings), **dict(overrides)}, source)
+    env_entries = [k for k, v in data.items() if k != SECTION and isinstance(v, Mapping)]
+    chosen = env_id or settings.env_id
+    if chosen is None:
+        if len(env_entries) != 1:
+            raise TrainConfigError(f"{source}: {len(env_entries)} env entries {env_entries}; set {SECTION}.env_id "
+                                   "or pass --env-id")
+        chosen = env_entries[0]
+    if chosen not in data:
+        raise TrainConfigError(f"{source}: no entry for env {chosen!r}; entries: {env_entries}")
+    hyper = copy.deepcopy(dict(data[chosen]))
+    if hyper_overrides:
+        for k, v in hyper_overrides.items():
+            if k == "env_kwargs" and isinstance(v, Mapping):
+                hyper["env_kwargs"] = {**dict(hyper.get("env_kwargs") or {}), **dict(v)}
+            else:
+                hyper[k] = v
+    if "frame_stack" in hyper:
+        raise TrainConfigError(f"{source}: frame_stack is not supported by agents.train (the observation is the "
+                               "full table state); remove it")
+    settings.env_id = chosen
+    extra = {k: v for k, v in data.items() if k not in (SECTION, chosen)}
+    return TrainConfig(settings, chosen, hyper, source, extra)
+
+
+# --- zoo value parsing -----------------------------------------------------------------------------------------
+
+def _eval_kwargs_string(text: str, key: str) -> Any:
+    """Evaluate a zoo ``"dict(...)"`` string with only ``dict``, ``nn``/``th`` (torch) and numbers in scope."""
+    import torch as th
+    from torch import nn
+
+    try:
+        return eval(text, {"__builtins__": {}}, {"dict": dict, "nn": nn, "th": th, "list": list, "tuple": tuple,
+                                                  "True": True, "False": False, "None": None})
+    except Exception as exc:  # noqa: BLE001 - report any parse error with the key
+        raise TrainConfigError(f"{key}: cannot evaluate {text!r} ({exc}); write e.g. \"dict(net_arch=[256, 256])\"")
+
+
+def resolve_class(name: str, key: str) -> Any:
+    """A class from a dotted name (``agents.wrappers.CutAimWrapper``)."""
+    module, _, attr = name.rpartition(".")
+    if not module:
+        raise TrainConfigError(f"{key}: {name!r} is not a dotted name (module.Class)")
+    try:
+        return getattr(importlib.import_module(module), attr)
+    except (ImportError, AttributeError) as exc:
+        raise TrainConfigError(f"{key}: cannot import {name!r} ({exc})") from None
+
+
+def wrapper_factory(spec: Any) -> Callable[[Any], Any] | None:
+    """The zoo ``env_wrapper`` value as one callable ``env -> wrapped env`` (None if no wrapper)."""
+    if spec in (None, "", []):
+        return None
+    items = spec if isinstance(spec, list) else [spec]
+    chain: list[tuple[Any, dict[str, Any]]] = []
+    for item in items:
+        if isinstance(item, str):
+            chain.append((resolve_class(item, "env_wrapper"), {}))
+        elif isinstance(item, Mapping) and len(item) == 1:
+            (name, kwargs), = item.items()
+            chain.append((resolve_class(name, "env_wrapper"), dict(kwargs or {})))
+        else:
+            raise TrainConfigError(f"env_wrapper: expected a dotted class name or {{name: kwargs}}, got {item!r}")
+
+    def wrap(env: Any) -> Any:
+        for cls, kwargs in chain:
+            env = cls(env, **kwargs)
+        return env
+
+    return wrap
+
+
+def linear_schedule(initial: float) -> Callable[[float], float]:
+    def schedule(progress_remaining: float) -> float:
+        return progress_remaining * initial
+
+    return schedule
+
+
+@dataclass
+class AlgoSetup:
+    """Everything the zoo entry means, split into what builds the envs and what builds the algorithm."""
+
+    policy: Any
+    algo_kwargs: dict[str, Any]
+    n_envs: int
+    n_timesteps: int
+    env_kwargs: dict[str, Any]
+    wrapper: Callable[[Any], Any] | None
+    normalize: dict[str, Any] | None
+    monitor_kwargs: dict[str, Any]
+    noise: tuple[str, float] | None
+
+
+def parse_hyperparams(cfg: TrainConfig) -> AlgoSetup:
+    """Turn the zoo entry into constructor arguments (schedules, policy_kwargs, noise, wrappers...)."""
+    h = copy.deepcopy(cfg.hyperparams)
+    for key in ("callback", "vec_env_wrapper"):
+        if h.get(key):
+            raise TrainConfigError(f"{cfg.source}: {key} is not supported by agents.train; remove it")
+        h.pop(key, None)
+    policy = h.pop("policy", "MlpPolicy")
+    n_envs = int(h.pop("n_envs", 1))
+    n_timesteps = int(float(h.pop("n_timesteps", 100_000)))
+    env_kwargs = dict(h.pop("env_kwargs", None) or {})
+    wrapper = wrapper_factory(h.pop("env_wrapper", None))
+    normalize = h.pop("normalize", None)
+    norm_kwargs: dict[str, Any] | None = None
+    if isinstance(normalize, str):
+        norm_kwargs = _eval_kwargs_string(normalize, "normalize")
+    elif isinstance(normalize, Mapping):
+        norm_kwargs = dict(normalize)
+    elif normalize:
+        norm_kwargs = {}
+    if norm_kwargs is not None and "gamma" in h:
+        norm_kwargs.setdefault("gamma", h["gamma"])
+    monitor_kwargs = h.pop("monitor_kwargs", None) or {}
+    if isinstance(monitor_kwargs, str):
+        monitor_kwargs = _eval_kwargs_string(monitor_kwargs, "monitor_kwargs")
+    noise = None
+    if h.get("noise_type") is not None:
+        noise = (str(h.pop("noise_type")).strip(), float(h.pop("noise_std", 0.1)))
+    h.pop("noise_type", None)
+    h.pop("noise_std", None)
+    for key in ("learning_rate", "clip_range", "clip_range_vf"):
+        v = h.get(key)
+        if isinstance(v, str):
+            kind, _, value = v.partition("_")
+            if kind != "lin":
+                raise TrainConfigError(f"{key}: unknown schedule {v!r}; use a number or 'lin_<initial>'")
+            h[key] = linear_schedule(float(value))
+        elif isinstance(v, (int, float)) and not isinstance(v, bool):
+            h[key] = float(v)
+    for key in ("policy_kwargs", "replay_buffer_kwargs"):
+        if isinstance(h.get(key), str):
+            h[key] = _eval_kwargs_string(h[key], key)
+    if isinstance(h.get("train_freq"), list):
+        h["train_freq"] = tuple(h["train_freq"])
+    for key in ("buffer_size", "batch_size", "learning_starts", "gradient_steps", "n_steps", "n_epochs",
+                "policy_delay"):
+        if isinstance(h.get(key), float) and float(h[key]).is_integer():
+            h[key] = int(h[key])
+    return AlgoSetup(policy, h, n_envs, n_timesteps, env_kwargs, wrapper, norm_kwargs, dict(monitor_kwargs), noise)
+
+
+__all__ = ["SECTION", "ALGOS", "OFF_POLICY", "TrainConfigError", "TrainSettings", "TrainConfig",
+           "load_train_config", "parse_hyperparams", "wrapper_factory", "resolve_class", "AlgoSetup"]
