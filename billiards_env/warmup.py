@@ -15,13 +15,15 @@ _STAMP = _PACKAGE / "__pycache__" / "kernels.sha256"
 
 
 def clear_stale_cache() -> bool:
-    """Delete numba's cached machine code if any package source changed since it was compiled.
+    """Delete numba's cached machine code if a kernel source (``physics/``, ``envs/_kernels.py``) changed since
+    it was compiled.
 
     numba keys each cached function on its own file only, so a kernel that calls into another module would
     otherwise keep stale code after that module changes. Returns True if the cache was cleared.
     """
     digest = hashlib.sha256()
-    for path in sorted(_PACKAGE.rglob("*.py")):
+    kernel_sources = sorted((_PACKAGE / "physics").glob("*.py")) + [_PACKAGE / "envs" / "_kernels.py"]
+    for path in kernel_sources:
         digest.update(path.relative_to(_PACKAGE).as_posix().encode())
         digest.update(path.read_bytes())
     want = digest.hexdigest()
