@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
+from numba import njit
 
 from .errors import SceneError
 from .table import Table
@@ -86,6 +87,31 @@ class Balls:
         return out
 
 
+@njit(cache=True)
+def _first_problem(pos, vel, radius, mass, on_table, length, width, tol):
+    """``(0, -1, -1, 0)`` if every ball is valid; ``(1, i, -1, 0)`` for the first ball with a bad value or off
+    the table; ``(2, i, j, d)`` for the first overlapping pair (centres ``d`` apart)."""
+    n = pos.shape[0]
+    for i in range(n):
+        r = radius[i]
+        ok = (math.isfinite(pos[i, 0]) and math.isfinite(pos[i, 1]) and math.isfinite(vel[i, 0])
+              and math.isfinite(vel[i, 1]) and math.isfinite(r) and math.isfinite(mass[i]) and r > 0.0
+              and mass[i] > 0.0)
+        if ok and on_table[i]:
+            ok = (2.0 * r <= min(length, width) and r <= pos[i, 0] <= length - r and r <= pos[i, 1] <= width - r)
+        if not ok:
+            return 1, i, -1, 0.0
+    for i in range(n):
+        if not on_table[i]:
+            continue
+        for j in range(i + 1, n):
+            if on_table[j]:
+                d = math.hypot(pos[i, 0] - pos[j, 0], pos[i, 1] - pos[j, 1])
+                if d < radius[i] + radius[j] - tol:
+                    return 2, i, j, d
+    return 0, -1, -1, 0.0
+
+
 def _raise_ball_error(balls: Balls, table: Table, i: int) -> None:
     """Raise the SceneError that names what is wrong with ball row ``i``."""
     bid = balls.ids[i]
@@ -121,26 +147,17 @@ def validate_balls(balls: Balls, table: Table) -> None:
                              (balls.on_table, "on_table", (n,))):
         if np.shape(arr) != shape:
             raise SceneError(f"balls: {name} array has shape {np.shape(arr)}, expected {shape}")
-    finite = (np.isfinite(balls.pos).all(axis=1) & np.isfinite(balls.vel).all(axis=1)
-              & np.isfinite(balls.radius) & np.isfinite(balls.mass))
-    r = balls.radius
-    x, y = balls.pos[:, 0], balls.pos[:, 1]
-    with np.errstate(invalid="ignore"):
-        bad = ~finite | (r <= 0) | (balls.mass <= 0)
-        bad |= balls.on_table & ((2 * r > min(table.length, table.width))
-                                 | ~((r <= x) & (x <= table.length - r) & (r <= y) & (y <= table.width - r)))
-    if bad.any():
-        _raise_ball_error(balls, table, int(np.argmax(bad)))
-    on = np.flatnonzero(balls.on_table)
-    if len(on) > 1:
-        p = balls.pos[on]
-        d = np.sqrt(((p[:, None, :] - p[None, :, :]) ** 2).sum(-1))
-        need = balls.radius[on][:, None] + balls.radius[on][None, :]
-        bad = (d < need - OVERLAP_TOLERANCE) & ~np.eye(len(on), dtype=bool)
-        if bad.any():
-            a, b = np.argwhere(bad)[0]
-            i, j = on[a], on[b]
-            raise SceneError(
-                f"balls {balls.ids[i]!r} and {balls.ids[j]!r} overlap: centres {d[a, b]:.6g} m apart, "
-                f"less than the sum of radii {need[a, b]:.6g} m; move them apart"
-            )
+    bad, i, j, dist = _first_problem(np.ascontiguousarray(balls.pos, dtype=float),
+                                     np.ascontiguousarray(balls.vel, dtype=float),
+                                     np.ascontiguousarray(balls.radius, dtype=float),
+                                     np.ascontiguousarray(balls.mass, dtype=float),
+                                     np.ascontiguousarray(balls.on_table, dtype=np.bool_),
+                                     float(table.length), float(table.width), OVERLAP_TOLERANCE)
+    if bad == 1:
+        _raise_ball_error(balls, table, i)
+    if bad == 2:
+        need = balls.radius[i] + balls.radius[j]
+        raise SceneError(
+            f"balls {balls.ids[i]!r} and {balls.ids[j]!r} overlap: centres {dist:.6g} m apart, "
+            f"less than the sum of radii {need:.6g} m; move them apart"
+        )
