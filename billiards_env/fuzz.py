@@ -326,6 +326,12 @@ def _overlap_series(pos: np.ndarray, radius: np.ndarray, on: np.ndarray) -> tupl
 
 def _np_closed_form(x, y, vx, vy, dt, law, a, k, v_min):
     """Vectorised closed-form state ``dt`` after a logged state (the exact solver's ``_state_at``)."""
+    # A subnormal deceleration or drag rate makes the time to stop overflow to inf, which is the right answer.
+    with np.errstate(over="ignore", divide="ignore"):
+        return _np_closed_form_impl(x, y, vx, vy, dt, law, a, k, v_min)
+
+
+def _np_closed_form_impl(x, y, vx, vy, dt, law, a, k, v_min):
     s = np.hypot(vx, vy)
     moving = s > 0.0
     ss = np.where(moving, s, 1.0)

@@ -14,7 +14,7 @@ Invariants and tolerances (constants in ``billiards_env.fuzz``):
   ``2 * speed * dt + 1e-9`` m: the push-apart (lecture) or rewind is a single pass over the pairs, a later
   push or the cushion clamp can re-open an overlap already resolved, and balls at rest are never separated
   again; the penetration one step allows is at most the relative speed times dt (<= 2 * cue speed * dt), and
-  the fuzz measured at most 0.06 x speed * dt in 100,000 shots;
+  the fuzz measured at most 0.37 x speed * dt (2.2 mm) in 100,000 step shots;
 - nothing NaN/inf; kinetic energy never rises at any collision or cushion hit (exact: per event from the state
   log, relative 1e-12; step: total energy between snapshots); momentum of the pair conserved at every collision
   (relative 1e-12); collisions at contact distance (1e-9 m); no jumps at events (1e-9 m); pocketed balls stay

@@ -1,6 +1,7 @@
 """Regression tests for engine violations found by the fuzz (``python -m billiards_env.fuzz``), each reduced to a
 minimal scene file in ``cases/`` (run one with ``billiards-sim cases/NAME.json --events`` or
-``python -m billiards_env.fuzz --check cases/NAME.json``). They fail until the engine is fixed.
+``python -m billiards_env.fuzz --check cases/NAME.json``). All of them failed on the engine of 5a05464; the
+sticky-contact merge, same-instant floor and cluster jam of 045a197 fixed them, and these tests keep it so.
 
 1. Missed re-contact of a sliding pair (exact solver, rolling friction). Two touching balls whose relative
    velocity along the line of centres is zero or a tiny opening speed (after a micro-collision, or after a
