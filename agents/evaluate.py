@@ -279,7 +279,6 @@ def _monitor_success(run_dir: Path) -> tuple[np.ndarray, np.ndarray] | None:
     import csv
 
     rows: list[tuple[float, int, float]] = []
-    offset_t = 0.0
     for sess in sorted((run_dir / "monitor").glob("session*")):
         sess_rows = []
         for f in sorted(sess.glob("*.monitor.csv")):
@@ -292,7 +291,6 @@ def _monitor_success(run_dir: Path) -> tuple[np.ndarray, np.ndarray] | None:
                     sess_rows.append((t_start + float(rec["t"]), int(float(rec["l"])),
                                       1.0 if rec["is_success"] in ("True", "1", "1.0") else 0.0))
         rows += sorted(sess_rows)
-        offset_t += 0
     if not rows:
         return None
     lengths = np.array([r[1] for r in rows], dtype=float)

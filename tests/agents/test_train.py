@@ -139,9 +139,11 @@ def test_bad_configs_are_reported(tmp_path):
 def _easy_training(tmp_path, seconds: float, steps: int) -> tuple[float, float]:
     cfg = _config(tmp_path, n_timesteps=steps, env_kwargs=dict(EASY), max_seconds=seconds, eval_freq=0,
                   checkpoint_freq=0)
-    hyper = cfg["BilliardsOneBall-v0"]
-    hyper.update({"n_envs": 8, "batch_size": 128, "learning_rate": 2e-3, "learning_starts": 500,
-                  "target_entropy": -5.0, "policy_kwargs": "dict(net_arch=[64, 64])", "buffer_size": 50_000})
+    hyper = cfg["BilliardsOneBall-v0"]  # the tuned one-ball settings (configs/train/one_ball_sac.yaml)
+    hyper.update({"n_envs": 8, "batch_size": 128, "learning_rate": 3e-3, "learning_starts": 1000,
+                  "target_entropy": -4.0, "policy_kwargs": "dict(net_arch=[64, 64])", "buffer_size": 100_000,
+                  "env_wrapper": [{"agents.wrappers.GhostAimWrapper": {"speed_max": 1.8}},
+                                  "agents.wrappers.ShotFeatures"]})
     meta = train(load_train_config(cfg), quiet=True)
     trained, _ = run_player(model_player(meta["run_dir"]), 200, seed=4242)
     rand, _ = run_player(baseline_player("random", "BilliardsOneBall-v0", dict(EASY)), 200, seed=4242)
@@ -150,7 +152,7 @@ def _easy_training(tmp_path, seconds: float, steps: int) -> tuple[float, float]:
 
 def test_short_training_beats_random_on_an_easy_scene(tmp_path):
     trained, rand = _easy_training(tmp_path, seconds=25, steps=12_000)
-    assert trained >= rand + 0.15, (trained, rand)
+    assert trained >= rand + 0.3, (trained, rand)  # measured: 0.82 vs 0.085 in 25 s on a loaded machine
 
 
 @pytest.mark.slow
