@@ -50,7 +50,19 @@ def _speed_range(env: gym.Env, lo: float | None, hi: float | None, who: str) -> 
     return lo, hi
 
 
-class CutAimWrapper(gym.ActionWrapper):
+class _ShotActionWrapper(gym.ActionWrapper):
+    """An action wrapper that maps its own action to a shot ``(angle, speed)`` (``shot_from_action``) and plays
+    it through the env's own action mapping."""
+
+    def shot_from_action(self, action: Any) -> tuple[float, float]:
+        raise NotImplementedError
+
+    def action(self, action: Any) -> np.ndarray:
+        angle, speed = self.shot_from_action(action)
+        return np.asarray(self.env.unwrapped.action_from_shot(angle, speed), dtype=np.float32)
+
+
+class CutAimWrapper(_ShotActionWrapper):
     """Action ``[b, power]``: cut fraction ``b`` on the target ball, power as the env's ``a[1]``.
 
     ``max_cut``: ``|b| = 1`` maps to this fraction (1.0 = a full graze); lower it to spend the action range on
@@ -82,10 +94,6 @@ class CutAimWrapper(gym.ActionWrapper):
         delta = math.asin(max(-1.0, min(1.0, h / max(d, 1e-12))))
         return math.atan2(dy, dx) - delta, speed
 
-    def action(self, action: Any) -> np.ndarray:
-        angle, speed = self.shot_from_action(action)
-        return np.asarray(self.env.unwrapped.action_from_shot(angle, speed), dtype=np.float32)
-
     def action_from_shot(self, angle: float, speed: float) -> np.ndarray:
         """Inverse mapping (for baselines played through the wrapper): the cut fraction of a cue direction."""
         u = self.env.unwrapped
@@ -102,7 +110,7 @@ class CutAimWrapper(gym.ActionWrapper):
         return np.clip(np.array([frac, a1], dtype=np.float32), -1.0, 1.0)
 
 
-class GhostAimWrapper(gym.ActionWrapper):
+class GhostAimWrapper(_ShotActionWrapper):
     """Action ``[phi, power]``: send the target ball off at ``phi * max_angle`` from the cue->target direction.
 
     The wrapper places the cue ball's contact (ghost-ball) position ``G = O - (r_cue + r_obj) u(theta)`` behind
@@ -134,10 +142,6 @@ class GhostAimWrapper(gym.ActionWrapper):
         reach = float(b.radius[0] + b.radius[t])
         gx, gy = O[0] - reach * math.cos(theta), O[1] - reach * math.sin(theta)
         return math.atan2(gy - C[1], gx - C[0]), speed
-
-    def action(self, action: Any) -> np.ndarray:
-        angle, speed = self.shot_from_action(action)
-        return np.asarray(self.env.unwrapped.action_from_shot(angle, speed), dtype=np.float32)
 
     def action_from_object_direction(self, theta: float, speed: float) -> np.ndarray:
         """The action sending the target ball in direction ``theta`` with cue speed ``speed``."""
