@@ -13,6 +13,8 @@ import math
 from numba import njit
 
 _MAX_ITER = 200
+#: Squared-distance excess (m^2) below which a touching pair has not really separated: a gap of ~1e-15 m.
+_OPEN_TOL = 1e-16
 
 
 @njit(cache=True)
@@ -144,8 +146,10 @@ def first_entry(c4: float, c3: float, c2: float, c1: float, c0: float, t_max: fl
     if c0 <= 0.0:
         if c1 < -closing_tol:
             return 0.0  # touching and closing
-        if c1 <= closing_tol and c2 < 0.0:
-            return 0.0  # touching, not separating, and about to press into each other (sticky contact)
+        if c2 < 0.0 and (c1 <= closing_tol or c0 + c1 * c1 / (-4.0 * c2) <= _OPEN_TOL):
+            # Touching, and friction presses the pair together before a gap opens beyond round-off
+            # (sticky contact): the collision law merges it now rather than let it overlap.
+            return 0.0
     nc, k1, k2, k3 = cubic_roots_in(4.0 * c4, 3.0 * c3, 2.0 * c2, c1, 0.0, t_max)
     left = 0.0
     f_left = c0
