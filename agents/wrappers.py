@@ -51,8 +51,19 @@ def _speed_range(env: gym.Env, lo: float | None, hi: float | None, who: str) -> 
 
 
 class _ShotActionWrapper(gym.ActionWrapper):
-    """An action wrapper that maps its own action to a shot ``(angle, speed)`` (``shot_from_action``) and plays
-    it through the env's own action mapping."""
+    """An action wrapper that maps its own action ``[aim, power]`` to a shot ``(angle, speed)``
+    (``shot_from_action``) and plays it through the env's own action mapping. ``power`` maps linearly onto
+    the wrapper's speed range."""
+
+    def __init__(self, env: gym.Env, speed_min: float | None, speed_max: float | None):
+        super().__init__(env)
+        self.speed_lo, self.speed_hi = _speed_range(env, speed_min, speed_max, type(self).__name__)
+        self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
+
+    def _aim_and_speed(self, action: Any) -> tuple[float, float]:
+        """The clipped aim component and the speed (m/s) of a wrapped action."""
+        a = np.clip(np.asarray(action, dtype=np.float64).reshape(-1), -1.0, 1.0)
+        return float(a[0]), float(self.speed_lo + 0.5 * (a[1] + 1.0) * (self.speed_hi - self.speed_lo))
 
     def shot_from_action(self, action: Any) -> tuple[float, float]:
         raise NotImplementedError
@@ -71,18 +82,15 @@ class CutAimWrapper(_ShotActionWrapper):
 
     def __init__(self, env: gym.Env, max_cut: float = 1.0, speed_min: float | None = None,
                  speed_max: float | None = None):
-        super().__init__(env)
         if not 0.0 < max_cut <= 1.0:
             raise ValueError(f"CutAimWrapper: max_cut must be in (0, 1], got {max_cut}")
+        super().__init__(env, speed_min, speed_max)
         self.max_cut = float(max_cut)
-        self.speed_lo, self.speed_hi = _speed_range(env, speed_min, speed_max, "CutAimWrapper")
-        self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
 
     def shot_from_action(self, action: Any) -> tuple[float, float]:
         """The ``(angle, speed)`` of a wrapped action (before the env's noise)."""
-        a = np.clip(np.asarray(action, dtype=np.float64).reshape(-1), -1.0, 1.0)
+        aim, speed = self._aim_and_speed(action)
         u = self.env.unwrapped
-        speed = float(self.speed_lo + 0.5 * (a[1] + 1.0) * (self.speed_hi - self.speed_lo))
         t = _target_row(self.env)
         b = u.balls
         if t is None:
@@ -90,7 +98,7 @@ class CutAimWrapper(_ShotActionWrapper):
         dx, dy = b.pos[t] - b.pos[0]
         d = math.hypot(dx, dy)
         reach = float(b.radius[0] + b.radius[t])
-        h = float(a[0]) * self.max_cut * reach
+        h = aim * self.max_cut * reach
         delta = math.asin(max(-1.0, min(1.0, h / max(d, 1e-12))))
         return math.atan2(dy, dx) - delta, speed
 
@@ -122,23 +130,20 @@ class GhostAimWrapper(_ShotActionWrapper):
 
     def __init__(self, env: gym.Env, max_angle_deg: float = 90.0, speed_min: float | None = None,
                  speed_max: float | None = None):
-        super().__init__(env)
         if not 0.0 < max_angle_deg <= 90.0:
             raise ValueError(f"GhostAimWrapper: max_angle_deg must be in (0, 90], got {max_angle_deg}")
+        super().__init__(env, speed_min, speed_max)
         self.max_angle = math.radians(max_angle_deg)
-        self.speed_lo, self.speed_hi = _speed_range(env, speed_min, speed_max, "GhostAimWrapper")
-        self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
 
     def shot_from_action(self, action: Any) -> tuple[float, float]:
-        a = np.clip(np.asarray(action, dtype=np.float64).reshape(-1), -1.0, 1.0)
+        aim, speed = self._aim_and_speed(action)
         u = self.env.unwrapped
-        speed = float(self.speed_lo + 0.5 * (a[1] + 1.0) * (self.speed_hi - self.speed_lo))
         t = _target_row(self.env)
         if t is None:
             return 0.0, speed
         b = u.balls
         C, O = b.pos[0], b.pos[t]
-        theta = math.atan2(O[1] - C[1], O[0] - C[0]) + float(a[0]) * self.max_angle
+        theta = math.atan2(O[1] - C[1], O[0] - C[0]) + aim * self.max_angle
         reach = float(b.radius[0] + b.radius[t])
         gx, gy = O[0] - reach * math.cos(theta), O[1] - reach * math.sin(theta)
         return math.atan2(gy - C[1], gx - C[0]), speed

@@ -86,32 +86,30 @@ def _aim_with_cut(rng: np.random.Generator, pos: np.ndarray, target: int, r: flo
     return math.atan2(dy, dx) + rng.uniform(-1.2, 1.2) * widest
 
 
-def one_ball_shots(n: int, seed: int = 1, table: Table | None = None) -> list[Shot]:
-    """Cue ball and one object ball at random places; the cue aimed at the object ball with a random cut;
-    speed uniform in [0.5, 3] m/s."""
+def _random_shots(kind: str, n: int, seed: int, table: Table | None, n_balls: int, v_max: float) -> list[Shot]:
+    """``n_balls`` balls at random places; the cue aimed at ball 1 with a random cut; speed uniform in
+    [0.5, ``v_max``] m/s."""
     table = table or Table()
     rng = np.random.default_rng(seed)
     shots = []
     for k in range(n):
-        pos = _place(rng, table, 2)
+        pos = _place(rng, table, n_balls)
         angle = _aim_with_cut(rng, pos, 1)
-        speed = float(rng.uniform(0.5, 3.0))
-        shots.append(Shot("one_ball", k, Balls.from_positions(pos), 0, angle, speed))
+        speed = float(rng.uniform(0.5, v_max))
+        shots.append(Shot(kind, k, Balls.from_positions(pos), 0, angle, speed))
     return shots
+
+
+def one_ball_shots(n: int, seed: int = 1, table: Table | None = None) -> list[Shot]:
+    """Cue ball and one object ball at random places; the cue aimed at the object ball with a random cut;
+    speed uniform in [0.5, 3] m/s."""
+    return _random_shots("one_ball", n, seed, table, 2, 3.0)
 
 
 def three_ball_shots(n: int, seed: int = 2, table: Table | None = None) -> list[Shot]:
     """Cue ball and two object balls at random places; the cue aimed at the first with a random cut; speed
     uniform in [0.5, 4] m/s."""
-    table = table or Table()
-    rng = np.random.default_rng(seed)
-    shots = []
-    for k in range(n):
-        pos = _place(rng, table, 3)
-        angle = _aim_with_cut(rng, pos, 1)
-        speed = float(rng.uniform(0.5, 4.0))
-        shots.append(Shot("three_ball", k, Balls.from_positions(pos), 0, angle, speed))
-    return shots
+    return _random_shots("three_ball", n, seed, table, 3, 4.0)
 
 
 def break_shots(n: int, table: Table | None = None, speed: float = 8.0) -> list[Shot]:
