@@ -56,9 +56,9 @@ def _sizes(quick: bool) -> dict[str, int]:
 def _kernel_call(sim: Simulator, balls) -> Any:
     """A callable running only the numba kernel on fresh copies of the arrays (what ``run`` wraps)."""
     from billiards_env.physics.exact import simulate_exact
-    from billiards_env.physics.simulate import pack_params
+    from billiards_env.physics.kernel_io import kernel_params
 
-    prm = pack_params(sim.table, sim.physics, sim.max_time)
+    prm = kernel_params(sim.table, sim.physics, sim.max_time)
     pxy = np.ascontiguousarray(sim.table.pocket_xy, dtype=float)
     pr = np.ascontiguousarray(sim.table.pocket_radius, dtype=float)
     pos, vel = np.ascontiguousarray(balls.pos, float), np.ascontiguousarray(balls.vel, float)

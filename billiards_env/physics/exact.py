@@ -17,20 +17,12 @@ import math
 import numpy as np
 from numba import njit
 
+from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLING, STATUS_EVENT_CAP, STATUS_REST,
+                    STATUS_TIME_CAP)
 from .collide import CONTACT_TIME, JAM_EVENTS, resolve_ball_ball, resolve_cushion
-from .motion import ROLLING, distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
+from .kernel_io import KernelResult
+from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
 from .roots import first_entry
-
-# Event kinds (the event log's ``kind`` column).
-EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, EV_JAM = 0, 1, 2, 3, 4
-EVENT_KINDS = ("collision", "cushion", "pocket", "stop", "jam")
-# Shot status codes.
-STATUS_REST, STATUS_TIME_CAP, STATUS_EVENT_CAP = 0, 1, 2
-STATUS_NAMES = ("rest", "time_cap", "event_cap")
-
-# Packed parameter vector layout (``prm``), shared with the step solver.
-P_LENGTH, P_WIDTH, P_E_CUSHION, P_E_BALL, P_LAW, P_DECEL, P_DRAG_K, P_MIN_SPEED, P_MAX_TIME, P_SPEED_FLOOR = range(10)
-N_PARAMS = 10
 
 
 @njit(cache=True)
@@ -88,9 +80,9 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
             if dx * dx + dy * dy <= pocket_r[p] * pocket_r[p]:
                 return t0[i], EV_POCKET, p
         return math.inf, -1, -1
-    law = int(prm[P_LAW])
-    a = prm[P_DECEL]
-    k = prm[P_DRAG_K]
+    law = prm.law
+    a = prm.decel
+    k = prm.drag_k
     ux = vx / s
     uy = vy / s
     x = p0[i, 0]
@@ -120,7 +112,7 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
             other = p
     if ux != 0.0:
         cush = 1 if ux > 0.0 else 0
-        wall = prm[P_LENGTH] - r if ux > 0.0 else r
+        wall = prm.length - r if ux > 0.0 else r
         d = max((wall - x) / ux, 0.0)
         if d < best_d:
             best_d = d
@@ -128,7 +120,7 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
             other = cush
     if uy != 0.0:
         cush = 3 if uy > 0.0 else 2
-        wall = prm[P_WIDTH] - r if uy > 0.0 else r
+        wall = prm.width - r if uy > 0.0 else r
         d = max((wall - y) / uy, 0.0)
         if d < best_d:
             best_d = d
@@ -148,16 +140,16 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
 def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (stop, cushion, pocket), since that event recomputes the pair anyway."""
-    law = int(prm[P_LAW])
-    a = prm[P_DECEL]
-    k = prm[P_DRAG_K]
+    law = prm.law
+    a = prm.decel
+    k = prm.drag_k
     xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
     xj, yj, vxj, vyj = _state_at(j, t, t0, p0, v0, tstop, law, a, k)
     si = math.hypot(vxi, vyi)
     sj = math.hypot(vxj, vyj)
     if si == 0.0 and sj == 0.0:
         return math.inf
-    window = min(prm[P_MAX_TIME], ball_t[i], ball_t[j]) - t
+    window = min(prm.max_time, ball_t[i], ball_t[j]) - t
     if not window > 0.0:
         return math.inf
     dc = radius[i] + radius[j]
@@ -213,9 +205,9 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
     member touches. Writes the members into ``involved``; returns their count."""
     n = p0.shape[0]
-    law = int(prm[P_LAW])
-    a = prm[P_DECEL]
-    k = prm[P_DRAG_K]
+    law = prm.law
+    a = prm.decel
+    k = prm.drag_k
     px = np.empty(n)
     py = np.empty(n)
     for m in range(n):
@@ -249,16 +241,16 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     for h in range(count):
         m = involved[h]
         r = radius[m] + 1e-9
-        if (p0[m, 0] <= r and cx < 0.0) or (p0[m, 0] >= prm[P_LENGTH] - r and cx > 0.0):
+        if (p0[m, 0] <= r and cx < 0.0) or (p0[m, 0] >= prm.length - r and cx > 0.0):
             cx = 0.0
-        if (p0[m, 1] <= r and cy < 0.0) or (p0[m, 1] >= prm[P_WIDTH] - r and cy > 0.0):
+        if (p0[m, 1] <= r and cy < 0.0) or (p0[m, 1] >= prm.width - r and cy > 0.0):
             cy = 0.0
     for h in range(count):
         m = involved[h]
         v0[m, 0] = cx
         v0[m, 1] = cy
         burst[m] = 0
-        _set_stop_time(m, t0, v0, tstop, law, a, k, prm[P_MIN_SPEED])
+        _set_stop_time(m, t0, v0, tstop, law, a, k, prm.min_speed)
     return count
 
 
@@ -293,22 +285,23 @@ def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table):
 
 
 @njit(cache=True)
-def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, max_events, record):
+def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params, max_events, record):
     """Simulate one shot from ``pos``/``vel`` (updated in place to the final state) until rest or a cap.
 
-    Returns ``(status, t_end, n_events, pocket_of, pocket_time, ev_t, ev_int, ev_speed, sc_t, sc_ball,
-    sc_state)``: the event log (time; kind, ball, other; impact speed) and, when ``record``, the log of state
-    changes (time, ball, ``x y vx vy on_table`` after each event) from which the trajectory is exact.
+    ``params``: the parameter record (:mod:`.kernel_io`). Returns a :class:`~.kernel_io.KernelResult`: the
+    event log (time; kind, ball, other; impact speed) and, when ``record``, the log of state changes (time,
+    ball, ``x y vx vy on_table`` after each event) from which the trajectory is exact.
     """
+    prm = params[0]
     n = pos.shape[0]
-    law = int(prm[P_LAW])
-    a = prm[P_DECEL]
-    k = prm[P_DRAG_K]
-    v_min = prm[P_MIN_SPEED]
-    e_c = prm[P_E_CUSHION]
-    e_b = prm[P_E_BALL]
-    max_time = prm[P_MAX_TIME]
-    floor = prm[P_SPEED_FLOOR]
+    law = prm.law
+    a = prm.decel
+    k = prm.drag_k
+    v_min = prm.min_speed
+    e_c = prm.e_cushion
+    e_b = prm.e_ball
+    max_time = prm.max_time
+    floor = prm.speed_floor
     decel = a if law == ROLLING else 0.0
 
     t0 = np.zeros(n)
@@ -417,11 +410,11 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
             if bj == 0:
                 p0[bi, 0] = r
             elif bj == 1:
-                p0[bi, 0] = prm[P_LENGTH] - r
+                p0[bi, 0] = prm.length - r
             elif bj == 2:
                 p0[bi, 1] = r
             else:
-                p0[bi, 1] = prm[P_WIDTH] - r
+                p0[bi, 1] = prm.width - r
             _count_burst(bi, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS:
                 n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
@@ -493,16 +486,5 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, m
             pos[i, 1] = p0[i, 1]
             vel[i, 0] = 0.0
             vel[i, 1] = 0.0
-    return (
-        status,
-        t,
-        n_events,
-        pocket_of,
-        pocket_time,
-        ev_t[:n_events],
-        ev_int[:n_events],
-        ev_speed[:n_events],
-        sc_t[:n_sc],
-        sc_ball[:n_sc],
-        sc_state[:n_sc],
-    )
+    return KernelResult(status, t, n_events, pocket_of, pocket_time, ev_t[:n_events], ev_int[:n_events],
+                        ev_speed[:n_events], sc_t[:n_sc], sc_ball[:n_sc], sc_state[:n_sc], 0, 0)

@@ -4,11 +4,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .codes import DRAG, FRICTION_LAWS, ROLLING
 from .errors import SceneError, check_non_negative, check_positive, check_unit_interval
 
 G = 9.81  #: gravitational acceleration (m/s^2), fixed by the spec
-FRICTION_LAWS = ("rolling", "drag")
-ROLLING, DRAG = 0, 1  #: friction law codes used by the compiled kernels
 
 
 @dataclass(frozen=True)

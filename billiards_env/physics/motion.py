@@ -6,7 +6,7 @@ A moving ball keeps its direction ``u`` between events; only its speed changes. 
 - rolling: ``dist = s t - a t^2 / 2`` until ``t_stop = (s - v_min) / a`` (``a = mu g``);
 - drag:    ``dist = s (1 - e^{-k t}) / k`` until the speed ``s e^{-k t}`` falls to ``v_min``.
 
-``law``: 0 rolling, 1 drag (see ``model.ROLLING``/``model.DRAG``).
+``law``: :data:`.codes.ROLLING` or :data:`.codes.DRAG`.
 """
 from __future__ import annotations
 
@@ -14,8 +14,7 @@ import math
 
 from numba import njit
 
-ROLLING = 0
-DRAG = 1
+from .codes import DRAG, ROLLING  # noqa: F401  (DRAG re-exported for callers of the motion law)
 
 
 _SERIES = 1e-5  # below this k*t, the drag formulas use their series (exact to round-off, and safe for tiny k)

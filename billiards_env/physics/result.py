@@ -8,8 +8,7 @@ from typing import Any
 import numpy as np
 
 from .balls import Balls
-from .exact import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, EVENT_KINDS
-from .table import CUSHION_NAMES
+from .codes import CUSHION_NAMES, EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, EVENT_KINDS
 from .trajectory import Trajectory
 
 

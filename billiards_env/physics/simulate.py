@@ -7,9 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from .balls import Balls, validate_balls
+from .codes import STATUS_NAMES
 from .errors import SceneError, check_positive
-from .exact import N_PARAMS, P_DECEL, P_DRAG_K, P_E_BALL, P_E_CUSHION, P_LAW, P_LENGTH, P_MAX_TIME, P_MIN_SPEED, \
-    P_SPEED_FLOOR, P_WIDTH, STATUS_NAMES, simulate_exact
+from .exact import simulate_exact
+from .kernel_io import kernel_params
 from .model import Physics
 from .result import EventLog, ShotResult
 from .step import CONTACT_MODES, simulate_step
@@ -20,26 +21,6 @@ SOLVERS = ("exact", "step")
 DEFAULT_MAX_TIME = 600.0  #: simulated-time cap per shot (s)
 DEFAULT_MAX_EVENTS = 100_000  #: event cap per shot (exact solver)
 DEFAULT_DT = 1e-3  #: step solver time step (s)
-#: Separation-speed floor of the inelastic-collapse guard (m/s), see :mod:`.collide`.
-CONTACT_SPEED_FLOOR = 1e-3
-
-
-def pack_params(table: Table, physics: Physics, max_time: float) -> np.ndarray:
-    """The parameter vector the compiled kernels read (layout: ``exact.P_*``)."""
-    prm = np.zeros(N_PARAMS)
-    prm[P_LENGTH] = table.length
-    prm[P_WIDTH] = table.width
-    prm[P_E_CUSHION] = table.cushion_restitution
-    prm[P_E_BALL] = physics.ball_restitution
-    prm[P_LAW] = physics.law_code
-    prm[P_DECEL] = physics.deceleration
-    prm[P_DRAG_K] = physics.drag_rate
-    prm[P_MIN_SPEED] = physics.min_speed
-    prm[P_MAX_TIME] = max_time
-    prm[P_SPEED_FLOOR] = CONTACT_SPEED_FLOOR
-    return prm
-
-
 @dataclass
 class Simulator:
     """A table, its physics and a solver, ready to run shots.
@@ -71,7 +52,7 @@ class Simulator:
         if self.solver == "step" and self.max_time / self.dt > 1e10:
             raise SceneError(f"solver.dt: {self.dt} s with max_time {self.max_time} s needs over 1e10 steps; "
                              "raise dt or lower max_time")
-        self._prm = pack_params(self.table, self.physics, self.max_time)
+        self._params = kernel_params(self.table, self.physics, self.max_time)
         self._pocket_xy = np.ascontiguousarray(self.table.pocket_xy, dtype=float)
         self._pocket_r = np.ascontiguousarray(self.table.pocket_radius, dtype=float)
 
@@ -93,8 +74,8 @@ class Simulator:
             ev = res.events
             return res.status, res.time, res.n_events, res.pocket, np.stack([ev.kind, ev.ball, ev.other], axis=1)
         out = simulate_exact(balls.pos, balls.vel, balls.radius, balls.mass, balls.on_table, self._pocket_xy,
-                             self._pocket_r, self._prm, self.max_events, False)
-        return STATUS_NAMES[out[0]], out[1], out[2], out[3], out[6]
+                             self._pocket_r, self._params, self.max_events, False)
+        return STATUS_NAMES[out.status], out.time, out.n_events, out.pocket, out.ev_int
 
     def run(self, balls: Balls, record: bool = False, validate: bool = True) -> ShotResult:
         """Simulate from ``balls`` (not modified) until rest or a cap. ``record`` keeps the trajectory."""
@@ -106,26 +87,23 @@ class Simulator:
         on = np.ascontiguousarray(out.on_table, dtype=np.bool_)
         radius = np.ascontiguousarray(out.radius, dtype=float)
         mass = np.ascontiguousarray(out.mass, dtype=float)
-        n_steps = n_tunnelled = 0
         if self.solver == "exact":
-            (status, t_end, n_events, pocket, pocketed_at, ev_t, ev_int, ev_speed, sc_t, sc_ball,
-             sc_state) = simulate_exact(pos, vel, radius, mass, on, self._pocket_xy, self._pocket_r, self._prm,
-                                        self.max_events, record)
+            k = simulate_exact(pos, vel, radius, mass, on, self._pocket_xy, self._pocket_r, self._params,
+                               self.max_events, record)
         else:
             record_dt = 1.0 / 240.0 if record else 0.0
-            (status, t_end, n_events, pocket, pocketed_at, ev_t, ev_int, ev_speed, sc_t, sc_ball, sc_state,
-             n_steps, n_tunnelled) = simulate_step(pos, vel, radius, mass, on, self._pocket_xy, self._pocket_r,
-                                                   self._prm, self.dt, CONTACT_MODES.index(self.contact),
-                                                   record_dt)
+            k = simulate_step(pos, vel, radius, mass, on, self._pocket_xy, self._pocket_r, self._params, self.dt,
+                              CONTACT_MODES.index(self.contact), record_dt)
         final = Balls(out.ids, pos, vel, radius, mass, on)
         traj = None
         if record:
-            traj = Trajectory(sc_t, sc_ball, sc_state, len(out), float(t_end), self.physics.law_code,
+            traj = Trajectory(k.sc_time, k.sc_ball, k.sc_state, len(out), float(k.time), self.physics.law_code,
                               self.physics.deceleration, self.physics.drag_rate, self.physics.min_speed,
                               interpolate=self.solver != "exact")
-        events = EventLog(ev_t, ev_int[:, 0], ev_int[:, 1], ev_int[:, 2], ev_speed)
-        return ShotResult(STATUS_NAMES[status], float(t_end), int(n_events), final, pocket, pocketed_at, events,
-                          self.name, traj, int(n_steps), int(n_tunnelled))
+        ev_int = k.ev_int
+        events = EventLog(k.ev_time, ev_int[:, 0], ev_int[:, 1], ev_int[:, 2], k.ev_speed)
+        return ShotResult(STATUS_NAMES[k.status], float(k.time), int(k.n_events), final, k.pocket, k.pocketed_at,
+                          events, self.name, traj, int(k.n_steps), int(k.n_tunnelled))
 
 
 def simulate(
@@ -158,4 +136,4 @@ def momentum(balls: Balls) -> np.ndarray:
     return (balls.mass[on, None] * balls.vel[on]).sum(axis=0)
 
 
-__all__ = ["Simulator", "simulate", "pack_params", "kinetic_energy", "momentum", "SOLVERS"]
+__all__ = ["Simulator", "simulate", "kinetic_energy", "momentum", "SOLVERS"]

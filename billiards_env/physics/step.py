@@ -22,10 +22,9 @@ import numpy as np
 from numba import njit
 
 from .collide import resolve_ball_ball, resolve_cushion
-from .exact import (EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, P_DECEL, P_DRAG_K, P_E_BALL, P_E_CUSHION, P_LAW,
-                    P_LENGTH, P_MAX_TIME, P_MIN_SPEED, P_SPEED_FLOOR, P_WIDTH, STATUS_REST, STATUS_TIME_CAP, _grow,
-                    _grow_rows)
-from .motion import ROLLING
+from .codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, ROLLING, STATUS_REST, STATUS_TIME_CAP
+from .exact import _grow, _grow_rows
+from .kernel_io import KernelResult
 
 CONTACT_MODES = ("lecture", "rewind")
 LECTURE, REWIND = 0, 1
@@ -63,23 +62,25 @@ def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on, only):
 
 
 @njit(cache=True)
-def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt, contact, record_dt):
+def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params, dt, contact, record_dt):
     """Run the per-frame algorithm from ``pos``/``vel`` (updated in place) until rest or ``max_time``.
 
-    Returns the same first eleven items as ``simulate_exact`` (snapshots every ``record_dt`` s as the state
-    log when ``record_dt > 0``), then ``n_steps`` and ``n_tunnelled``.
+    ``params``: the parameter record (:mod:`.kernel_io`). Returns a :class:`~.kernel_io.KernelResult` like
+    ``simulate_exact`` (snapshots every ``record_dt`` s as the state log when ``record_dt > 0``), with
+    ``n_steps`` and ``n_tunnelled`` set.
     """
     n = pos.shape[0]
-    law = int(prm[P_LAW])
-    a = prm[P_DECEL]
-    k = prm[P_DRAG_K]
-    v_min = prm[P_MIN_SPEED]
-    e_c = prm[P_E_CUSHION]
-    e_b = prm[P_E_BALL]
-    length = prm[P_LENGTH]
-    width = prm[P_WIDTH]
-    max_time = prm[P_MAX_TIME]
-    floor = prm[P_SPEED_FLOOR]
+    prm = params[0]
+    law = prm.law
+    a = prm.decel
+    k = prm.drag_k
+    v_min = prm.min_speed
+    e_c = prm.e_cushion
+    e_b = prm.e_ball
+    length = prm.length
+    width = prm.width
+    max_time = prm.max_time
+    floor = prm.speed_floor
     drag_factor = math.exp(-k * dt)
     max_steps = int(math.ceil(max_time / dt - 1e-9))
 
@@ -273,5 +274,5 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, prm, dt
 
     if record:
         n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on_table, -1)
-    return (status, t, n_ev, pocket_of, pocket_time, ev_t[:n_ev], ev_int[:n_ev], ev_speed[:n_ev], sc_t[:n_sc],
-            sc_ball[:n_sc], sc_state[:n_sc], step, n_tunnelled)
+    return KernelResult(status, t, n_ev, pocket_of, pocket_time, ev_t[:n_ev], ev_int[:n_ev], ev_speed[:n_ev],
+                        sc_t[:n_sc], sc_ball[:n_sc], sc_state[:n_sc], step, n_tunnelled)

@@ -5,6 +5,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .codes import CUSHION_NAMES  # noqa: F401  (re-exported: the cushion ids of event records)
 from .errors import SceneError, check_finite, check_positive, check_unit_interval
 
 #: Default 9-ft pool table playing area (metres).
@@ -14,8 +15,6 @@ DEFAULT_CUSHION_RESTITUTION = 0.85
 CORNER_POCKET_RADIUS = 0.060
 SIDE_POCKET_RADIUS = 0.052
 
-#: Cushion ids used in event records: the wall each one is.
-CUSHION_NAMES = ("left", "right", "bottom", "top")  # x=0, x=L, y=0, y=W
 
 
 def default_pockets(

@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from billiards_env.physics import G, Balls, Physics, Table, simulate
-from billiards_env.physics.exact import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP  # noqa: F401
+from billiards_env.physics.codes import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP  # noqa: F401
 
 R = 0.028575  #: default ball radius (m)
 M = 0.17  #: default ball mass (kg)

@@ -1,0 +1,59 @@
+"""Named codes shared by the compiled kernels and their Python callers: event kinds, shot status, ball motion
+states and friction laws.
+
+The kernels use the plain ``int`` constants (numba reads module globals as compile-time constants); Python code
+may use the :class:`enum.IntEnum` views, which compare equal to the same ints. This module is the one home of
+these numbers: everything else imports them from here (or from :mod:`billiards_env.physics`).
+"""
+from __future__ import annotations
+
+from enum import IntEnum
+
+# --- event kinds (the event log's ``kind`` column) --------------------------------------------------------------
+EV_COLLISION = 0  #: two balls collide (``other``: the other ball's row)
+EV_CUSHION = 1  #: a ball hits a cushion (``other``: 0 left, 1 right, 2 bottom, 3 top)
+EV_POCKET = 2  #: a ball is pocketed (``other``: the pocket index)
+EV_STOP = 3  #: a ball comes to rest
+EV_JAM = 4  #: a contact cluster is jammed (``other``: the number of balls in it), see :mod:`.collide`
+EVENT_KINDS = ("collision", "cushion", "pocket", "stop", "jam")
+
+
+class EventKind(IntEnum):
+    """The event log's ``kind`` column as an enum (equal to the ``EV_*`` ints)."""
+
+    COLLISION = EV_COLLISION
+    CUSHION = EV_CUSHION
+    POCKET = EV_POCKET
+    STOP = EV_STOP
+    JAM = EV_JAM
+
+
+# --- shot status ------------------------------------------------------------------------------------------------
+STATUS_REST = 0  #: every ball at rest or pocketed
+STATUS_TIME_CAP = 1  #: balls still moving at ``max_time``
+STATUS_EVENT_CAP = 2  #: ``max_events`` reached
+STATUS_NAMES = ("rest", "time_cap", "event_cap")
+
+
+class Status(IntEnum):
+    """How a shot ended (equal to the ``STATUS_*`` ints; ``STATUS_NAMES[code]`` is its name)."""
+
+    REST = STATUS_REST
+    TIME_CAP = STATUS_TIME_CAP
+    EVENT_CAP = STATUS_EVENT_CAP
+
+
+# --- friction laws ----------------------------------------------------------------------------------------------
+ROLLING = 0  #: constant deceleration ``mu_roll g`` against the velocity
+DRAG = 1  #: ``dv/dt = -k v``
+FRICTION_LAWS = ("rolling", "drag")
+
+# --- cushions ---------------------------------------------------------------------------------------------------
+#: Cushion ids used in event records: the wall each one is (x=0, x=L, y=0, y=W).
+CUSHION_NAMES = ("left", "right", "bottom", "top")
+
+__all__ = [
+    "EV_COLLISION", "EV_CUSHION", "EV_POCKET", "EV_STOP", "EV_JAM", "EVENT_KINDS", "EventKind",
+    "STATUS_REST", "STATUS_TIME_CAP", "STATUS_EVENT_CAP", "STATUS_NAMES", "Status",
+    "ROLLING", "DRAG", "FRICTION_LAWS", "CUSHION_NAMES",
+]

@@ -1,0 +1,85 @@
+"""The interface of the compiled solvers: a named parameter record in, a named result out.
+
+The kernels take the scene's constants as one record (``params[0]``, a numpy structured array of dtype
+:data:`PARAMS_DTYPE`) and read them by name (``p.length``, ``p.decel``...): a model that needs more constants adds a
+field here, nothing is renumbered. They return a :class:`KernelResult`, whose fields callers read by name.
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, NamedTuple
+
+import numpy as np
+
+from .model import G
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .model import Physics
+    from .table import Table
+
+#: Separation-speed floor of the inelastic-collapse guard (m/s), see :mod:`.collide`.
+CONTACT_SPEED_FLOOR = 1e-3
+
+#: The parameter record the kernels read. Fields a model does not use are ignored by its kernel.
+PARAMS_DTYPE = np.dtype(
+    [
+        ("length", np.float64),  # table playing area (m)
+        ("width", np.float64),
+        ("e_cushion", np.float64),  # cushion restitution
+        ("e_ball", np.float64),  # ball-ball restitution
+        ("law", np.int64),  # friction law code (codes.ROLLING, codes.DRAG, ...)
+        ("decel", np.float64),  # rolling deceleration mu_roll * g (m/s^2); 0 under drag
+        ("drag_k", np.float64),  # drag rate k (1/s); 0 under rolling
+        ("min_speed", np.float64),  # a ball slower than this stops (m/s)
+        ("max_time", np.float64),  # simulated-time cap (s)
+        ("speed_floor", np.float64),  # inelastic-collapse guard (m/s)
+        ("g", np.float64),  # gravitational acceleration (m/s^2)
+        ("mu_slide", np.float64),  # spin model: sliding friction
+        ("mu_roll", np.float64),  # rolling resistance
+        ("mu_spin", np.float64),  # spin model: spinning friction
+        ("ball_friction", np.float64),  # spin model: ball-ball friction (throw)
+        ("cushion_friction", np.float64),  # spin model: cushion friction
+    ],
+    align=True,
+)
+
+
+def kernel_params(table: "Table", physics: "Physics", max_time: float) -> np.ndarray:
+    """The parameter record of ``table`` and ``physics`` with the time cap ``max_time`` (shape ``(1,)``)."""
+    p = np.zeros(1, PARAMS_DTYPE)
+    r = p[0]
+    r["length"] = table.length
+    r["width"] = table.width
+    r["e_cushion"] = table.cushion_restitution
+    r["e_ball"] = physics.ball_restitution
+    r["law"] = physics.law_code
+    r["decel"] = physics.deceleration
+    r["drag_k"] = physics.drag_rate
+    r["min_speed"] = physics.min_speed
+    r["max_time"] = max_time
+    r["speed_floor"] = CONTACT_SPEED_FLOOR
+    r["g"] = G
+    r["mu_roll"] = physics.mu_roll
+    for name in ("mu_slide", "mu_spin", "ball_friction", "cushion_friction"):
+        r[name] = getattr(physics, name, 0.0)
+    return p
+
+
+class KernelResult(NamedTuple):
+    """What a solver kernel returns (the ball arrays passed in are updated in place to the final state)."""
+
+    status: int  #: codes.STATUS_*
+    time: float  #: simulated time at the end (s)
+    n_events: int
+    pocket: np.ndarray  #: (N,) pocket index per ball, -1 if not pocketed in this shot
+    pocketed_at: np.ndarray  #: (N,) time each ball was pocketed (NaN if not)
+    ev_time: np.ndarray  #: (M,) event times
+    ev_int: np.ndarray  #: (M, 3) kind, ball, other
+    ev_speed: np.ndarray  #: (M,) impact speed (or the pocketed ball's speed)
+    sc_time: np.ndarray  #: (K,) times of the logged state changes (only when recording)
+    sc_ball: np.ndarray  #: (K,) ball of each logged state
+    sc_state: np.ndarray  #: (K, C) the logged states: x, y, vx, vy, on_table (then model-specific columns)
+    n_steps: int  #: time steps taken (step solver; 0 for exact)
+    n_tunnelled: int  #: pairs that passed through each other within a step (step solver)
+
+
+__all__ = ["PARAMS_DTYPE", "CONTACT_SPEED_FLOOR", "kernel_params", "KernelResult"]
