@@ -6,7 +6,7 @@ See the README for the full format and an example.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -17,11 +17,12 @@ from .errors import SceneError, check_finite, check_non_negative, check_number, 
 from .model import Physics
 from .result import ShotResult
 from .simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, Simulator
-from .table import Table
+from .table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, Table, default_pockets
 
-TABLE_FIELDS = {"length", "width", "cushion_restitution", "pockets"}
+TABLE_FIELDS = {"length", "width", "cushion_restitution", "pockets", "corner_pocket_radius", "side_pocket_radius"}
 POCKET_FIELDS = {"x", "y", "radius"}
-PHYSICS_FIELDS = {"friction", "mu_roll", "drag_k", "min_speed", "ball_restitution"}
+#: The physics section's fields are :class:`Physics`'s: one set of names and defaults for scenes and envs.
+PHYSICS_FIELDS = {f.name for f in fields(Physics)}
 BALL_FIELDS = {"id", "x", "y", "vx", "vy", "radius", "mass"}
 SHOT_FIELDS = {"ball", "angle", "speed"}
 SOLVER_FIELDS = {"name", "dt", "contact"}
@@ -96,22 +97,19 @@ class Scene:
     def from_dict(cls, data: Any) -> "Scene":
         """Build and check a scene from a parsed JSON/YAML document."""
         d = _mapping("scene", data, SCENE_FIELDS)
-        table = _table(d.get("table", {}))
-        physics = _physics(d.get("physics", {}))
+        table = parse_table(d.get("table", {}))
+        physics = parse_physics(d.get("physics", {}))
         if "balls" not in d:
             raise SceneError("scene: missing 'balls'; give a list of balls, e.g. [{\"id\": \"cue\", \"x\": 0.6, \"y\": 0.6}]")
         balls = _balls(d["balls"])
         validate_balls(balls, table)
         shot = _shot(d["shot"], balls) if d.get("shot") is not None else None
-        solver = _mapping("solver", d.get("solver", {}), SOLVER_FIELDS)
+        solver = parse_solver(d.get("solver", {}))
         max_time = check_positive("max_time", d.get("max_time", DEFAULT_MAX_TIME))
         max_events = d.get("max_events", DEFAULT_MAX_EVENTS)
         if isinstance(max_events, bool) or not isinstance(max_events, int) or max_events < 1:
             raise SceneError(f"max_events: must be a positive integer, got {max_events!r}")
-        scene = cls(table, physics, balls, shot, solver=_string("solver.name", solver.get("name", "exact")),
-                    dt=check_positive("solver.dt", solver.get("dt", DEFAULT_DT)),
-                    contact=_string("solver.contact", solver.get("contact", "lecture")),
-                    max_time=max_time, max_events=max_events)
+        scene = cls(table, physics, balls, shot, **solver, max_time=max_time, max_events=max_events)
         scene.simulator()  # checks solver name, contact and dt
         return scene
 
@@ -131,39 +129,71 @@ def _string(name: str, value: Any) -> str:
     return value
 
 
-def _table(value: Any) -> Table:
-    t = _mapping("table", value, TABLE_FIELDS)
+def parse_table(value: Any, where: str = "table") -> Table:
+    """A :class:`Table` from a scene's (or an env config's) ``table`` section: ``length``, ``width``,
+    ``cushion_restitution``, and either ``pockets`` (a list of ``{x, y, radius}``, ``[]`` for none) or the radii
+    of the six standard pockets, ``corner_pocket_radius`` and ``side_pocket_radius``."""
+    t = _mapping(where, value, TABLE_FIELDS)
     kw: dict[str, Any] = {}
     for f in ("length", "width", "cushion_restitution"):
         if f in t:
-            kw[f] = check_number(f"table.{f}", t[f])
+            kw[f] = check_number(f"{where}.{f}", t[f])
+    radii = {f: check_positive(f"{where}.{f}", t[f]) for f in ("corner_pocket_radius", "side_pocket_radius") if f in t}
+    if radii and "pockets" in t:
+        raise SceneError(f"{where}: give either 'pockets' (a list) or corner_pocket_radius/side_pocket_radius, "
+                         "not both")
+    if radii:
+        kw["pocket_xy"], kw["pocket_radius"] = default_pockets(
+            kw.get("length", Table.length), kw.get("width", Table.width),
+            radii.get("corner_pocket_radius", CORNER_POCKET_RADIUS), radii.get("side_pocket_radius", SIDE_POCKET_RADIUS))
     if "pockets" in t:
         pockets = t["pockets"]
         if not isinstance(pockets, list):
-            raise SceneError("table.pockets: expected a list of {x, y, radius} objects ([] for no pockets)")
+            raise SceneError(f"{where}.pockets: expected a list of {{x, y, radius}} objects ([] for no pockets)")
         xy = np.zeros((len(pockets), 2))
         r = np.zeros(len(pockets))
         for k, p in enumerate(pockets):
-            pm = _mapping(f"table.pockets[{k}]", p, POCKET_FIELDS)
+            pm = _mapping(f"{where}.pockets[{k}]", p, POCKET_FIELDS)
             for f in POCKET_FIELDS:
                 if f not in pm:
-                    raise SceneError(f"table.pockets[{k}]: missing '{f}'")
-            xy[k] = (check_finite(f"table.pockets[{k}].x", pm["x"]), check_finite(f"table.pockets[{k}].y", pm["y"]))
-            r[k] = check_positive(f"table.pockets[{k}].radius", pm["radius"])
+                    raise SceneError(f"{where}.pockets[{k}]: missing '{f}'")
+            xy[k] = (check_finite(f"{where}.pockets[{k}].x", pm["x"]),
+                     check_finite(f"{where}.pockets[{k}].y", pm["y"]))
+            r[k] = check_positive(f"{where}.pockets[{k}].radius", pm["radius"])
         kw["pocket_xy"] = xy
         kw["pocket_radius"] = r
     return Table(**kw)
 
 
-def _physics(value: Any) -> Physics:
-    p = _mapping("physics", value, PHYSICS_FIELDS)
+def parse_physics(value: Any, where: str = "physics") -> Physics:
+    """A :class:`Physics` from a scene's (or an env config's) ``physics`` section (fields: those of Physics)."""
+    p = _mapping(where, value, PHYSICS_FIELDS)
     kw: dict[str, Any] = {}
-    if "friction" in p:
-        kw["friction"] = _string("physics.friction", p["friction"])
-    for f in PHYSICS_FIELDS - {"friction"}:
-        if f in p:
-            kw[f] = check_number(f"physics.{f}", p[f])
+    for f in fields(Physics):
+        if f.name in p:
+            if f.type in ("str", str):
+                kw[f.name] = _string(f"{where}.{f.name}", p[f.name])
+            else:
+                kw[f.name] = check_number(f"{where}.{f.name}", p[f.name])
     return Physics(**kw)
+
+
+def parse_solver(value: Any, where: str = "solver") -> dict[str, Any]:
+    """The ``solver`` section as Simulator keywords ``{solver, dt, contact}``: a mapping ``{name, dt, contact}``
+    or just the solver's name. Values are checked when the Simulator is built."""
+    if isinstance(value, str):
+        value = {"name": value}
+    s = _mapping(where, value, SOLVER_FIELDS)
+    return {"solver": _string(f"{where}.name", s.get("name", "exact")),
+            "dt": check_positive(f"{where}.dt", s.get("dt", DEFAULT_DT)),
+            "contact": _string(f"{where}.contact", s.get("contact", "lecture"))}
+
+
+def table_to_dict(table: Table) -> dict[str, Any]:
+    """The ``table`` section that :func:`parse_table` reads back into ``table``."""
+    return {"length": table.length, "width": table.width, "cushion_restitution": table.cushion_restitution,
+            "pockets": [{"x": float(x), "y": float(y), "radius": float(r)}
+                        for (x, y), r in zip(table.pocket_xy.tolist(), table.pocket_radius.tolist())]}
 
 
 def _balls(value: Any) -> Balls:
