@@ -97,3 +97,51 @@ def drag_time_for_phi(phi: float, k: float) -> float:
     if x >= 1.0:
         return math.inf
     return phi * _log1p_ratio(x)
+
+
+@njit(cache=True)
+def stop_distance(speed: float, law: int, a: float, k: float, v_min: float) -> float:
+    """Path length a ball moving at ``speed`` covers before it stops (``inf`` if it never does)."""
+    if speed <= v_min:
+        return 0.0
+    if law == ROLLING:
+        return (speed * speed - v_min * v_min) / (2.0 * a) if a > 0.0 else math.inf
+    return (speed - v_min) / k if k > 0.0 else math.inf
+
+
+@njit(cache=True)
+def speed_after_distance(speed: float, d: float, law: int, a: float, k: float) -> float:
+    """Speed left after covering path length ``d`` (0 if the ball stops first): rolling ``sqrt(s^2 - 2 a d)``,
+    drag ``s - k d`` (under drag the speed falls linearly with distance)."""
+    if law == ROLLING:
+        return math.sqrt(max(speed * speed - 2.0 * a * d, 0.0))
+    return max(speed - k * d, 0.0)
+
+
+@njit(cache=True)
+def launch_speed(d: float, v_end: float, law: int, a: float, k: float) -> float:
+    """Speed a ball needs to cover path length ``d`` and still move at ``v_end`` (inverse of
+    :func:`speed_after_distance`)."""
+    d = max(d, 0.0)
+    if law == ROLLING:
+        return math.sqrt(v_end * v_end + 2.0 * a * d)
+    return v_end + k * d
+
+
+@njit(cache=True)
+def advance(x: float, y: float, vx: float, vy: float, dt: float, law: int, a: float, k: float,
+            v_min: float) -> tuple:
+    """Position and velocity ``(x, y, vx, vy)`` of a ball ``dt >= 0`` seconds after the state ``x, y, vx, vy``,
+    with no event in between (it stops at :func:`time_to_stop`)."""
+    s = math.hypot(vx, vy)
+    if s == 0.0 or dt <= 0.0:
+        return x, y, vx, vy
+    t_stop = time_to_stop(s, law, a, k, v_min)
+    tt = min(dt, t_stop)
+    d = distance(s, tt, law, a, k)
+    ux = vx / s
+    uy = vy / s
+    if dt >= t_stop:
+        return x + ux * d, y + uy * d, 0.0, 0.0
+    sp = speed_after(s, tt, law, a, k)
+    return x + ux * d, y + uy * d, ux * sp, uy * sp

@@ -1,13 +1,12 @@
 """Positions of every ball at any time of a simulated shot, from the solver's log of state changes."""
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
 
-from .motion import distance, time_to_stop
+from .motion import advance
 
 
 @njit(cache=True)
@@ -46,12 +45,7 @@ def _sample(sc_t, sc_ball, sc_state, n_balls, times, law, a, k, v_min, interpola
                     x += w * (sc_state[m, 0] - x)
                     y += w * (sc_state[m, 1] - y)
             else:
-                s = math.hypot(vx, vy)
-                if s > 0.0 and dt > 0.0:
-                    tt = min(dt, time_to_stop(s, law, a, k, v_min))
-                    d = distance(s, tt, law, a, k)
-                    x += vx / s * d
-                    y += vy / s * d
+                x, y, _, _ = advance(x, y, vx, vy, dt, law, a, k, v_min)
             pos[q, b, 0] = x
             pos[q, b, 1] = y
     return pos, on
