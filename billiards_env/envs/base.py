@@ -22,18 +22,15 @@ from gymnasium import spaces
 from billiards_env.physics.balls import Balls, validate_balls
 from billiards_env.physics.errors import SceneError
 from billiards_env.physics.model import Physics
-from billiards_env.physics.rack import RACK_ORDER, triangle_positions
+from billiards_env.physics.layout import (RACK_ORDER, foot_spot, head_spot, head_string_x, place_random, rack_rows,
+                                          spot_cue_ball, triangle_positions)
 from billiards_env.physics.simulate import Simulator
 from billiards_env.physics.table import Table, default_pockets
 
 from ._kernels import observation
-from .config import ConfigError, EnvConfig, _rack_rows, load_config
+from .config import ConfigError, EnvConfig, load_config
 
 RENDER_MODES = ["human", "rgb_array", "rgb_array_list"]
-#: Candidate points drawn per batch by the random placement (one ``np_random`` call per batch).
-_PLACE_BATCH = 8
-#: Batches tried per ball before the placement gives up (the config is then infeasible).
-_PLACE_TRIES = 500
 _TWO_PI = 2.0 * math.pi
 _EV_COLLISION = 0
 
@@ -92,7 +89,6 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._sx = 1.0 / c.table_length
         self._sy = 1.0 / c.table_width
         self._pockets = [(float(px), float(py)) for px, py in self.table.pocket_xy]
-        self._head_spot = (0.25 * c.table_length, 0.5 * c.table_width)
         self._speed_lo = float(c.speed_min)
         self._speed_span = float(c.speed_max - c.speed_min)
         self._relative = c.aim == "relative"
@@ -101,9 +97,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._fixed_rows, self._fixed_xy = self._fixed_layout()
         self._fixed_points = [(float(x), float(y)) for x, y in self._fixed_xy]
         self._random_rows = [i for i in range(n) if i not in self._fixed_rows]
-        self._regions = {i: self._region(i) for i in self._random_rows}
-        self._pocket_margin2 = c.pocket_margin ** 2
-        self._min_dist2 = (2.0 * c.ball_radius + c.ball_gap) ** 2
+        self._regions = [self._region(i) for i in self._random_rows]
         self._check_layout()
 
         # Rendering (created lazily: pygame is imported only when something is drawn).
@@ -291,11 +285,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         pts: list[tuple[float, float]] = []
         if c.cue_placement == "head_spot":
             rows.append(0)
-            pts.append(self._head_spot)
+            pts.append(head_spot(self.table))
         if c.placement == "rack":
             m = c.n_object_balls
-            apex = (0.75 * c.table_length, 0.5 * c.table_width)
-            tri = triangle_positions(apex, c.ball_radius, rows=_rack_rows(m), gap=c.rack_gap)
+            tri = triangle_positions(foot_spot(self.table), c.ball_radius, rows=rack_rows(m), gap=c.rack_gap)
             order = RACK_ORDER if m == len(RACK_ORDER) else tuple(range(1, m + 1))
             for slot, number in enumerate(order):
                 rows.append(number)
@@ -321,55 +314,22 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         m = c.ball_radius + c.cushion_margin
         x1 = c.table_length - m
         if row == 0 and c.cue_placement == "kitchen":
-            x1 = 0.25 * c.table_length
+            x1 = head_string_x(self.table)
         return m, x1 - m, m, c.table_width - 2.0 * m
 
     def _place(self, rng: np.random.Generator, pos: np.ndarray) -> None:
-        """Fill ``pos`` with a starting layout: fixed rows, then each random row uniformly in its region,
-        rejecting points near a pocket or another ball. All draws come from ``rng``: one call for a first batch
-        of candidates for every random ball, more only when a ball rejects its whole batch."""
+        """Fill ``pos`` with a starting layout: the fixed rows, then each random row uniformly in its region
+        (:func:`~billiards_env.physics.layout.place_random`, drawing from ``rng``)."""
         if self._fixed_rows:
             pos[self._fixed_rows] = self._fixed_xy
-        placed = list(self._fixed_points)
-        rows = self._random_rows
-        if not rows:
-            return
-        pm2 = self._pocket_margin2
-        d2 = self._min_dist2
-        pockets = self._pockets
-        first = rng.random(2 * _PLACE_BATCH * len(rows)).tolist()
-        for m, row in enumerate(rows):
-            x0, sx, y0, sy = self._regions[row]
-            u = first[2 * _PLACE_BATCH * m: 2 * _PLACE_BATCH * (m + 1)]
-            for attempt in range(_PLACE_TRIES):
-                if attempt:
-                    u = rng.random(2 * _PLACE_BATCH).tolist()
-                for k in range(0, 2 * _PLACE_BATCH, 2):
-                    x = x0 + sx * u[k]
-                    y = y0 + sy * u[k + 1]
-                    ok = True
-                    for px, py in pockets:
-                        if (x - px) * (x - px) + (y - py) * (y - py) < pm2:
-                            ok = False
-                            break
-                    if ok:
-                        for qx, qy in placed:
-                            if (x - qx) * (x - qx) + (y - qy) * (y - qy) < d2:
-                                ok = False
-                                break
-                    if ok:
-                        break
-                else:
-                    continue
-                break
-            else:
-                raise ConfigError(
-                    f"{self.env_id}: could not place ball {self.ball_ids[row]!r} at random after "
-                    f"{_PLACE_TRIES * _PLACE_BATCH} tries; lower n_object_balls, pocket_margin, ball_gap or "
-                    "cushion_margin")
-            pos[row, 0] = x
-            pos[row, 1] = y
-            placed.append((x, y))
+        c = self.config
+        try:
+            place_random(rng, pos, self._random_rows, self._regions, self._fixed_points, self._pockets,
+                         c.pocket_margin, 2.0 * c.ball_radius + c.ball_gap)
+        except SceneError:
+            raise ConfigError(
+                f"{self.env_id}: could not place the balls at random; lower n_object_balls, pocket_margin, "
+                "ball_gap or cushion_margin") from None
 
     def _set_positions(self, options: dict[str, Any]) -> None:
         b = self.balls
@@ -394,29 +354,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         validate_balls(b, self.table)
 
     def _respot_cue(self) -> None:
-        """Put a pocketed cue ball back: the head spot, or the nearest free point along the head string
-        (x = length/4, searching outwards in y in steps of a quarter radius), or failing that the same search
-        on lines further towards the head cushion."""
+        """Put a pocketed cue ball back (:func:`~billiards_env.physics.layout.spot_cue_ball`: the head spot or
+        the nearest free point along the head string)."""
         b = self.balls
-        c = self.config
-        r = c.ball_radius
-        on = b.on_table.tolist()
-        others = [(x, y) for (x, y), o in zip(b.pos.tolist()[1:], on[1:]) if o]
-        need2 = (2.0 * r + 1e-6) ** 2
-        hx, hy = self._head_spot
-        step = r / 4.0
-        k_max = int((0.5 * c.table_width - r) / step)
-        x = hx
-        while x >= r:
-            for k in range(2 * k_max + 1):
-                y = hy + step * ((k + 1) // 2) * (1 if k % 2 else -1)
-                if all((x - qx) * (x - qx) + (y - qy) * (y - qy) >= need2 for qx, qy in others):
-                    b.pos[0, 0] = x
-                    b.pos[0, 1] = y
-                    b.on_table[0] = True
-                    return
-            x -= 2.0 * r
-        raise SceneError("could not re-spot the cue ball: the head of the table is full")  # pragma: no cover
+        spot_cue_ball(b.pos, b.on_table, self.config.ball_radius, self.table)
 
     # ======================================================================================================
     # Rendering (drawing itself lives in billiards_env.render)

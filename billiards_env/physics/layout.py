@@ -1,0 +1,272 @@
+"""Where balls go: the spots and strings of a pool table, racks, random starting layouts, re-spotting, and
+ball-in-hand placement moved to the nearest legal point.
+
+Table markings (the x axis runs along the length from the head cushion at ``x = 0``): the head string is the line
+``x = length/4`` (the kitchen is ``x < length/4``), the head spot is ``(length/4, width/2)``, the foot spot
+``(3 length/4, width/2)`` and the long string the line ``y = width/2``. Every other module asks this one.
+"""
+from __future__ import annotations
+
+import math
+from typing import Sequence
+
+import numpy as np
+
+from .balls import BALL_RADIUS, Balls
+from .errors import SceneError
+from .table import Table
+
+#: Ball numbers of the 15-ball rack, row by row from the apex (8-ball in the middle of the third row).
+RACK_ORDER = (1, 9, 2, 10, 8, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15)
+#: Ball numbers of the 9-ball diamond, row by row from the apex (1 at the apex, 9 in the middle).
+DIAMOND_ORDER = (1, 2, 3, 4, 9, 5, 6, 7, 8)
+#: Candidate points drawn per batch by :func:`place_random` (one generator call per batch).
+PLACE_BATCH = 8
+#: Batches tried per ball before :func:`place_random` gives up.
+PLACE_TRIES = 500
+
+
+# --- markings -----------------------------------------------------------------------------------------------------
+def head_string_x(table: Table) -> float:
+    """x of the head string: the kitchen (behind the head string) is ``x < length/4``."""
+    return 0.25 * table.length
+
+
+def head_spot(table: Table) -> tuple[float, float]:
+    """The head spot ``(length/4, width/2)``: where the cue ball is spotted."""
+    return 0.25 * table.length, 0.5 * table.width
+
+
+def foot_spot(table: Table) -> tuple[float, float]:
+    """The foot spot ``(3 length/4, width/2)``: the apex of the rack, where object balls are re-spotted."""
+    return 0.75 * table.length, 0.5 * table.width
+
+
+# --- racks --------------------------------------------------------------------------------------------------------
+def rack_rows(n: int) -> int:
+    """Rows of the smallest triangle holding ``n`` balls."""
+    rows = 1
+    while rows * (rows + 1) // 2 < n:
+        rows += 1
+    return rows
+
+
+def triangle_positions(apex: tuple[float, float], radius: float = BALL_RADIUS, rows: int = 5,
+                       gap: float = 0.0) -> np.ndarray:
+    """Centres of a triangle rack of ``rows`` rows pointing to ``-x`` with its apex at ``apex``.
+
+    Neighbours touch (``gap = 0``) or sit ``gap`` metres apart. Rows are filled bottom to top.
+    """
+    d = 2.0 * radius + gap
+    pts = []
+    for row in range(rows):
+        x = apex[0] + row * d * math.sqrt(3.0) / 2.0
+        for k in range(row + 1):
+            pts.append((x, apex[1] + (k - row / 2.0) * d))
+    return np.array(pts)
+
+
+def diamond_positions(apex: tuple[float, float], radius: float = BALL_RADIUS, gap: float = 0.0) -> np.ndarray:
+    """Centres of the 9-ball diamond (rows of 1, 2, 3, 2, 1 balls) pointing to ``-x`` with its apex at ``apex``."""
+    d = 2.0 * radius + gap
+    pts = []
+    for row, count in enumerate((1, 2, 3, 2, 1)):
+        x = apex[0] + row * d * math.sqrt(3.0) / 2.0
+        for k in range(count):
+            pts.append((x, apex[1] + (k - (count - 1) / 2.0) * d))
+    return np.array(pts)
+
+
+def rack_balls(table: Table | None = None, cue_xy: tuple[float, float] | None = None, gap: float = 0.0,
+               radius: float = BALL_RADIUS) -> Balls:
+    """Cue ball plus a 15-ball triangle with its apex on the foot spot. The cue ball defaults to the head spot.
+    Ids are ``cue, 1..15`` in :data:`RACK_ORDER`."""
+    table = table or Table()
+    rack = triangle_positions(foot_spot(table), radius, gap=gap)
+    cue = cue_xy if cue_xy is not None else head_spot(table)
+    pos = np.vstack([np.asarray(cue, dtype=float)[None, :], rack])
+    ids = ["cue"] + [str(n) for n in RACK_ORDER]
+    return Balls.from_positions(pos, ids=ids, radius=radius)
+
+
+def rack_fits(table: Table, n: int, radius: float, gap: float) -> bool:
+    """Whether an ``n``-ball triangle with its apex on the foot spot fits between the foot spot and the cushions."""
+    rows = rack_rows(n)
+    d = 2.0 * radius + gap
+    depth = foot_spot(table)[0] + (rows - 1) * d * math.sqrt(3.0) / 2.0 + radius
+    spread = (rows - 1) * d + 2.0 * radius
+    return depth <= table.length and spread <= table.width
+
+
+# --- random layouts -------------------------------------------------------------------------------------------
+def place_random(rng: np.random.Generator, pos: np.ndarray, rows: Sequence[int],
+                 regions: Sequence[tuple[float, float, float, float]], fixed_points: Sequence[tuple[float, float]],
+                 pockets: Sequence[tuple[float, float]], pocket_margin: float, min_dist: float) -> None:
+    """Put each ball of ``rows`` (in order) uniformly at random in its region ``(x0, x_span, y0, y_span)``,
+    rejecting points within ``pocket_margin`` of a pocket centre or closer than ``min_dist`` to a ball already
+    placed (``fixed_points``, then earlier rows). Writes ``pos[row]``.
+
+    All draws come from ``rng``: one call for a first batch of :data:`PLACE_BATCH` candidates for every ball, more
+    only when a ball rejects its whole batch. Raises :class:`SceneError` after :data:`PLACE_TRIES` batches.
+    """
+    placed = list(fixed_points)
+    if not rows:
+        return
+    pm2 = pocket_margin * pocket_margin
+    d2 = min_dist * min_dist
+    first = rng.random(2 * PLACE_BATCH * len(rows)).tolist()
+    for m, row in enumerate(rows):
+        x0, sx, y0, sy = regions[m]
+        u = first[2 * PLACE_BATCH * m: 2 * PLACE_BATCH * (m + 1)]
+        for attempt in range(PLACE_TRIES):
+            if attempt:
+                u = rng.random(2 * PLACE_BATCH).tolist()
+            for k in range(0, 2 * PLACE_BATCH, 2):
+                x = x0 + sx * u[k]
+                y = y0 + sy * u[k + 1]
+                ok = True
+                for px, py in pockets:
+                    if (x - px) * (x - px) + (y - py) * (y - py) < pm2:
+                        ok = False
+                        break
+                if ok:
+                    for qx, qy in placed:
+                        if (x - qx) * (x - qx) + (y - qy) * (y - qy) < d2:
+                            ok = False
+                            break
+                if ok:
+                    break
+            else:
+                continue
+            break
+        else:
+            raise SceneError(f"could not place ball row {row} at random after {PLACE_TRIES * PLACE_BATCH} tries; "
+                             "use fewer balls or smaller margins")
+        pos[row, 0] = x
+        pos[row, 1] = y
+        placed.append((x, y))
+
+
+# --- re-spotting and ball in hand ----------------------------------------------------------------------------------
+def _others(pos: np.ndarray, on_table: np.ndarray, row: int) -> list[tuple[float, float]]:
+    return [(float(x), float(y)) for k, ((x, y), on) in enumerate(zip(pos.tolist(), on_table.tolist()))
+            if on and k != row]
+
+
+def spot_cue_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int = 0) -> None:
+    """Put ball ``row`` (a pocketed cue ball) on the head spot, or the nearest free point along the head string
+    (searching outwards in y in steps of a quarter radius), or failing that the same search on lines further
+    towards the head cushion. Sets ``pos[row]`` and ``on_table[row]``."""
+    others = _others(pos, on_table, row)
+    need2 = (2.0 * radius + 1e-6) ** 2
+    hx, hy = head_spot(table)
+    step = radius / 4.0
+    k_max = int((0.5 * table.width - radius) / step)
+    x = hx
+    while x >= radius:
+        for k in range(2 * k_max + 1):
+            y = hy + step * ((k + 1) // 2) * (1 if k % 2 else -1)
+            if all((x - qx) * (x - qx) + (y - qy) * (y - qy) >= need2 for qx, qy in others):
+                pos[row, 0] = x
+                pos[row, 1] = y
+                on_table[row] = True
+                return
+        x -= 2.0 * radius
+    raise SceneError("could not re-spot the cue ball: the head of the table is full")  # pragma: no cover
+
+
+def spot_object_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int) -> None:
+    """Re-spot ball ``row`` (rules: a ball pocketed on a foul): on the foot spot, or if that is taken on the long
+    string as close to it as possible behind it (towards the foot cushion), else in front of it. Sets
+    ``pos[row]`` and ``on_table[row]``."""
+    others = _others(pos, on_table, row)
+    need2 = (2.0 * radius + 1e-6) ** 2
+    fx, fy = foot_spot(table)
+    step = radius / 8.0
+    n_back = int((table.length - radius - fx) / step)
+    n_front = int((fx - radius) / step)
+    candidates = [fx + k * step for k in range(n_back + 1)] + [fx - k * step for k in range(1, n_front + 1)]
+    for x in candidates:
+        if all((x - qx) * (x - qx) + (fy - qy) * (fy - qy) >= need2 for qx, qy in others):
+            pos[row, 0] = x
+            pos[row, 1] = fy
+            on_table[row] = True
+            return
+    raise SceneError("could not re-spot a ball: the long string is full")  # pragma: no cover
+
+
+def nearest_free_point(x: float, y: float, pos: np.ndarray, on_table: np.ndarray, radius: np.ndarray | float,
+                       row: int, area: tuple[float, float, float, float], clearance: float = 1e-6
+                       ) -> tuple[float, float]:
+    """The legal point nearest to ``(x, y)`` for ball ``row``: inside ``area = (x0, x1, y0, y1)`` (its centre's
+    allowed rectangle) and at least ``r_row + r_other + clearance`` from every other ball on the table.
+
+    Ball in hand: an agent outputs any point, and an illegal one (off the area, overlapping a ball) moves here.
+    Exact for the rectangle minus the union of the forbidden discs: the nearest point is the clipped point
+    itself, its projection onto one disc's boundary, or a corner where two boundaries (disc/disc, disc/edge)
+    meet; every candidate is checked and the nearest legal one returned. Raises :class:`SceneError` if there is
+    no legal point at all.
+    """
+    x0, x1, y0, y1 = area
+    if not (x0 <= x1 and y0 <= y1):
+        raise SceneError(f"placement area {area}: empty; x0 <= x1 and y0 <= y1 are required")
+    rad = np.broadcast_to(np.asarray(radius, dtype=float), (len(pos),))
+    discs = [(float(pos[k, 0]), float(pos[k, 1]), float(rad[row] + rad[k] + clearance))
+             for k in range(len(pos)) if on_table[k] and k != row]
+
+    def legal(px: float, py: float) -> bool:
+        if not (x0 <= px <= x1 and y0 <= py <= y1):
+            return False
+        return all((px - cx) ** 2 + (py - cy) ** 2 >= (rr * (1.0 - 1e-12)) ** 2 for cx, cy, rr in discs)
+
+    px = min(max(float(x), x0), x1)
+    py = min(max(float(y), y0), y1)
+    if legal(px, py):
+        return px, py
+    cands: list[tuple[float, float]] = []
+    for cx, cy, rr in discs:  # projections onto each disc's boundary
+        dx, dy = px - cx, py - cy
+        d = math.hypot(dx, dy)
+        ux, uy = (dx / d, dy / d) if d > 0.0 else (1.0, 0.0)
+        cands.append((cx + ux * rr, cy + uy * rr))
+    for a in range(len(discs)):  # disc/disc intersections
+        ax, ay, ar = discs[a]
+        for b in range(a + 1, len(discs)):
+            bx, by, br = discs[b]
+            d = math.hypot(bx - ax, by - ay)
+            if d == 0.0 or d > ar + br or d < abs(ar - br):
+                continue
+            along = (ar * ar - br * br + d * d) / (2.0 * d)
+            h = math.sqrt(max(ar * ar - along * along, 0.0))
+            mx, my = ax + along * (bx - ax) / d, ay + along * (by - ay) / d
+            cands.append((mx - h * (by - ay) / d, my + h * (bx - ax) / d))
+            cands.append((mx + h * (by - ay) / d, my - h * (bx - ax) / d))
+    for cx, cy, rr in discs:  # disc/edge intersections
+        for ex in (x0, x1):
+            h2 = rr * rr - (ex - cx) ** 2
+            if h2 >= 0.0:
+                cands += [(ex, cy + math.sqrt(h2)), (ex, cy - math.sqrt(h2))]
+        for ey in (y0, y1):
+            h2 = rr * rr - (ey - cy) ** 2
+            if h2 >= 0.0:
+                cands += [(cx + math.sqrt(h2), ey), (cx - math.sqrt(h2), ey)]
+    cands += [(x0, y0), (x0, y1), (x1, y0), (x1, y1)]
+    best = None
+    best_d2 = math.inf
+    for qx, qy in cands:
+        qx = min(max(qx, x0), x1)
+        qy = min(max(qy, y0), y1)
+        if legal(qx, qy):
+            d2 = (qx - px) ** 2 + (qy - py) ** 2
+            if d2 < best_d2:
+                best, best_d2 = (qx, qy), d2
+    if best is None:
+        raise SceneError(f"no legal point for ball row {row} in the area {area}: it is covered by other balls")
+    return best
+
+
+__all__ = [
+    "RACK_ORDER", "DIAMOND_ORDER", "head_string_x", "head_spot", "foot_spot", "rack_rows", "triangle_positions",
+    "diamond_positions", "rack_balls", "rack_fits", "place_random", "spot_cue_ball", "spot_object_ball",
+    "nearest_free_point",
+]
