@@ -7,6 +7,8 @@ Keys: R starts a new episode, Esc / Q (or closing the window) quits.
 
 ``--demo`` plays one scripted shot (aim at the target ball, drag, release) from synthetic pygame events and
 quits, so the program can be smoke-tested headless (``SDL_VIDEODRIVER=dummy billiards-play --demo``).
+Without a display (no DISPLAY/WAYLAND_DISPLAY, pygame's offscreen or dummy video driver) anything but ``--demo``
+stops at once with exit status 2 and a hint, instead of playing in a window nobody can see.
 """
 from __future__ import annotations
 
@@ -31,31 +33,41 @@ BAR_BG = (60, 60, 66)
 
 
 class PlayApp:
-    """The interactive game: an env (``render_mode="rgb_array_list"``), its renderer and a pygame window.
+    """The interactive game: an env (no render mode: the app draws), its renderer and a pygame window.
 
     Drawing of the table and cue comes from :mod:`billiards_env.render` (through ``env.unwrapped.renderer``);
-    this class only adds the power bar and the status line. ``run(events)`` takes the events from pygame, or
-    from ``events`` (an iterable of per-frame event lists) for scripted, headless runs.
+    this class only adds the power bar and the status line. A shot is animated frame by frame as it is drawn
+    (see :meth:`animate_shot`). ``run(events)`` takes the events from pygame, or from ``events`` (an iterable of
+    per-frame event lists) for scripted, headless runs.
+
+    Without a display the constructor raises :class:`~billiards_env.render.window.HeadlessDisplayError` unless
+    ``allow_headless`` (default: the ``BILLIARDS_ALLOW_HEADLESS`` environment variable) is true.
     """
 
     def __init__(self, env_id: str = "BilliardsOneBall-v0", seed: int | None = None, width: int = 800,
-                 speedup: float = 1.0, realtime: bool = True, **env_kwargs: Any) -> None:
+                 speedup: float = 1.0, realtime: bool = True, allow_headless: bool | None = None,
+                 **env_kwargs: Any) -> None:
         import gymnasium as gym
         import pygame
 
         import billiards_env  # noqa: F401  (registers the ids)
+        from billiards_env.render.window import require_display
 
+        require_display("billiards-play", "Try `billiards-play --demo` (one scripted shot, no window needed)",
+                        allow_headless)
         self.pg = pygame
         self.env_id = env_id
-        self.env = gym.make(env_id, render_mode="rgb_array_list", render_width=width, render_speedup=speedup,
-                            **env_kwargs)
+        try:
+            self.env = gym.make(env_id, render_width=width, render_speedup=speedup, **env_kwargs)
+        except BaseException:
+            pygame.display.quit()
+            raise
         self.core = self.env.unwrapped
         self.renderer = self.core.renderer
         self.fps = self.core.config.render_fps
         self.realtime = realtime
         w, h = self.renderer.size
         self.table_size = (w, h)
-        pygame.display.init()
         pygame.font.init()
         self.screen = pygame.display.set_mode((w, h + PANEL_HEIGHT))
         pygame.display.set_caption(f"billiards-play: {env_id}")
@@ -93,7 +105,6 @@ class PlayApp:
     # --- game -------------------------------------------------------------------------------------------
     def reset(self, seed: int | None = None) -> None:
         self.env.reset(seed=seed)
-        self.env.render()  # drop the reset frame: the window draws the live state itself
         self.shots, self.total, self.done, self.success = 0, 0.0, False, False
         self.dragging, self.press, self.power = False, None, 0.0
         t = self.core.target_ball()
@@ -107,14 +118,16 @@ class PlayApp:
         return c.speed_min + self.power * (c.speed_max - c.speed_min)
 
     def shoot(self) -> dict[str, Any]:
-        """Play the shot set by ``aim`` and ``power`` and animate it."""
+        """Play the shot set by ``aim`` and ``power`` and animate it (the power bar is hidden meanwhile)."""
         action = self.core.action_from_shot(self.aim, self.speed())
+        self.dragging, self.power = False, 0.0  # released: the bar goes, the balls move
+        before = self.core.balls.copy()
         _, reward, terminated, truncated, info = self.env.step(action)
         self.last_info = info
         self.shots += 1
         self.total += float(reward)
-        frames = self.env.render()
-        self.animate(frames)
+        self.status = f"shot {self.shots}: {info['speed']:.2f} m/s ..."
+        self.animate_shot(before, info)
         potted = ", ".join(b for b in info["pocketed"] if b != "cue") or "nothing"
         self.status = f"shot {self.shots}: {info['speed']:.2f} m/s, potted {potted}" + (
             ", SCRATCH (cue ball re-spotted)" if info["scratch"] else "") + f", reward {float(reward):+.2f}"
@@ -124,15 +137,29 @@ class PlayApp:
             self.status += (" - table cleared!" if self.success else " - episode over") + " (R or click: new)"
         return info
 
-    def animate(self, frames: list[np.ndarray]) -> None:
+    def animate_shot(self, before: Any, info: dict[str, Any]) -> None:
+        """Animate the shot just played: each frame is drawn and shown at once, at ``render_fps``.
+
+        The env steps without recording (it draws nothing), so the shot is replayed here from the balls
+        ``before`` it with the angle and speed it was played at (noise included): the exact solver is
+        deterministic, so this is the same trajectory. Frames are the env's :meth:`animation_times` of it; the
+        last one (the state after the shot, cue ball re-spotted) is drawn by the main loop. Mouse clicks made
+        while the balls roll are dropped (they would otherwise start a drag or a new episode afterwards);
+        closing the window, Esc or Q quits."""
         pg = self.pg
-        for frame in frames:
-            for e in pg.event.get(pg.QUIT):
-                self.running = False
+        core = self.core
+        result = core.simulator.run(before.strike(0, info["angle"], info["speed"]), record=True, validate=False)
+        trajectory = result.trajectory
+        shot = core.last_shot
+        cue = None if shot is None else (shot[0], shot[1], shot[2])
+        for t in core.animation_times(trajectory.duration)[:-1]:
+            for e in pg.event.get((pg.QUIT, pg.KEYDOWN, pg.MOUSEBUTTONDOWN, pg.MOUSEBUTTONUP)):
+                if e.type == pg.QUIT or (e.type == pg.KEYDOWN and e.key in (pg.K_ESCAPE, pg.K_q)):
+                    self.running = False
             if not self.running:
                 return
-            surf = pg.surfarray.make_surface(np.ascontiguousarray(frame.transpose(1, 0, 2)))
-            self.screen.blit(surf, (0, 0))
+            pos, on = trajectory.sample([t])
+            self.screen.blit(self.renderer.draw(pos[0], on[0], core.ball_numbers, cue=cue), (0, 0))
             self.draw_panel()
             pg.display.flip()
             self.frames_shown += 1
@@ -166,10 +193,9 @@ class PlayApp:
             elif not self.done:
                 self.set_aim(e.pos)
         elif e.type == pg.MOUSEBUTTONUP and e.button == 1 and self.dragging:
-            self.dragging = False
             if self.power >= MIN_POWER:
                 self.shoot()
-            self.power = 0.0
+            self.dragging, self.power = False, 0.0
 
     def set_aim(self, pixel: tuple[int, int]) -> None:
         """Aim from the cue ball towards ``pixel`` (unchanged if the pointer is on the cue ball's centre)."""
@@ -275,10 +301,12 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     kwargs = {"config": args.config} if args.config else {}
+    from billiards_env.render.window import HeadlessDisplayError
+
     try:
         app = PlayApp(args.env, seed=args.seed, width=args.width, speedup=args.speedup,
-                      realtime=not args.demo, **kwargs)
-    except ValueError as exc:  # bad config: the message names the key
+                      realtime=not args.demo, allow_headless=True if args.demo else None, **kwargs)
+    except (ValueError, HeadlessDisplayError) as exc:  # bad config (the message names the key), or no display
         print(f"billiards-play: error: {exc}", file=sys.stderr)
         return 2
     if args.demo:

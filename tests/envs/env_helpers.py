@@ -5,6 +5,7 @@ import os
 
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
+os.environ.setdefault("BILLIARDS_ALLOW_HEADLESS", "1")  # render_mode="human" into an invisible window
 
 import gymnasium as gym  # noqa: E402
 import numpy as np  # noqa: E402

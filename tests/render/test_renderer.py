@@ -230,7 +230,7 @@ def test_write_png_round_trip(tmp_path) -> None:
 
 # --- window -------------------------------------------------------------------------------------------------
 def test_human_window_shows_frames_and_closes_twice(renderer: TableRenderer) -> None:
-    window = HumanWindow(renderer.size, title="test")
+    window = HumanWindow(renderer.size, title="test", allow_headless=True)
     try:
         assert not window.closed
         window.show(renderer.draw(POSITIONS, np.ones(4, bool), NUMBERS), fps=120)
@@ -248,10 +248,27 @@ def test_human_window_shows_frames_and_closes_twice(renderer: TableRenderer) -> 
 
 
 def test_human_window_notices_quit_event() -> None:
-    window = HumanWindow((64, 48))
+    window = HumanWindow((64, 48), allow_headless=True)
     try:
         assert not window.closed
         pygame.event.post(pygame.event.Event(pygame.QUIT))
         assert window.closed
     finally:
         window.close()
+
+
+@pytest.mark.parametrize("driver", ["dummy", "offscreen"])
+def test_human_window_refuses_an_invisible_display(monkeypatch, driver: str) -> None:
+    """Without a display pygame falls back to a driver that shows nothing: say so instead of drawing unseen."""
+    from billiards_env.render.window import ALLOW_HEADLESS_ENV, HeadlessDisplayError, headless_allowed
+
+    monkeypatch.setenv("SDL_VIDEODRIVER", driver)
+    monkeypatch.delenv(ALLOW_HEADLESS_ENV, raising=False)
+    assert not headless_allowed()
+    with pytest.raises(HeadlessDisplayError, match=f"{driver}.*rgb_array.*{ALLOW_HEADLESS_ENV}=1"):
+        HumanWindow((64, 48))
+    assert not pygame.display.get_init()
+    monkeypatch.setenv(ALLOW_HEADLESS_ENV, "1")  # the opt-in the tests use
+    assert headless_allowed()
+    with HumanWindow((64, 48)) as window:
+        assert not window.closed and pygame.display.get_driver() == driver
