@@ -1,5 +1,5 @@
 """Shared helpers of the stability tests: a Hypothesis-backed random source for the fuzz scene generator, and
-running a scene or ball set through the shared invariant checks of :mod:`billiards_env.fuzz`."""
+running a scene or ball set through the shared invariant checks of :mod:`billiards_env.physics.invariants`."""
 from __future__ import annotations
 
 import json
@@ -10,8 +10,9 @@ from typing import Any
 import numpy as np
 from hypothesis import strategies as st
 
-from billiards_env.fuzz import Source, check_shot, run_case
+from billiards_env.fuzz.generator import Source
 from billiards_env.physics import Balls, Physics, Simulator, Table
+from billiards_env.physics.invariants import check_shot, run_case
 from billiards_env.physics.scene import Scene
 
 CASES = Path(__file__).parent / "cases"
@@ -21,7 +22,8 @@ W = 1.27
 
 
 class HypothesisSource(Source):
-    """Draws every decision of :func:`billiards_env.fuzz.random_scene` from Hypothesis (so it shrinks them)."""
+    """Draws every decision of :func:`billiards_env.fuzz.generator.random_scene` from Hypothesis (so it shrinks
+    them)."""
 
     def __init__(self, data: st.DataObject) -> None:
         self.data = data

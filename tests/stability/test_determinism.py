@@ -12,14 +12,15 @@ from pathlib import Path
 
 import pytest
 
-from billiards_env.fuzz import NumpySource, random_scene, run_case, shot_rng
+from billiards_env.fuzz.generator import NumpySource, random_scene, shot_rng
+from billiards_env.physics.invariants import run_case
 
 REPO = Path(__file__).resolve().parents[2]
 
 SCENES_SCRIPT = textwrap.dedent(r"""
     import hashlib, json, sys
     import numpy as np
-    from billiards_env.fuzz import NumpySource, random_scene, shot_rng
+    from billiards_env.fuzz.generator import NumpySource, random_scene, shot_rng
     from billiards_env.physics.scene import Scene
 
     def digest(res):

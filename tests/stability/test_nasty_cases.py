@@ -1,9 +1,9 @@
 """The nasty cases of a billiards engine, by name. Every shot also passes the shared invariant checks of
-:func:`billiards_env.fuzz.check_shot` (bounds, overlap, finite, per-collision energy and momentum, contact,
-continuity, pocketed-stays-pocketed, status, no Zeno bursts).
+:func:`billiards_env.physics.invariants.check_shot` (bounds, overlap, finite, per-collision energy and momentum,
+contact, continuity, pocketed-stays-pocketed, status, no Zeno bursts).
 
-Tolerances: as in ``billiards_env.fuzz`` (exact overlap 1e-9 m; step ``2 * speed * dt + 1e-9`` m); velocities
-compared with ``VEL_TOL`` relative where the exact answer is known in closed form.
+Tolerances: as in ``billiards_env.physics.invariants`` (exact overlap 1e-9 m; step ``2 * speed * dt + 1e-9`` m);
+velocities compared with ``VEL_TOL`` relative where the exact answer is known in closed form.
 """
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from billiards_env.physics.exact import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP
+from billiards_env.physics.codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP
 from billiards_env.physics.rack import rack_balls, triangle_positions
 
 from .helpers import L, R, W, assert_invariants, scene_dict

@@ -1,13 +1,14 @@
-"""Property-based stability tests: random scenes and shots, the invariants of :mod:`billiards_env.fuzz`.
+"""Property-based stability tests: random scenes and shots, the invariants of
+:mod:`billiards_env.physics.invariants`.
 
-Scenes come from the fuzz command's own generator (``billiards_env.fuzz.random_scene``) with every random decision
-drawn through Hypothesis, so failures shrink: 1 to 16 balls placed at random, on purpose touching each other
+Scenes come from the fuzz command's own generator (``billiards_env.fuzz.generator.random_scene``) with every random
+decision drawn through Hypothesis, so failures shrink: 1 to 16 balls placed at random, on purpose touching each other
 (gaps 0, 1e-12 .. 1e-3 m), touching cushions and in corners, racks; shots at random, head-on, grazing (offset
 2R +- eps) or along the axes, speed 1e-3 .. 10 m/s; both friction laws (rolling mu in [0, 0.05]; drag k in
 [0, 2], min_speed in [0, 0.05]); ball and cushion restitution in [0, 1] (0 and 1 often); pocketless or default
 tables; the exact solver and the step solver (dt in {5e-4, 1e-3, 2e-3}, contact ``lecture`` and ``rewind``).
 
-Invariants and tolerances (constants in ``billiards_env.fuzz``):
+Invariants and tolerances (constants in ``billiards_env.physics.invariants``):
 
 - bounds: centres in [r, L-r] x [r, W-r] up to 1e-9 m, final and in every logged state;
 - overlap: exact 1e-9 m (``validate_balls``' own input tolerance: the solver must not make it worse); step
@@ -31,7 +32,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from billiards_env.fuzz import random_scene, run_case
+from billiards_env.fuzz.generator import random_scene
+from billiards_env.physics.invariants import run_case
 
 from .helpers import HypothesisSource, describe
 

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import pytest
 
-from billiards_env.fuzz import ZENO_SPAN, run_case
+from billiards_env.physics.invariants import ZENO_SPAN, run_case
 
 from .helpers import describe, load_case
 

@@ -1,15 +1,9 @@
-"""Numerical-stability fuzzing of the physics engine: random scenes, random shots, invariant checks.
+"""The invariants every simulated shot must satisfy, checked on a shot recorded with ``record=True``.
 
-``python -m billiards_env.fuzz --shots 100000 [--seed S] [--solver exact|step|both] [--workers 2] [--out DIR]``
-
-Every shot is a random scene (1 to 16 balls placed at random, touching each other and the cushions on purpose,
-random friction law and constants, restitutions, solver settings) and a random cue strike. After the shot the
-invariants of :func:`check_shot` are checked; a failing case is saved as a scene file (the format of
-``billiards_env.physics.scene``) under ``--out`` so that ``billiards-sim FILE --events`` reproduces it, and
-listed with its violations in ``--out/violations.jsonl``.
-
-The scene generator (:func:`random_scene`) draws through a small :class:`Source` interface, so the Hypothesis
-tests in ``tests/stability`` drive the very same generator (and shrink its draws) and the same checks.
+Shared by the fuzz command (``python -m billiards_env.fuzz``) and the stability tests (``tests/stability``):
+:func:`check_shot` checks a ``ShotResult`` of a ``Scene``; :func:`run_case` builds a scene dict (the scene-file
+format of :mod:`billiards_env.physics.scene`), runs it and checks it, turning a crash into an ``exception``
+violation. The checks read the result; they change nothing.
 
 Invariants (tolerances are the module constants below):
 
@@ -39,19 +33,16 @@ Invariants (tolerances are the module constants below):
 """
 from __future__ import annotations
 
-import argparse
-import json
 import math
-import multiprocessing as mp
-import sys
-import time
 import traceback
 from collections import Counter
 from dataclasses import dataclass, field
-from pathlib import Path
-from typing import Any, Callable, Sequence
+from typing import Any
 
 import numpy as np
+
+from .codes import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, STATUS_NAMES
+from .scene import Scene
 
 # --------------------------------------------------------------------------------------------- tolerances
 BOUNDS_TOL = 1e-9  #: a centre may sit this far outside [r, L - r] (m)
@@ -72,18 +63,8 @@ ZENO_SPAN = 1e-9  #: events closer than this (s) form one burst (one instant, up
 #: hundred at most); an event cap reached inside a burst is a Zeno hang.
 ZENO_BURST = 5000
 
-DEFAULT_MAX_TIME = 60.0
-DEFAULT_STEP_MAX_TIME = 20.0
-DEFAULT_MAX_EVENTS = 20_000
-STEP_DTS = (5e-4, 1e-3, 2e-3)
-CONTACT_MODES = ("lecture", "rewind")
-
 INVARIANTS = ("exception", "finite", "bounds", "overlap", "overlap_during", "energy", "momentum", "contact",
               "continuity", "pocket", "status", "zeno")
-
-L_DEFAULT = 2.54
-W_DEFAULT = 1.27
-R_DEFAULT = 0.028575
 
 
 def step_overlap_tolerance(speed: float, dt: float) -> float:
@@ -91,181 +72,8 @@ def step_overlap_tolerance(speed: float, dt: float) -> float:
     return STEP_OVERLAP_FACTOR * max(speed, 0.0) * dt + STEP_OVERLAP_ABS
 
 
-# --------------------------------------------------------------------------------------------- random source
-class Source:
-    """Where the scene generator gets its random decisions (numpy for the fuzz, Hypothesis in the tests)."""
 
-    def uniform(self, lo: float, hi: float) -> float:
-        raise NotImplementedError
-
-    def integer(self, lo: int, hi: int) -> int:
-        """An integer in ``[lo, hi]`` (both included)."""
-        raise NotImplementedError
-
-    def choice(self, options: Sequence[Any]) -> Any:
-        return options[self.integer(0, len(options) - 1)]
-
-    def chance(self, p: float) -> bool:
-        return self.uniform(0.0, 1.0) < p
-
-    def log_uniform(self, lo: float, hi: float) -> float:
-        return float(math.exp(self.uniform(math.log(lo), math.log(hi))))
-
-
-class NumpySource(Source):
-    def __init__(self, rng: np.random.Generator) -> None:
-        self.rng = rng
-
-    def uniform(self, lo: float, hi: float) -> float:
-        return float(self.rng.uniform(lo, hi))
-
-    def integer(self, lo: int, hi: int) -> int:
-        return int(self.rng.integers(lo, hi + 1))
-
-
-def shot_rng(seed: int, index: int) -> np.random.Generator:
-    """The random generator of shot ``index`` of a fuzz run with ``seed``: every shot is reproducible alone."""
-    return np.random.default_rng(np.random.SeedSequence([int(seed), int(index)]))
-
-
-# --------------------------------------------------------------------------------------------- scene generator
-def _unit_or_special(src: Source) -> float:
-    """A restitution: the ends 0 and 1 often, otherwise uniform."""
-    return float(src.choice((0.0, 1.0, src.uniform(0.0, 1.0), src.uniform(0.0, 1.0), src.uniform(0.9, 1.0))))
-
-
-def _fits(p: tuple[float, float], placed: list[tuple[float, float]], r: float, length: float, width: float) -> bool:
-    x, y = p
-    if not (r <= x <= length - r and r <= y <= width - r):
-        return False
-    for q in placed:
-        # validate_balls accepts overlaps up to 1e-9; touching placements from cos/sin are off by ~1e-17.
-        if math.hypot(x - q[0], y - q[1]) < 2.0 * r - 1e-12:
-            return False
-    return True
-
-
-def _gap(src: Source) -> float:
-    return float(src.choice((0.0, 0.0, 0.0, 1e-12, src.log_uniform(1e-12, 1e-3), src.uniform(0.0, 0.05))))
-
-
-def _place(src: Source, placed: list[tuple[float, float]], r: float, length: float, width: float
-           ) -> tuple[float, float] | None:
-    """One more ball position (or None if the drawn placement does not fit)."""
-    mode = src.choice(("free", "free", "touch_ball", "touch_ball", "touch_cushion", "touch_both", "corner"))
-    if mode == "free" or not placed and mode in ("touch_ball", "touch_both"):
-        p = (src.uniform(r, length - r), src.uniform(r, width - r))
-    elif mode == "touch_ball":
-        q = placed[src.integer(0, len(placed) - 1)]
-        th = src.choice((src.uniform(-math.pi, math.pi), src.integer(0, 11) * math.pi / 6.0))
-        d = 2.0 * r + _gap(src)
-        p = (q[0] + d * math.cos(th), q[1] + d * math.sin(th))
-    elif mode == "touch_cushion":
-        side = src.integer(0, 3)
-        if side < 2:
-            p = (r if side == 0 else length - r, src.uniform(r, width - r))
-        else:
-            p = (src.uniform(r, length - r), r if side == 2 else width - r)
-    elif mode == "touch_both":  # on a cushion and touching a ball
-        q = placed[src.integer(0, len(placed) - 1)]
-        side = src.integer(0, 3)
-        d = 2.0 * r + _gap(src)
-        sgn = src.choice((-1.0, 1.0))
-        if side < 2:
-            x = r if side == 0 else length - r
-            h = d * d - (x - q[0]) ** 2
-            if h < 0.0:
-                return None
-            p = (x, q[1] + sgn * math.sqrt(h))
-        else:
-            y = r if side == 2 else width - r
-            h = d * d - (y - q[1]) ** 2
-            if h < 0.0:
-                return None
-            p = (q[0] + sgn * math.sqrt(h), y)
-    else:  # corner
-        p = (src.choice((r, length - r)), src.choice((r, width - r)))
-    return p if _fits(p, placed, r, length, width) else None
-
-
-def _rack(src: Source, n: int, r: float, length: float, width: float) -> list[tuple[float, float]]:
-    from .physics.rack import triangle_positions
-
-    gap = float(src.choice((0.0, 0.0, 1e-12, src.log_uniform(1e-12, 1e-4))))
-    apex = (0.75 * length, 0.5 * width)
-    tri = triangle_positions(apex, r, gap=gap)
-    cue = (src.choice((0.25 * length, src.uniform(r, 0.6 * length))), src.choice((0.5 * width, src.uniform(r, width - r))))
-    return [cue] + [(float(x), float(y)) for x, y in tri[: n - 1]]
-
-
-def random_scene(src: Source, solver: str | None = None, max_time: float | None = None,
-                 max_events: int = DEFAULT_MAX_EVENTS) -> dict[str, Any]:
-    """A random scene dict in the scene-file format, with a shot and solver settings.
-
-    ``solver``: ``"exact"``, ``"step"`` or None (drawn). The cue is ball 0 (id ``"cue"``).
-    """
-    length, width, r = L_DEFAULT, W_DEFAULT, R_DEFAULT
-    # table
-    table: dict[str, Any] = {"length": length, "width": width, "cushion_restitution": _unit_or_special(src)}
-    if src.chance(0.3):
-        table["pockets"] = []
-    # physics
-    friction = src.choice(("rolling", "drag"))
-    physics: dict[str, Any] = {"friction": friction, "ball_restitution": _unit_or_special(src)}
-    if friction == "rolling":
-        physics["mu_roll"] = float(src.choice((0.0, 0.01, src.uniform(0.0, 0.05), src.uniform(0.0, 0.05))))
-        physics["min_speed"] = float(src.choice((0.0, 0.0, 0.0, src.uniform(0.0, 0.05))))
-    else:
-        physics["drag_k"] = float(src.choice((0.0, src.uniform(0.0, 2.0), src.uniform(0.0, 2.0))))
-        physics["min_speed"] = float(src.choice((0.0, 0.01, src.uniform(0.0, 0.05), src.uniform(0.0, 0.05))))
-    # balls
-    n = src.integer(1, 16)
-    if n >= 2 and src.chance(0.15):
-        placed = _rack(src, n, r, length, width)
-    else:
-        placed = []
-        for _ in range(n):
-            p = _place(src, placed, r, length, width)
-            if p is not None:
-                placed.append(p)
-        if not placed:
-            placed.append((src.uniform(r, length - r), src.uniform(r, width - r)))
-    balls = [{"id": "cue" if i == 0 else str(i), "x": float(x), "y": float(y)} for i, (x, y) in enumerate(placed)]
-    # shot: a random direction, or aimed at a ball (head-on, tiny offset, or grazing at 2R +- eps), or a cushion
-    aim = src.choice(("random", "random", "ball", "ball", "axis"))
-    cx, cy = placed[0]
-    if aim == "ball" and len(placed) > 1:
-        tx, ty = placed[src.integer(1, len(placed) - 1)]
-        d = math.hypot(tx - cx, ty - cy)
-        base = math.atan2(ty - cy, tx - cx)
-        off = src.choice(("head", "head", "tiny", "graze"))
-        if off == "head":
-            angle = base
-        elif off == "tiny":
-            angle = base + src.choice((-1.0, 1.0)) * src.log_uniform(1e-15, 1e-3)
-        else:
-            b = 2.0 * r + src.choice((-1.0, 1.0)) * float(src.choice((0.0, src.log_uniform(1e-14, 1e-4))))
-            angle = base + src.choice((-1.0, 1.0)) * math.asin(min(b / d, 1.0))
-    elif aim == "axis":
-        angle = src.integer(0, 7) * math.pi / 4.0
-    else:
-        angle = src.uniform(-math.pi, math.pi)
-    speed = src.log_uniform(1e-3, 10.0)
-    # solver
-    if solver is None:
-        solver = src.choice(("exact", "step"))
-    solver_d: dict[str, Any] = {"name": solver}
-    if solver == "step":
-        solver_d["dt"] = float(src.choice(STEP_DTS))
-        solver_d["contact"] = src.choice(CONTACT_MODES)
-    if max_time is None:
-        max_time = DEFAULT_MAX_TIME if solver == "exact" else DEFAULT_STEP_MAX_TIME
-    return {"table": table, "physics": physics, "balls": balls,
-            "shot": {"ball": "cue", "angle": float(angle), "speed": float(speed)},
-            "solver": solver_d, "max_time": float(max_time), "max_events": int(max_events)}
-
-
-# --------------------------------------------------------------------------------------------- invariants
+# --------------------------------------------------------------------------------------------- checks
 @dataclass
 class Report:
     """The outcome of checking one shot: violations (invariant -> first message) and measurements."""
@@ -366,8 +174,6 @@ def _np_closed_form_impl(x, y, vx, vy, dt, law, a, k, v_min):
 def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
     """Check every invariant of the module docstring on ``result`` (a ``ShotResult`` recorded with
     ``record=True``) of ``scene`` (a ``Scene``). Returns a :class:`Report`."""
-    from .physics.exact import EV_COLLISION, EV_POCKET, STATUS_NAMES
-
     rep = Report(solver=result.solver, status=result.status, n_events=int(result.n_events),
                  sim_time=float(result.time))
     table, phys = scene.table, scene.physics
@@ -490,8 +296,6 @@ def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
 
 
 def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, sample_between):
-    from .physics.exact import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET
-
     tr, ev = result.trajectory, result.events
     n = len(radius)
     L, W = scene.table.length, scene.table.width
@@ -664,11 +468,10 @@ def _check_step_snapshots(rep, result, mass):
     rep.max_overlap_during = max(ov, 0.0)
 
 
-# --------------------------------------------------------------------------------------------- running cases
+
+# --------------------------------------------------------------------------------------------- running a case
 def run_case(scene_dict: dict[str, Any], sample_between: bool = True):
     """Build the scene, run it with ``record=True`` and check it. Returns ``(report, result or None)``."""
-    from .physics.scene import Scene
-
     try:
         scene = Scene.from_dict(scene_dict)
         result = scene.run(record=True)
@@ -678,275 +481,3 @@ def run_case(scene_dict: dict[str, Any], sample_between: bool = True):
         return rep, None
     return check_shot(scene, result, sample_between=sample_between), result
 
-
-def shrink_case(scene_dict: dict[str, Any], invariant: str | None = None, max_rounds: int = 4,
-                log: Callable[[str], None] | None = None) -> dict[str, Any]:
-    """A smaller scene that still violates ``invariant`` (default: any invariant the given scene violates):
-    balls other than the cue are removed one by one, then parameters are set to round values where the
-    violation persists. Greedy (delta debugging by single removals); deterministic."""
-    import copy
-
-    def violates(d: dict[str, Any]) -> bool:
-        try:
-            rep, _ = run_case(d)
-        except Exception:  # noqa: BLE001 - e.g. a simplified scene that is no longer valid
-            return False
-        return invariant in rep.violations if invariant else bool(rep.violations)
-
-    cur = copy.deepcopy(scene_dict)
-    if invariant is None:
-        rep, _ = run_case(cur)
-        if not rep.violations:
-            return cur
-        invariant = sorted(rep.violations)[0]
-    if not violates(cur):
-        return cur
-    done: set = set()
-    for _ in range(max_rounds):
-        changed = False
-        k = len(cur["balls"]) - 1
-        while k >= 1:
-            trial = copy.deepcopy(cur)
-            del trial["balls"][k]
-            if violates(trial):
-                cur = trial
-                changed = True
-                if log:
-                    log(f"shrink: removed ball {k}, {len(cur['balls'])} left")
-            k -= 1
-        simplifications = [("table", "pockets", ([],)), ("table", "cushion_restitution", (1.0, 0.0, 0.85)),
-                           ("physics", "min_speed", (0.0,)), ("physics", "mu_roll", (0.01,)),
-                           ("physics", "drag_k", (0.0, 1.0)), ("physics", "ball_restitution", (1.0, 0.0, 0.5)),
-                           ("max_events", None, (2000,)), ("max_time", None, (10.0,))]
-        for sec, key, values in simplifications:
-            if (sec, key) in done:
-                continue
-            for val in values:
-                trial = copy.deepcopy(cur)
-                holder, name = (trial, sec) if key is None else (trial[sec], key)
-                if sec == "physics" and key not in holder and key != "min_speed":
-                    break
-                if holder.get(name) == val:
-                    break
-                holder[name] = val
-                if violates(trial):
-                    cur = trial
-                    changed = True
-                    done.add((sec, key))
-                    if log:
-                        log(f"shrink: {sec}{'.' + key if key else ''} = {val}")
-                    break
-        if not changed:
-            break
-    return cur
-
-
-def _solver_for(mode: str, rng: np.random.Generator) -> str:
-    if mode == "both":
-        return "exact" if rng.random() < 0.5 else "step"
-    return mode
-
-
-@dataclass
-class Stats:
-    shots: int = 0
-    failing_shots: int = 0
-    per_solver: Counter = field(default_factory=Counter)
-    violations: Counter = field(default_factory=Counter)
-    violation_shots: Counter = field(default_factory=Counter)
-    statuses: Counter = field(default_factory=Counter)
-    events: int = 0
-    collisions: int = 0
-    max_events: int = 0
-    worst_overlap: dict = field(default_factory=lambda: {"exact": 0.0, "step": 0.0})
-    worst_overlap_ratio: float = 0.0  #: step: final overlap / (speed * dt)
-    worst_overlap_during: dict = field(default_factory=lambda: {"exact": 0.0, "step": 0.0})
-    worst_energy_gain: float = 0.0
-    worst_momentum_err: float = 0.0
-    worst_contact_err: float = 0.0
-    worst_jump: float = 0.0
-    max_burst: int = 0
-    sim_seconds: float = 0.0
-    failures: list = field(default_factory=list)
-
-    def add(self, rep: Report, scene_dict: dict, tag: str, keep_failure: bool) -> None:
-        self.shots += 1
-        solver = scene_dict["solver"]["name"]
-        self.per_solver[solver] += 1
-        self.statuses[f"{solver}:{rep.status or 'crash'}"] += 1
-        self.events += rep.n_events
-        self.collisions += rep.n_collisions
-        self.max_events = max(self.max_events, rep.n_events)
-        self.worst_overlap[solver] = max(self.worst_overlap[solver], rep.max_overlap)
-        if solver == "step":
-            sd = scene_dict["shot"]["speed"] * scene_dict["solver"]["dt"]
-            if sd > 0:
-                self.worst_overlap_ratio = max(self.worst_overlap_ratio, rep.max_overlap / sd)
-        self.worst_overlap_during[solver] = max(self.worst_overlap_during[solver], rep.max_overlap_during)
-        self.worst_energy_gain = max(self.worst_energy_gain, rep.max_energy_gain)
-        self.worst_momentum_err = max(self.worst_momentum_err, rep.max_momentum_err)
-        self.worst_contact_err = max(self.worst_contact_err, rep.max_contact_err)
-        self.worst_jump = max(self.worst_jump, rep.max_jump)
-        self.max_burst = max(self.max_burst, rep.max_burst)
-        self.sim_seconds += rep.sim_time
-        self.failing_shots += bool(rep.violations)
-        for name in rep.violations:
-            self.violations[name] += rep.counts[name]
-            self.violation_shots[name] += 1
-        if rep.violations and keep_failure:
-            self.failures.append({"tag": tag, "solver": solver, "violations": rep.violations, "scene": scene_dict})
-
-    def merge(self, other: "Stats") -> None:
-        self.shots += other.shots
-        self.failing_shots += other.failing_shots
-        for name in ("per_solver", "violations", "violation_shots", "statuses"):
-            getattr(self, name).update(getattr(other, name))
-        self.events += other.events
-        self.collisions += other.collisions
-        self.max_events = max(self.max_events, other.max_events)
-        for s in ("exact", "step"):
-            self.worst_overlap[s] = max(self.worst_overlap[s], other.worst_overlap[s])
-            self.worst_overlap_during[s] = max(self.worst_overlap_during[s], other.worst_overlap_during[s])
-        for name in ("worst_overlap_ratio", "worst_energy_gain", "worst_momentum_err", "worst_contact_err",
-                     "worst_jump", "max_burst"):
-            setattr(self, name, max(getattr(self, name), getattr(other, name)))
-        self.sim_seconds += other.sim_seconds
-        self.failures.extend(other.failures)
-
-
-def _run_chunk(args: tuple) -> Stats:
-    seed, lo, hi, mode, max_time, max_events, keep = args
-    stats = Stats()
-    for idx in range(lo, hi):
-        rng = shot_rng(seed, idx)
-        solver = _solver_for(mode, rng)
-        scene_dict = random_scene(NumpySource(rng), solver=solver, max_time=max_time, max_events=max_events)
-        rep, _ = run_case(scene_dict)
-        stats.add(rep, scene_dict, f"seed{seed}-shot{idx}", keep_failure=len(stats.failures) < keep)
-    return stats
-
-
-def _warm_up() -> None:
-    """Compile (or load from cache) the numba kernels once per process before timing."""
-    rng = shot_rng(0, 0)
-    for solver in ("exact", "step"):
-        run_case(random_scene(NumpySource(rng), solver=solver, max_time=1.0))
-
-
-def format_summary(stats: Stats, wall: float) -> str:
-    lines = [f"shots run: {stats.shots}  ({', '.join(f'{k} {v}' for k, v in sorted(stats.per_solver.items()))})",
-             f"wall time: {wall:.1f} s  ({stats.shots / max(wall, 1e-9):.0f} shots/s); simulated {stats.sim_seconds:.0f} s",
-             f"events/shot: {stats.events / max(stats.shots, 1):.1f} (max {stats.max_events}); "
-             f"collisions/shot: {stats.collisions / max(stats.shots, 1):.1f}",
-             f"most events at one instant: {stats.max_burst} (zeno above {ZENO_BURST})",
-             "statuses: " + ", ".join(f"{k} {v}" for k, v in sorted(stats.statuses.items())),
-             f"failing shots: {stats.failing_shots}",
-             "violations (shots with / total occurrences):"]
-    for name in INVARIANTS:
-        lines.append(f"  {name:15s} {stats.violation_shots.get(name, 0):7d} / {stats.violations.get(name, 0)}")
-    lines += [f"worst final overlap: exact {stats.worst_overlap['exact']:.3g} m (tol {EXACT_OVERLAP_TOL:g}), "
-              f"step {stats.worst_overlap['step']:.3g} m (= {stats.worst_overlap_ratio:.3g} x speed*dt; "
-              f"tol {STEP_OVERLAP_FACTOR:g} x speed*dt + {STEP_OVERLAP_ABS:g})",
-              f"worst overlap during shot: exact {stats.worst_overlap_during['exact']:.3g} m, "
-              f"step {stats.worst_overlap_during['step']:.3g} m",
-              f"worst energy gain (relative, per event): {stats.worst_energy_gain:.3g} (tol {ENERGY_REL_TOL:g})",
-              f"worst momentum error (relative, per collision): {stats.worst_momentum_err:.3g} (tol {MOMENTUM_REL_TOL:g})",
-              f"worst contact-distance error at a collision: {stats.worst_contact_err:.3g} m (tol {CONTACT_TOL:g})",
-              f"worst position jump at an event: {stats.worst_jump:.3g} m (tol {CONTINUITY_TOL:g})"]
-    return "\n".join(lines)
-
-
-def save_failures(failures: list[dict], out: Path) -> list[Path]:
-    """Write every failing case as a scene file plus one line of ``violations.jsonl``; returns the files."""
-    out.mkdir(parents=True, exist_ok=True)
-    paths = []
-    with open(out / "violations.jsonl", "a") as index:
-        for f in failures:
-            kinds = "+".join(sorted(f["violations"]))
-            path = out / f"{f['tag']}-{f['solver']}-{kinds}.json"
-            path.write_text(json.dumps(f["scene"], indent=1) + "\n")
-            index.write(json.dumps({"file": path.name, "solver": f["solver"], "violations": f["violations"]}) + "\n")
-            paths.append(path)
-    return paths
-
-
-def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="python -m billiards_env.fuzz",
-                                description="Fuzz the physics engine with random shots and check its invariants.")
-    p.add_argument("--shots", type=int, default=100_000, help="number of random shots (default 100000)")
-    p.add_argument("--seed", type=int, default=0, help="run seed; shot i of seed S is reproducible alone")
-    p.add_argument("--solver", choices=("exact", "step", "both"), default="exact",
-                   help="solver of every shot; 'both' draws one per shot")
-    p.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
-    p.add_argument("--out", default="fuzz-failures", help="folder for failing cases (scene files)")
-    p.add_argument("--max-time", type=float, default=None,
-                   help=f"simulated-time cap per shot (default {DEFAULT_MAX_TIME:g} s exact, "
-                        f"{DEFAULT_STEP_MAX_TIME:g} s step)")
-    p.add_argument("--max-events", type=int, default=DEFAULT_MAX_EVENTS, help="event cap per shot (exact)")
-    p.add_argument("--chunk", type=int, default=250, help="shots per work unit")
-    p.add_argument("--keep", type=int, default=50, help="failing cases saved per work unit at most")
-    p.add_argument("--start", type=int, default=0, help="index of the first shot (to resume or replay)")
-    p.add_argument("--shrink", metavar="SCENE", help="instead of fuzzing: shrink this failing scene file (fewer balls, "
-                                                    "round parameters) and print the smaller scene")
-    p.add_argument("--invariant", help="with --shrink: the invariant to keep violating (default: the first)")
-    p.add_argument("--check", metavar="SCENE", help="instead of fuzzing: run one scene file and print its report")
-    return p
-
-
-def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
-    if args.shots < 1 or args.workers < 1 or args.chunk < 1:
-        print("fuzz: --shots, --workers and --chunk must be positive", file=sys.stderr)
-        return 2
-    if args.check or args.shrink:
-        d = json.loads(Path(args.check or args.shrink).read_text())
-        if args.shrink:
-            d = shrink_case(d, args.invariant, log=lambda m: print(m, file=sys.stderr))
-            print(json.dumps(d, indent=1))
-        rep, _ = run_case(d)
-        print(f"status {rep.status}, {rep.n_events} events; violations:", file=sys.stderr)
-        for name, msg in rep.violations.items():
-            print(f"  {name}: {msg}", file=sys.stderr)
-        return 1 if rep.violations else 0
-    out = Path(args.out)
-    chunks = [(args.seed, lo, min(lo + args.chunk, args.start + args.shots), args.solver, args.max_time,
-               args.max_events, args.keep) for lo in range(args.start, args.start + args.shots, args.chunk)]
-    total = Stats()
-    _warm_up()
-    t0 = time.perf_counter()
-    last_print = t0
-    saved: list[Path] = []
-    if args.workers == 1:
-        results = map(_run_chunk, chunks)
-        pool = None
-    else:
-        ctx = mp.get_context("fork" if sys.platform != "win32" else "spawn")
-        pool = ctx.Pool(args.workers, initializer=_warm_up)
-        results = pool.imap_unordered(_run_chunk, chunks)
-    try:
-        for st in results:
-            saved += save_failures(st.failures, out) if st.failures else []
-            st.failures = []
-            total.merge(st)
-            now = time.perf_counter()
-            if now - last_print > 30 or total.shots == args.shots:
-                last_print = now
-                print(f"[fuzz] {total.shots}/{args.shots} shots, {now - t0:.0f} s, {total.failing_shots} failing "
-                      f"({dict(total.violation_shots)})", file=sys.stderr, flush=True)
-    finally:
-        if pool is not None:
-            pool.close()
-            pool.join()
-    wall = time.perf_counter() - t0
-    print(f"fuzz: seed {args.seed}, solver {args.solver}, workers {args.workers}")
-    print(format_summary(total, wall))
-    if saved:
-        print(f"failing cases: {len(saved)} scene files under {out}/ (index: {out}/violations.jsonl); "
-              f"reproduce with `billiards-sim FILE --events`")
-    else:
-        print("failing cases: none")
-    return 1 if total.failing_shots else 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

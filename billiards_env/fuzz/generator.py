@@ -1,0 +1,201 @@
+"""Random scenes and shots for the fuzz command and the stability tests.
+
+:func:`random_scene` makes a scene dict in the scene-file format of :mod:`billiards_env.physics.scene`: 1 to 16
+balls placed at random (touching each other and the cushions on purpose, in corners, as racks), a random
+friction law and constants, restitutions and solver settings, and a random cue strike. It draws every decision
+through a small :class:`Source` interface: :class:`NumpySource` for the fuzz (shot ``i`` of seed ``S`` from
+:func:`shot_rng`), a Hypothesis-backed source in ``tests/stability``, so both drive the very same generator and
+Hypothesis can shrink its draws.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any, Sequence
+
+import numpy as np
+
+from ..physics.rack import triangle_positions
+
+DEFAULT_MAX_TIME = 60.0
+DEFAULT_STEP_MAX_TIME = 20.0
+DEFAULT_MAX_EVENTS = 20_000
+STEP_DTS = (5e-4, 1e-3, 2e-3)
+CONTACT_MODES = ("lecture", "rewind")
+
+L_DEFAULT = 2.54
+W_DEFAULT = 1.27
+R_DEFAULT = 0.028575
+
+
+# --------------------------------------------------------------------------------------------- random source
+class Source:
+    """Where the scene generator gets its random decisions (numpy for the fuzz, Hypothesis in the tests)."""
+
+    def uniform(self, lo: float, hi: float) -> float:
+        raise NotImplementedError
+
+    def integer(self, lo: int, hi: int) -> int:
+        """An integer in ``[lo, hi]`` (both included)."""
+        raise NotImplementedError
+
+    def choice(self, options: Sequence[Any]) -> Any:
+        return options[self.integer(0, len(options) - 1)]
+
+    def chance(self, p: float) -> bool:
+        return self.uniform(0.0, 1.0) < p
+
+    def log_uniform(self, lo: float, hi: float) -> float:
+        return float(math.exp(self.uniform(math.log(lo), math.log(hi))))
+
+
+class NumpySource(Source):
+    def __init__(self, rng: np.random.Generator) -> None:
+        self.rng = rng
+
+    def uniform(self, lo: float, hi: float) -> float:
+        return float(self.rng.uniform(lo, hi))
+
+    def integer(self, lo: int, hi: int) -> int:
+        return int(self.rng.integers(lo, hi + 1))
+
+
+def shot_rng(seed: int, index: int) -> np.random.Generator:
+    """The random generator of shot ``index`` of a fuzz run with ``seed``: every shot is reproducible alone."""
+    return np.random.default_rng(np.random.SeedSequence([int(seed), int(index)]))
+
+
+
+# --------------------------------------------------------------------------------------------- scene generator
+def _unit_or_special(src: Source) -> float:
+    """A restitution: the ends 0 and 1 often, otherwise uniform."""
+    return float(src.choice((0.0, 1.0, src.uniform(0.0, 1.0), src.uniform(0.0, 1.0), src.uniform(0.9, 1.0))))
+
+
+def _fits(p: tuple[float, float], placed: list[tuple[float, float]], r: float, length: float, width: float) -> bool:
+    x, y = p
+    if not (r <= x <= length - r and r <= y <= width - r):
+        return False
+    for q in placed:
+        # validate_balls accepts overlaps up to 1e-9; touching placements from cos/sin are off by ~1e-17.
+        if math.hypot(x - q[0], y - q[1]) < 2.0 * r - 1e-12:
+            return False
+    return True
+
+
+def _gap(src: Source) -> float:
+    return float(src.choice((0.0, 0.0, 0.0, 1e-12, src.log_uniform(1e-12, 1e-3), src.uniform(0.0, 0.05))))
+
+
+def _place(src: Source, placed: list[tuple[float, float]], r: float, length: float, width: float
+           ) -> tuple[float, float] | None:
+    """One more ball position (or None if the drawn placement does not fit)."""
+    mode = src.choice(("free", "free", "touch_ball", "touch_ball", "touch_cushion", "touch_both", "corner"))
+    if mode == "free" or not placed and mode in ("touch_ball", "touch_both"):
+        p = (src.uniform(r, length - r), src.uniform(r, width - r))
+    elif mode == "touch_ball":
+        q = placed[src.integer(0, len(placed) - 1)]
+        th = src.choice((src.uniform(-math.pi, math.pi), src.integer(0, 11) * math.pi / 6.0))
+        d = 2.0 * r + _gap(src)
+        p = (q[0] + d * math.cos(th), q[1] + d * math.sin(th))
+    elif mode == "touch_cushion":
+        side = src.integer(0, 3)
+        if side < 2:
+            p = (r if side == 0 else length - r, src.uniform(r, width - r))
+        else:
+            p = (src.uniform(r, length - r), r if side == 2 else width - r)
+    elif mode == "touch_both":  # on a cushion and touching a ball
+        q = placed[src.integer(0, len(placed) - 1)]
+        side = src.integer(0, 3)
+        d = 2.0 * r + _gap(src)
+        sgn = src.choice((-1.0, 1.0))
+        if side < 2:
+            x = r if side == 0 else length - r
+            h = d * d - (x - q[0]) ** 2
+            if h < 0.0:
+                return None
+            p = (x, q[1] + sgn * math.sqrt(h))
+        else:
+            y = r if side == 2 else width - r
+            h = d * d - (y - q[1]) ** 2
+            if h < 0.0:
+                return None
+            p = (q[0] + sgn * math.sqrt(h), y)
+    else:  # corner
+        p = (src.choice((r, length - r)), src.choice((r, width - r)))
+    return p if _fits(p, placed, r, length, width) else None
+
+
+def _rack(src: Source, n: int, r: float, length: float, width: float) -> list[tuple[float, float]]:
+    gap = float(src.choice((0.0, 0.0, 1e-12, src.log_uniform(1e-12, 1e-4))))
+    apex = (0.75 * length, 0.5 * width)
+    tri = triangle_positions(apex, r, gap=gap)
+    cue = (src.choice((0.25 * length, src.uniform(r, 0.6 * length))), src.choice((0.5 * width, src.uniform(r, width - r))))
+    return [cue] + [(float(x), float(y)) for x, y in tri[: n - 1]]
+
+
+def random_scene(src: Source, solver: str | None = None, max_time: float | None = None,
+                 max_events: int = DEFAULT_MAX_EVENTS) -> dict[str, Any]:
+    """A random scene dict in the scene-file format, with a shot and solver settings.
+
+    ``solver``: ``"exact"``, ``"step"`` or None (drawn). The cue is ball 0 (id ``"cue"``).
+    """
+    length, width, r = L_DEFAULT, W_DEFAULT, R_DEFAULT
+    # table
+    table: dict[str, Any] = {"length": length, "width": width, "cushion_restitution": _unit_or_special(src)}
+    if src.chance(0.3):
+        table["pockets"] = []
+    # physics
+    friction = src.choice(("rolling", "drag"))
+    physics: dict[str, Any] = {"friction": friction, "ball_restitution": _unit_or_special(src)}
+    if friction == "rolling":
+        physics["mu_roll"] = float(src.choice((0.0, 0.01, src.uniform(0.0, 0.05), src.uniform(0.0, 0.05))))
+        physics["min_speed"] = float(src.choice((0.0, 0.0, 0.0, src.uniform(0.0, 0.05))))
+    else:
+        physics["drag_k"] = float(src.choice((0.0, src.uniform(0.0, 2.0), src.uniform(0.0, 2.0))))
+        physics["min_speed"] = float(src.choice((0.0, 0.01, src.uniform(0.0, 0.05), src.uniform(0.0, 0.05))))
+    # balls
+    n = src.integer(1, 16)
+    if n >= 2 and src.chance(0.15):
+        placed = _rack(src, n, r, length, width)
+    else:
+        placed = []
+        for _ in range(n):
+            p = _place(src, placed, r, length, width)
+            if p is not None:
+                placed.append(p)
+        if not placed:
+            placed.append((src.uniform(r, length - r), src.uniform(r, width - r)))
+    balls = [{"id": "cue" if i == 0 else str(i), "x": float(x), "y": float(y)} for i, (x, y) in enumerate(placed)]
+    # shot: a random direction, or aimed at a ball (head-on, tiny offset, or grazing at 2R +- eps), or a cushion
+    aim = src.choice(("random", "random", "ball", "ball", "axis"))
+    cx, cy = placed[0]
+    if aim == "ball" and len(placed) > 1:
+        tx, ty = placed[src.integer(1, len(placed) - 1)]
+        d = math.hypot(tx - cx, ty - cy)
+        base = math.atan2(ty - cy, tx - cx)
+        off = src.choice(("head", "head", "tiny", "graze"))
+        if off == "head":
+            angle = base
+        elif off == "tiny":
+            angle = base + src.choice((-1.0, 1.0)) * src.log_uniform(1e-15, 1e-3)
+        else:
+            b = 2.0 * r + src.choice((-1.0, 1.0)) * float(src.choice((0.0, src.log_uniform(1e-14, 1e-4))))
+            angle = base + src.choice((-1.0, 1.0)) * math.asin(min(b / d, 1.0))
+    elif aim == "axis":
+        angle = src.integer(0, 7) * math.pi / 4.0
+    else:
+        angle = src.uniform(-math.pi, math.pi)
+    speed = src.log_uniform(1e-3, 10.0)
+    # solver
+    if solver is None:
+        solver = src.choice(("exact", "step"))
+    solver_d: dict[str, Any] = {"name": solver}
+    if solver == "step":
+        solver_d["dt"] = float(src.choice(STEP_DTS))
+        solver_d["contact"] = src.choice(CONTACT_MODES)
+    if max_time is None:
+        max_time = DEFAULT_MAX_TIME if solver == "exact" else DEFAULT_STEP_MAX_TIME
+    return {"table": table, "physics": physics, "balls": balls,
+            "shot": {"ball": "cue", "angle": float(angle), "speed": float(speed)},
+            "solver": solver_d, "max_time": float(max_time), "max_events": int(max_events)}
+
