@@ -8,6 +8,7 @@ from __future__ import annotations
 import copy
 import json
 import math
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -110,6 +111,12 @@ def cli(tmp_path_factory):
         procs[f"bad:{name}"] = _cli(_write(d / f"{name}.json", BAD[name][0]))
     for ex in EXAMPLES:
         procs[f"example:{ex.name}"] = _cli(ex, "--events")
+    # `billiards-sim ... | head`: the reader is gone before the result is written (read end closed up front).
+    r, w = os.pipe()
+    os.close(r)
+    procs["broken_pipe"] = subprocess.Popen([sys.executable, "-m", "billiards_env.sim", str(EXAMPLES[0]), "--events"],
+                                            cwd=REPO, stdout=w, stderr=subprocess.PIPE)
+    os.close(w)
     out = {}
     for name, p in procs.items():
         try:
@@ -117,7 +124,7 @@ def cli(tmp_path_factory):
         except subprocess.TimeoutExpired:
             p.kill()
             so, se = p.communicate()
-        out[name] = (p.returncode, so.decode("utf-8", "replace"), se.decode("utf-8", "replace"))
+        out[name] = (p.returncode, (so or b"").decode("utf-8", "replace"), se.decode("utf-8", "replace"))
     return out
 
 
@@ -222,6 +229,30 @@ def test_bad_command_line_is_one_clear_error_line(capsys, tmp_path, args):
     good = _write(tmp_path / "good.json", BASE)
     args = [a.replace("{good}", str(good)) if a != "does_not_exist.json" else str(tmp_path / a) for a in args]
     _check_error(*_main(capsys, *args), [])
+
+
+def test_output_into_a_closed_pipe_ends_quietly(cli):
+    rc, _, err = cli["broken_pipe"]
+    assert err == "" and rc == 1  # no BrokenPipeError traceback; status 1 as in the Python docs' recipe
+
+
+@pytest.mark.parametrize("args,flags", [(["--dt", "0.001"], ["--dt"]), (["--contact", "rewind"], ["--contact"]),
+                                        (["--solver", "exact", "--dt", "0.001", "--contact", "lecture"],
+                                         ["--dt", "--contact"])],
+                         ids=["dt", "contact", "exact-dt-contact"])
+def test_step_solver_flags_without_the_step_solver_are_refused(capsys, tmp_path, args, flags):
+    rc, out, err = _main(capsys, _write(tmp_path / "good.json", BASE), *args)
+    _check_error(rc, out, err, flags + ["step solver", "--solver step", "'exact'"])
+
+
+def test_step_solver_flags_apply_to_a_step_scene(capsys, tmp_path):
+    scene = _write(tmp_path / "step.json", {**BASE, "solver": {"name": "step", "dt": 0.01}})
+    rc, out, err = _main(capsys, scene, "--dt", "0.002", "--contact", "rewind")
+    assert rc == 0, err
+    doc = json.loads(out)
+    assert doc["solver"] == "step-rewind"
+    coarse = json.loads(_main(capsys, scene)[1])
+    assert doc["n_steps"] > coarse["n_steps"]  # --dt 0.002 was used, not the scene's 0.01
 
 
 @pytest.mark.parametrize("name", [k for k, v in API_BAD.items() if not isinstance(v, (str, bytes))])
