@@ -33,12 +33,14 @@ BAR_BG = (60, 60, 66)
 
 
 class PlayApp:
-    """The interactive game: an env (no render mode: the app draws), its renderer and a pygame window.
+    """The interactive game: an env in ``render_mode="human"`` drawing into this app's pygame window, its
+    renderer, a power bar and a status line.
 
-    Drawing of the table and cue comes from :mod:`billiards_env.render` (through ``env.unwrapped.renderer``);
-    this class only adds the power bar and the status line. A shot is animated frame by frame as it is drawn
-    (see :meth:`animate_shot`). ``run(events)`` takes the events from pygame, or from ``events`` (an iterable of
-    per-frame event lists) for scripted, headless runs.
+    Drawing of the table and cue comes from :mod:`billiards_env.render` (through ``env.unwrapped.renderer``).
+    Shots are animated by the env's own human mode, frame by frame as they are drawn, through a
+    :class:`PlayWindow` that adds the panel; between shots the app draws the table with the aiming cue.
+    ``run(events)`` takes the events from pygame, or from ``events`` (an iterable of per-frame event lists) for
+    scripted, headless runs.
 
     Without a display the constructor raises :class:`~billiards_env.render.window.HeadlessDisplayError` unless
     ``allow_headless`` (default: the ``BILLIARDS_ALLOW_HEADLESS`` environment variable) is true.
@@ -58,7 +60,8 @@ class PlayApp:
         self.pg = pygame
         self.env_id = env_id
         try:
-            self.env = gym.make(env_id, render_width=width, render_speedup=speedup, **env_kwargs)
+            self.env = gym.make(env_id, render_mode="human", render_width=width, render_speedup=speedup,
+                                **env_kwargs)
         except BaseException:
             pygame.display.quit()
             raise
@@ -88,6 +91,7 @@ class PlayApp:
         self.success = False
         self.status = ""
         self.last_info: dict[str, Any] | None = None
+        self.core._window = PlayWindow(self)  # the env's human mode shows its frames here (see BilliardsEnv._show)
         self.reset(seed)
 
     # --- coordinates ------------------------------------------------------------------------------------
@@ -118,16 +122,15 @@ class PlayApp:
         return c.speed_min + self.power * (c.speed_max - c.speed_min)
 
     def shoot(self) -> dict[str, Any]:
-        """Play the shot set by ``aim`` and ``power`` and animate it (the power bar is hidden meanwhile)."""
+        """Play the shot set by ``aim`` and ``power``; the env animates it in the window as it is drawn, with the
+        power bar already gone (the click shows at once)."""
         action = self.core.action_from_shot(self.aim, self.speed())
+        self.status = f"shot {self.shots + 1}: {self.speed():.2f} m/s ..."
         self.dragging, self.power = False, 0.0  # released: the bar goes, the balls move
-        before = self.core.balls.copy()
         _, reward, terminated, truncated, info = self.env.step(action)
         self.last_info = info
         self.shots += 1
         self.total += float(reward)
-        self.status = f"shot {self.shots}: {info['speed']:.2f} m/s ..."
-        self.animate_shot(before, info)
         potted = ", ".join(b for b in info["pocketed"] if b != "cue") or "nothing"
         self.status = f"shot {self.shots}: {info['speed']:.2f} m/s, potted {potted}" + (
             ", SCRATCH (cue ball re-spotted)" if info["scratch"] else "") + f", reward {float(reward):+.2f}"
@@ -136,35 +139,6 @@ class PlayApp:
             self.success = bool(info["is_success"])
             self.status += (" - table cleared!" if self.success else " - episode over") + " (R or click: new)"
         return info
-
-    def animate_shot(self, before: Any, info: dict[str, Any]) -> None:
-        """Animate the shot just played: each frame is drawn and shown at once, at ``render_fps``.
-
-        The env steps without recording (it draws nothing), so the shot is replayed here from the balls
-        ``before`` it with the angle and speed it was played at (noise included): the exact solver is
-        deterministic, so this is the same trajectory. Frames are the env's :meth:`animation_times` of it; the
-        last one (the state after the shot, cue ball re-spotted) is drawn by the main loop. Mouse clicks made
-        while the balls roll are dropped (they would otherwise start a drag or a new episode afterwards);
-        closing the window, Esc or Q quits."""
-        pg = self.pg
-        core = self.core
-        result = core.simulator.run(before.strike(0, info["angle"], info["speed"]), record=True, validate=False)
-        trajectory = result.trajectory
-        shot = core.last_shot
-        cue = None if shot is None else (shot[0], shot[1], shot[2])
-        for t in core.animation_times(trajectory.duration)[:-1]:
-            for e in pg.event.get((pg.QUIT, pg.KEYDOWN, pg.MOUSEBUTTONDOWN, pg.MOUSEBUTTONUP)):
-                if e.type == pg.QUIT or (e.type == pg.KEYDOWN and e.key in (pg.K_ESCAPE, pg.K_q)):
-                    self.running = False
-            if not self.running:
-                return
-            pos, on = trajectory.sample([t])
-            self.screen.blit(self.renderer.draw(pos[0], on[0], core.ball_numbers, cue=cue), (0, 0))
-            self.draw_panel()
-            pg.display.flip()
-            self.frames_shown += 1
-            if self.realtime:
-                self.clock.tick(self.fps)
 
     # --- input ------------------------------------------------------------------------------------------
     def handle(self, e: Any) -> None:
@@ -262,6 +236,38 @@ class PlayApp:
     def close(self) -> None:
         self.env.close()
         self.pg.display.quit()
+
+
+class PlayWindow:
+    """The window of :class:`PlayApp` as the env's human-mode window (``closed``, ``show``, ``close``): each frame
+    the env draws is shown at once, with the panel below it, at the env's ``render_fps`` when playing in real
+    time. Mouse clicks made while the balls roll are dropped (they would otherwise start a drag or a new episode
+    afterwards); closing the window, Esc or Q quits."""
+
+    def __init__(self, app: PlayApp) -> None:
+        self.app = app
+
+    @property
+    def closed(self) -> bool:
+        app = self.app
+        pg = app.pg
+        if pg.display.get_init():
+            for e in pg.event.get((pg.QUIT, pg.KEYDOWN, pg.MOUSEBUTTONDOWN, pg.MOUSEBUTTONUP)):
+                if e.type == pg.QUIT or (e.type == pg.KEYDOWN and e.key in (pg.K_ESCAPE, pg.K_q)):
+                    app.running = False
+        return not app.running
+
+    def show(self, surface: Any, fps: float | None = None) -> None:
+        app = self.app
+        app.screen.blit(surface, (0, 0))
+        app.draw_panel()
+        app.pg.display.flip()
+        app.frames_shown += 1
+        if fps and app.realtime:
+            app.clock.tick(fps)
+
+    def close(self) -> None:
+        """The app closes the display itself (:meth:`PlayApp.close`)."""
 
 
 def demo_events(app: PlayApp, power: float = 0.5) -> Iterator[list[Any]]:

@@ -88,11 +88,11 @@ def test_shot_frames_are_shown_as_drawn_and_the_power_bar_goes():
     bar_probe = (16, h + 16)  # inside the power bar, where its fill starts
 
     def logged_draw(pos, *a, **k):
-        log.append(("draw", app.shots, np.array(pos)))
+        log.append(("draw", app.core.shots, np.array(pos)))
         return draw(pos, *a, **k)
 
     def logged_flip():
-        log.append(("flip", app.shots, tuple(app.screen.get_at(bar_probe))[:3]))
+        log.append(("flip", app.core.shots, tuple(app.screen.get_at(bar_probe))[:3]))
         flip()
 
     app.renderer.draw = logged_draw
