@@ -348,43 +348,19 @@ def learning_curve(run_dir: Path, path: Path, baselines: dict[str, float] | None
     return path
 
 
-def record_gif(spec: PlayerSpec, path: Path, seeds: Sequence[int], fps: int = 30, width: int = 400,
-               max_frames_per_shot: int = 90, hold_frames: int = 12) -> dict[str, Any]:
-    """Play ``seeds`` episodes with ``spec`` in ``render_mode="rgb_array_list"`` and write them as one GIF.
+def record_gif(spec: PlayerSpec, path: Path, seeds: Sequence[int], **options: Any) -> dict[str, Any]:
+    """Play ``seeds`` episodes with ``spec`` and write them as one GIF, with the recorder of billiards_env
+    (:func:`billiards_env.envs.recording.record_gif`: its render settings and per-shot frame cap; ``options``
+    go to it). Returns its summary (frames, shots, returns, successes per episode) with the path as a string."""
+    from billiards_env.envs.recording import GIF_RENDER
+    from billiards_env.envs.recording import record_gif as record
 
-    Long shots are sampled down to ``max_frames_per_shot`` frames (the last frame of each shot kept), and the
-    final table of each episode is held for ``hold_frames`` frames. Uses ``billiards_env.render.gif.write_gif``.
-    """
-    from billiards_env.envs.config import EnvConfig
-    from billiards_env.render.gif import write_gif
-
-    extra: dict[str, Any] = {"render_width": width, "render_fps": fps}
-    if "render_speedup" in EnvConfig.keys():
-        extra["render_speedup"] = 2.0
-    env = spec.make_env(render_mode="rgb_array_list", **extra)
-    frames: list[np.ndarray] = []
-    outcomes = []
+    env = spec.make_env(render_mode="rgb_array_list", **GIF_RENDER)
     try:
-        for s in seeds:
-            spec.reset(s)
-            obs, _ = env.reset(seed=s)
-            frames.extend(env.render())
-            done = False
-            info: dict[str, Any] = {}
-            while not done:
-                obs, _, term, trunc, info = env.step(spec.act(env, obs))
-                shot = env.render()
-                if len(shot) > max_frames_per_shot:
-                    idx = np.unique(np.linspace(0, len(shot) - 1, max_frames_per_shot).round().astype(int))
-                    shot = [shot[i] for i in idx]
-                frames.extend(shot)
-                done = term or trunc
-            frames.extend([frames[-1]] * hold_frames)
-            outcomes.append(bool(info.get("is_success")))
+        out = record(env, lambda obs: spec.act(env, obs), path, list(seeds), reset_policy=spec.reset, **options)
     finally:
         env.close()
-    out = write_gif(frames, path, fps=fps)
-    return {"path": str(out), "frames": len(frames), "episodes": list(seeds), "successes": outcomes}
+    return {**out, "path": str(out["path"])}
 
 
 def evaluate(players: list[PlayerSpec], episodes: int, seed: int, out_dir: Path | None,

@@ -97,6 +97,36 @@ def test_human_mode_opens_animates_and_closes():
     env.close()  # twice is fine
 
 
+def test_human_mode_shows_each_frame_as_it_is_drawn(monkeypatch):
+    """No frames are rendered ahead: draw, show, draw, show... through the whole shot."""
+    from billiards_env.render import HumanWindow
+
+    pos, angle, speed = corner_pot_scene()
+    env = gym.make("BilliardsOneBall-v0", render_mode="human", render_width=120, render_fps=1000,
+                   render_speedup=20.0)
+    env.reset(seed=0, options={"positions": pos})
+    log: list[str] = []
+    renderer = env.unwrapped.renderer
+    draw, show = renderer.draw, HumanWindow.show
+    renderer.draw = lambda *a, **k: (log.append("draw"), draw(*a, **k))[1]
+    monkeypatch.setattr(HumanWindow, "show", lambda self, *a, **k: (log.append("show"), show(self, *a, **k))[1])
+    env.step(env.unwrapped.action_from_shot(angle, speed))
+    env.close()
+    assert log.count("draw") > 5
+    assert log == ["draw", "show"] * (len(log) // 2)
+
+
+def test_human_mode_without_a_display_says_what_to_do(monkeypatch):
+    from billiards_env.render.window import ALLOW_HEADLESS_ENV, HeadlessDisplayError
+
+    monkeypatch.delenv(ALLOW_HEADLESS_ENV, raising=False)
+    monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")
+    env = gym.make("BilliardsOneBall-v0", render_mode="human", render_width=120)
+    with pytest.raises(HeadlessDisplayError, match="render_mode='human' needs a display.*rgb_array"):
+        env.reset(seed=0)
+    env.close()
+
+
 def test_render_without_mode_warns_and_returns_none():
     env = gym.make("BilliardsOneBall-v0")
     env.reset(seed=0)
@@ -104,16 +134,70 @@ def test_render_without_mode_warns_and_returns_none():
         assert env.unwrapped.render() is None
 
 
-def test_record_episode_gif(tmp_path):
+def test_record_gif_several_seeds_into_one_gif(tmp_path):
     from PIL import Image
 
-    from billiards_env.envs.recording import record_episode_gif
+    from billiards_env.envs.recording import record_gif
 
-    out = record_episode_gif("BilliardsOneBall-v0", lambda obs: np.array([0.3, 0.2], np.float32),
-                             tmp_path / "ep.gif", seed=1, fps=10, render_width=120, render_speedup=4.0)
-    assert out["shots"] == 1 and out["frames"] > 2
+    policy = lambda obs: np.array([0.3, 0.2], np.float32)  # noqa: E731
+    out = record_gif("BilliardsOneBall-v0", policy, tmp_path / "ep.gif", seeds=[1, 2, 3], width=120, fps=10,
+                     speedup=4.0, max_frames_per_shot=8, hold_frames=3)
+    assert out["episodes"] == [1, 2, 3] and out["shots"] == [1, 1, 1] and out["fps"] == 10
+    # per episode: the reset frame, at most 8 frames of the shot, 3 held frames
+    assert 3 * (1 + 2 + 3) <= out["frames"] <= 3 * (1 + 8 + 3)
+    assert out["seconds"] == pytest.approx(out["frames"] / 10)
+    # the returns and successes are those of the same episodes played without recording
+    plain = gym.make("BilliardsOneBall-v0")
+    for seed, ret, ok in zip(out["episodes"], out["returns"], out["successes"]):
+        plain.reset(seed=seed)
+        _, reward, _, _, info = plain.step(policy(None))
+        assert (ret, ok) == (reward, info["is_success"])
     with Image.open(out["path"]) as im:
-        assert im.format == "GIF" and im.n_frames > 2 and im.size[0] == 120
+        assert im.format == "GIF" and im.n_frames > 6 and im.size[0] == 120
+        assert im.info["duration"] == 100  # 10 fps
+    again = record_gif("BilliardsOneBall-v0", policy, tmp_path / "again.gif", seeds=[1, 2, 3], width=120, fps=10,
+                       speedup=4.0, max_frames_per_shot=8, hold_frames=3)
+    assert again["path"].read_bytes() == out["path"].read_bytes()  # deterministic
+
+
+def test_record_gif_caps_frames_per_shot_and_holds_the_end(tmp_path):
+    from billiards_env.envs.recording import record_gif
+
+    pos, angle, speed = corner_pot_scene()
+    env = gym.make("BilliardsOneBall-v0", render_mode="rgb_array_list", render_width=64, render_fps=20)
+    action = env.unwrapped.action_from_shot(angle, speed)
+    env.reset(seed=0)
+    env.render()
+    env.step(action)
+    full = len(env.render())
+    assert full > 12  # a real-time shot at 20 fps: many frames
+    out = record_gif(env, lambda obs: action, tmp_path / "capped.gif", seeds=0, max_frames_per_shot=12,
+                     hold_frames=5)
+    assert out["frames"] == 1 + 12 + 5 and out["fps"] == 20
+    uncapped = record_gif(env, lambda obs: action, tmp_path / "full.gif", seeds=0, max_frames_per_shot=None,
+                          hold_frames=0)
+    assert uncapped["frames"] == 1 + full
+    env.close()
+
+
+def test_record_gif_defaults_are_light():
+    from billiards_env.envs.recording import GIF_RENDER, HOLD_FRAMES, MAX_FRAMES_PER_SHOT
+
+    assert GIF_RENDER["render_width"] <= 400 and GIF_RENDER["render_speedup"] >= 2
+    assert MAX_FRAMES_PER_SHOT / GIF_RENDER["render_fps"] <= 3.0  # at most 3 s of GIF per shot
+    assert HOLD_FRAMES / GIF_RENDER["render_fps"] <= 2.0
+
+
+def test_record_gif_rejects_bad_use(tmp_path):
+    from billiards_env.envs.recording import record_gif
+
     env = gym.make("BilliardsOneBall-v0", render_mode="rgb_array")
     with pytest.raises(ValueError, match="rgb_array_list"):
-        record_episode_gif(env, None, tmp_path / "x.gif", seed=0, fps=10)
+        record_gif(env, None, tmp_path / "x.gif", seeds=0)
+    listing = gym.make("BilliardsOneBall-v0", render_mode="rgb_array_list")
+    with pytest.raises(ValueError, match="width.*when you make the env"):
+        record_gif(listing, None, tmp_path / "x.gif", seeds=0, width=200)
+    with pytest.raises(ValueError, match="max_frames_per_shot"):
+        record_gif("BilliardsOneBall-v0", None, tmp_path / "x.gif", max_frames_per_shot=1)
+    with pytest.raises(ValueError, match="seeds is empty"):
+        record_gif("BilliardsOneBall-v0", None, tmp_path / "x.gif", seeds=[])
