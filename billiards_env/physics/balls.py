@@ -1,4 +1,5 @@
-"""Ball sets as arrays (positions ``(N,2)``, velocities ``(N,2)``, radii, masses, on-table flags) and their checks."""
+"""Ball sets as arrays (positions ``(N,2)``, velocities ``(N,2)``, radii, masses, on-table flags, angular
+velocities ``(N,3)``) and their checks."""
 from __future__ import annotations
 
 import math
@@ -9,6 +10,7 @@ import numpy as np
 from numba import njit
 
 from .errors import SceneError
+from .spin_collide import MAX_TIP_OFFSET, strike_spin
 from .table import Table
 
 BALL_RADIUS = 0.028575  #: pool ball radius (m)
@@ -20,7 +22,10 @@ OVERLAP_TOLERANCE = 1e-9
 
 @dataclass
 class Balls:
-    """The balls of a scene: one row per ball. ``ids`` name them (``"cue"``, ``"1"``, ...)."""
+    """The balls of a scene: one row per ball. ``ids`` name them (``"cue"``, ``"1"``, ...).
+
+    ``ang``: angular velocities ``(wx, wy, wz)`` in rad/s (table frame, ``z`` up), used by the spin model only
+    (zeros when not given; the ``rolling`` and ``drag`` laws refuse balls that spin)."""
 
     ids: tuple[str, ...]
     pos: np.ndarray
@@ -28,6 +33,11 @@ class Balls:
     radius: np.ndarray
     mass: np.ndarray
     on_table: np.ndarray
+    ang: np.ndarray = None  # type: ignore[assignment]
+
+    def __post_init__(self) -> None:
+        if self.ang is None:
+            self.ang = np.zeros((len(self.ids), 3))
 
     @classmethod
     def from_positions(
@@ -37,9 +47,10 @@ class Balls:
         velocities: Sequence[Sequence[float]] | np.ndarray | None = None,
         radius: float | Sequence[float] = BALL_RADIUS,
         mass: float | Sequence[float] = BALL_MASS,
+        spins: Sequence[Sequence[float]] | np.ndarray | None = None,
     ) -> "Balls":
-        """Balls at ``positions`` (``(N,2)``), at rest unless ``velocities`` are given; ids default to 0..N-1
-        with ball 0 named ``"cue"``."""
+        """Balls at ``positions`` (``(N,2)``), at rest unless ``velocities`` (``(N,2)``) or ``spins`` (angular
+        velocities ``(N,3)``, spin model) are given; ids default to 0..N-1 with ball 0 named ``"cue"``."""
         pos = np.array(positions, dtype=float).reshape(-1, 2)
         n = len(pos)
         if ids is None:
@@ -52,6 +63,7 @@ class Balls:
             radius=np.broadcast_to(np.asarray(radius, dtype=float), (n,)).copy(),
             mass=np.broadcast_to(np.asarray(mass, dtype=float), (n,)).copy(),
             on_table=np.ones(n, dtype=bool),
+            ang=np.zeros((n, 3)) if spins is None else np.array(spins, dtype=float).reshape(n, 3),
         )
 
     def __len__(self) -> int:
@@ -59,7 +71,7 @@ class Balls:
 
     def copy(self) -> "Balls":
         return Balls(self.ids, self.pos.copy(), self.vel.copy(), self.radius.copy(), self.mass.copy(),
-                     self.on_table.copy())
+                     self.on_table.copy(), self.ang.copy())
 
     def index(self, ball_id: str | int) -> int:
         """Row of the ball named ``ball_id`` (or the row itself if an int is given)."""
@@ -72,35 +84,54 @@ class Balls:
         except ValueError:
             raise SceneError(f"unknown ball id {ball_id!r}; the scene's balls are {', '.join(self.ids)}") from None
 
-    def strike(self, ball_id: str | int, angle: float, speed: float) -> "Balls":
-        """A copy with ball ``ball_id`` given speed ``speed`` (m/s) in direction ``angle`` (rad, 0 = +x, CCW)."""
+    def strike(self, ball_id: str | int, angle: float, speed: float, side: float = 0.0,
+               top: float = 0.0) -> "Balls":
+        """A copy with ball ``ball_id`` given speed ``speed`` (m/s) in direction ``angle`` (rad, 0 = +x, CCW).
+
+        ``side`` and ``top`` (spin model) are the cue tip's offsets from the ball's centre in fractions of its
+        radius: ``side > 0`` right english (spins counter-clockwise seen from above), ``top > 0`` follow,
+        ``top < 0`` draw, ``top = 0.4`` natural roll; ``side^2 + top^2 <= 0.25`` (beyond, the cue miscues).
+        The struck ball's angular velocity becomes ``wz = 5 side v / 2R``, ``(wx, wy) = 5 top v / 2R (z^ x d^)``.
+        """
         i = self.index(ball_id)
-        for name, v in (("shot.angle", angle), ("shot.speed", speed)):
+        for name, v in (("shot.angle", angle), ("shot.speed", speed), ("shot.side", side), ("shot.top", top)):
             if not isinstance(v, (int, float, np.floating, np.integer)) or not math.isfinite(v):
                 raise SceneError(f"{name}: must be a finite number, got {v!r}")
         if speed < 0:
             raise SceneError(f"shot.speed: must be >= 0, got {speed}")
+        if side * side + top * top > MAX_TIP_OFFSET ** 2:
+            raise SceneError(f"shot.side, shot.top: the tip offset ({side}, {top}) is {math.hypot(side, top):.4g} "
+                             f"ball radii from the centre; it must be at most {MAX_TIP_OFFSET} "
+                             f"(side^2 + top^2 <= {MAX_TIP_OFFSET ** 2}), beyond that the cue miscues")
         if not self.on_table[i]:
             raise SceneError(f"shot.ball: ball {self.ids[i]!r} is pocketed and cannot be struck")
         out = self.copy()
         out.vel[i] = (speed * math.cos(angle), speed * math.sin(angle))
+        if side != 0.0 or top != 0.0:
+            out.ang[i] = strike_spin(float(angle), float(speed), float(side), float(top), float(self.radius[i]))[2:]
+        else:
+            out.ang[i] = 0.0
         return out
 
 
 @njit(cache=True)
-def _first_problem(pos, vel, radius, mass, on_table, length, width, tol):
+def _first_problem(pos, vel, radius, mass, on_table, ang, allow_spin, length, width, tol):
     """``(0, -1, -1, 0)`` if every ball is valid; ``(1, i, -1, 0)`` for the first ball with a bad value or off
-    the table; ``(2, i, j, d)`` for the first overlapping pair (centres ``d`` apart)."""
+    the table; ``(2, i, j, d)`` for the first overlapping pair (centres ``d`` apart); ``(3, i, -1, 0)`` for the
+    first ball that spins when ``allow_spin`` is False."""
     n = pos.shape[0]
     for i in range(n):
         r = radius[i]
         ok = (math.isfinite(pos[i, 0]) and math.isfinite(pos[i, 1]) and math.isfinite(vel[i, 0])
               and math.isfinite(vel[i, 1]) and math.isfinite(r) and math.isfinite(mass[i]) and r > 0.0
-              and mass[i] > 0.0)
+              and mass[i] > 0.0 and math.isfinite(ang[i, 0]) and math.isfinite(ang[i, 1])
+              and math.isfinite(ang[i, 2]))
         if ok and on_table[i]:
             ok = (2.0 * r <= min(length, width) and r <= pos[i, 0] <= length - r and r <= pos[i, 1] <= width - r)
         if not ok:
             return 1, i, -1, 0.0
+        if not allow_spin and (ang[i, 0] != 0.0 or ang[i, 1] != 0.0 or ang[i, 2] != 0.0):
+            return 3, i, -1, 0.0
     for i in range(n):
         if not on_table[i]:
             continue
@@ -115,7 +146,7 @@ def _first_problem(pos, vel, radius, mass, on_table, length, width, tol):
 def _raise_ball_error(balls: Balls, table: Table, i: int) -> None:
     """Raise the SceneError that names what is wrong with ball row ``i``."""
     bid = balls.ids[i]
-    for what, vals in (("x, y", balls.pos[i]), ("vx, vy", balls.vel[i]),
+    for what, vals in (("x, y", balls.pos[i]), ("vx, vy", balls.vel[i]), ("wx, wy, wz", balls.ang[i]),
                        ("radius", balls.radius[i:i + 1]), ("mass", balls.mass[i:i + 1])):
         if not np.all(np.isfinite(vals)):
             raise SceneError(f"ball {bid!r}: {what} must be finite numbers, got {vals.tolist()}")
@@ -133,9 +164,10 @@ def _raise_ball_error(balls: Balls, table: Table, i: int) -> None:
     )
 
 
-def validate_balls(balls: Balls, table: Table) -> None:
+def validate_balls(balls: Balls, table: Table, allow_spin: bool = True) -> None:
     """Raise :class:`SceneError` naming the first bad ball: non-finite values, non-positive radius or mass,
-    a centre off the table, two balls overlapping, or repeated ids."""
+    a centre off the table, two balls overlapping, repeated ids, or (``allow_spin`` False: a friction law
+    without spin) a ball with angular velocity."""
     n = len(balls)
     if n == 0:
         raise SceneError("balls: the scene has no balls; add at least one")
@@ -144,7 +176,7 @@ def validate_balls(balls: Balls, table: Table) -> None:
         raise SceneError(f"balls: repeated ids {dup}; every ball needs its own id")
     for arr, name, shape in ((balls.pos, "position", (n, 2)), (balls.vel, "velocity", (n, 2)),
                              (balls.radius, "radius", (n,)), (balls.mass, "mass", (n,)),
-                             (balls.on_table, "on_table", (n,))):
+                             (balls.on_table, "on_table", (n,)), (balls.ang, "angular velocity", (n, 3))):
         if np.shape(arr) != shape:
             raise SceneError(f"balls: {name} array has shape {np.shape(arr)}, expected {shape}")
     bad, i, j, dist = _first_problem(np.ascontiguousarray(balls.pos, dtype=float),
@@ -152,9 +184,14 @@ def validate_balls(balls: Balls, table: Table) -> None:
                                      np.ascontiguousarray(balls.radius, dtype=float),
                                      np.ascontiguousarray(balls.mass, dtype=float),
                                      np.ascontiguousarray(balls.on_table, dtype=np.bool_),
+                                     np.ascontiguousarray(balls.ang, dtype=float), bool(allow_spin),
                                      float(table.length), float(table.width), OVERLAP_TOLERANCE)
     if bad == 1:
         _raise_ball_error(balls, table, i)
+    if bad == 3:
+        raise SceneError(f"ball {balls.ids[i]!r}: spins (wx, wy, wz) = {tuple(balls.ang[i].tolist())} rad/s, but "
+                         "only the spin model has spin: set physics.friction to 'spin' (or give the ball no spin, "
+                         "and strike with side = top = 0)")
     if bad == 2:
         need = balls.radius[i] + balls.radius[j]
         raise SceneError(

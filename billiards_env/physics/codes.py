@@ -15,7 +15,9 @@ EV_CUSHION = 1  #: a ball hits a cushion (``other``: 0 left, 1 right, 2 bottom, 
 EV_POCKET = 2  #: a ball is pocketed (``other``: the pocket index)
 EV_STOP = 3  #: a ball comes to rest
 EV_JAM = 4  #: a contact cluster is jammed (``other``: the number of balls in it), see :mod:`.collide`
-EVENT_KINDS = ("collision", "cushion", "pocket", "stop", "jam")
+EV_ROLL = 5  #: spin model: a sliding ball starts rolling (its slip reaches 0)
+EV_SPIN = 6  #: spin model: a rolling ball stops moving but still spins about the vertical
+EVENT_KINDS = ("collision", "cushion", "pocket", "stop", "jam", "roll", "spin")
 
 
 class EventKind(IntEnum):
@@ -26,6 +28,8 @@ class EventKind(IntEnum):
     POCKET = EV_POCKET
     STOP = EV_STOP
     JAM = EV_JAM
+    ROLL = EV_ROLL
+    SPIN = EV_SPIN
 
 
 # --- shot status ------------------------------------------------------------------------------------------------
@@ -46,7 +50,16 @@ class Status(IntEnum):
 # --- friction laws ----------------------------------------------------------------------------------------------
 ROLLING = 0  #: constant deceleration ``mu_roll g`` against the velocity
 DRAG = 1  #: ``dv/dt = -k v``
-FRICTION_LAWS = ("rolling", "drag")
+SPIN = 2  #: the spin model: sliding, rolling and spinning balls (see :mod:`.spin_motion`)
+FRICTION_LAWS = ("rolling", "drag", "spin")
+
+# --- ball motion states (spin model; the same numbers as pooltool's) --------------------------------------------
+MS_STATIONARY = 0  #: at rest
+MS_SPINNING = 1  #: not moving, spinning about the vertical
+MS_SLIDING = 2  #: the cloth contact point slips
+MS_ROLLING = 3  #: rolling without slipping
+MS_POCKETED = 4
+MOTION_STATES = ("stationary", "spinning", "sliding", "rolling", "pocketed")
 
 # --- cushions ---------------------------------------------------------------------------------------------------
 #: Cushion ids used in event records: the wall each one is (x=0, x=L, y=0, y=W).
@@ -54,6 +67,7 @@ CUSHION_NAMES = ("left", "right", "bottom", "top")
 
 __all__ = [
     "EV_COLLISION", "EV_CUSHION", "EV_POCKET", "EV_STOP", "EV_JAM", "EVENT_KINDS", "EventKind",
-    "STATUS_REST", "STATUS_TIME_CAP", "STATUS_EVENT_CAP", "STATUS_NAMES", "Status",
-    "ROLLING", "DRAG", "FRICTION_LAWS", "CUSHION_NAMES",
+    "EV_ROLL", "EV_SPIN", "STATUS_REST", "STATUS_TIME_CAP", "STATUS_EVENT_CAP", "STATUS_NAMES", "Status",
+    "ROLLING", "DRAG", "SPIN", "FRICTION_LAWS", "CUSHION_NAMES",
+    "MS_STATIONARY", "MS_SPINNING", "MS_SLIDING", "MS_ROLLING", "MS_POCKETED", "MOTION_STATES",
 ]

@@ -1,10 +1,11 @@
-"""Physics parameters of a scene: friction law, its constants, and ball-ball restitution."""
+"""Physics parameters of a scene: friction law, its constants, ball-ball restitution and (spin model) friction in
+collisions."""
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
 
-from .codes import DRAG, FRICTION_LAWS, ROLLING
+from .codes import DRAG, FRICTION_LAWS, ROLLING, SPIN
 from .errors import SceneError, check_non_negative, check_positive, check_unit_interval
 
 G = 9.81  #: gravitational acceleration (m/s^2), fixed by the spec
@@ -18,6 +19,9 @@ class Physics:
     ``drag``: ``dv/dt = -drag_k * v`` (the lecture's per-frame friction factor ``f`` over a frame ``dt0`` is
     ``drag_k = -ln(f) / dt0``, see :meth:`drag_k_from_factor`); a ball stops when its speed falls below
     ``min_speed``. ``min_speed`` also applies under ``rolling`` (default 0: roll until the closed-form stop).
+    ``spin``: balls slide (``mu_slide``), roll (``mu_roll``) and spin about the vertical (``mu_spin``), and
+    collisions exchange spin through ``ball_friction`` (throw; 0: none) and ``cushion_friction``
+    (see :mod:`.spin_motion` and :mod:`.spin_collide`). The spin fields are unused by the other laws.
     """
 
     friction: str = "rolling"
@@ -25,6 +29,10 @@ class Physics:
     drag_k: float = 0.0
     min_speed: float = 0.0
     ball_restitution: float = 0.95
+    mu_slide: float = 0.2
+    mu_spin: float = 0.0127
+    ball_friction: float = 0.0
+    cushion_friction: float = 0.2
 
     def __post_init__(self) -> None:
         if self.friction not in FRICTION_LAWS:
@@ -35,15 +43,21 @@ class Physics:
         check_non_negative("physics.drag_k", self.drag_k)
         check_non_negative("physics.min_speed", self.min_speed)
         check_unit_interval("physics.ball_restitution", self.ball_restitution)
+        for name in ("mu_slide", "mu_spin", "ball_friction", "cushion_friction"):
+            check_non_negative(f"physics.{name}", getattr(self, name))
+        if self.friction == "spin" and self.min_speed != 0.0:
+            raise SceneError(f"physics.min_speed: {self.min_speed} is not used by the spin model, whose balls stop "
+                             "at their closed-form times; leave it 0 (it applies to 'rolling' and 'drag')")
 
     @property
     def law_code(self) -> int:
-        return ROLLING if self.friction == "rolling" else DRAG
+        return {"rolling": ROLLING, "drag": DRAG, "spin": SPIN}[self.friction]
 
     @property
     def deceleration(self) -> float:
-        """Rolling deceleration ``mu_roll * g`` (m/s^2); 0 under ``drag``."""
-        return self.mu_roll * G if self.friction == "rolling" else 0.0
+        """Rolling deceleration ``mu_roll * g`` (m/s^2): of the ``rolling`` law, and of a rolling ball under
+        ``spin``; 0 under ``drag``."""
+        return self.mu_roll * G if self.friction != "drag" else 0.0
 
     @property
     def drag_rate(self) -> float:

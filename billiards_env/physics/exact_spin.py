@@ -1,0 +1,582 @@
+"""The ``exact`` solver of the spin model: event-driven, closed-form motion between events (numba kernel).
+
+The same algorithm as :mod:`.exact` (the ``rolling`` and ``drag`` kernel, which this module leaves alone):
+every ball carries its state at its last event and the piece of motion it is on (:mod:`.spin_motion`); the
+solver keeps the next event time of every ball and of every pair, jumps to the earliest, applies it, and
+recomputes only the times of the balls it changed. Resting and pocketed balls cost nothing.
+
+Events: ball-ball collision (a quartic: both centres on quadratic paths), cushion (a quadratic), pocket
+capture (a quartic), and the motion transitions at their closed-form times: a sliding ball starts rolling
+(``roll``), a rolling ball stops moving but keeps spinning (``spin``) or comes to rest (``stop``), a spinning
+ball comes to rest (``stop``). Simultaneous events are taken as in :mod:`.exact`: ball events (by row) before
+pair events (by ``(i, j)``). The inelastic-collapse guards of :mod:`.collide` (same-instant floor, jam) apply
+as they are; the pressed-contact rules of :mod:`.spin_collide` replace the rolling law's sticky contact.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP, MS_POCKETED,
+                    MS_ROLLING, MS_SLIDING, MS_SPINNING, MS_STATIONARY, STATUS_EVENT_CAP, STATUS_REST,
+                    STATUS_TIME_CAP)
+from .collide import CONTACT_TIME, JAM_EVENTS
+from .exact import _count_burst, _grow, _grow_rows
+from .kernel_io import KernelResult
+from .roots import first_entry, quadratic_roots_in
+from .spin_collide import (is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
+                           settle_on_cushion, wall_normal)
+from .spin_motion import advance, classify, piece_of, reach, spin_decay_rate, transition
+
+# Columns of the per-ball motion table ``bs``: the state at the ball's last event (time T0), and its piece.
+T0, X, Y, VX, VY, WX, WY, WZ, AX, AY, DWX, DWY, ALPHA, TEND = range(14)
+N_COLS = 14
+#: The ball's own next event is its motion transition (internal kind; logged as roll, spin or stop).
+_TRANSITION = 100
+#: Columns of the logged states (``sc_state``): x, y, vx, vy, on_table, then wx, wy, wz, motion state.
+N_STATE_COLS = 9
+
+
+@njit(cache=True)
+def _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin):
+    """Start ball ``i`` on the ``state`` piece from its stored state (made exact by :func:`piece_of`)."""
+    c = piece_of(state, bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ], r, f_slide, f_roll, f_spin)
+    bs[i, VX] = c[0]
+    bs[i, VY] = c[1]
+    bs[i, WX] = c[2]
+    bs[i, WY] = c[3]
+    bs[i, WZ] = c[4]
+    bs[i, AX] = c[5]
+    bs[i, AY] = c[6]
+    bs[i, DWX] = c[7]
+    bs[i, DWY] = c[8]
+    bs[i, TEND] = bs[i, T0] + c[9]
+    st[i] = state
+
+
+@njit(cache=True)
+def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
+    """Start ball ``i`` on the piece its stored state calls for."""
+    _set_piece(bs, st, i, classify(bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ], r), r, f_slide, f_roll,
+               f_spin)
+
+
+@njit(cache=True)
+def _state_at(bs, i, t):
+    """``(x, y, vx, vy, wx, wy, wz)`` of ball ``i`` at time ``t`` (not past its piece's end)."""
+    tau = min(t, bs[i, TEND]) - bs[i, T0]
+    if not tau > 0.0:
+        return bs[i, X], bs[i, Y], bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ]
+    return advance(tau, bs[i, X], bs[i, Y], bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ], bs[i, AX],
+                   bs[i, AY], bs[i, DWX], bs[i, DWY], bs[i, ALPHA])
+
+
+@njit(cache=True)
+def _move_to(bs, i, t):
+    """Move ball ``i``'s reference state to time ``t`` (on the same piece)."""
+    x, y, vx, vy, wx, wy, wz = _state_at(bs, i, t)
+    bs[i, X] = x
+    bs[i, Y] = y
+    bs[i, VX] = vx
+    bs[i, VY] = vy
+    bs[i, WX] = wx
+    bs[i, WY] = wy
+    bs[i, WZ] = wz
+    bs[i, T0] = t
+
+
+@njit(cache=True)
+def _wall_time(c2, c1, c0, window, tol):
+    """First time in ``[0, window]`` at which the wall distance ``c2 t^2 + c1 t + c0`` (positive on the table)
+    reaches 0 from above; ``inf`` if none. A ball touching the wall (``c0 <= 0``) counts at once if it moves
+    into it, or if it is not moving away (``|c1| <= tol``) while its acceleration presses it in (``c2 < 0``)."""
+    if c0 <= 0.0:
+        if c1 < -tol or (c2 < 0.0 and c1 <= tol):
+            return 0.0
+        if c2 < 0.0:  # moving away now, pulled back later: the larger root
+            disc = c1 * c1 - 4.0 * c2 * c0
+            root = (-c1 - math.sqrt(max(disc, 0.0))) / (2.0 * c2)
+            return root if root <= window else math.inf
+        return math.inf
+    n, r1, _ = quadratic_roots_in(c2, c1, c0, 0.0, window)
+    return r1 if n > 0 else math.inf
+
+
+@njit(cache=True)
+def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time):
+    """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
+    t0 = bs[i, T0]
+    t_end = bs[i, TEND]
+    x = bs[i, X]
+    y = bs[i, Y]
+    if st[i] == MS_STATIONARY or st[i] == MS_SPINNING:
+        # Not moving: only a ball placed inside a capture circle has a pocket event (at once).
+        for q in range(pocket_r.shape[0]):
+            dx = x - pocket_xy[q, 0]
+            dy = y - pocket_xy[q, 1]
+            if dx * dx + dy * dy <= pocket_r[q] * pocket_r[q]:
+                return t0, EV_POCKET, q
+        if st[i] == MS_SPINNING:
+            return t_end, _TRANSITION, -1
+        return math.inf, -1, -1
+    vx = bs[i, VX]
+    vy = bs[i, VY]
+    ax = bs[i, AX]
+    ay = bs[i, AY]
+    window = min(t_end, max_time) - t0
+    best = math.inf
+    kind = -1
+    other = -1
+    # Pockets first, so that a pocket and a cushion at the same instant go to the pocket.
+    for q in range(pocket_r.shape[0]):
+        dx = x - pocket_xy[q, 0]
+        dy = y - pocket_xy[q, 1]
+        c0 = dx * dx + dy * dy - pocket_r[q] * pocket_r[q]
+        if c0 <= 0.0:
+            tau = 0.0
+        else:
+            tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
+                              2.0 * (dx * vx + dy * vy), c0, window, 0.0)
+        if tau < best:
+            best = tau
+            kind = EV_POCKET
+            other = q
+    r = radius[i]
+    tol = 1e-12 + 1e-14 * math.hypot(vx, vy)
+    for cush in range(4):
+        if cush == 0:
+            tau = _wall_time(0.5 * ax, vx, x - r, window, tol)
+        elif cush == 1:
+            tau = _wall_time(-0.5 * ax, -vx, length - r - x, window, tol)
+        elif cush == 2:
+            tau = _wall_time(0.5 * ay, vy, y - r, window, tol)
+        else:
+            tau = _wall_time(-0.5 * ay, -vy, width - r - y, window, tol)
+        if tau < best:
+            best = tau
+            kind = EV_CUSHION
+            other = cush
+    if kind >= 0 and t0 + best <= t_end:
+        return t0 + best, kind, other
+    return t_end, _TRANSITION, -1
+
+
+@njit(cache=True)
+def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
+    """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
+    next own event (which recomputes the pair anyway)."""
+    xi, yi, vxi, vyi, _, _, _ = _state_at(bs, i, t)
+    xj, yj, vxj, vyj, _, _, _ = _state_at(bs, j, t)
+    axi = bs[i, AX]
+    ayi = bs[i, AY]
+    axj = bs[j, AX]
+    ayj = bs[j, AY]
+    if vxi == 0.0 and vyi == 0.0 and vxj == 0.0 and vyj == 0.0 and axi == 0.0 and ayi == 0.0 and axj == 0.0 \
+            and ayj == 0.0:
+        return math.inf
+    window = min(max_time, ball_t[i], ball_t[j]) - t
+    if not window > 0.0:
+        return math.inf
+    dc = radius[i] + radius[j]
+    ax = xi - xj
+    ay = yi - yj
+    # Cull pairs too far apart to meet within the window.
+    if math.hypot(ax, ay) - dc > (reach(window, vxi, vyi, axi, ayi) + reach(window, vxj, vyj, axj, ayj)) \
+            * (1.0 + 1e-9) + 1e-12:
+        return math.inf
+    bx = vxi - vxj
+    by = vyi - vyj
+    cx = 0.5 * (axi - axj)
+    cy = 0.5 * (ayi - ayj)
+    closing_tol = 2.0 * dc * (1e-12 + 1e-14 * (math.hypot(vxi, vyi) + math.hypot(vxj, vyj)))
+    tau = first_entry(cx * cx + cy * cy, 2.0 * (bx * cx + by * cy), bx * bx + by * by + 2.0 * (ax * cx + ay * cy),
+                      2.0 * (ax * bx + ay * by), ax * ax + ay * ay - dc * dc, window, closing_tol)
+    return t + tau
+
+
+@njit(cache=True)
+def _copy_motion(bs, st, src, dst, radius):
+    """Give ball ``dst`` the piece of ``src`` (same velocity, same surface velocity ``R (wx, wy)``, same
+    acceleration and end), so a merged pair or cluster moves as one: its gaps stay exactly as they are."""
+    k = radius[src] / radius[dst]
+    bs[dst, VX] = bs[src, VX]
+    bs[dst, VY] = bs[src, VY]
+    bs[dst, WX] = bs[src, WX] * k
+    bs[dst, WY] = bs[src, WY] * k
+    bs[dst, AX] = bs[src, AX]
+    bs[dst, AY] = bs[src, AY]
+    bs[dst, DWX] = bs[src, DWX] * k
+    bs[dst, DWY] = bs[src, DWY] * k
+    bs[dst, TEND] = bs[src, TEND]
+    st[dst] = st[src]
+
+
+@njit(cache=True)
+def _touching_wall(x, y, r, length, width, wall):
+    if wall == 0:
+        return x <= r
+    if wall == 1:
+        return x >= length - r
+    if wall == 2:
+        return y <= r
+    return y >= width - r
+
+
+@njit(cache=True)
+def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin, involved):
+    """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
+    through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
+    member touches, and its mass-weighted mean surface velocity ``R (wx, wy)``, less any part that would
+    drive it into such a cushion; each keeps its ``wz``. Writes the members into ``involved``; returns their
+    count."""
+    n = bs.shape[0]
+    length = prm.length
+    width = prm.width
+    member = np.zeros(n, np.bool_)
+    member[seed] = True
+    involved[0] = seed
+    count = 1
+    head = 0
+    while head < count:
+        q = involved[head]
+        head += 1
+        xq, yq, _, _, _, _, _ = _state_at(bs, q, t)
+        for m in range(n):
+            if on_table[m] and not member[m]:
+                xm, ym, _, _, _, _, _ = _state_at(bs, m, t)
+                if math.hypot(xq - xm, yq - ym) <= radius[q] + radius[m] + 1e-9:
+                    member[m] = True
+                    involved[count] = m
+                    count += 1
+    total = 0.0
+    mom_x = 0.0
+    mom_y = 0.0
+    qx = 0.0
+    qy = 0.0
+    for h in range(count):
+        m = involved[h]
+        _move_to(bs, m, t)
+        total += mass[m]
+        mom_x += mass[m] * bs[m, VX]
+        mom_y += mass[m] * bs[m, VY]
+        qx += mass[m] * radius[m] * bs[m, WX]
+        qy += mass[m] * radius[m] * bs[m, WY]
+    cx = mom_x / total
+    cy = mom_y / total
+    qx /= total
+    qy /= total
+    for h in range(count):
+        m = involved[h]
+        r = radius[m] + 1e-9
+        for wall in range(4):
+            if _touching_wall(bs[m, X], bs[m, Y], r, length, width, wall):
+                nx, ny = wall_normal(wall)
+                if cx * nx + cy * ny < 0.0:  # into the cushion
+                    if nx != 0.0:
+                        cx = 0.0
+                    else:
+                        cy = 0.0
+                # Slip along n (with z^ x q = (-qy, qx)); friction drives the cluster in if it is positive.
+                if (cx * nx + cy * ny) <= prm.speed_floor and (cx - qy) * nx + (cy + qx) * ny > 0.0:
+                    if nx != 0.0:
+                        cx = 0.0
+                        qy = 0.0
+                    else:
+                        cy = 0.0
+                        qx = 0.0
+    first = involved[0]
+    for h in range(count):
+        m = involved[h]
+        bs[m, VX] = cx
+        bs[m, VY] = cy
+        bs[m, WX] = qx / radius[m]
+        bs[m, WY] = qy / radius[m]
+        burst[m] = 0
+        if h == 0:
+            _classify_piece(bs, st, m, radius[m], f_slide, f_roll, f_spin)
+        else:
+            _copy_motion(bs, st, first, m, radius)
+    return count
+
+
+@njit(cache=True)
+def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, bs, st, on_table):
+    sc_t[n_sc] = t
+    sc_ball[n_sc] = i
+    sc_state[n_sc, 0] = bs[i, X]
+    sc_state[n_sc, 1] = bs[i, Y]
+    sc_state[n_sc, 2] = bs[i, VX]
+    sc_state[n_sc, 3] = bs[i, VY]
+    sc_state[n_sc, 4] = 1.0 if on_table[i] else 0.0
+    sc_state[n_sc, 5] = bs[i, WX]
+    sc_state[n_sc, 6] = bs[i, WY]
+    sc_state[n_sc, 7] = bs[i, WZ]
+    sc_state[n_sc, 8] = st[i]
+
+
+@njit(cache=True)
+def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, params, max_events, record):
+    """Simulate one shot of the spin model from ``pos``/``vel``/``ang`` (updated in place to the final state)
+    until rest or a cap.
+
+    ``params``: the parameter record (:mod:`.kernel_io`). Returns a :class:`~.kernel_io.KernelResult`: the
+    event log and, when ``record``, the log of state changes (time, ball, ``x y vx vy on_table wx wy wz
+    motion_state`` after each event) from which the trajectory is exact.
+    """
+    prm = params[0]
+    n = pos.shape[0]
+    g = prm.g
+    f_slide = prm.mu_slide * g
+    f_roll = prm.mu_roll * g
+    f_spin = prm.mu_spin * g
+    e_c = prm.e_cushion
+    e_b = prm.e_ball
+    mu_b = prm.ball_friction
+    mu_c = prm.cushion_friction
+    max_time = prm.max_time
+    floor = prm.speed_floor
+    length = prm.length
+    width = prm.width
+
+    bs = np.zeros((n, N_COLS))
+    st = np.full(n, MS_POCKETED, np.int64)
+    t_hit = np.full(n, -math.inf)  # time of each ball's last collision (ball or cushion)
+    burst = np.zeros(n, np.int64)  # collisions of each ball in its current contact cluster
+    pocket_of = np.full(n, -1, np.int64)
+    pocket_time = np.full(n, np.nan)
+    for i in range(n):
+        bs[i, X] = pos[i, 0]
+        bs[i, Y] = pos[i, 1]
+        bs[i, ALPHA] = spin_decay_rate(radius[i], f_spin)
+        bs[i, TEND] = math.inf
+        if on_table[i]:
+            bs[i, VX] = vel[i, 0]
+            bs[i, VY] = vel[i, 1]
+            bs[i, WX] = ang[i, 0]
+            bs[i, WY] = ang[i, 1]
+            bs[i, WZ] = ang[i, 2]
+            _classify_piece(bs, st, i, radius[i], f_slide, f_roll, f_spin)
+
+    ball_t = np.full(n, math.inf)
+    ball_kind = np.full(n, -1, np.int64)
+    ball_other = np.full(n, -1, np.int64)
+    pair_t = np.full((n, n), math.inf)
+    for i in range(n):
+        if on_table[i]:
+            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length,
+                                                                   width, max_time)
+    for i in range(n):
+        for j in range(i + 1, n):
+            if on_table[i] and on_table[j]:
+                pair_t[i, j] = _predict_pair(i, j, 0.0, bs, ball_t, radius, max_time)
+
+    cap = 64
+    ev_t = np.empty(cap)
+    ev_int = np.empty((cap, 3), np.int64)
+    ev_speed = np.empty(cap)
+    sc_cap = 4 * n + 16 if record else 1
+    sc_t = np.empty(sc_cap)
+    sc_ball = np.empty(sc_cap, np.int64)
+    sc_state = np.empty((sc_cap, N_STATE_COLS))
+    n_sc = 0
+    if record:
+        for i in range(n):
+            _log_state(n_sc, sc_t, sc_ball, sc_state, 0.0, i, bs, st, on_table)
+            n_sc += 1
+
+    # Scratch rows for the collision laws, which work on (N, 2) / (N, 3) arrays.
+    cv = np.zeros((2, 2))
+    cw = np.zeros((2, 3))
+    involved = np.empty(n, np.int64)
+    t = 0.0
+    n_events = 0
+    status = STATUS_REST
+    while True:
+        best = math.inf
+        kind = -1
+        bi = -1
+        bj = -1
+        for i in range(n):
+            if ball_t[i] < best:
+                best = ball_t[i]
+                kind = ball_kind[i]
+                bi = i
+                bj = ball_other[i]
+        for i in range(n):
+            for j in range(i + 1, n):
+                if pair_t[i, j] < best:
+                    best = pair_t[i, j]
+                    kind = EV_COLLISION
+                    bi = i
+                    bj = j
+        if not best <= max_time:
+            moving = False
+            for i in range(n):
+                if on_table[i] and st[i] != MS_STATIONARY:
+                    moving = True
+            if moving:
+                status = STATUS_TIME_CAP
+                t = max_time
+            else:
+                status = STATUS_REST
+            break
+        if n_events >= max_events:
+            status = STATUS_EVENT_CAP
+            break
+        t = max(best, t)
+        n_inv = 1
+        involved[0] = bi
+        speed = 0.0
+        if kind == EV_COLLISION:
+            _move_to(bs, bi, t)
+            _move_to(bs, bj, t)
+            dx = bs[bi, X] - bs[bj, X]
+            dy = bs[bi, Y] - bs[bj, Y]
+            dist = math.hypot(dx, dy)
+            clustered = _count_burst(bi, t, t_hit, burst) | _count_burst(bj, t, t_hit, burst)
+            if burst[bi] > JAM_EVENTS or burst[bj] > JAM_EVENTS:
+                n_inv = _jam_cluster(bi, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin,
+                                     involved)
+                kind = EV_JAM
+                bj = n_inv
+            else:
+                for q in range(2):
+                    m = bi if q == 0 else bj
+                    cv[q, 0] = bs[m, VX]
+                    cv[q, 1] = bs[m, VY]
+                    cw[q, 0] = bs[m, WX]
+                    cw[q, 1] = bs[m, WY]
+                    cw[q, 2] = bs[m, WZ]
+                merged = False
+                if dist > 0.0:
+                    speed = resolve_ball_ball_spin(cv, cw, 0, 1, dx / dist, dy / dist, mass[bi], mass[bj],
+                                                   radius[bi], radius[bj], e_b, mu_b, floor, clustered)
+                    if is_pressed_pair(cv, cw, 0, 1, dx, dy, radius[bi], radius[bj], f_slide, f_roll, f_spin,
+                                       floor):
+                        merge_pair(cv, cw, 0, 1, mass[bi], mass[bj], radius[bi], radius[bj])
+                        merged = True
+                for q in range(2):
+                    m = bi if q == 0 else bj
+                    bs[m, VX] = cv[q, 0]
+                    bs[m, VY] = cv[q, 1]
+                    bs[m, WX] = cw[q, 0]
+                    bs[m, WY] = cw[q, 1]
+                    bs[m, WZ] = cw[q, 2]
+                _classify_piece(bs, st, bi, radius[bi], f_slide, f_roll, f_spin)
+                if merged:
+                    _copy_motion(bs, st, bi, bj, radius)
+                else:
+                    _classify_piece(bs, st, bj, radius[bj], f_slide, f_roll, f_spin)
+                involved[1] = bj
+                n_inv = 2
+        elif kind == EV_CUSHION:
+            _move_to(bs, bi, t)
+            r = radius[bi]
+            if bj == 0:
+                bs[bi, X] = r
+            elif bj == 1:
+                bs[bi, X] = length - r
+            elif bj == 2:
+                bs[bi, Y] = r
+            else:
+                bs[bi, Y] = width - r
+            _count_burst(bi, t, t_hit, burst)
+            if burst[bi] > JAM_EVENTS:
+                n_inv = _jam_cluster(bi, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin,
+                                     involved)
+                kind = EV_JAM
+                bj = n_inv
+            else:
+                cv[0, 0] = bs[bi, VX]
+                cv[0, 1] = bs[bi, VY]
+                cw[0, 0] = bs[bi, WX]
+                cw[0, 1] = bs[bi, WY]
+                cw[0, 2] = bs[bi, WZ]
+                speed = resolve_cushion_spin(cv, cw, 0, bj, r, e_c, mu_c)
+                bs[bi, VX] = cv[0, 0]
+                bs[bi, VY] = cv[0, 1]
+                bs[bi, WX] = cw[0, 0]
+                bs[bi, WY] = cw[0, 1]
+                bs[bi, WZ] = cw[0, 2]
+                _classify_piece(bs, st, bi, r, f_slide, f_roll, f_spin)
+                nx, ny = wall_normal(bj)
+                if bs[bi, VX] * nx + bs[bi, VY] * ny <= floor and bs[bi, AX] * nx + bs[bi, AY] * ny < 0.0:
+                    # Pressed on the cushion: it stays on it (see spin_collide).
+                    cv[0, 0] = bs[bi, VX]
+                    cv[0, 1] = bs[bi, VY]
+                    cw[0, 0] = bs[bi, WX]
+                    cw[0, 1] = bs[bi, WY]
+                    settle_on_cushion(cv, cw, 0, bj)
+                    bs[bi, VX] = cv[0, 0]
+                    bs[bi, VY] = cv[0, 1]
+                    bs[bi, WX] = cw[0, 0]
+                    bs[bi, WY] = cw[0, 1]
+                    _classify_piece(bs, st, bi, r, f_slide, f_roll, f_spin)
+        elif kind == EV_POCKET:
+            _move_to(bs, bi, t)
+            speed = math.hypot(bs[bi, VX], bs[bi, VY])
+            on_table[bi] = False
+            for c in range(VX, TEND):
+                if c != ALPHA:
+                    bs[bi, c] = 0.0
+            bs[bi, TEND] = math.inf
+            st[bi] = MS_POCKETED
+            pocket_of[bi] = bj
+            pocket_time[bi] = t
+        else:  # the ball's motion transition
+            _move_to(bs, bi, t)
+            nxt = transition(st[bi], bs[bi, VX], bs[bi, VY], bs[bi, WZ])
+            _set_piece(bs, st, bi, nxt, radius[bi], f_slide, f_roll, f_spin)
+            kind = EV_ROLL if nxt == MS_ROLLING else (EV_SPIN if nxt == MS_SPINNING else EV_STOP)
+            bj = -1
+
+        if n_events >= ev_t.shape[0]:
+            ev_t = _grow(ev_t)
+            ev_int = _grow_rows(ev_int)
+            ev_speed = _grow(ev_speed)
+        ev_t[n_events] = t
+        ev_int[n_events, 0] = kind
+        ev_int[n_events, 1] = bi
+        ev_int[n_events, 2] = bj
+        ev_speed[n_events] = speed
+        n_events += 1
+
+        for q in range(n_inv):
+            i = involved[q]
+            if record:
+                if n_sc >= sc_t.shape[0]:
+                    sc_t = _grow(sc_t)
+                    sc_ball = _grow(sc_ball)
+                    sc_state = _grow_rows(sc_state)
+                _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, bs, st, on_table)
+                n_sc += 1
+            if on_table[i]:
+                ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, bs, st, radius, pocket_xy, pocket_r,
+                                                                       length, width, max_time)
+            else:
+                ball_t[i] = math.inf
+        for q in range(n_inv):
+            i = involved[q]
+            for m in range(n):
+                if m == i:
+                    continue
+                lo = min(i, m)
+                hi = max(i, m)
+                if on_table[i] and on_table[m]:
+                    pair_t[lo, hi] = _predict_pair(lo, hi, t, bs, ball_t, radius, max_time)
+                else:
+                    pair_t[lo, hi] = math.inf
+
+    for i in range(n):
+        x, y, vx, vy, wx, wy, wz = _state_at(bs, i, t)
+        pos[i, 0] = x
+        pos[i, 1] = y
+        vel[i, 0] = vx
+        vel[i, 1] = vy
+        ang[i, 0] = wx
+        ang[i, 1] = wy
+        ang[i, 2] = wz
+    return KernelResult(status, t, n_events, pocket_of, pocket_time, ev_t[:n_events], ev_int[:n_events],
+                        ev_speed[:n_events], sc_t[:n_sc], sc_ball[:n_sc], sc_state[:n_sc], 0, 0)
