@@ -27,6 +27,9 @@ import gymnasium as gym
 import numpy as np
 from gymnasium import spaces
 
+from billiards_env.physics.aim import (aim_angle, aim_offset, ghost_ball_position, offset_aim_angle, pocket_bearings,
+                                       pocket_mouth_axes, wrap_angle)
+
 
 def _target_row(env: Any) -> int | None:
     u = env.unwrapped
@@ -95,12 +98,8 @@ class CutAimWrapper(_ShotActionWrapper):
         b = u.balls
         if t is None:
             return 0.0, speed
-        dx, dy = b.pos[t] - b.pos[0]
-        d = math.hypot(dx, dy)
         reach = float(b.radius[0] + b.radius[t])
-        h = aim * self.max_cut * reach
-        delta = math.asin(max(-1.0, min(1.0, h / max(d, 1e-12))))
-        return math.atan2(dy, dx) - delta, speed
+        return offset_aim_angle(b.pos[0], b.pos[t], aim * self.max_cut * reach), speed
 
     def action_from_shot(self, angle: float, speed: float) -> np.ndarray:
         """Inverse mapping (for baselines played through the wrapper): the cut fraction of a cue direction."""
@@ -110,11 +109,8 @@ class CutAimWrapper(_ShotActionWrapper):
         if t is None:
             return np.array([0.0, np.clip(a1, -1, 1)], dtype=np.float32)
         b = u.balls
-        dx, dy = b.pos[t] - b.pos[0]
-        d = math.hypot(dx, dy)
-        delta = (math.atan2(dy, dx) - angle + math.pi) % (2 * math.pi) - math.pi
         reach = float(b.radius[0] + b.radius[t])
-        frac = d * math.sin(delta) / (reach * self.max_cut)
+        frac = aim_offset(b.pos[0], b.pos[t], angle) / (reach * self.max_cut)
         return np.clip(np.array([frac, a1], dtype=np.float32), -1.0, 1.0)
 
 
@@ -143,10 +139,9 @@ class GhostAimWrapper(_ShotActionWrapper):
             return 0.0, speed
         b = u.balls
         C, O = b.pos[0], b.pos[t]
-        theta = math.atan2(O[1] - C[1], O[0] - C[0]) + aim * self.max_angle
-        reach = float(b.radius[0] + b.radius[t])
-        gx, gy = O[0] - reach * math.cos(theta), O[1] - reach * math.sin(theta)
-        return math.atan2(gy - C[1], gx - C[0]), speed
+        theta = aim_angle(C, O) + aim * self.max_angle
+        G = ghost_ball_position(O, theta, float(b.radius[0] + b.radius[t]))
+        return aim_angle(C, G), speed
 
     def action_from_object_direction(self, theta: float, speed: float) -> np.ndarray:
         """The action sending the target ball in direction ``theta`` with cue speed ``speed``."""
@@ -156,7 +151,7 @@ class GhostAimWrapper(_ShotActionWrapper):
         if t is None:
             return np.array([0.0, np.clip(a1, -1, 1)], dtype=np.float32)
         C, O = u.balls.pos[0], u.balls.pos[t]
-        phi = (theta - math.atan2(O[1] - C[1], O[0] - C[0]) + math.pi) % (2 * math.pi) - math.pi
+        phi = wrap_angle(theta - aim_angle(C, O))
         return np.clip(np.array([phi / self.max_angle, a1], dtype=np.float32), -1.0, 1.0)
 
 
@@ -182,16 +177,7 @@ class ShotFeatures(gym.ObservationWrapper):
         low = np.concatenate([np.asarray(base.low, np.float32).reshape(-1), -np.ones(self.n_extra, np.float32)])
         high = np.concatenate([np.asarray(base.high, np.float32).reshape(-1), np.ones(self.n_extra, np.float32)])
         self.observation_space = spaces.Box(low, high, dtype=np.float32)
-        # Mouth axis of each pocket: from the table centre's side of the pocket into it (corner: diagonal,
-        # side: perpendicular to the rail).
-        centre = np.array([table.length / 2.0, table.width / 2.0])
-        axis = np.zeros((self.n_pockets, 2))
-        for k, (px, py) in enumerate(table.pocket_xy):
-            ax = np.sign(px - centre[0]) if abs(px - centre[0]) > 1e-9 else 0.0
-            ay = np.sign(py - centre[1]) if abs(py - centre[1]) > 1e-9 else 0.0
-            v = np.array([ax, ay], dtype=float)
-            axis[k] = v / max(np.hypot(*v), 1e-12)
-        self._axis = axis
+        self._axis = pocket_mouth_axes(table)  # corner: diagonal, side: perpendicular to the rail
 
     def features(self) -> np.ndarray:
         u = self.env.unwrapped
@@ -205,11 +191,9 @@ class ShotFeatures(gym.ObservationWrapper):
         d = float(np.hypot(*v))
         out[0:2] = v / max(d, 1e-12)
         out[2] = min(d * scale, 1.0)
-        w = u.table.pocket_xy - b.pos[t]
-        dw = np.maximum(np.hypot(w[:, 0], w[:, 1]), 1e-12)
-        rel = np.arctan2(w[:, 1], w[:, 0]) - math.atan2(v[1], v[0])
-        rel = (rel + math.pi) % (2.0 * math.pi) - math.pi
-        mouth = (w[:, 0] * self._axis[:, 0] + w[:, 1] * self._axis[:, 1]) / dw
+        bearing, dist, mouth = pocket_bearings(b.pos[t], u.table, self._axis)
+        dw = np.maximum(dist, 1e-12)
+        rel = wrap_angle(bearing - aim_angle(b.pos[0], b.pos[t]))
         order = np.argsort(np.abs(rel), kind="stable") if self.sort_pockets else np.arange(self.n_pockets)
         out[3::3] = rel[order] / math.pi
         out[4::3] = np.minimum(dw[order] * scale, 1.0)

@@ -2,8 +2,11 @@
 
 Models (see README "Physics"): two friction laws (``rolling``, ``drag``), cushions and ball-ball collisions with
 restitution, pockets as capture circles. Two solvers of the same model: ``exact`` (event-driven, closed-form,
-the reference) and ``step`` (the lecture's per-frame algorithm).
+the reference) and ``step`` (the lecture's per-frame algorithm). :mod:`.aim`: the aiming geometry (rays to
+pockets and cushions, ghost ball, cut angle, pocket windows, clear paths, the cue ball's deflection) that the
+solver, the players and the renderer share.
 """
+from . import aim
 from .balls import BALL_MASS, BALL_RADIUS, OVERLAP_TOLERANCE, Balls, validate_balls
 from .errors import SceneError
 from .model import G, Physics
@@ -13,7 +16,7 @@ from .table import Table, default_pockets
 from .trajectory import Trajectory
 
 __all__ = [
-    "BALL_MASS", "BALL_RADIUS", "OVERLAP_TOLERANCE", "Balls", "validate_balls", "SceneError", "G", "Physics",
+    "aim", "BALL_MASS", "BALL_RADIUS", "OVERLAP_TOLERANCE", "Balls", "validate_balls", "SceneError", "G", "Physics",
     "EventLog", "ShotResult", "SOLVERS", "Simulator", "kinetic_energy", "momentum", "simulate", "Table",
     "default_pockets", "Trajectory",
 ]

@@ -17,6 +17,7 @@ import math
 import numpy as np
 from numba import njit
 
+from .aim import ray_circle_entry, ray_cushion_hit
 from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLING, STATUS_EVENT_CAP, STATUS_REST,
                     STATUS_TIME_CAP)
 from .collide import CONTACT_TIME, JAM_EVENTS, resolve_ball_ball, resolve_cushion
@@ -93,39 +94,16 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     other = -1
     # Pockets first, so that a pocket and a cushion at the same point go to the pocket.
     for p in range(pocket_r.shape[0]):
-        dx = x - pocket_xy[p, 0]
-        dy = y - pocket_xy[p, 1]
-        c = dx * dx + dy * dy - pocket_r[p] * pocket_r[p]
-        if c <= 0.0:
-            d = 0.0
-        else:
-            b = ux * dx + uy * dy
-            if b >= 0.0:
-                continue
-            disc = b * b - c
-            if disc < 0.0:
-                continue
-            d = c / (-b + math.sqrt(disc))
+        d = ray_circle_entry(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
         if d < best_d:
             best_d = d
             kind = EV_POCKET
             other = p
-    if ux != 0.0:
-        cush = 1 if ux > 0.0 else 0
-        wall = prm.length - r if ux > 0.0 else r
-        d = max((wall - x) / ux, 0.0)
-        if d < best_d:
-            best_d = d
-            kind = EV_CUSHION
-            other = cush
-    if uy != 0.0:
-        cush = 3 if uy > 0.0 else 2
-        wall = prm.width - r if uy > 0.0 else r
-        d = max((wall - y) / uy, 0.0)
-        if d < best_d:
-            best_d = d
-            kind = EV_CUSHION
-            other = cush
+    d, cush = ray_cushion_hit(x, y, ux, uy, prm.length, prm.width, r)
+    if d < best_d:
+        best_d = d
+        kind = EV_CUSHION
+        other = cush
     t_stop = tstop[i]
     if kind >= 0:
         tau = time_for_distance(s, best_d, law, a, k)

@@ -20,6 +20,8 @@ import numpy as np
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 import pygame  # noqa: E402  (after the banner switch)
 
+from billiards_env.physics.aim import ray_cushion_distance  # noqa: E402
+
 from . import colors as C  # noqa: E402
 
 if TYPE_CHECKING:
@@ -239,7 +241,7 @@ class TableRenderer:
     def _draw_aim_line(self, frame: pygame.Surface, cue: tuple[float, float, float], radius: float) -> None:
         """A light line from the cue ball's edge along the shot to where its centre would meet a cushion."""
         x, y, angle = (float(v) for v in cue)
-        reach = _ray_to_box(x, y, angle, radius, self.length - radius, radius, self.width - radius)
+        reach = _reach_to_cushion(x, y, angle, radius, self.length, self.width)
         start, direction = self._cue_geometry(cue)
         r_px = radius * self.pixels_per_metre
         length = reach * self.pixels_per_metre
@@ -602,15 +604,13 @@ def _cylinder_quad(
             pygame.draw.aalines(surface, c, True, flat)
 
 
-def _ray_to_box(x: float, y: float, angle: float, x0: float, x1: float, y0: float, y1: float) -> float:
-    """Distance along direction ``angle`` from ``(x, y)`` to the boundary of the box (0 if outside it)."""
+def _reach_to_cushion(x: float, y: float, angle: float, radius: float, length: float, width: float) -> float:
+    """How far a ball of ``radius`` at ``(x, y)`` travels along ``angle`` before it touches a cushion (0 if it is
+    already past one): the physics' ray test, with direction components below 1e-12 taken as 0 (along a rail)."""
     dx, dy = math.cos(angle), math.sin(angle)
-    best = math.inf
-    for p, d, lo, hi in ((x, dx, x0, x1), (y, dy, y0, y1)):
-        if abs(d) > 1e-12:
-            t = ((hi if d > 0 else lo) - p) / d
-            best = min(best, t)
-    return max(0.0, best) if math.isfinite(best) else 0.0
+    reach = ray_cushion_distance(x, y, dx if abs(dx) > 1e-12 else 0.0, dy if abs(dy) > 1e-12 else 0.0,
+                                 length, width, radius)
+    return reach if math.isfinite(reach) else 0.0
 
 
 def _rounded_rect_coverage(xx: np.ndarray, yy: np.ndarray, w: float, h: float, radius: float) -> np.ndarray:

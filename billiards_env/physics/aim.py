@@ -1,0 +1,380 @@
+"""Aiming geometry on the engine's model: rays to pockets and cushions, the ghost ball, cut angles, pocket entry
+windows, clear paths, what a collision does to the cue ball, and a lone ball's straight path (with cushion
+bounces) into a pocket.
+
+This module is the one home of these formulas. The exact solver calls its compiled ray tests
+(:func:`ray_circle_entry`, :func:`ray_cushion_hit`) to find every pocket and cushion event, so a player aiming
+with them sees pockets and cushions exactly as the engine does. The baseline players (``agents/geometry.py``),
+the action wrappers and the renderer's aim line call it too. How far a ball rolls and how fast it still goes come
+from :mod:`.motion`; what a collision does comes from :mod:`.collide` (the same code the solvers run).
+
+Conventions: SI units (m, m/s, kg); angles in radians, 0 = +x, counter-clockwise; points and vectors are
+``(x, y)`` pairs (sequences or arrays); a *direction* vector has unit length. The table is
+``[0, length] x [0, width]``: a ball of radius ``r`` touches a cushion when its centre comes within ``r`` of it,
+and a pocket captures a ball the instant its centre enters the pocket's capture circle. No spin, no throw.
+
+    import numpy as np
+    from billiards_env.physics import BALL_RADIUS, Table, aim
+
+    table = Table()
+    cue, obj = np.array([1.0, 0.4]), np.array([2.0, 0.9])
+    window = aim.pocket_window(obj, BALL_RADIUS, table, pocket=5)     # (direction, half-width, distance) or None
+    ghost = aim.ghost_ball_position(obj, window[0], 2 * BALL_RADIUS)  # where the cue ball must touch it
+    angle = aim.aim_angle(cue, ghost)                                 # strike the cue ball this way
+    cut = aim.cut_angle(aim.direction_vector(angle), aim.direction_vector(window[0]))
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Sequence, Union
+
+import numpy as np
+from numba import njit
+
+from .collide import resolve_ball_ball
+from .motion import speed_after_distance, stop_distance
+
+if TYPE_CHECKING:
+    from .model import Physics
+    from .table import Table
+
+#: A point or vector ``(x, y)``.
+Vec2 = Union[Sequence[float], np.ndarray]
+
+#: Directions sampled across a pocket's angular size when computing its entry window.
+WINDOW_SAMPLES = 41
+
+
+# --- rays (compiled: the exact solver calls these) -------------------------------------------------------------
+
+@njit(cache=True)
+def ray_circle_entry(px: float, py: float, ux: float, uy: float, cx: float, cy: float, r: float) -> float:
+    """Distance along the ray ``p + t u`` (``u`` a direction) to where it enters the circle of centre ``c`` and
+    radius ``r``: 0 if ``p`` is inside or on the circle, ``inf`` if the ray misses it or points away from it.
+
+    The root ``t = c / (-b + sqrt(b^2 - c))`` of ``t^2 + 2 b t + c = 0`` is the smaller one, written without the
+    cancellation of ``-b - sqrt(...)``.
+    """
+    dx = px - cx
+    dy = py - cy
+    c = dx * dx + dy * dy - r * r
+    if c <= 0.0:
+        return 0.0
+    b = ux * dx + uy * dy
+    if b >= 0.0:
+        return math.inf
+    disc = b * b - c
+    if disc < 0.0:
+        return math.inf
+    return c / (-b + math.sqrt(disc))
+
+
+@njit(cache=True)
+def ray_cushion_hit(px: float, py: float, ux: float, uy: float, length: float, width: float,
+                    r: float) -> tuple[float, int]:
+    """Distance along the ray ``p + t u`` until a ball of radius ``r`` centred on it touches a cushion, and which
+    cushion (0 left, 1 right, 2 bottom, 3 top). A ball already at or past a cushion it moves into hits it at once
+    (distance 0); a tie goes to the left/right cushion; ``u = 0`` gives ``(inf, -1)``."""
+    best = math.inf
+    cushion = -1
+    if ux != 0.0:
+        wall = length - r if ux > 0.0 else r
+        best = max((wall - px) / ux, 0.0)
+        cushion = 1 if ux > 0.0 else 0
+    if uy != 0.0:
+        wall = width - r if uy > 0.0 else r
+        d = max((wall - py) / uy, 0.0)
+        if d < best:
+            best = d
+            cushion = 3 if uy > 0.0 else 2
+    return best, cushion
+
+
+@njit(cache=True)
+def ray_cushion_distance(px: float, py: float, ux: float, uy: float, length: float, width: float,
+                         r: float) -> float:
+    """Distance along the ray ``p + t u`` until a ball of radius ``r`` touches a cushion (see
+    :func:`ray_cushion_hit`)."""
+    return ray_cushion_hit(px, py, ux, uy, length, width, r)[0]
+
+
+@njit(cache=True)
+def ray_circle_entries(px: float, py: float, ux: np.ndarray, uy: np.ndarray, cx: float, cy: float,
+                       r: float) -> np.ndarray:
+    """:func:`ray_circle_entry` for many directions ``(ux[k], uy[k])`` from one point."""
+    out = np.empty(ux.shape[0])
+    for k in range(ux.shape[0]):
+        out[k] = ray_circle_entry(px, py, ux[k], uy[k], cx, cy, r)
+    return out
+
+
+@njit(cache=True)
+def ray_cushion_distances(px: float, py: float, ux: np.ndarray, uy: np.ndarray, length: float, width: float,
+                          r: float) -> np.ndarray:
+    """:func:`ray_cushion_distance` for many directions ``(ux[k], uy[k])`` from one point."""
+    out = np.empty(ux.shape[0])
+    for k in range(ux.shape[0]):
+        out[k] = ray_cushion_hit(px, py, ux[k], uy[k], length, width, r)[0]
+    return out
+
+
+# --- directions and angles -------------------------------------------------------------------------------------
+
+def aim_angle(start: Vec2, target: Vec2) -> float:
+    """Direction (rad) from point ``start`` to point ``target``."""
+    return math.atan2(target[1] - start[1], target[0] - start[0])
+
+
+def direction_vector(angle: float) -> np.ndarray:
+    """The direction ``(cos, sin)`` of an angle."""
+    return np.array([math.cos(angle), math.sin(angle)])
+
+
+def wrap_angle(angle):
+    """An angle (or array of angles) moved into ``[-pi, pi)``."""
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def angular_radius(radius: float, distance: float) -> float:
+    """Half the angle a circle of ``radius`` fills seen from ``distance`` away from its centre (``pi / 2`` from
+    inside it): the directions from the viewpoint that cross it lie within this of the direction to its centre."""
+    return math.asin(min(1.0, radius / distance))
+
+
+# --- ghost ball, cut -------------------------------------------------------------------------------------------
+
+def ghost_ball_position(obj: Vec2, direction: float, contact: float) -> np.ndarray:
+    """Where the cue ball's centre must be when it touches the object ball at ``obj`` to send it off in
+    ``direction`` (rad): ``contact`` (the sum of the two radii) behind it, on the line of centres."""
+    return np.asarray(obj, dtype=float) - contact * direction_vector(direction)
+
+
+def cut_cosine(aim_direction: Vec2, object_direction: Vec2) -> float:
+    """Cosine of the cut angle: between the cue ball's direction at impact and the object ball's direction
+    (both unit vectors), clipped to [-1, 1]."""
+    return float(np.clip(np.dot(np.asarray(aim_direction, dtype=float), np.asarray(object_direction, dtype=float)),
+                         -1.0, 1.0))
+
+
+def cut_angle(aim_direction: Vec2, object_direction: Vec2) -> float:
+    """The cut angle (rad, in [0, pi]) between the cue ball's direction at impact and the direction the object
+    ball takes (both unit vectors): 0 for a full (straight) hit; a pot needs it below ``pi / 2``."""
+    return math.acos(cut_cosine(aim_direction, object_direction))
+
+
+def offset_aim_angle(cue: Vec2, obj: Vec2, offset: float) -> float:
+    """The cue direction whose line passes the object ball's centre at the signed distance ``offset``: 0 aims at
+    the centre (a full hit), ``offset > 0`` turns the aim clockwise (the object ball goes off to the left of the
+    cue's line), and ``|offset| = r_cue + r_obj`` is a graze. The offset is clipped to the cue-object distance."""
+    dx = obj[0] - cue[0]
+    dy = obj[1] - cue[1]
+    d = math.hypot(dx, dy)
+    return math.atan2(dy, dx) - math.asin(max(-1.0, min(1.0, offset / max(d, 1e-12))))
+
+
+def aim_offset(cue: Vec2, obj: Vec2, angle: float) -> float:
+    """Inverse of :func:`offset_aim_angle`: the signed distance at which the cue's line in direction ``angle``
+    passes the object ball's centre."""
+    dx = obj[0] - cue[0]
+    dy = obj[1] - cue[1]
+    return math.hypot(dx, dy) * math.sin(wrap_angle(math.atan2(dy, dx) - angle))
+
+
+# --- pockets ---------------------------------------------------------------------------------------------------
+
+def pocket_window(obj: Vec2, radius: float, table: Table, pocket: int,
+                  samples: int = WINDOW_SAMPLES) -> tuple[float, float, float] | None:
+    """The directions along which a ball of ``radius`` at ``obj`` rolls into the capture circle of ``pocket``
+    before touching a cushion.
+
+    ``samples`` directions across the circle's angular size are tested with the engine's own ray tests. Returns
+    ``(centre direction, half-width, distance to the capture circle along the centre)`` of the widest contiguous
+    run of good directions (a lone good sample counts as a sliver ``step / 2`` wide), or None if there is none.
+    From inside the circle: ``(direction to its centre, pi / 2, 0)``.
+    """
+    obj = np.asarray(obj, dtype=float)
+    c = table.pocket_xy[pocket]
+    pr = float(table.pocket_radius[pocket])
+    v = c - obj
+    dist = float(np.hypot(*v))
+    theta_c = aim_angle(obj, c)
+    if dist <= pr:
+        return float(theta_c), math.pi / 2, 0.0
+    half = angular_radius(pr, dist)
+    angles = theta_c + np.linspace(-half, half, samples)
+    ux, uy = np.cos(angles), np.sin(angles)
+    t_in = ray_circle_entries(obj[0], obj[1], ux, uy, c[0], c[1], pr)
+    t_wall = ray_cushion_distances(obj[0], obj[1], ux, uy, table.length, table.width, radius)
+    ok = np.isfinite(t_in) & (t_in <= t_wall + 1e-9)
+    if not ok.any():
+        return None
+    # Widest run of consecutive feasible samples.
+    best_len, best_start, run_start = 0, 0, None
+    for k, flag in enumerate(list(ok) + [False]):
+        if flag and run_start is None:
+            run_start = k
+        elif not flag and run_start is not None:
+            if k - run_start > best_len:
+                best_len, best_start = k - run_start, run_start
+            run_start = None
+    lo, hi = best_start, best_start + best_len - 1
+    step = 2.0 * half / (samples - 1)
+    centre = 0.5 * (angles[lo] + angles[hi])
+    width = 0.5 * ((hi - lo) * step + step)
+    d_in = ray_circle_entry(obj[0], obj[1], math.cos(centre), math.sin(centre), c[0], c[1], pr)
+    if not math.isfinite(d_in):
+        d_in = dist
+    return float(centre), float(width), float(d_in)
+
+
+def pocket_mouth_axes(table: Table) -> np.ndarray:
+    """Unit vector per pocket (K, 2) pointing from the table's middle side of it into it: diagonal for a corner
+    pocket, perpendicular to the rail for a side pocket (the direction a ball enters it most squarely)."""
+    centre = np.array([table.length / 2.0, table.width / 2.0])
+    axis = np.zeros((table.n_pockets, 2))
+    for k, (px, py) in enumerate(table.pocket_xy):
+        ax = np.sign(px - centre[0]) if abs(px - centre[0]) > 1e-9 else 0.0
+        ay = np.sign(py - centre[1]) if abs(py - centre[1]) > 1e-9 else 0.0
+        v = np.array([ax, ay], dtype=float)
+        axis[k] = v / max(np.hypot(*v), 1e-12)
+    return axis
+
+
+def pocket_bearings(point: Vec2, table: Table,
+                    mouth_axes: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Seen from ``point``, every pocket's direction (rad), distance to its centre, and squareness: the cosine
+    between that direction and the pocket's mouth axis (1: straight in). ``mouth_axes``: from
+    :func:`pocket_mouth_axes` (computed if None)."""
+    axes = pocket_mouth_axes(table) if mouth_axes is None else mouth_axes
+    w = table.pocket_xy - np.asarray(point, dtype=float)
+    dist = np.hypot(w[:, 0], w[:, 1])
+    square = (w[:, 0] * axes[:, 0] + w[:, 1] * axes[:, 1]) / np.maximum(dist, 1e-12)
+    return np.arctan2(w[:, 1], w[:, 0]), dist, square
+
+
+# --- clear paths -----------------------------------------------------------------------------------------------
+
+def segment_blocked(a: Vec2, b: Vec2, others: np.ndarray, clearance: np.ndarray) -> bool:
+    """Whether any centre of ``others`` (M, 2) comes closer than its ``clearance`` (M,) to the segment ``a -> b``
+    (for a ball rolling from ``a`` to ``b``: clearance = the two radii summed)."""
+    if len(others) == 0:
+        return False
+    a = np.asarray(a, dtype=float)
+    ab = np.asarray(b, dtype=float) - a
+    L2 = float(ab @ ab)
+    if L2 == 0.0:
+        d = np.hypot(*(others - a).T)
+    else:
+        t = np.clip(((others - a) @ ab) / L2, 0.0, 1.0)
+        proj = a + t[:, None] * ab
+        d = np.hypot(*(others - proj).T)
+    return bool(np.any(d < clearance - 1e-9))
+
+
+def path_clear(a: Vec2, b: Vec2, others: np.ndarray, clearance: np.ndarray) -> bool:
+    """Not :func:`segment_blocked`: no ball of ``others`` in the way from ``a`` to ``b``."""
+    return not segment_blocked(a, b, others, clearance)
+
+
+# --- collisions (the engine's law, :mod:`.collide`) --------------------------------------------------------------
+
+@njit(cache=True)
+def _collide(v1x, v1y, v2x, v2y, nx, ny, m1, m2, e):
+    """Velocities after balls 1, 2 collide along the unit normal ``n`` (from 2 to 1), by the solvers' own law."""
+    vel = np.empty((2, 2))
+    vel[0, 0] = v1x
+    vel[0, 1] = v1y
+    vel[1, 0] = v2x
+    vel[1, 1] = v2y
+    resolve_ball_ball(vel, 0, 1, nx, ny, 1.0, m1, m2, e, 0.0, 0.0, False)
+    return vel[0, 0], vel[0, 1], vel[1, 0], vel[1, 1]
+
+
+def collision_velocities(v_cue: Vec2, v_obj: Vec2, line_of_centres: Vec2, e: float, m_cue: float,
+                         m_obj: float) -> tuple[np.ndarray, np.ndarray]:
+    """Velocities of two balls right after they collide: ``line_of_centres`` is the unit vector from the first
+    ball's centre to the second's at contact, ``e`` the ball-ball restitution. The solvers' collision law (an
+    impulse along the line of centres; nothing happens if the balls are not closing)."""
+    v1x, v1y, v2x, v2y = _collide(float(v_cue[0]), float(v_cue[1]), float(v_obj[0]), float(v_obj[1]),
+                                  -float(line_of_centres[0]), -float(line_of_centres[1]), m_cue, m_obj, e)
+    return np.array([v1x, v1y]), np.array([v2x, v2y])
+
+
+def deflected_cue_velocity(velocity: Vec2, line_of_centres: Vec2, e: float, m_cue: float,
+                           m_obj: float) -> np.ndarray:
+    """The cue ball's velocity right after it hits a resting ball with ``velocity``, ``line_of_centres`` being
+    the unit vector from its centre to the object ball's (at ``e = 1`` and equal masses it leaves at 90 degrees
+    to the object ball's path)."""
+    return collision_velocities(velocity, (0.0, 0.0), line_of_centres, e, m_cue, m_obj)[0]
+
+
+def object_ball_speed(impact_speed: float, cut_cos: float, e: float, m_cue: float, m_obj: float) -> float:
+    """Speed a resting object ball leaves with when the cue ball hits it at ``impact_speed`` with a cut whose
+    cosine is ``cut_cos`` (proportional to ``impact_speed``: divide by it to invert a shot)."""
+    return _collide(impact_speed * cut_cos, 0.0, 0.0, 0.0, -1.0, 0.0, m_cue, m_obj, e)[2]
+
+
+# --- a lone ball's path ----------------------------------------------------------------------------------------
+
+@njit(cache=True)
+def _path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
+                 max_bounces):
+    for _ in range(max_bounces + 1):
+        s = math.hypot(vx, vy)
+        if s < 1e-6:
+            return -1
+        ux = vx / s
+        uy = vy / s
+        reach = stop_distance(s, law, a, k, v_min)
+        t_wall = ray_cushion_hit(x, y, ux, uy, length, width, radius)[0]
+        limit = min(reach, t_wall + 1e-9)
+        best = math.inf
+        pocket = -1
+        for p in range(pocket_r.shape[0]):
+            t = ray_circle_entry(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
+            if t <= limit and t < best:
+                best = t
+                pocket = p
+        if pocket >= 0:
+            return pocket
+        if reach <= t_wall:
+            return -1
+        # Roll to the cushion, then reflect.
+        x = x + ux * t_wall
+        y = y + uy * t_wall
+        s_wall = speed_after_distance(s, t_wall, law, a, k)
+        vx = ux * s_wall
+        vy = uy * s_wall
+        if x <= radius + 1e-9 or x >= length - radius - 1e-9:
+            vx = -e_cushion * vx
+        if y <= radius + 1e-9 or y >= width - radius - 1e-9:
+            vy = -e_cushion * vy
+    return -1
+
+
+def path_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table, physics: Physics,
+                max_bounces: int = 4) -> int:
+    """The pocket a lone ball launched from ``start`` with ``velocity`` rolls into (-1: none) on straight lines,
+    reflecting off up to ``max_bounces`` cushions with the table's restitution, slowing by the friction law, and
+    stopping where the law stops it (no other balls)."""
+    return int(_path_pocket(float(start[0]), float(start[1]), float(velocity[0]), float(velocity[1]),
+                            float(radius), float(table.length), float(table.width),
+                            float(table.cushion_restitution), table.pocket_xy, table.pocket_radius,
+                            physics.law_code, physics.deceleration, physics.drag_rate, physics.min_speed,
+                            int(max_bounces)))
+
+
+def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table, physics: Physics,
+                       max_bounces: int = 4) -> bool:
+    """Whether a lone ball launched from ``start`` with ``velocity`` rolls into a pocket (see
+    :func:`path_pocket`)."""
+    return path_pocket(start, velocity, radius, table, physics, max_bounces) >= 0
+
+
+__all__ = [
+    "WINDOW_SAMPLES", "ray_circle_entry", "ray_cushion_hit", "ray_cushion_distance", "ray_circle_entries",
+    "ray_cushion_distances", "aim_angle", "direction_vector", "wrap_angle", "angular_radius",
+    "ghost_ball_position", "cut_cosine", "cut_angle", "offset_aim_angle", "aim_offset", "pocket_window",
+    "pocket_mouth_axes", "pocket_bearings", "segment_blocked", "path_clear", "collision_velocities",
+    "deflected_cue_velocity", "object_ball_speed", "path_pocket", "path_enters_pocket",
+]
