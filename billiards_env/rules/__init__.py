@@ -1,0 +1,55 @@
+"""billiards_env.rules: the rules of 9-ball and 8-ball as pure data in, data out (no Gymnasium, no pygame).
+
+A shot's event log becomes a :class:`ShotSummary` (:func:`summarize_arrays` on the arrays of
+``Simulator.run_in_place``, or :func:`summarize_result` on a ``ShotResult``); a ruleset (:class:`NineBall`,
+:class:`EightBall`) turns a :class:`GameState`, the summary and the shooter's declarations (:class:`ShotInfo`)
+into a :class:`Call` (legal or foul and why, who shoots next, ball in hand, balls to respot, game over and the
+winner), and :meth:`Ruleset.next_state` applies it. Where respotted balls and the cue ball in hand go is the
+env's job. The rules, and every simplification of the WPA rules: docs/rules.md.
+
+Example::
+
+    from billiards_env.physics import Physics, Simulator, Table
+    from billiards_env.rules import NineBall, ShotInfo, ball_numbers, summarize_arrays
+
+    rules = NineBall()
+    state = rules.initial_state(first_shooter=0)
+    status, t, n, pocket, events = sim.run_in_place(balls)          # one shot
+    summary = summarize_arrays(events, pocket, ball_numbers(balls.ids))
+    call = rules.call(state, summary, ShotInfo())
+    state = rules.next_state(state, call)                          # env: respot call.respot, place the cue ball
+"""
+from __future__ import annotations
+
+from .eight_ball import EightBall, EightBallOptions, eight_ball_targets, group_of
+from .errors import RulesError
+from .nine_ball import NineBall, NineBallOptions, nine_ball_targets
+from .ruleset import Ruleset
+from .state import (ANYWHERE, EIGHT_BALL, FOULS, KITCHEN, NINE_BALL, SOLIDS, STRIPES, BallInHand, Call, GameState,
+                    ShotInfo)
+from .summary import CUE, ShotSummary, ball_numbers, summarize_arrays, summarize_columns, summarize_result
+
+RULESETS = {NINE_BALL: NineBall, EIGHT_BALL: EightBall}
+
+
+def ruleset_for(game: str, options: object | None = None) -> Ruleset:
+    """The ruleset of ``game`` (``"nine_ball"`` or ``"eight_ball"``) with ``options`` (None: the defaults)."""
+    try:
+        cls = RULESETS[game]
+    except KeyError:
+        raise RulesError(f"game: unknown game {game!r}; use one of {', '.join(RULESETS)}") from None
+    return cls(options)  # type: ignore[abstract, arg-type]
+
+
+def legal_targets(state: GameState) -> tuple[int, ...]:
+    """The balls the shooter may hit first from ``state`` (9-ball: the lowest; 8-ball: any on the break, any but
+    the 8 on an open table, the own group, then the 8)."""
+    return nine_ball_targets(state) if state.game == NINE_BALL else eight_ball_targets(state)
+
+
+__all__ = [
+    "NineBall", "NineBallOptions", "EightBall", "EightBallOptions", "Ruleset", "RulesError", "GameState",
+    "ShotInfo", "Call", "ShotSummary", "BallInHand", "summarize_arrays", "summarize_columns", "summarize_result",
+    "ball_numbers", "legal_targets", "nine_ball_targets", "eight_ball_targets", "group_of", "ruleset_for",
+    "RULESETS", "CUE", "NINE_BALL", "EIGHT_BALL", "ANYWHERE", "KITCHEN", "SOLIDS", "STRIPES", "FOULS",
+]
