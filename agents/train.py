@@ -3,7 +3,7 @@
     python -m agents.train --config configs/train/one_ball_sac.yaml
     python -m agents.train --config configs/train/one_ball_sac.yaml --seconds 120 --name quick
     python -m agents.train --resume runs/one_ball_sac-20250101-120000      # continue an interrupted run
-    billiards-train --config configs/train/three_balls_sac.yaml --set seed=3 --hp batch_size=512
+    python -m agents.train --config configs/train/three_balls_sac.yaml --set seed=3 --hp batch_size=512
 
 A run folder ``runs/<name>-<timestamp>/`` holds: ``config.yaml`` (the resolved config: rerun it with
 ``--config``), ``run.json`` (what ran, versions, steps/s, wall time, final figures), ``progress.json``
@@ -260,6 +260,8 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
         "started": time.strftime("%Y-%m-%dT%H:%M:%S"), "command": " ".join(sys.argv),
     }
     (run_dir / "run.json").write_text(json.dumps(meta, indent=2, default=str))
+    # What the model was trained on: gym.make(env["id"], **env["kwargs"]) gives that env (see the README).
+    (run_dir / "env.json").write_text(json.dumps({"id": cfg.env_id, "kwargs": setup.env_kwargs}, indent=2))
     say(f"run folder: {run_dir}")
     say(f"training {s.algo.upper()} on {cfg.env_id} ({setup.n_envs} envs) for {remaining} steps"
         + (f" (budget {s.max_seconds:.0f} s)" if s.max_seconds else ""))
@@ -308,6 +310,8 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
         "milestones": summary["milestones"],
     })
     (run_dir / "run.json").write_text(json.dumps(meta, indent=2, default=str))
+    # What the model was trained on: gym.make(env["id"], **env["kwargs"]) gives that env (see the README).
+    (run_dir / "env.json").write_text(json.dumps({"id": cfg.env_id, "kwargs": setup.env_kwargs}, indent=2))
     say(f"done: {meta['timesteps']} steps in {meta['wall_seconds']:.0f} s "
         f"({meta['train_steps_per_second']:.0f} env steps/s excluding evaluation); run folder {run_dir}")
     env.close()
@@ -329,7 +333,7 @@ def _pairs(items: Sequence[str] | None, flag: str) -> dict[str, Any]:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="billiards-train", description="Train an SB3 agent on a billiards env.",
+    p = argparse.ArgumentParser(prog="python -m agents.train", description="Train an SB3 agent on a billiards env.",
                                 epilog="Config format: see agents/config.py and configs/train/*.yaml.")
     p.add_argument("--config", help="training config YAML (RL Zoo entry + 'billiards:' section)")
     p.add_argument("--resume", help="run folder or checkpoint .zip to continue")
@@ -376,7 +380,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         train(cfg, Path(args.run_dir) if args.run_dir else None, resume,
               progress_bar=False if args.no_progress else None, quiet=args.quiet)
     except TrainConfigError as exc:
-        print(f"billiards-train: error: {exc}", file=sys.stderr)
+        print(f"agents.train: error: {exc}", file=sys.stderr)
         return 2
     return 0
 

@@ -288,7 +288,7 @@ def demo_events(app: PlayApp, power: float = 0.5) -> Iterator[list[Any]]:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from billiards_env.envs import ENV_IDS
+    from billiards_env.registration import ENV_IDS
 
     p = argparse.ArgumentParser(prog="billiards-play", description=__doc__.split("\n\n")[0].split(": ", 1)[1],
                                 epilog=__doc__.split("\n\n", 1)[1],

@@ -9,6 +9,7 @@ import time
 from pathlib import Path
 
 from .physics.warmup import warm_up as warm_up_physics
+from .registration import ENV_IDS
 
 _PACKAGE = Path(__file__).resolve().parent
 _STAMP = _PACKAGE / "__pycache__" / "kernels.sha256"
@@ -46,7 +47,7 @@ def warm_up() -> float:
 
     import billiards_env  # noqa: F401  (registers the ids)
 
-    for env_id in ("BilliardsOneBall-v0", "BilliardsThreeBalls-v0", "BilliardsRack-v0"):
+    for env_id in ENV_IDS:
         env = gym.make(env_id)
         env.reset(seed=0)
         env.step(env.action_space.sample())

@@ -10,12 +10,8 @@ from .one_ball import OneBallEnv
 from .rack import RackEnv
 from .three_balls import ThreeBallsEnv
 
-#: Registered id -> environment class.
-ENV_IDS = {
-    "BilliardsOneBall-v0": OneBallEnv,
-    "BilliardsThreeBalls-v0": ThreeBallsEnv,
-    "BilliardsRack-v0": RackEnv,
-}
+#: Registered id -> environment class (the ids are billiards_env.registration.ENV_IDS).
+ENV_CLASSES = {env_id: cls for cls in (OneBallEnv, ThreeBallsEnv, RackEnv) for env_id in (cls.env_id,)}
 
 __all__ = ["BilliardsEnv", "OneBallEnv", "ThreeBallsEnv", "RackEnv", "EnvConfig", "ConfigError", "load_config",
-           "RENDER_MODES", "ENV_IDS"]
+           "RENDER_MODES", "ENV_CLASSES"]

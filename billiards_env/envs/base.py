@@ -1,10 +1,13 @@
-"""The shared machinery of the billiards environments: configuration, action mapping, ball placement, the shot,
-observation, reward, episode end, info and rendering hooks. Each registered id is a small subclass that names
-its packaged scene (``scene``) and documents itself (see :mod:`.one_ball`, :mod:`.three_balls`, :mod:`.rack`).
+"""The billiards environment: a simulator, an action type, an observation type and a task, joined.
 
-Layers (as in panda-gym): the physics (:mod:`billiards_env.physics`: table, balls, simulator) knows nothing of
-Gymnasium; this module turns actions into shots and shot results into observations and rewards; drawing is
-delegated to :mod:`billiards_env.render`, imported only when a render mode is set (training needs no display).
+Each registered id is a small subclass that names its packaged scene (``scene``) and documents itself (see
+:mod:`.one_ball`, :mod:`.three_balls`, :mod:`.rack`, :mod:`.games`). The parts (as in HighwayEnv and panda-gym):
+
+- physics (:mod:`billiards_env.physics`: table, balls, simulator) knows nothing of Gymnasium;
+- :mod:`.actions`: the action type turns an action vector into a cue shot (``action_type`` key);
+- :mod:`.observations`: the observation type turns the table into an observation (``observation_type`` key);
+- :mod:`.tasks`: the task scores a shot: reward, termination, success, its part of ``info`` (``task`` key);
+- drawing is delegated to :mod:`billiards_env.render`, imported only when a render mode is set.
 
 Speed: ``step`` runs the compiled exact solver on the live ball arrays in place (no validation, no copies, no
 result objects), the same kernel ``Simulator.run`` calls; the placements that ``reset`` draws are valid by
@@ -12,27 +15,25 @@ construction, and scenes given through ``reset(options=...)`` are validated ther
 """
 from __future__ import annotations
 
+import contextlib
 import math
-from typing import Any, Callable, ClassVar, Sequence
+from typing import Any, Callable, ClassVar, Iterator, Sequence
 
 import gymnasium as gym
 import numpy as np
-from gymnasium import spaces
 
 from billiards_env.physics.balls import Balls, validate_balls
 from billiards_env.physics.errors import SceneError
-from billiards_env.physics.model import Physics
-from billiards_env.physics.layout import (RACK_ORDER, foot_spot, head_spot, head_string_x, place_random, rack_rows,
-                                          spot_cue_ball, triangle_positions)
+from billiards_env.physics.layout import (RACK_ORDER, foot_spot, head_spot, head_string_x, nearest_free_point,
+                                          place_random, rack_rows, triangle_positions)
 from billiards_env.physics.simulate import Simulator
-from billiards_env.physics.table import Table, default_pockets
 
-from ._kernels import observation
+from .actions import CueShot, action_factory
 from .config import ConfigError, EnvConfig, load_config
+from .observations import observation_factory
+from .tasks import ShotOutcome, task_factory
 
 RENDER_MODES = ["human", "rgb_array", "rgb_array_list"]
-_TWO_PI = 2.0 * math.pi
-_EV_COLLISION = 0
 
 
 class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
@@ -44,8 +45,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
 
     Live state for players and tools: ``balls`` (a :class:`~billiards_env.physics.Balls`, updated IN PLACE by
     every shot: ``copy()`` it to keep a snapshot), ``table``, ``physics``, ``simulator`` (to try shots:
-    ``simulator.run(balls.strike(0, angle, speed), validate=False)``), ``config``, ``shots`` (shots taken in
-    this episode), ``last_shot`` (``(x, y, angle, speed)`` of the last shot or None).
+    ``simulator.run(balls.strike(0, angle, speed), validate=False)``), ``config``, ``task``, ``action_type``,
+    ``observation_type``, ``shots`` (shots taken in this episode), ``last_shot`` (``(x, y, angle, speed)`` of the
+    last shot or None).
     """
 
     metadata: ClassVar[dict[str, Any]] = {"render_modes": RENDER_MODES, "render_fps": 30}
@@ -62,21 +64,16 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.render_mode = render_mode
         self.metadata = {**type(self).metadata, "render_fps": c.render_fps}
 
-        xy, r = default_pockets(c.table_length, c.table_width, c.corner_pocket_radius, c.side_pocket_radius)
-        self.table = Table(c.table_length, c.table_width, c.cushion_restitution, xy, r)
-        self.physics = Physics(friction=c.friction, mu_roll=c.mu_roll, drag_k=c.drag_k, min_speed=c.min_speed,
-                               ball_restitution=c.ball_restitution)
-        self.simulator = Simulator(self.table, self.physics, solver=c.solver, max_time=c.max_time,
-                                   max_events=c.max_events)
+        self.table = c.table
+        self.physics = c.physics
+        self.simulator = Simulator(self.table, self.physics, solver=c.solver.name, dt=c.solver.dt,
+                                   contact=c.solver.contact, max_time=c.max_time, max_events=c.max_events)
 
         n = c.n_object_balls + 1
         self.n_balls = n
         self.ball_ids: tuple[str, ...] = ("cue",) + tuple(str(k) for k in range(1, n))
         #: Ball number of each row for drawing (0 = cue ball).
         self.ball_numbers: tuple[int, ...] = tuple(range(n))
-        self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
-        self.observation_space = spaces.Box(0.0, 1.0, shape=(3 * n,), dtype=np.float32)
-
         # Live state: one Balls object whose arrays the kernel updates in place.
         self.balls = Balls.from_positions(np.zeros((n, 2)), ids=self.ball_ids, radius=c.ball_radius,
                                           mass=c.ball_mass)
@@ -84,14 +81,15 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.last_shot: tuple[float, float, float, float] | None = None
         self._needs_reset = True
 
+        self.task = task_factory(self)
+        self.action_type = action_factory(c, placement=self.task.has_ball_in_hand)
+        self.observation_type = observation_factory(self)
+        self.action_space = self.action_type.space
+        self.observation_space = self.observation_type.space
+
         # Fast path: Simulator.run_in_place on the live arrays (exact solver, no copies, no result objects).
-        self._fast = c.solver == "exact"
-        self._sx = 1.0 / c.table_length
-        self._sy = 1.0 / c.table_width
+        self._fast = c.solver.name == "exact"
         self._pockets = [(float(px), float(py)) for px, py in self.table.pocket_xy]
-        self._speed_lo = float(c.speed_min)
-        self._speed_span = float(c.speed_max - c.speed_min)
-        self._relative = c.aim == "relative"
 
         # Fixed part of the starting layout (rack and/or head-spot cue), checked once here.
         self._fixed_rows, self._fixed_xy = self._fixed_layout()
@@ -124,23 +122,62 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.shots = 0
         self.last_shot = None
         self._needs_reset = False
+        info = self.task.reset(self, options)
         if self.render_mode == "rgb_array_list":
             self._frames = [self._draw_state()]
         elif self.render_mode == "human":
             self._show(None)
-        return self._obs(), {}
+        return self.observation_type.observe(self), info
 
     def step(self, action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
-        """Strike the cue ball with ``action``, simulate until every ball is at rest, score the shot."""
+        """Strike the cue ball with ``action``, simulate until every ball is at rest, score the shot.
+        Raises ``gymnasium.error.ResetNeeded`` before the first ``reset()`` and after the episode has ended."""
         if self._needs_reset:
+            if self.shots:  # the last step ended the episode
+                raise gym.error.ResetNeeded(
+                    f"step() after the end of the episode (shot {self.shots} returned terminated or truncated); call "
+                    "reset() to start a new one (vector envs and SB3 do this for you)")
             raise gym.error.ResetNeeded("call reset() before step(): the table has no balls yet")
-        angle, speed = self.shot_from_action(action)
+        shot = self.action_type.shot(self, action)
+        if shot.place is not None:
+            self.balls.pos[0] = shot.place
+        outcome, trajectory, played = self.play_shot(shot)
+        self.shots += 1
+        reward, terminated, truncated, info = self.task.on_shot(self, outcome)
+        info.update({
+            "pocketed": tuple(self.ball_ids[i] for i in outcome.pocketed),
+            "scratch": outcome.scratch,
+            "first_contact": self.ball_ids[outcome.first_contact] if outcome.first_contact >= 0 else None,
+            "n_events": outcome.n_events,
+            "sim_time": outcome.sim_time,
+            "status": outcome.status,
+            "shots": self.shots,
+            "angle": played.angle,
+            "speed": played.speed,
+        })
+        if self.action_type.spin:
+            info["side"], info["top"] = played.side, played.top
+        if self._record:
+            self._animate(trajectory)
+        self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
+        return self.observation_type.observe(self), reward, terminated, truncated, info
+
+    def play_shot(self, shot: CueShot) -> tuple[ShotOutcome, Any, CueShot]:
+        """Add the shot noise, strike the cue ball and simulate until every ball is at rest (the live balls are
+        updated in place). Returns the outcome, the trajectory (when recording) and the shot as played."""
+        angle, speed, side, top = shot.angle, shot.speed, shot.side, shot.top
         rng = self.np_random
         c = self.config
         if c.angle_noise > 0.0:
             angle += float(rng.normal(0.0, c.angle_noise))
         if c.speed_noise > 0.0:
             speed *= max(0.0, 1.0 + float(rng.normal(0.0, c.speed_noise)))
+        if c.tip_noise > 0.0:
+            side += float(rng.normal(0.0, c.tip_noise))
+            top += float(rng.normal(0.0, c.tip_noise))
+            r = math.hypot(side, top)
+            if r > 0.5 * (1.0 - 1e-12):  # keep it a legal tip position (no miscue)
+                side, top = side * 0.5 * (1.0 - 1e-12) / r, top * 0.5 * (1.0 - 1e-12) / r
         b = self.balls
         x0, y0 = float(b.pos[0, 0]), float(b.pos[0, 1])
         b.vel[0, 0] = speed * math.cos(angle)
@@ -160,35 +197,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             ev_int = np.stack([ev.kind, ev.ball, ev.other], axis=1) if len(ev) else np.zeros((0, 3), np.int64)
             trajectory = res.trajectory
         b.vel.fill(0.0)  # at rest (a capped shot is stopped where it is)
-        self.shots += 1
-
-        pocketed_rows = [i for i, p in enumerate(pocket_of.tolist()) if p >= 0]
-        scratch = bool(pocket_of[0] >= 0)
-        first = _first_contact(ev_int)
-        if scratch:
-            self._respot_cue()
-        n_potted = len(pocketed_rows) - (1 if scratch else 0)
-        cleared = not b.on_table[1:].any()
-
-        reward = self._reward(n_potted, scratch, first)
-        terminated = bool(cleared or c.single_shot)
-        truncated = bool(not terminated and self.shots >= c.max_shots)
-        ids = self.ball_ids
-        info = {
-            "is_success": bool(cleared and not scratch),
-            "pocketed": tuple(ids[i] for i in pocketed_rows),
-            "scratch": scratch,
-            "first_contact": ids[first] if first >= 0 else None,
-            "n_events": int(n_events),
-            "sim_time": float(sim_time),
-            "status": status,
-            "shots": self.shots,
-            "angle": angle,
-            "speed": speed,
-        }
-        if self._record:
-            self._animate(trajectory)
-        return self._obs(), reward, terminated, truncated, info
+        outcome = ShotOutcome.from_arrays(status, sim_time, n_events, pocket_of, ev_int)
+        return outcome, trajectory, CueShot(angle, speed, side, top, shot.place)
 
     def render(self) -> np.ndarray | list[np.ndarray] | None:
         """``rgb_array``: the table now, ``(H, W, 3) uint8`` (the last shot's cue line drawn).
@@ -216,64 +226,48 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     # ======================================================================================================
     # Actions
     # ======================================================================================================
-    def shot_from_action(self, action: Any) -> tuple[float, float]:
-        """The ``(angle rad, speed m/s)`` an action means now (no noise). NaN/inf raise ValueError; finite
-        values outside [-1, 1] are clipped."""
-        try:
-            a0, a1 = np.asarray(action, dtype=np.float64).reshape(-1).tolist()
-        except (ValueError, TypeError):
-            raise ValueError(f"action: expected 2 numbers (angle, speed) in [-1, 1], got {action!r}") from None
-        if not (math.isfinite(a0) and math.isfinite(a1)):
-            raise ValueError(f"action: must be finite numbers, got {[a0, a1]}; check the policy's output for "
-                             "NaN/inf")
-        a0 = -1.0 if a0 < -1.0 else (1.0 if a0 > 1.0 else a0)
-        a1 = -1.0 if a1 < -1.0 else (1.0 if a1 > 1.0 else a1)
-        angle = math.pi * a0
-        if self._relative:
-            angle += self._aim_base()
-        return angle, self._speed_lo + 0.5 * (a1 + 1.0) * self._speed_span
+    def shot_from_action(self, action: Any) -> CueShot:
+        """The shot an action means now (no noise): a :class:`~billiards_env.envs.actions.CueShot` ``(angle rad,
+        speed m/s, side, top, place)``. NaN/inf raise ValueError; finite values outside [-1, 1] are clipped."""
+        return self.action_type.shot(self, action)
 
-    def action_from_shot(self, angle: float, speed: float) -> np.ndarray:
-        """The action that strikes the cue ball at ``angle`` (rad, 0 = +x, CCW) and ``speed`` (m/s) in the
-        active aim mode (inverse of :meth:`shot_from_action`). Speeds outside [speed_min, speed_max] clip."""
-        for name, v in (("angle", angle), ("speed", speed)):
-            if not math.isfinite(float(v)):
-                raise ValueError(f"action_from_shot: {name} must be finite, got {v!r}")
-        base = self._aim_base() if self._relative else 0.0
-        d = (float(angle) - base + math.pi) % _TWO_PI - math.pi  # in [-pi, pi)
-        a1 = 2.0 * (float(speed) - self._speed_lo) / self._speed_span - 1.0
-        return np.array([d / math.pi, min(1.0, max(-1.0, a1))], dtype=np.float32)
+    def action_from_shot(self, angle: float, speed: float, side: float = 0.0, top: float = 0.0,
+                         place: tuple[float, float] | None = None) -> np.ndarray:
+        """The action that strikes the cue ball at ``angle`` (rad, 0 = +x, CCW) and ``speed`` (m/s) with tip
+        offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand) in the active action type (inverse of
+        :meth:`shot_from_action`). Speeds outside [speed_min, speed_max] clip; dims not given are neutral."""
+        return self.action_type.action(self, angle, speed, side, top, place)
 
     def target_ball(self) -> int | None:
-        """Row of the lowest-numbered object ball on the table (the relative-aim target), or None."""
-        on = self.balls.on_table
-        for i in range(1, self.n_balls):
-            if on[i]:
-                return i
-        return None
+        """Row of the ball to hit first (the relative and ghost aim's target): the task's choice (the lowest-
+        numbered object ball on the table, or the legal ball of a game), or None."""
+        return self.task.target_ball(self)
 
-    def _aim_base(self) -> float:
-        t = self.target_ball()
-        if t is None:
-            return 0.0
-        p = self.balls.pos
-        return math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0])
-
-    # ======================================================================================================
-    # Observation, reward (hooks a subclass may override)
-    # ======================================================================================================
-    def _obs(self) -> np.ndarray:
+    def legal_cue_position(self, x: float, y: float) -> tuple[float, float]:
+        """Where a ball-in-hand cue ball asked for at ``(x, y)`` goes: the nearest legal point of the task's
+        placement area not overlapping another ball (:func:`~billiards_env.physics.layout.nearest_free_point`)."""
+        area = self.task.ball_in_hand_area(self)
+        if area is None:
+            area = self._table_area()
         b = self.balls
-        return observation(b.pos, b.on_table, self._sx, self._sy)
+        return nearest_free_point(x, y, b.pos, b.on_table, b.radius, 0, area)
 
-    def _reward(self, n_potted: int, scratch: bool, first_contact: int) -> float:
-        c = self.config
-        r = c.pot_reward * n_potted - c.step_penalty
-        if scratch:
-            r -= c.scratch_penalty
-        if first_contact < 0:
-            r -= c.miss_penalty
-        return float(r)
+    @contextlib.contextmanager
+    def cue_moved_to(self, place: tuple[float, float]) -> Iterator[None]:
+        """Temporarily put the cue ball at ``place`` (on the table), e.g. to aim from a ball-in-hand position."""
+        b = self.balls
+        saved, on = b.pos[0].copy(), bool(b.on_table[0])
+        b.pos[0] = place
+        b.on_table[0] = True
+        try:
+            yield
+        finally:
+            b.pos[0] = saved
+            b.on_table[0] = on
+
+    def _table_area(self) -> tuple[float, float, float, float]:
+        r = self.config.ball_radius
+        return r, self.table.length - r, r, self.table.width - r
 
     # ======================================================================================================
     # Placement
@@ -298,9 +292,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     def _check_layout(self) -> None:
         """Validate the fixed layout and make sure the random placement can succeed (raise at make time)."""
         c = self.config
-        if c.placement == "random" and c.pocket_margin <= max(c.corner_pocket_radius, c.side_pocket_radius):
+        biggest = float(self.table.pocket_radius.max()) if self.table.n_pockets else 0.0
+        if c.placement == "random" and c.pocket_margin <= biggest:
             raise ConfigError(f"pocket_margin: {c.pocket_margin} m would let a ball start inside a pocket's "
-                             f"capture radius; use more than {max(c.corner_pocket_radius, c.side_pocket_radius)}")
+                             f"capture radius; use more than {biggest}")
         trial = self.balls.copy()
         self._place(np.random.default_rng(0), trial.pos)
         try:
@@ -312,10 +307,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         """Random-placement region of ``row`` as ``(x0, x_span, y0, y_span)``."""
         c = self.config
         m = c.ball_radius + c.cushion_margin
-        x1 = c.table_length - m
+        x1 = self.table.length - m
         if row == 0 and c.cue_placement == "kitchen":
             x1 = head_string_x(self.table)
-        return m, x1 - m, m, c.table_width - 2.0 * m
+        return m, x1 - m, m, self.table.width - 2.0 * m
 
     def _place(self, rng: np.random.Generator, pos: np.ndarray) -> None:
         """Fill ``pos`` with a starting layout: the fixed rows, then each random row uniformly in its region
@@ -352,12 +347,6 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                                  "(first) on the table")
             b.on_table[...] = ~off
         validate_balls(b, self.table)
-
-    def _respot_cue(self) -> None:
-        """Put a pocketed cue ball back (:func:`~billiards_env.physics.layout.spot_cue_ball`: the head spot or
-        the nearest free point along the head string)."""
-        b = self.balls
-        spot_cue_ball(b.pos, b.on_table, self.config.ball_radius, self.table)
 
     # ======================================================================================================
     # Rendering (drawing itself lives in billiards_env.render)
@@ -418,7 +407,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             self._show(None)
 
     def _show(self, state: tuple[np.ndarray, np.ndarray] | None) -> bool:
-        """Human mode: show one frame (``state`` or now) at render_fps; False once the user closed the window."""
+        """Human mode: show one frame (``state`` or now) at render_fps, as soon as it is drawn; False once the
+        user closed the window. The window is a :class:`~billiards_env.render.HumanWindow` made on first use, or
+        whatever a front-end put in ``_window`` before (``closed``, ``show(surface, fps)``, ``close()``):
+        ``billiards-play`` shows the env's frames in its own window that way."""
         import pygame
 
         from billiards_env.render import HumanWindow
@@ -439,14 +431,6 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         surf = self._draw_state(surface=True) if state is None else self._draw_state(state[0], state[1], True)
         w.show(surf, self.config.render_fps)
         return True
-
-
-def _first_contact(ev_int: np.ndarray) -> int:
-    """Row of the first ball the cue ball (row 0) collided with, or -1."""
-    for kind, ball, other in ev_int.tolist():
-        if kind == _EV_COLLISION and (ball == 0 or other == 0):
-            return other if ball == 0 else ball
-    return -1
 
 
 def make_policy(policy: Any, env: gym.Env) -> Callable[[np.ndarray], np.ndarray]:

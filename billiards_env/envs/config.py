@@ -1,25 +1,30 @@
 """The configuration schema of the billiards environments: every knob, its default, its meaning and its checks.
 
 A scene is data. Each registered id reads its defaults from a YAML file shipped inside the package,
-``billiards_env/envs/scenes/<scene>.yaml`` (the canonical copy; ``configs/envs/<scene>.yaml`` at the repository
-root is the user-facing copy of the same file and a test keeps the two identical). Keys are flat, so any of them
-can be overridden when the env is made::
+``billiards_env/envs/scenes/<scene>.yaml``, which holds only what differs from the defaults below. Any key can be
+overridden when the env is made::
 
     gym.make("BilliardsOneBall-v0", speed_max=3.0, angle_noise=0.01)
-    gym.make("BilliardsOneBall-v0", config="my_scene.yaml", aim="relative")
+    gym.make("BilliardsOneBall-v0", config="my_scene.yaml", action_type="relative")
+    gym.make("BilliardsOneBall-v0", physics={"mu_roll": 0.02}, table={"length": 2.84, "width": 1.42})
 
-Precedence (later wins): the dataclass defaults below < the id's scene YAML < the ``config`` file or dict <
-keyword arguments. A ``config`` file may be partial: keys it omits keep the id's defaults. An unknown key, a
-value of the wrong type or a value out of range raises :class:`ConfigError` naming the key and the fix.
+The physics of a table has ONE schema, shared with scene files (:mod:`billiards_env.physics.scene`): the sections
+``table`` (``length``, ``width``, ``cushion_restitution``, ``corner_pocket_radius``/``side_pocket_radius`` or a
+``pockets`` list), ``physics`` (the fields of :class:`~billiards_env.physics.Physics`: ``friction``, ``mu_roll``...)
+and ``solver`` (``name``, ``dt``, ``contact``, or just the name), plus ``max_time`` and ``max_events``: the same
+names, the same defaults and the same parser as a scene file. As a shorthand a physics field may be given on its
+own (``gym.make(id, friction="spin")`` is ``physics={"friction": "spin"}``).
 
-Run ``python -m billiards_env.envs.config`` to print the table of keys.
+Precedence (later wins): the defaults below < the id's scene YAML < the ``config`` file or dict < keyword
+arguments; sections merge field by field. An unknown key, a value of the wrong type or a value out of range
+raises :class:`ConfigError` naming the key and the fix. ``python -m billiards_env.envs`` prints the keys.
 """
 from __future__ import annotations
 
 import difflib
 import math
 import os
-from dataclasses import MISSING, asdict, dataclass, field, fields, replace
+from dataclasses import MISSING, asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -27,18 +32,31 @@ import numpy as np
 
 from billiards_env.physics.balls import BALL_MASS, BALL_RADIUS
 from billiards_env.physics.errors import SceneError
-from billiards_env.physics.model import FRICTION_LAWS
-from billiards_env.physics.simulate import SOLVERS
-from billiards_env.physics.table import (CORNER_POCKET_RADIUS, DEFAULT_CUSHION_RESTITUTION, DEFAULT_LENGTH,
-                                         DEFAULT_WIDTH, SIDE_POCKET_RADIUS)
+from billiards_env.physics.layout import rack_fits
+from billiards_env.physics.model import Physics
+from billiards_env.physics.scene import PHYSICS_FIELDS, parse_physics, parse_solver, parse_table, table_to_dict
+from billiards_env.physics.simulate import DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, SolverSettings
+from billiards_env.physics.table import Table
 
 #: Directory of the packaged scene files (one per registered id).
 SCENES_DIR = Path(__file__).resolve().parent / "scenes"
 
 PLACEMENTS = ("random", "rack")
 CUE_PLACEMENTS = ("random", "kitchen", "head_spot")
-AIM_MODES = ("absolute", "relative")
+ACTION_TYPES = ("absolute", "relative", "ghost")
+OBSERVATION_TYPES = ("positions", "features")
+TASKS = ("pot",)
 MAX_OBJECT_BALLS = 15
+#: The sections shared with scene files, and the parser of each.
+SECTIONS = {"table": parse_table, "physics": parse_physics, "solver": parse_solver}
+#: Keys of earlier versions and where they went (for a helpful error).
+RENAMED = {
+    "table_length": "table={'length': ...}", "table_width": "table={'width': ...}",
+    "cushion_restitution": "table={'cushion_restitution': ...}",
+    "corner_pocket_radius": "table={'corner_pocket_radius': ...}",
+    "side_pocket_radius": "table={'side_pocket_radius': ...}",
+    "aim": "action_type='absolute' or 'relative'",
+}
 
 
 class ConfigError(SceneError):
@@ -51,7 +69,7 @@ def _doc(text: str, **kw: Any) -> Any:
 
 @dataclass(frozen=True)
 class EnvConfig:
-    """Every setting of a billiards environment (flat keys; units SI: metres, seconds, radians, m/s)."""
+    """Every setting of a billiards environment (units SI: metres, seconds, radians, m/s)."""
 
     # --- scene: which balls and where -------------------------------------------------------------------------
     n_object_balls: int = _doc("Object balls besides the cue ball (1-15); ids '1'..'n', observation order.",
@@ -70,53 +88,57 @@ class EnvConfig:
     ball_gap: float = _doc("Random placement: minimum gap (m) between two balls' surfaces.", default=0.01)
     rack_gap: float = _doc("Rack placement: gap (m) between neighbouring racked balls (0 = touching).",
                            default=0.0)
-
-    # --- table ------------------------------------------------------------------------------------------------
-    table_length: float = _doc("Playing-area length (m), along x.", default=DEFAULT_LENGTH)
-    table_width: float = _doc("Playing-area width (m), along y.", default=DEFAULT_WIDTH)
-    cushion_restitution: float = _doc("Coefficient of restitution of the cushions, in [0, 1].",
-                                      default=DEFAULT_CUSHION_RESTITUTION)
-    corner_pocket_radius: float = _doc("Capture radius (m) of the four corner pockets.", default=CORNER_POCKET_RADIUS)
-    side_pocket_radius: float = _doc("Capture radius (m) of the two side pockets.", default=SIDE_POCKET_RADIUS)
-
-    # --- balls and physics ------------------------------------------------------------------------------------
     ball_radius: float = _doc("Radius (m) of every ball.", default=BALL_RADIUS)
     ball_mass: float = _doc("Mass (kg) of every ball.", default=BALL_MASS)
-    friction: str = _doc("Friction law: 'rolling' (constant deceleration mu_roll*g) or 'drag' (dv/dt = -drag_k v).",
-                         default="rolling")
-    mu_roll: float = _doc("Rolling-resistance coefficient (rolling law); 0.01 lets a 2 m/s ball roll ~20 m.",
-                          default=0.01)
-    drag_k: float = _doc("Drag rate (1/s) of the drag law.", default=0.0)
-    min_speed: float = _doc("A ball stops when its speed falls below this (m/s); 0 = roll to the exact stop.",
-                            default=0.0)
-    ball_restitution: float = _doc("Coefficient of restitution of ball-ball collisions, in [0, 1].", default=0.95)
 
-    # --- solver -----------------------------------------------------------------------------------------------
-    solver: str = _doc("'exact' (event-driven, the reference and the fast path) or 'step' (fixed time step).",
-                       default="exact")
+    # --- the table's physics: the sections of a scene file ------------------------------------------------------
+    table: Table = _doc("Table section (as in scene files): length, width, cushion_restitution, "
+                        "corner_pocket_radius, side_pocket_radius (or a pockets list).", default_factory=Table)
+    physics: Physics = _doc("Physics section (as in scene files): friction ('rolling', 'drag' or 'spin'), mu_roll, "
+                            "drag_k, min_speed, ball_restitution, and for 'spin' mu_slide, mu_spin, ball_friction, "
+                            "cushion_friction. Each field may also be given on its own.", default_factory=Physics)
+    solver: SolverSettings = _doc("Solver section (as in scene files): name ('exact', the fast path, or 'step'), "
+                                  "dt, contact; or just the name.", default_factory=SolverSettings)
     max_time: float = _doc("Simulated-seconds cap per shot; a capped shot reports status 'time_cap' and the "
-                           "balls are stopped where they are.", default=600.0)
+                           "balls are stopped where they are.", default=DEFAULT_MAX_TIME)
     max_events: int = _doc("Event cap per shot (exact solver); a capped shot reports status 'event_cap'.",
-                           default=20_000)
+                           default=DEFAULT_MAX_EVENTS)
 
     # --- action -----------------------------------------------------------------------------------------------
-    aim: str = _doc("'absolute': angle = pi*a[0] (0 = +x, counter-clockwise). 'relative': angle measured from "
-                    "the direction cue -> target ball (the lowest-numbered object ball on the table), so a[0] = 0 "
-                    "hits it full.", default="absolute")
+    action_type: str = _doc("How a[0] aims: 'absolute' (angle = pi*a[0], 0 = +x, counter-clockwise), 'relative' "
+                            "(angle = direction cue -> target ball + pi*a[0]: 0 hits it full) or 'ghost' (the "
+                            "direction the target ball leaves in: ghost_max_angle*a[0] from the cue -> target "
+                            "line; the cue ball is struck at the ghost-ball position that sends it there). The "
+                            "target ball is the lowest-numbered object ball on the table.", default="absolute")
+    ghost_max_angle: float = _doc("action_type 'ghost': the object-ball angle (degrees, 0-90) that |a[0]| = 1 "
+                                  "means.", default=90.0)
     speed_min: float = _doc("Cue-ball speed (m/s) for a[1] = -1.", default=0.5)
     speed_max: float = _doc("Cue-ball speed (m/s) for a[1] = +1.", default=5.0)
+    spin_action: bool = _doc("Add two action dims, side and top tip offsets in [-1, 1], mapped onto the disc of "
+                             "radius max_tip_offset (needs physics friction 'spin').", default=False)
+    max_tip_offset: float = _doc("spin_action: the largest tip offset (fraction of R; 0.5 is the miscue limit).",
+                                 default=0.5)
     angle_noise: float = _doc("Shot noise: standard deviation (rad) of Gaussian noise added to the angle; 0 = off.",
                               default=0.0)
     speed_noise: float = _doc("Shot noise: relative standard deviation of the speed (speed *= 1 + N(0, s)); "
                               "0 = off.", default=0.0)
+    tip_noise: float = _doc("Shot noise: standard deviation (fraction of R) of Gaussian noise added to each tip "
+                            "offset (spin model only; the result is kept inside the miscue limit); 0 = off.",
+                            default=0.0)
 
-    # --- reward -----------------------------------------------------------------------------------------------
+    # --- observation ------------------------------------------------------------------------------------------
+    observation_type: str = _doc("'positions' (ball positions and pocketed flags) or 'features' (those, then the "
+                                 "table seen from the target ball: the cue -> target direction and distance, and "
+                                 "per pocket the cut it asks for, its distance and how squarely it is entered).",
+                                 default="positions")
+
+    # --- task: reward and episode ---------------------------------------------------------------------------------
+    task: str = _doc("What the episode asks: 'pot' (pocket the object balls; success when the table is cleared).",
+                     default="pot")
     pot_reward: float = _doc("Reward per object ball pocketed.", default=1.0)
     scratch_penalty: float = _doc("Subtracted when the cue ball is pocketed (then re-spotted).", default=1.0)
     miss_penalty: float = _doc("Subtracted when the cue ball touches no ball.", default=0.0)
     step_penalty: float = _doc("Subtracted every shot (a cost per shot).", default=0.0)
-
-    # --- episode ----------------------------------------------------------------------------------------------
     single_shot: bool = _doc("True: the episode terminates after one shot whatever happens.", default=False)
     max_shots: int = _doc("Shot limit: the episode is truncated after this many shots if the table is not "
                           "cleared.", default=15)
@@ -138,26 +160,35 @@ class EnvConfig:
 
     @classmethod
     def describe(cls) -> str:
-        """A text table of every key: name, type, default, meaning."""
+        """A text table of every key: name, type, default, meaning (sections list their fields)."""
         rows = []
         for f in fields(cls):
-            tname = _type_name(f)
-            rows.append(f"{f.name:<22} {tname:<6} {f.default!r:<12} {f.metadata['doc']}")
+            rows.append(f"{f.name:<18} {_type_name(f):<8} {_default_text(f):<14} {f.metadata['doc']}")
+            if f.name in SECTIONS:
+                for k, v in _section_dict(f.name, _default(f)).items():
+                    rows.append(f"  {f.name}.{k:<{max(1, 14 - len(f.name))}} {'':<8} {v!r:<14}")
         return "\n".join(rows)
 
     def to_dict(self) -> dict[str, Any]:
-        return asdict(self)
+        """Plain data (sections as mappings): what ``EnvConfig.from_mapping`` and ``gym.make(id, **d)`` read back."""
+        out = {}
+        for f in fields(self):
+            v = getattr(self, f.name)
+            out[f.name] = _section_dict(f.name, v) if f.name in SECTIONS else v
+        return out
 
     def updated(self, overrides: Mapping[str, Any], source: str = "overrides") -> "EnvConfig":
         """A copy with ``overrides`` applied (checked: unknown keys and bad values raise :class:`ConfigError`)."""
         if not overrides:
             return self
-        return replace(self, **_coerce(overrides, source))
+        raw = self.to_dict()
+        _merge(raw, overrides, source)
+        return _build(raw, source)
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], source: str = "config") -> "EnvConfig":
-        """A config from the dataclass defaults and ``data`` (checked)."""
-        return cls(**_coerce(data, source))
+        """A config from the defaults and ``data`` (checked)."""
+        return cls().updated(data, source)
 
 
 # --- loading ---------------------------------------------------------------------------------------------------
@@ -196,65 +227,139 @@ def read_yaml(path: str | os.PathLike[str]) -> dict[str, Any]:
 def load_config(scene: str | None = None, config: Any = None, **overrides: Any) -> EnvConfig:
     """The configuration of an environment: packaged scene ``scene`` (defaults), then ``config`` (a YAML path,
     a mapping or an :class:`EnvConfig`), then keyword ``overrides``."""
-    cfg = EnvConfig()
+    if isinstance(config, EnvConfig):
+        return config.updated(overrides, source="keyword arguments")
+    raw = EnvConfig().to_dict()
     if scene is not None:
         p = scene_path(scene)
-        cfg = cfg.updated(read_yaml(p), source=str(p))
+        _merge(raw, read_yaml(p), str(p))
     if config is not None:
-        if isinstance(config, EnvConfig):
-            cfg = config
-        elif isinstance(config, (str, os.PathLike)):
-            cfg = cfg.updated(read_yaml(config), source=str(config))
+        if isinstance(config, (str, os.PathLike)):
+            _merge(raw, read_yaml(config), str(config))
         elif isinstance(config, Mapping):
-            cfg = cfg.updated(config, source="config")
+            _merge(raw, config, "config")
         else:
             raise ConfigError(f"config: expected a YAML file path, a mapping or an EnvConfig, got "
                               f"{type(config).__name__}")
-    return cfg.updated(overrides, source="keyword arguments")
+    _merge(raw, overrides, "keyword arguments")
+    return _build(raw, "keyword arguments" if overrides else "config")
 
 
-# --- checks ----------------------------------------------------------------------------------------------------
+# --- sections --------------------------------------------------------------------------------------------------
 
 _FIELDS = {f.name: f for f in fields(EnvConfig)}
 
 
-def _coerce(data: Mapping[str, Any], source: str) -> dict[str, Any]:
-    """Check the keys and the types of ``data`` (ints accepted for float keys); ranges are checked later."""
-    out: dict[str, Any] = {}
-    for key, value in data.items():
-        if key not in _FIELDS:
-            close = difflib.get_close_matches(str(key), list(_FIELDS), n=1)
+def _default(f: Any) -> Any:
+    return f.default_factory() if f.default is MISSING else f.default
+
+
+def _default_text(f: Any) -> str:
+    return "(section)" if f.name in SECTIONS else repr(_default(f))
+
+
+def _section_dict(name: str, value: Any) -> dict[str, Any]:
+    """A section object (Table, Physics, SolverSettings) as the mapping its parser reads."""
+    if name == "table":
+        t = table_to_dict(value)
+        default = Table(t["length"], t["width"], t["cushion_restitution"])
+        if value == default:  # the standard six pockets: say so by their radii (readable, and scales with size)
+            del t["pockets"]
+            t["corner_pocket_radius"] = float(value.pocket_radius[0])
+            t["side_pocket_radius"] = float(value.pocket_radius[1])
+        return t
+    return asdict(value)
+
+
+def _section_input(key: str, value: Any, source: str) -> dict[str, Any]:
+    """A section value from a config layer as a mapping (an object of the section's type is accepted too)."""
+    if isinstance(value, (Table, Physics, SolverSettings)):
+        return _section_dict(key, value)
+    if key == "solver" and isinstance(value, str):
+        return {"name": value}
+    if not isinstance(value, Mapping):
+        raise ConfigError(f"{key}: expected a mapping of its fields (from {source}), got {type(value).__name__} "
+                          f"{value!r}; e.g. {key}={{...}}")
+    return dict(value)
+
+
+def _merge(raw: dict[str, Any], layer: Mapping[str, Any], source: str) -> None:
+    """Apply one config layer to ``raw`` (plain data): sections merge field by field, physics fields given on
+    their own go into the physics section, anything unknown raises."""
+    flat_physics = {}
+    for key, value in layer.items():
+        key = str(key)
+        if key in SECTIONS:
+            section = _section_input(key, value, source)
+            if key == "table" and ({"corner_pocket_radius", "side_pocket_radius", "pockets"} & set(section)):
+                raw[key] = {k: v for k, v in raw[key].items()
+                            if k not in ("corner_pocket_radius", "side_pocket_radius", "pockets")}
+            raw[key] = {**raw[key], **section}
+        elif key in _FIELDS:
+            raw[key] = value
+        elif key in PHYSICS_FIELDS:
+            flat_physics[key] = value
+        elif key in RENAMED:
+            raise ConfigError(f"unknown config key {key!r} (from {source}): it is now {RENAMED[key]}")
+        else:
+            close = difflib.get_close_matches(key, list(_FIELDS) + sorted(PHYSICS_FIELDS), n=1)
             hint = f"did you mean {close[0]!r}? " if close else ""
             raise ConfigError(f"unknown config key {key!r} (from {source}); {hint}valid keys: "
-                              f"{', '.join(_FIELDS)}")
-        tname = _type_name(_FIELDS[key])
-        if tname == "bool":
-            if not isinstance(value, (bool, np.bool_)):
-                raise ConfigError(f"{key}: expected true or false, got {value!r}")
-            value = bool(value)
-        elif tname == "int":
-            if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-                if isinstance(value, (float, np.floating)) and float(value).is_integer():
-                    value = int(value)
-                else:
-                    raise ConfigError(f"{key}: expected an integer, got {value!r}")
-            value = int(value)
-        elif tname == "float":
-            if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
-                raise ConfigError(f"{key}: expected a number, got {type(value).__name__} {value!r}")
-            value = float(value)
-            if not math.isfinite(value):
-                raise ConfigError(f"{key}: must be a finite number, got {value}")
-        elif tname == "str":
-            if not isinstance(value, str):
-                raise ConfigError(f"{key}: expected a string, got {value!r}")
-        out[str(key)] = value
-    return out
+                              f"{', '.join(_FIELDS)} (and the physics fields {', '.join(sorted(PHYSICS_FIELDS))})")
+    for key, value in flat_physics.items():
+        if key in layer.get("physics", {}):
+            raise ConfigError(f"{key}: given twice in {source}, on its own and in the physics section; keep one")
+        raw["physics"] = {**raw["physics"], key: value}
+
+
+def _build(raw: Mapping[str, Any], source: str) -> EnvConfig:
+    """Check the types of plain data and build the config (sections through their parsers)."""
+    kw: dict[str, Any] = {}
+    for key, value in raw.items():
+        if key in SECTIONS:
+            if not isinstance(value, (Table, Physics, SolverSettings)):
+                try:
+                    value = SECTIONS[key](value, where=key)
+                except ConfigError:
+                    raise
+                except SceneError as exc:
+                    raise ConfigError(f"{exc} (from {source})") from None
+        else:
+            value = _coerce(key, value)
+        kw[key] = value
+    return EnvConfig(**kw)
+
+
+def _coerce(key: str, value: Any) -> Any:
+    """``value`` as the type of key ``key`` (ints accepted for float keys); ranges are checked later."""
+    tname = _type_name(_FIELDS[key])
+    if tname == "bool":
+        if not isinstance(value, (bool, np.bool_)):
+            raise ConfigError(f"{key}: expected true or false, got {value!r}")
+        return bool(value)
+    if tname == "int":
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+            if isinstance(value, (float, np.floating)) and float(value).is_integer():
+                return int(value)
+            raise ConfigError(f"{key}: expected an integer, got {value!r}")
+        return int(value)
+    if tname == "float":
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.integer, np.floating)):
+            raise ConfigError(f"{key}: expected a number, got {type(value).__name__} {value!r}")
+        value = float(value)
+        if not math.isfinite(value):
+            raise ConfigError(f"{key}: must be a finite number, got {value}")
+        return value
+    if tname == "str" and not isinstance(value, str):
+        raise ConfigError(f"{key}: expected a string, got {value!r}")
+    return value
 
 
 def _type_name(f: Any) -> str:
     return f.type if isinstance(f.type, str) else f.type.__name__
 
+
+# --- checks ----------------------------------------------------------------------------------------------------
 
 def _require(ok: bool, key: str, message: str) -> None:
     if not ok:
@@ -268,26 +373,33 @@ def _choice(cfg: EnvConfig, key: str, allowed: tuple[str, ...]) -> None:
 
 def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     """Range and consistency checks; the message names the key and the fix."""
-    _coerce(cfg.to_dict(), "EnvConfig")  # types (also for direct EnvConfig(...) construction)
+    for f in fields(cfg):
+        if f.name not in SECTIONS:
+            _coerce(f.name, getattr(cfg, f.name))  # types (also for direct EnvConfig(...) construction)
+    for key, kind in (("table", Table), ("physics", Physics), ("solver", SolverSettings)):
+        _require(isinstance(getattr(cfg, key), kind), key, f"expected a {kind.__name__} or a mapping of its fields")
     n = cfg.n_object_balls
     _require(1 <= n <= MAX_OBJECT_BALLS, "n_object_balls", f"must be 1..{MAX_OBJECT_BALLS}, got {n}")
     _choice(cfg, "placement", PLACEMENTS)
     _choice(cfg, "cue_placement", CUE_PLACEMENTS)
-    _choice(cfg, "friction", FRICTION_LAWS)
-    _choice(cfg, "solver", SOLVERS)
-    _choice(cfg, "aim", AIM_MODES)
-    for key in ("cushion_margin", "pocket_margin", "ball_gap", "rack_gap", "drag_k", "mu_roll", "min_speed",
-                "angle_noise", "speed_noise", "pot_reward", "scratch_penalty", "miss_penalty", "step_penalty"):
+    _choice(cfg, "action_type", ACTION_TYPES)
+    _choice(cfg, "observation_type", OBSERVATION_TYPES)
+    _choice(cfg, "task", TASKS)
+    for key in ("cushion_margin", "pocket_margin", "ball_gap", "rack_gap", "angle_noise", "speed_noise", "tip_noise",
+                "pot_reward", "scratch_penalty", "miss_penalty", "step_penalty"):
         v = getattr(cfg, key)
         _require(v >= 0, key, f"must be >= 0, got {v}" + (
             " (penalties are magnitudes: a positive value is subtracted from the reward)" if "penalty" in key else ""))
-    for key in ("table_length", "table_width", "corner_pocket_radius", "side_pocket_radius", "ball_radius",
-                "ball_mass", "max_time"):
+    for key in ("ball_radius", "ball_mass", "max_time"):
         v = getattr(cfg, key)
         _require(v > 0, key, f"must be > 0, got {v}")
-    for key in ("cushion_restitution", "ball_restitution"):
-        v = getattr(cfg, key)
-        _require(0 <= v <= 1, key, f"must be in [0, 1], got {v}")
+    _require(0 < cfg.ghost_max_angle <= 90, "ghost_max_angle", f"must be in (0, 90] degrees, got {cfg.ghost_max_angle}")
+    _require(0 < cfg.max_tip_offset <= 0.5, "max_tip_offset",
+             f"must be in (0, 0.5] (fraction of the ball radius; 0.5 is the miscue limit), got {cfg.max_tip_offset}")
+    spin = cfg.physics.friction == "spin"
+    _require(spin or not cfg.spin_action, "spin_action",
+             f"needs the spin model: add friction='spin' (the physics friction is {cfg.physics.friction!r})")
+    _require(spin or cfg.tip_noise == 0, "tip_noise", "needs the spin model: add friction='spin'")
     _require(cfg.speed_min >= 0, "speed_min", f"must be >= 0 m/s, got {cfg.speed_min}")
     _require(cfg.speed_max > cfg.speed_min, "speed_max",
              f"must be greater than speed_min ({cfg.speed_min} m/s), got {cfg.speed_max}; the speed range is "
@@ -297,37 +409,24 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _require(64 <= cfg.render_width <= 8192, "render_width", f"must be 64..8192 pixels, got {cfg.render_width}")
     _require(1 <= cfg.render_fps <= 1000, "render_fps", f"must be 1..1000, got {cfg.render_fps}")
     _require(cfg.render_speedup > 0, "render_speedup", f"must be > 0, got {cfg.render_speedup}")
+    t = cfg.table
     r = cfg.ball_radius
-    _require(4 * r < min(cfg.table_length, cfg.table_width), "ball_radius",
-             f"{r} m is too large for a {cfg.table_length} x {cfg.table_width} m table")
+    _require(4 * r < min(t.length, t.width), "ball_radius",
+             f"{r} m is too large for a {t.length} x {t.width} m table")
     if cfg.placement == "random":
-        free = min(cfg.table_length, cfg.table_width) - 2 * (r + cfg.cushion_margin)
+        free = min(t.length, t.width) - 2 * (r + cfg.cushion_margin)
         _require(free > 0, "cushion_margin", f"{cfg.cushion_margin} m leaves no room on the table; lower it")
     else:
-        # the triangle (apex at 3/4 of the length) must fit between the apex and the foot cushion
-        rows = _rack_rows(n)
-        d = 2 * r + cfg.rack_gap
-        depth = 0.75 * cfg.table_length + (rows - 1) * d * math.sqrt(3) / 2 + r
-        spread = (rows - 1) * d + 2 * r
-        _require(depth <= cfg.table_length and spread <= cfg.table_width, "rack_gap",
+        _require(rack_fits(t, n, r, cfg.rack_gap), "rack_gap",
                  f"a {n}-ball rack with gap {cfg.rack_gap} m does not fit on the table; lower rack_gap")
-
-
-def _rack_rows(n: int) -> int:
-    rows = 1
-    while rows * (rows + 1) // 2 < n:
-        rows += 1
-    return rows
 
 
 def config_table_markdown() -> str:
     """The keys as a Markdown table (for docs)."""
     lines = ["| key | default | meaning |", "|---|---|---|"]
     for f in fields(EnvConfig):
-        default = f.default if f.default is not MISSING else ""
-        lines.append(f"| `{f.name}` | `{default!r}` | {f.metadata['doc']} |")
+        lines.append(f"| `{f.name}` | `{_default_text(f)}` | {f.metadata['doc']} |")
+        if f.name in SECTIONS:
+            for k, v in _section_dict(f.name, _default(f)).items():
+                lines.append(f"| `{f.name}.{k}` | `{v!r}` | |")
     return "\n".join(lines)
-
-
-if __name__ == "__main__":  # pragma: no cover
-    print(EnvConfig.describe())

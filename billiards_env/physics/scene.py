@@ -16,7 +16,7 @@ from .balls import BALL_MASS, BALL_RADIUS, Balls, validate_balls
 from .errors import SceneError, check_finite, check_non_negative, check_number, check_positive
 from .model import Physics
 from .result import ShotResult
-from .simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, Simulator
+from .simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, Simulator, SolverSettings
 from .table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, Table, default_pockets
 
 TABLE_FIELDS = {"length", "width", "cushion_restitution", "pockets", "corner_pocket_radius", "side_pocket_radius"}
@@ -109,7 +109,8 @@ class Scene:
         max_events = d.get("max_events", DEFAULT_MAX_EVENTS)
         if isinstance(max_events, bool) or not isinstance(max_events, int) or max_events < 1:
             raise SceneError(f"max_events: must be a positive integer, got {max_events!r}")
-        scene = cls(table, physics, balls, shot, **solver, max_time=max_time, max_events=max_events)
+        scene = cls(table, physics, balls, shot, solver=solver.name, dt=solver.dt, contact=solver.contact,
+                    max_time=max_time, max_events=max_events)
         scene.simulator()  # checks solver name, contact and dt
         return scene
 
@@ -178,15 +179,14 @@ def parse_physics(value: Any, where: str = "physics") -> Physics:
     return Physics(**kw)
 
 
-def parse_solver(value: Any, where: str = "solver") -> dict[str, Any]:
-    """The ``solver`` section as Simulator keywords ``{solver, dt, contact}``: a mapping ``{name, dt, contact}``
-    or just the solver's name. Values are checked when the Simulator is built."""
+def parse_solver(value: Any, where: str = "solver") -> SolverSettings:
+    """The ``solver`` section: a mapping ``{name, dt, contact}`` or just the solver's name."""
     if isinstance(value, str):
         value = {"name": value}
     s = _mapping(where, value, SOLVER_FIELDS)
-    return {"solver": _string(f"{where}.name", s.get("name", "exact")),
-            "dt": check_positive(f"{where}.dt", s.get("dt", DEFAULT_DT)),
-            "contact": _string(f"{where}.contact", s.get("contact", "lecture"))}
+    return SolverSettings(_string(f"{where}.name", s.get("name", "exact")),
+                          check_positive(f"{where}.dt", s.get("dt", DEFAULT_DT)),
+                          _string(f"{where}.contact", s.get("contact", "lecture")))
 
 
 def table_to_dict(table: Table) -> dict[str, Any]:

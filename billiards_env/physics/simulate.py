@@ -21,6 +21,25 @@ SOLVERS = ("exact", "step")
 DEFAULT_MAX_TIME = 600.0  #: simulated-time cap per shot (s)
 DEFAULT_MAX_EVENTS = 100_000  #: event cap per shot (exact solver)
 DEFAULT_DT = 1e-3  #: step solver time step (s)
+@dataclass(frozen=True)
+class SolverSettings:
+    """Which solver runs a scene: ``name`` ``"exact"`` or ``"step"``, and the step solver's time step ``dt`` (s)
+    and contact treatment ``contact`` (``"lecture"`` or ``"rewind"``). The ``solver`` section of scene files and
+    env configs (:func:`.scene.parse_solver`)."""
+
+    name: str = "exact"
+    dt: float = DEFAULT_DT
+    contact: str = "lecture"
+
+    def __post_init__(self) -> None:
+        if self.name not in SOLVERS:
+            raise SceneError(f"solver.name: unknown solver {self.name!r}; use one of {', '.join(SOLVERS)}")
+        if self.contact not in CONTACT_MODES:
+            raise SceneError(f"solver.contact: unknown contact treatment {self.contact!r}; "
+                             f"use one of {', '.join(CONTACT_MODES)}")
+        check_positive("solver.dt", self.dt)
+
+
 @dataclass
 class Simulator:
     """A table, its physics and a solver, ready to run shots.
@@ -39,12 +58,7 @@ class Simulator:
     max_events: int = DEFAULT_MAX_EVENTS
 
     def __post_init__(self) -> None:
-        if self.solver not in SOLVERS:
-            raise SceneError(f"solver.name: unknown solver {self.solver!r}; use one of {', '.join(SOLVERS)}")
-        if self.contact not in CONTACT_MODES:
-            raise SceneError(f"solver.contact: unknown contact treatment {self.contact!r}; "
-                             f"use one of {', '.join(CONTACT_MODES)}")
-        check_positive("solver.dt", self.dt)
+        SolverSettings(self.solver, self.dt, self.contact)  # checks the name, contact and dt
         check_positive("max_time", self.max_time)
         if isinstance(self.max_events, bool) or not isinstance(self.max_events, (int, np.integer)) \
                 or self.max_events < 1:
@@ -136,4 +150,4 @@ def momentum(balls: Balls) -> np.ndarray:
     return (balls.mass[on, None] * balls.vel[on]).sum(axis=0)
 
 
-__all__ = ["Simulator", "simulate", "kinetic_energy", "momentum", "SOLVERS"]
+__all__ = ["Simulator", "SolverSettings", "simulate", "kinetic_energy", "momentum", "SOLVERS"]

@@ -78,6 +78,16 @@ class Table:
         object.__setattr__(self, "pocket_xy", xy)
         object.__setattr__(self, "pocket_radius", r)
 
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Table):
+            return NotImplemented
+        return (self.length, self.width, self.cushion_restitution) == (other.length, other.width,
+                                                                       other.cushion_restitution) \
+            and np.array_equal(self.pocket_xy, other.pocket_xy) \
+            and np.array_equal(self.pocket_radius, other.pocket_radius)
+
+    __hash__ = None  # type: ignore[assignment]  (mutable-looking arrays inside: not hashable)
+
     @property
     def n_pockets(self) -> int:
         return int(len(self.pocket_radius))

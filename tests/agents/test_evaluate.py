@@ -45,7 +45,7 @@ def test_baselines_on_one_ball(name, episodes, at_least, at_most):
 
 def test_baselines_are_deterministic_and_work_in_relative_aim():
     a = run_player(baseline_player("geometric", ONE, {}), 20, seed=7)[1]
-    b = run_player(baseline_player("geometric", ONE, {"aim": "relative"}), 20, seed=7)[1]
+    b = run_player(baseline_player("geometric", ONE, {"action_type": "relative"}), 20, seed=7)[1]
     assert [r["success"] for r in a] == [r["success"] for r in b]
     r1 = run_player(baseline_player("random", ONE, {}), 10, seed=7)[1]
     r2 = run_player(baseline_player("random", ONE, {}), 10, seed=7)[1]
@@ -64,11 +64,11 @@ def test_geometric_and_search_clear_three_balls():
 
 
 def test_player_action_round_trip():
-    env = gym.make(ONE, aim="relative")
+    env = gym.make(ONE, action_type="relative")
     env.reset(seed=3)
     player = make_player("geometric")
     action = player.act(env, None)
-    angle, speed = env.unwrapped.shot_from_action(action)
+    angle, speed = env.unwrapped.shot_from_action(action)[:2]
     assert abs((angle - player.last.angle + math.pi) % (2 * math.pi) - math.pi) < 1e-5
     assert abs(speed - player.last.speed) < 1e-4
     ctx = shot_context(env)

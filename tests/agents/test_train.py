@@ -18,16 +18,17 @@ REPO = Path(__file__).resolve().parents[2]
 CONFIGS = sorted((REPO / "configs" / "train").glob("*.yaml"))
 
 #: An easy scene through env kwargs: a half-size table with wide pockets, the cue ball on the head spot.
-EASY = {"table_length": 1.2, "table_width": 0.6, "corner_pocket_radius": 0.1, "side_pocket_radius": 0.09,
+EASY = {"table": {"length": 1.2, "width": 0.6, "corner_pocket_radius": 0.1, "side_pocket_radius": 0.09},
         "pocket_margin": 0.12, "cue_placement": "head_spot"}
+#: The agent design of configs/train/one_ball_sac.yaml: env options, no wrappers.
+AGENT_KWARGS = {"action_type": "ghost", "observation_type": "features"}
 
 
 def _config(tmp_path: Path, algo: str = "sac", n_timesteps: int = 600, env_kwargs: dict | None = None,
             **settings) -> dict:
     hyper = {
         "n_timesteps": n_timesteps, "policy": "MlpPolicy", "n_envs": 4,
-        "policy_kwargs": "dict(net_arch=[32, 32])", "env_kwargs": env_kwargs or {"aim": "relative"},
-        "env_wrapper": ["agents.wrappers.GhostAimWrapper", "agents.wrappers.ShotFeatures"],
+        "policy_kwargs": "dict(net_arch=[32, 32])", "env_kwargs": {**AGENT_KWARGS, **(env_kwargs or {})},
     }
     if algo in ("sac", "td3"):
         hyper.update({"learning_starts": 100, "batch_size": 64, "gamma": 0.0, "buffer_size": 10_000})
@@ -141,9 +142,8 @@ def _easy_training(tmp_path, seconds: float, steps: int) -> tuple[float, float]:
                   checkpoint_freq=0)
     hyper = cfg["BilliardsOneBall-v0"]  # the tuned one-ball settings (configs/train/one_ball_sac.yaml)
     hyper.update({"n_envs": 8, "batch_size": 128, "learning_rate": 3e-3, "learning_starts": 1000,
-                  "target_entropy": -4.0, "policy_kwargs": "dict(net_arch=[64, 64])", "buffer_size": 100_000,
-                  "env_wrapper": [{"agents.wrappers.GhostAimWrapper": {"speed_max": 1.8}},
-                                  "agents.wrappers.ShotFeatures"]})
+                  "target_entropy": -4.0, "policy_kwargs": "dict(net_arch=[64, 64])", "buffer_size": 100_000})
+    hyper["env_kwargs"]["speed_max"] = 1.8
     meta = train(load_train_config(cfg), quiet=True)
     trained, _ = run_player(model_player(meta["run_dir"]), 200, seed=4242)
     rand, _ = run_player(baseline_player("random", "BilliardsOneBall-v0", dict(EASY)), 200, seed=4242)

@@ -66,9 +66,11 @@ def test_make_vec(env_id, mode):
 
 
 def test_registered_ids_and_docstrings():
-    from billiards_env.envs import ENV_IDS
+    from billiards_env.envs import ENV_CLASSES
+    from billiards_env.registration import ENV_IDS
 
-    for env_id, cls in ENV_IDS.items():
+    assert set(ENV_CLASSES) == set(ENV_IDS)  # every registered id has its class, and no class is unregistered
+    for env_id, cls in ENV_CLASSES.items():
         assert gym.spec(env_id).entry_point.endswith(cls.__name__)
         doc = cls.__doc__
         for section in ("## Description", "## Action Space", "## Observation Space", "## Rewards",

@@ -11,7 +11,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 import yaml  # noqa: E402
 
-from billiards_env.envs import ENV_IDS  # noqa: E402
+from billiards_env.envs import ENV_CLASSES  # noqa: E402
 from billiards_env.envs.config import SCENES_DIR, ConfigError, EnvConfig, load_config  # noqa: E402
 from env_helpers import IDS  # noqa: E402
 
@@ -19,16 +19,49 @@ REPO = Path(__file__).resolve().parents[2]
 
 
 @pytest.mark.parametrize("env_id", IDS)
-def test_packaged_scene_is_complete_and_mirrored(env_id):
-    scene = ENV_IDS[env_id].scene
-    packaged = SCENES_DIR / f"{scene}.yaml"
-    data = yaml.safe_load(packaged.read_text())
-    assert set(data) == set(EnvConfig.keys()), "the scene YAML lists every config key, and only those"
-    user_copy = REPO / "configs" / "envs" / f"{scene}.yaml"
-    assert user_copy.read_text() == packaged.read_text(), f"{user_copy} must mirror {packaged}"
+def test_packaged_scene_holds_only_what_differs_from_the_defaults(env_id):
+    scene = ENV_CLASSES[env_id].scene
+    data = yaml.safe_load((SCENES_DIR / f"{scene}.yaml").read_text())
+    defaults = EnvConfig().to_dict()
+    assert data and set(data) <= set(defaults), "scene keys are config keys"
+    assert all(data[k] != defaults[k] for k in data), "a key equal to its default does not belong in the scene file"
     env = gym.make(env_id)
-    assert env.unwrapped.config == EnvConfig(**data)
+    assert env.unwrapped.config == EnvConfig.from_mapping(data)
     env.close()
+
+
+def test_user_configs_are_partial_layers_and_the_readme_points_to_the_packaged_scenes():
+    readme = (REPO / "configs" / "envs" / "README.md").read_text()
+    assert "billiards_env/envs/scenes" in readme
+    for path in sorted((REPO / "configs" / "envs").glob("*.yaml")):
+        env = gym.make("BilliardsThreeBalls-v0", config=str(path)).unwrapped
+        data = yaml.safe_load(path.read_text())
+        assert env.config.n_object_balls == data.get("n_object_balls", 3)
+        if "table" in data:
+            assert env.table.length == data["table"].get("length", env.table.length)
+        env.close()
+
+
+def test_one_schema_for_scene_files_and_env_configs():
+    """The table/physics/solver sections of an env config are a scene file's, with the same defaults."""
+    from billiards_env.physics.scene import Scene
+
+    scene = Scene.from_dict({"balls": [{"x": 0.5, "y": 0.5}]})
+    cfg = EnvConfig()
+    assert cfg.table == scene.table and cfg.physics == scene.physics
+    assert (cfg.solver.name, cfg.solver.dt, cfg.solver.contact) == (scene.solver, scene.dt, scene.contact)
+    assert (cfg.max_time, cfg.max_events) == (scene.max_time, scene.max_events)
+    sec = {"table": {"length": 2.84, "width": 1.42, "corner_pocket_radius": 0.07},
+           "physics": {"friction": "drag", "drag_k": 0.2, "min_speed": 0.01}, "solver": {"name": "step", "dt": 0.002}}
+    scene = Scene.from_dict({**sec, "balls": [{"x": 0.5, "y": 0.5}]})
+    env = gym.make("BilliardsOneBall-v0", **sec).unwrapped
+    assert env.table == scene.table and env.physics == scene.physics
+    assert (env.simulator.solver, env.simulator.dt) == ("step", 0.002)
+    # a physics field on its own is the physics section's
+    assert gym.make("BilliardsOneBall-v0", mu_roll=0.02).unwrapped.physics.mu_roll == 0.02
+    # the old flat table keys say where they went
+    with pytest.raises(ConfigError, match=r"table_length.*table=\{'length'"):
+        gym.make("BilliardsOneBall-v0", table_length=3.0)
 
 
 def test_scene_defaults_per_id():
@@ -41,7 +74,7 @@ def test_scene_defaults_per_id():
 
 
 def test_keyword_overrides_change_the_env():
-    env = gym.make("BilliardsOneBall-v0", speed_min=1.0, speed_max=3.0, aim="relative", mu_roll=0.02).unwrapped
+    env = gym.make("BilliardsOneBall-v0", speed_min=1.0, speed_max=3.0, action_type="relative", mu_roll=0.02).unwrapped
     assert env.config.speed_max == 3.0 and env.physics.mu_roll == 0.02
     env.reset(seed=0)
     assert env.shot_from_action([0.0, 1.0])[1] == pytest.approx(3.0)
@@ -70,8 +103,8 @@ def test_config_mapping_and_load_config():
     ({"speed_min": 3.0, "speed_max": 2.0}, "speed_max", "greater than speed_min"),
     ({"max_shots": 0}, "max_shots", ">= 1"),
     ({"max_shots": "ten"}, "max_shots", "integer"),
-    ({"aim": "sideways"}, "aim", "'relative'"),
-    ({"friction": "sticky"}, "friction", "'rolling'"),
+    ({"action_type": "sideways"}, "action_type", "'relative'"),
+    ({"friction": "sticky"}, "friction", "rolling"),
     ({"n_object_balls": 16}, "n_object_balls", "1..15"),
     ({"angle_noise": float("nan")}, "angle_noise", "finite"),
     ({"scratch_penalty": -1.0}, "scratch_penalty", "positive value is subtracted"),
@@ -113,10 +146,11 @@ def test_rack_layout_is_the_standard_triangle():
     env.reset(seed=0)
     b = env.balls
     c = env.config
-    assert np.allclose(b.pos[0], (c.table_length / 4, c.table_width / 2))  # head spot
-    assert np.allclose(b.pos[1], (0.75 * c.table_length, c.table_width / 2))  # 1-ball on the foot spot (apex)
-    third_row_middle = 0.75 * c.table_length + 2 * (2 * c.ball_radius) * np.sqrt(3) / 2
-    assert np.allclose(b.pos[8], (third_row_middle, c.table_width / 2))  # 8-ball in the middle of row 3
+    t = env.table
+    assert np.allclose(b.pos[0], (t.length / 4, t.width / 2))  # head spot
+    assert np.allclose(b.pos[1], (0.75 * t.length, t.width / 2))  # 1-ball on the foot spot (apex)
+    third_row_middle = 0.75 * t.length + 2 * (2 * c.ball_radius) * np.sqrt(3) / 2
+    assert np.allclose(b.pos[8], (third_row_middle, t.width / 2))  # 8-ball in the middle of row 3
     d = np.linalg.norm(b.pos[1:, None] - b.pos[None, 1:], axis=-1) + np.eye(15)
     assert d.min() == pytest.approx(2 * c.ball_radius, rel=1e-9)  # touching, no overlap
 

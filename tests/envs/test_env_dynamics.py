@@ -55,8 +55,8 @@ def test_random_placement_respects_margins():
         env.reset(seed=seed)
         p = env.balls.pos
         m = c.ball_radius + c.cushion_margin
-        assert np.all(p[:, 0] >= m - 1e-12) and np.all(p[:, 0] <= c.table_length - m + 1e-12)
-        assert np.all(p[:, 1] >= m - 1e-12) and np.all(p[:, 1] <= c.table_width - m + 1e-12)
+        assert np.all(p[:, 0] >= m - 1e-12) and np.all(p[:, 0] <= env.table.length - m + 1e-12)
+        assert np.all(p[:, 1] >= m - 1e-12) and np.all(p[:, 1] <= env.table.width - m + 1e-12)
         d_pocket = np.linalg.norm(p[:, None] - env.table.pocket_xy[None], axis=-1)
         assert d_pocket.min() >= c.pocket_margin
         d = np.linalg.norm(p[:, None] - p[None], axis=-1) + np.eye(len(p)) * 9
@@ -107,10 +107,10 @@ def test_out_of_range_actions_are_clipped():
 
 @pytest.mark.parametrize("aim", ["absolute", "relative"])
 def test_action_from_shot_inverts_the_mapping(aim):
-    env = gym.make("BilliardsThreeBalls-v0", aim=aim).unwrapped
+    env = gym.make("BilliardsThreeBalls-v0", action_type=aim).unwrapped
     env.reset(seed=2)
     for angle, speed in [(0.3, 1.0), (-2.9, 4.5), (3.1, 0.5), (7.0, 2.0)]:
-        got_angle, got_speed = env.shot_from_action(env.action_from_shot(angle, speed))
+        got_angle, got_speed = env.shot_from_action(env.action_from_shot(angle, speed))[:2]
         assert math.cos(got_angle - angle) == pytest.approx(1.0, abs=1e-10)
         assert got_speed == pytest.approx(speed, rel=1e-6)
     assert env.shot_from_action(env.action_from_shot(0.0, 99.0))[1] == pytest.approx(env.config.speed_max)
@@ -118,9 +118,9 @@ def test_action_from_shot_inverts_the_mapping(aim):
 
 def test_relative_aim_zero_hits_the_target_full():
     pos = np.array([[0.6, 0.5], [1.4, 0.8]])
-    env = gym.make("BilliardsOneBall-v0", aim="relative").unwrapped
+    env = gym.make("BilliardsOneBall-v0", action_type="relative").unwrapped
     env.reset(seed=0, options={"positions": pos})
-    angle, _ = env.shot_from_action([0.0, 0.0])
+    angle = env.shot_from_action([0.0, 0.0]).angle
     assert angle == pytest.approx(math.atan2(0.3, 0.8))
     info = env.step(np.array([0.0, 0.0], dtype=np.float32))[4]
     assert info["first_contact"] == "1"
@@ -202,7 +202,7 @@ def test_fast_step_matches_simulator_run(env_id):
     for _ in range(3):
         before = env.balls.copy()
         action = rng.uniform(-1, 1, 2).astype(np.float32)
-        angle, speed = env.shot_from_action(action)
+        angle, speed = env.shot_from_action(action)[:2]
         ref = Simulator(env.table, env.physics, max_time=env.config.max_time,
                         max_events=env.config.max_events).run(before.strike(0, angle, speed))
         _, _, term, trunc, info = env.step(action)
@@ -255,23 +255,21 @@ def test_live_state_for_players():
     assert trial.status == "rest"
 
 
-def test_step_rate_smoke():
-    """A loose floor (the target is >= 20,000 steps/s; see billiards_env/envs/benchmark.py): catches a
-    regression by an order of magnitude, such as validation or Python physics in the hot path."""
-    import time
+def test_step_takes_the_compiled_fast_path(monkeypatch):
+    """``step`` runs the compiled kernel on the live arrays: no validation and no ``Simulator.run`` (result
+    objects, copies) in the hot path. (Its speed is measured by the benchmarks, not asserted here.)"""
+    import billiards_env.envs.base as base
+
+    def forbidden(*args, **kwargs):
+        raise AssertionError("the fast path must not call this")
 
     env = gym.make("BilliardsOneBall-v0").unwrapped
     env.reset(seed=0)
-    actions = np.random.default_rng(0).uniform(-1, 1, (2000, 2)).astype(np.float32)
-    for a in actions[:50]:
+    monkeypatch.setattr(Simulator, "run", forbidden)
+    monkeypatch.setattr(base, "validate_balls", forbidden)
+    for a in np.random.default_rng(0).uniform(-1, 1, (20, 2)).astype(np.float32):
         env.step(a)
         env.reset()
-    t0 = time.perf_counter()
-    for a in actions:
-        env.step(a)
-        env.reset()
-    rate = len(actions) / (time.perf_counter() - t0)
-    assert rate > 2000, f"{rate:.0f} steps/s"
 
 
 def test_step_before_reset_raises():

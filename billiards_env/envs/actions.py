@@ -1,0 +1,236 @@
+"""Action types: how an action vector becomes a cue shot, and back (chosen by the ``action_type`` config key).
+
+Every action is a ``Box(-1, 1)`` vector laid out as::
+
+    [aim, power]  (+ [side, top] with spin_action)  (+ [place_x, place_y] in games with ball in hand)
+
+- ``aim`` depends on the type: :class:`AbsoluteAim` (``angle = pi a``), :class:`RelativeAim` (``pi a`` from the
+  direction cue -> target ball), :class:`GhostAim` (the direction the target ball leaves in, ``a *
+  ghost_max_angle`` from the cue -> target line; the cue is aimed at the ghost-ball position that sends it there).
+- ``power``: ``speed = speed_min + (a + 1) / 2 (speed_max - speed_min)``.
+- ``side``, ``top``: the square ``[-1, 1]^2`` mapped onto the disc of tip offsets of radius ``max_tip_offset``
+  (fractions of the ball radius) by the elliptical grid mapping ``(u, v) = (x sqrt(1 - y^2/2), y sqrt(1 - x^2/2))``:
+  the corners reach the rim, the axes keep their meaning (side only, top only), and every action is a legal tip
+  position (never a miscue).
+- ``place_x``, ``place_y``: where the cue ball goes when the shooter has ball in hand, linearly over the allowed
+  area; ignored otherwise. A point that overlaps a ball or leaves the area is moved to the nearest legal point
+  (:func:`billiards_env.physics.layout.nearest_free_point`).
+
+Finite values outside ``[-1, 1]`` are clipped (a policy outputs anything); NaN/inf or a wrong number of values
+raise ``ValueError``. Any array holding the right number of values is accepted (``(2,)``, ``(1, 2)``...).
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+import numpy as np
+from gymnasium import spaces
+
+from billiards_env.physics.aim import aim_angle, ghost_ball_position, ray_circle_entry, wrap_angle
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .base import BilliardsEnv
+    from .config import EnvConfig
+
+
+class CueShot(NamedTuple):
+    """One shot as played (before noise): cue direction ``angle`` (rad, 0 = +x, counter-clockwise), ``speed``
+    (m/s), tip offsets ``side`` and ``top`` (fractions of R), and the cue ball's placement ``place`` (x, y) when
+    the shooter has ball in hand (else None)."""
+
+    angle: float
+    speed: float
+    side: float = 0.0
+    top: float = 0.0
+    place: tuple[float, float] | None = None
+
+
+def _clip(v: float) -> float:
+    return -1.0 if v < -1.0 else (1.0 if v > 1.0 else v)
+
+
+def square_to_disc(x: float, y: float) -> tuple[float, float]:
+    """The elliptical grid mapping of the square ``[-1, 1]^2`` onto the unit disc."""
+    return x * math.sqrt(1.0 - 0.5 * y * y), y * math.sqrt(1.0 - 0.5 * x * x)
+
+
+def disc_to_square(u: float, v: float) -> tuple[float, float]:
+    """Inverse of :func:`square_to_disc` (points outside the unit disc are first moved onto its rim)."""
+    r = math.hypot(u, v)
+    if r > 1.0:
+        u, v = u / r, v / r
+    s2 = 2.0 * math.sqrt(2.0)
+    a = 2.0 + u * u - v * v
+    b = 2.0 - u * u + v * v
+    x = 0.5 * math.sqrt(max(a + s2 * u, 0.0)) - 0.5 * math.sqrt(max(a - s2 * u, 0.0))
+    y = 0.5 * math.sqrt(max(b + s2 * v, 0.0)) - 0.5 * math.sqrt(max(b - s2 * v, 0.0))
+    return _clip(x), _clip(y)
+
+
+class ActionType:
+    """Maps an action vector to a :class:`CueShot` and back. Subclasses define the aim component."""
+
+    name = "absolute"
+
+    def __init__(self, config: "EnvConfig", placement: bool = False) -> None:
+        self.speed_lo = float(config.speed_min)
+        self.speed_span = float(config.speed_max - config.speed_min)
+        self.spin = bool(config.spin_action)
+        self.max_tip = float(config.max_tip_offset)
+        self.placement = bool(placement)
+        self.n = 2 + (2 if self.spin else 0) + (2 if self.placement else 0)
+        self.space = spaces.Box(-1.0, 1.0, shape=(self.n,), dtype=np.float32)
+        self._spin_at = 2
+        self._place_at = 4 if self.spin else 2
+
+    # --- the aim component (a subclass's part) ----------------------------------------------------------------
+    def angle(self, env: "BilliardsEnv", a: float) -> float:
+        """Cue direction (rad) of aim component ``a`` (in [-1, 1])."""
+        return math.pi * a
+
+    def aim(self, env: "BilliardsEnv", angle: float) -> float:
+        """Aim component of cue direction ``angle`` (inverse of :meth:`angle`)."""
+        return wrap_angle(float(angle)) / math.pi
+
+    # --- the whole vector ------------------------------------------------------------------------------------
+    def parse(self, action: Any) -> list[float]:
+        """The action's values, clipped to [-1, 1] (NaN/inf and a wrong count raise ValueError)."""
+        try:
+            values = np.asarray(action, dtype=np.float64).reshape(-1).tolist()
+        except (ValueError, TypeError):
+            raise ValueError(f"action: expected {self.n} numbers in [-1, 1] ({self.layout()}), got "
+                             f"{action!r}") from None
+        if len(values) != self.n:
+            raise ValueError(f"action: expected {self.n} numbers in [-1, 1] ({self.layout()}), got {len(values)}: "
+                             f"{action!r}")
+        for v in values:
+            if not math.isfinite(v):
+                raise ValueError(f"action: must be finite numbers, got {values}; check the policy's output for "
+                                 "NaN/inf")
+        return [_clip(v) for v in values]
+
+    def layout(self) -> str:
+        names = ["aim", "power"] + (["side", "top"] if self.spin else []) + (["place_x", "place_y"]
+                                                                             if self.placement else [])
+        return ", ".join(names)
+
+    def shot(self, env: "BilliardsEnv", action: Any) -> CueShot:
+        """The shot an action means now (no noise). Placement is read only when the shooter has ball in hand."""
+        a = self.parse(action)
+        speed = self.speed_lo + 0.5 * (a[1] + 1.0) * self.speed_span
+        side = top = 0.0
+        if self.spin:
+            u, v = square_to_disc(a[self._spin_at], a[self._spin_at + 1])
+            side, top = self.max_tip * u, self.max_tip * v
+        place = None
+        area = env.task.ball_in_hand_area(env) if self.placement else None
+        if area is None:
+            return CueShot(self.angle(env, a[0]), speed, side, top, None)
+        x0, x1, y0, y1 = area
+        k = self._place_at
+        place = env.legal_cue_position(x0 + 0.5 * (a[k] + 1.0) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1.0) * (y1 - y0))
+        with env.cue_moved_to(place):  # the aim is relative to where the cue ball will be
+            angle = self.angle(env, a[0])
+        return CueShot(angle, speed, side, top, place)
+
+    def action(self, env: "BilliardsEnv", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
+               place: tuple[float, float] | None = None) -> np.ndarray:
+        """The action of a shot (inverse of :meth:`shot`); speeds outside the range clip, extra dims not given
+        take neutral values (no spin; the placement dims the middle of the area)."""
+        for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
+            if not math.isfinite(float(v)):
+                raise ValueError(f"action_from_shot: {name} must be finite, got {v!r}")
+        out = np.zeros(self.n, dtype=np.float64)
+        area = env.task.ball_in_hand_area(env) if (self.placement and place is not None) else None
+        if area is not None:
+            x0, x1, y0, y1 = area
+            out[self._place_at] = 2.0 * (float(place[0]) - x0) / max(x1 - x0, 1e-12) - 1.0
+            out[self._place_at + 1] = 2.0 * (float(place[1]) - y0) / max(y1 - y0, 1e-12) - 1.0
+            with env.cue_moved_to(env.legal_cue_position(float(place[0]), float(place[1]))):
+                out[0] = self.aim(env, angle)
+        else:
+            out[0] = self.aim(env, angle)
+        out[1] = 2.0 * (float(speed) - self.speed_lo) / self.speed_span - 1.0
+        if self.spin:
+            out[self._spin_at], out[self._spin_at + 1] = disc_to_square(side / self.max_tip, top / self.max_tip)
+        return np.clip(out, -1.0, 1.0).astype(np.float32)
+
+
+class AbsoluteAim(ActionType):
+    """``angle = pi * a[0]`` (0 = +x, counter-clockwise)."""
+
+    name = "absolute"
+
+
+class RelativeAim(ActionType):
+    """``angle = direction(cue -> target) + pi * a[0]``: ``a[0] = 0`` hits the target ball full."""
+
+    name = "relative"
+
+    def _base(self, env: "BilliardsEnv") -> float:
+        t = env.target_ball()
+        if t is None:
+            return 0.0
+        p = env.balls.pos
+        return math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0])
+
+    def angle(self, env: "BilliardsEnv", a: float) -> float:
+        return math.pi * a + self._base(env)
+
+    def aim(self, env: "BilliardsEnv", angle: float) -> float:
+        return wrap_angle(float(angle) - self._base(env)) / math.pi
+
+
+class GhostAim(ActionType):
+    """``a[0]``: the direction the target ball leaves in, ``a[0] * ghost_max_angle`` from the cue -> target line;
+    the cue ball is struck towards the ghost-ball position that sends it there. This inverts the two-ball collision
+    geometry only: which pocket, and how hard, is still the agent's to learn. Another ball in the way is not
+    checked."""
+
+    name = "ghost"
+
+    def __init__(self, config: "EnvConfig", placement: bool = False) -> None:
+        super().__init__(config, placement)
+        self.max_angle = math.radians(config.ghost_max_angle)
+
+    def angle(self, env: "BilliardsEnv", a: float) -> float:
+        t = env.target_ball()
+        if t is None:
+            return 0.0
+        b = env.balls
+        cue, obj = b.pos[0], b.pos[t]
+        theta = aim_angle(cue, obj) + a * self.max_angle
+        ghost = ghost_ball_position(obj, theta, float(b.radius[0] + b.radius[t]))
+        return aim_angle(cue, ghost)
+
+    def aim(self, env: "BilliardsEnv", angle: float) -> float:
+        """The object-ball direction a cue direction sends the target in (the line of centres at first contact),
+        relative to the cue -> target line; a cue line that misses the target maps to the nearer end (+-1)."""
+        t = env.target_ball()
+        if t is None:
+            return 0.0
+        b = env.balls
+        cue, obj = b.pos[0], b.pos[t]
+        reach = float(b.radius[0] + b.radius[t])
+        base = aim_angle(cue, obj)
+        ux, uy = math.cos(angle), math.sin(angle)
+        d = ray_circle_entry(float(cue[0]), float(cue[1]), ux, uy, float(obj[0]), float(obj[1]), reach)
+        if not math.isfinite(d):
+            side = wrap_angle(angle - base)
+            return -1.0 if side > 0 else 1.0
+        contact = (cue[0] + ux * d, cue[1] + uy * d)
+        return wrap_angle(aim_angle(contact, obj) - base) / self.max_angle
+
+
+ACTION_TYPES = {"absolute": AbsoluteAim, "relative": RelativeAim, "ghost": GhostAim}
+
+
+def action_factory(config: "EnvConfig", placement: bool = False) -> ActionType:
+    """The action type named by ``config.action_type`` (with spin dims per ``config.spin_action`` and placement
+    dims when the task has ball in hand)."""
+    return ACTION_TYPES[config.action_type](config, placement)
+
+
+__all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "ACTION_TYPES", "action_factory",
+           "square_to_disc", "disc_to_square"]

@@ -1,0 +1,30 @@
+"""The registered environment ids: the one list every other module reads (Gymnasium registration, tests,
+benchmarks, warm-up, players).
+
+``ENVS`` maps each id to its entry point (``module:Class``); ``register_envs()`` registers them with Gymnasium
+(``import billiards_env`` calls it). This module imports nothing heavy, so reading the list costs nothing.
+"""
+from __future__ import annotations
+
+#: Registered id -> entry point of its environment class.
+ENVS: dict[str, str] = {
+    "BilliardsOneBall-v0": "billiards_env.envs.one_ball:OneBallEnv",
+    "BilliardsThreeBalls-v0": "billiards_env.envs.three_balls:ThreeBallsEnv",
+    "BilliardsRack-v0": "billiards_env.envs.rack:RackEnv",
+}
+#: Every registered id, in registration order.
+ENV_IDS: tuple[str, ...] = tuple(ENVS)
+
+
+def register_envs() -> None:
+    """Register every id with Gymnasium (idempotent; a no-op without Gymnasium: physics-only use)."""
+    try:
+        from gymnasium.envs.registration import register, registry
+    except ImportError:  # pragma: no cover - physics-only use without gymnasium
+        return
+    for env_id, entry_point in ENVS.items():
+        if env_id not in registry:
+            register(id=env_id, entry_point=entry_point)
+
+
+__all__ = ["ENVS", "ENV_IDS", "register_envs"]
