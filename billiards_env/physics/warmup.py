@@ -15,15 +15,20 @@ from .table import Table
 def warm_up() -> float:
     """Run one tiny shot through each solver and recording mode; returns the seconds it took."""
     start = time.perf_counter()
-    balls = Balls.from_positions([[0.5, 0.5], [1.0, 0.5]]).strike(0, 0.0, 1.0)
+    plain = Balls.from_positions([[0.5, 0.5], [1.0, 0.5]]).strike(0, 0.0, 1.0)
+    spin = Balls.from_positions([[0.5, 0.5], [1.0, 0.5]]).strike(0, 0.0, 1.0, side=0.2, top=-0.2)
     table = Table()
-    for physics in (Physics(), Physics(friction="drag", drag_k=0.5, min_speed=0.01)):
+    for physics, balls in ((Physics(), plain), (Physics(friction="drag", drag_k=0.5, min_speed=0.01), plain),
+                           (Physics(friction="spin"), spin)):
         for solver, contact in (("exact", "lecture"), ("step", "lecture"), ("step", "rewind")):
             sim = Simulator(table, physics, solver=solver, contact=contact, dt=0.01, max_time=5.0)
             for record in (False, True):
                 result = sim.run(balls, record=record)
                 if record and result.trajectory is not None:
                     result.trajectory.sample([0.0, result.time])
+                    result.trajectory.sample_states([0.0, result.time])
+            if solver == "exact":
+                sim.run_in_place(balls.copy())
     return time.perf_counter() - start
 
 
