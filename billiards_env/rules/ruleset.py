@@ -6,8 +6,8 @@ from abc import ABC, abstractmethod
 from typing import Any, ClassVar, Iterable
 
 from .errors import RulesError
-from .state import (ANYWHERE, ILLEGAL_BREAK, NO_CONTACT, NO_RAIL, SCRATCH, WRONG_BALL_FIRST, Call, GameState,
-                    ShotInfo)
+from .state import (ANYWHERE, ILLEGAL_BREAK, NO_CONTACT, NO_RAIL, SCRATCH, WRONG_BALL_FIRST, BallInHand, Call,
+                    GameState, ShotInfo)
 from .summary import ShotSummary
 
 _NO_DECLARATION = ShotInfo()
@@ -138,15 +138,16 @@ class Ruleset(ABC):
 
 
 def foul_call(state: GameState, summary: ShotSummary, fouls: list[str], *, respot: tuple[int, ...] = (),
-              ball_in_hand: Any = ANYWHERE, groups: tuple[str, str] | None = None) -> Call:
+              ball_in_hand: BallInHand = ANYWHERE, groups: tuple[str, str] | None = None) -> Call:
     """A foul that ends the turn: the opponent shoots with the cue ball in hand (``ball_in_hand``)."""
     return Call(legal=False, foul=True, reason=fouls[0], fouls=tuple(fouls), shooter=state.shooter,
                 turn_over=True, next_shooter=state.opponent, ball_in_hand=ball_in_hand, pocketed=summary.pocketed,
                 respot=respot, cue_pocketed=summary.cue_pocketed, groups=groups)
 
 
-def end_call(state: GameState, summary: ShotSummary, reason: str, winner: int, fouls: list[str] | tuple = (),
-             legal: bool = False, groups: tuple[str, str] | None = None) -> Call:
+def end_call(state: GameState, summary: ShotSummary, reason: str, winner: int,
+             fouls: list[str] | tuple[str, ...] = (), legal: bool = False,
+             groups: tuple[str, str] | None = None) -> Call:
     """A shot that ends the game: ``winner`` wins for ``reason``."""
     return Call(legal=legal, foul=bool(fouls), reason=reason, fouls=tuple(fouls), shooter=state.shooter,
                 turn_over=True, next_shooter=1 - state.shooter, ball_in_hand=False, pocketed=summary.pocketed,

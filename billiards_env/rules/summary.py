@@ -97,9 +97,9 @@ def ball_numbers(ids: Sequence[str]) -> np.ndarray:
 
 
 @njit(cache=True)
-def scan_events(kind, ball, other, pocket, numbers):
-    """One compiled pass over the event log (columns ``kind``, ``ball``, ``other``) with the pocket index and ball
-    number of each row. Returns ``(first, rails, pocketed, pockets, cue_pocket)``: the number of the first ball the
+def scan_events(events, pocket, numbers):
+    """One compiled pass over the event log ``events`` ``(M, 3)``: kind, ball row, other) with the pocket index and
+    ball number of each row. Returns ``(first, rails, pocketed, pockets, cue_pocket)``: the number of the first ball the
     cue ball collided with (-1: none; -2: ``numbers`` has no single 0), the numbers of the balls with a cushion
     contact after that collision (ascending), the object balls pocketed in the order of their pocket events and
     their pockets, and the cue ball's pocket (-1: none)."""
@@ -120,16 +120,17 @@ def scan_events(kind, ball, other, pocket, numbers):
     pockets = np.empty(n, np.int64)
     listed = np.zeros(n, np.bool_)
     n_pot = 0
-    for k in range(kind.shape[0]):
-        kd = kind[k]
+    for k in range(events.shape[0]):
+        kd = events[k, 0]
+        b = events[k, 1]
         if kd == EV_COLLISION:
-            if first < 0 and (ball[k] == cue or other[k] == cue):
-                first = other[k] if ball[k] == cue else ball[k]
+            o = events[k, 2]
+            if first < 0 and (b == cue or o == cue):
+                first = o if b == cue else b
         elif kd == EV_CUSHION:
             if first >= 0:
-                rail[ball[k]] = True
+                rail[b] = True
         elif kd == EV_POCKET:
-            b = ball[k]
             if b != cue and pocket[b] >= 0 and not listed[b]:
                 listed[b] = True
                 pocketed[n_pot] = numbers[b]
@@ -144,17 +145,19 @@ def scan_events(kind, ball, other, pocket, numbers):
     return (numbers[first] if first >= 0 else -1), rails, pocketed[:n_pot], pockets[:n_pot], pocket[cue]
 
 
-def summarize_columns(kind: np.ndarray, ball: np.ndarray, other: np.ndarray, pocket: np.ndarray,
-                      numbers: np.ndarray) -> ShotSummary:
-    """The summary of a shot from the event-log columns (``kind``, ``ball``, ``other``: rows of balls), the
-    pocket index per ball row (-1: not pocketed on this shot) and the ball number per row (0 = cue ball)."""
-    numbers = np.asarray(numbers, dtype=np.int64)
-    pocket = np.asarray(pocket, dtype=np.int64)
-    if pocket.shape != numbers.shape:
-        raise RulesError(f"pocket: shape {pocket.shape} but {numbers.shape[0]} ball numbers; "
-                         "give one pocket index per ball row")
-    first, rails, pocketed, pockets, cue_pocket = scan_events(
-        np.asarray(kind, np.int64), np.asarray(ball, np.int64), np.asarray(other, np.int64), pocket, numbers)
+def summarize_arrays(events: np.ndarray, pocket: np.ndarray, numbers: np.ndarray | Sequence[int]) -> ShotSummary:
+    """The summary of a shot from ``Simulator.run_in_place``'s ``events`` ``(M, 3)`` int array (kind, ball,
+    other) and ``pocket`` ``(N,)`` array (pocket index per ball row, -1: not pocketed on this shot), with
+    ``numbers`` ``(N,)`` the ball number of each row (0 = cue ball; :func:`ball_numbers` makes them from ids)."""
+    ev = np.ascontiguousarray(events, dtype=np.int64)
+    if ev.ndim != 2 or ev.shape[1] != 3:
+        raise RulesError(f"events: expected an (M, 3) array of kind, ball, other; got shape {ev.shape}")
+    numbers = np.ascontiguousarray(numbers, dtype=np.int64)
+    pocket = np.ascontiguousarray(pocket, dtype=np.int64)
+    if pocket.shape != numbers.shape or numbers.ndim != 1:
+        raise RulesError(f"pocket: shape {pocket.shape} but numbers has shape {numbers.shape}; give one pocket "
+                         "index and one ball number per ball row")
+    first, rails, pocketed, pockets, cue_pocket = scan_events(ev, pocket, numbers)
     if first == -2:
         raise RulesError(f"numbers: {int(np.count_nonzero(numbers == CUE))} rows have number 0; exactly one row "
                          "must be the cue ball")
@@ -162,23 +165,12 @@ def summarize_columns(kind: np.ndarray, ball: np.ndarray, other: np.ndarray, poc
                        tuple(pockets.tolist()), cue_pocket >= 0, int(cue_pocket))
 
 
-def summarize_arrays(events: np.ndarray, pocket: np.ndarray, numbers: np.ndarray | Sequence[int]) -> ShotSummary:
-    """The summary of a shot from ``Simulator.run_in_place``'s ``events`` ``(M, 3)`` int array (kind, ball,
-    other) and ``pocket`` ``(N,)`` array, with ``numbers`` ``(N,)`` the ball number of each row (0 = cue ball;
-    :func:`ball_numbers` makes them from ids)."""
-    ev = np.asarray(events)
-    if ev.ndim != 2 or ev.shape[1] < 3:
-        raise RulesError(f"events: expected an (M, 3) array of kind, ball, other; got shape {ev.shape}")
-    return summarize_columns(ev[:, 0], ev[:, 1], ev[:, 2], pocket, np.asarray(numbers))
-
-
 def summarize_result(result: "ShotResult", numbers: np.ndarray | Sequence[int] | None = None) -> ShotSummary:
     """The summary of a :class:`~billiards_env.physics.ShotResult`; ``numbers`` default to the balls' ids
     read by :func:`ball_numbers`."""
-    nums = ball_numbers(result.balls.ids) if numbers is None else np.asarray(numbers)
+    nums = ball_numbers(result.balls.ids) if numbers is None else numbers
     ev = result.events
-    return summarize_columns(ev.kind, ev.ball, ev.other, result.pocket, nums)
+    return summarize_arrays(np.stack([ev.kind, ev.ball, ev.other], axis=1), result.pocket, nums)
 
 
-__all__ = ["CUE", "ShotSummary", "ball_numbers", "scan_events", "summarize_arrays", "summarize_columns",
-           "summarize_result"]
+__all__ = ["CUE", "ShotSummary", "ball_numbers", "scan_events", "summarize_arrays", "summarize_result"]

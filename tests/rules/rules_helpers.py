@@ -11,6 +11,8 @@ import math
 import numpy as np
 
 from billiards_env.physics import BALL_RADIUS, Balls, Physics, Simulator, Table
+from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_positions, foot_spot, head_spot,
+                                         triangle_positions)
 from billiards_env.rules import ShotSummary, summarize_result
 
 R = BALL_RADIUS
@@ -18,8 +20,8 @@ TABLE = Table()
 L, W = TABLE.length, TABLE.width
 POCKETS = np.asarray(TABLE.pocket_xy)
 SIM = Simulator(TABLE, Physics())
-HEAD_SPOT = (0.25 * L, 0.5 * W)
-FOOT_SPOT = (0.75 * L, 0.5 * W)
+HEAD_SPOT = head_spot(TABLE)
+FOOT_SPOT = foot_spot(TABLE)
 
 
 def unit(a, b) -> np.ndarray:
@@ -41,40 +43,15 @@ def behind(ball, pocket: int, dist: float) -> tuple[float, float]:
     return float(p[0]), float(p[1])
 
 
-def toward(ball, pocket: int, dist: float) -> tuple[float, float]:
-    """The point ``dist`` from ``ball`` toward pocket ``pocket``."""
-    p = np.asarray(ball, float) + dist * unit(ball, POCKETS[pocket])
-    return float(p[0]), float(p[1])
-
-
-def ghost_angle(cue, ball, pocket: int) -> float:
-    """Cue direction for a cut of ``ball`` into ``pocket`` (aim at the ghost ball)."""
-    ghost = np.asarray(ball, float) - 2 * R * unit(ball, POCKETS[pocket])
-    return angle_to(cue, ghost)
-
-
-def diamond_rack(apex, numbers=(1, 2, 3, 4, 9, 5, 6, 7, 8)) -> dict[str, tuple[float, float]]:
-    """A touching 9-ball diamond (rows 1-2-3-2-1) pointing to -x with its apex at ``apex``; the 1 at the apex
-    and the 9 in the middle with the default order."""
-    d = 2 * R
-    pts = []
-    for row, count in enumerate((1, 2, 3, 2, 1)):
-        x = apex[0] + row * d * math.sqrt(3) / 2
-        for k in range(count):
-            pts.append((x, apex[1] + (k - (count - 1) / 2) * d))
-    return {str(n): p for n, p in zip(numbers, pts)}
+def diamond_rack(apex, numbers=DIAMOND_ORDER) -> dict[str, tuple[float, float]]:
+    """A touching 9-ball diamond at ``apex``, balls ``numbers`` row by row (default: the 1 at the apex, the 9 in
+    the middle)."""
+    return {str(n): tuple(p) for n, p in zip(numbers, diamond_positions(apex))}
 
 
 def triangle_rack(apex) -> dict[str, tuple[float, float]]:
     """A touching 15-ball triangle at ``apex`` (the 8 in the middle of the third row)."""
-    order = (1, 9, 2, 10, 8, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15)
-    d = 2 * R
-    pts = []
-    for row in range(5):
-        x = apex[0] + row * d * math.sqrt(3) / 2
-        for k in range(row + 1):
-            pts.append((x, apex[1] + (k - row / 2) * d))
-    return {str(n): p for n, p in zip(order, pts)}
+    return {str(n): tuple(p) for n, p in zip(RACK_ORDER, triangle_positions(apex))}
 
 
 def shoot(balls: dict[str, tuple[float, float]], angle: float, speed: float, table: Table | None = None,

@@ -2,10 +2,13 @@
 scratch; a foul hands the opponent the cue ball anywhere; a legal pot keeps the turn, a legal miss ends it."""
 from __future__ import annotations
 
-import pytest
-from rules_helpers import miss_all, pot, rail_miss, scratch_pot, soft_touch, straight_scratch
+import math
 
-from billiards_env.rules import (ANYWHERE, EightBall, GameState, NineBall, legal_targets, ruleset_for)
+import pytest
+from rules_helpers import (R, angle_to, miss_all, parked, pot, rail_miss, scratch_pot, shoot, soft_touch,
+                           straight_scratch)
+
+from billiards_env.rules import ANYWHERE, EightBall, GameState, NineBall, legal_targets, ruleset_for
 from billiards_env.rules import state as S
 
 
@@ -117,7 +120,6 @@ def test_no_rail_after_contact_is_a_foul(setup):
 def test_a_cushion_before_the_contact_does_not_count_as_the_rail(setup):
     """The cue ball banks off the bottom cushion into the 1, which then rolls a little: no rail after contact."""
     rules, state, _ = setup()
-    from rules_helpers import angle_to, shoot, parked
     cue, one = (0.9, 0.3), (1.3, 0.3)
     mirror = (one[0], -one[1])  # aim at the 1's image in the bottom cushion
     s = shoot({"cue": cue, "1": one, **parked(others(state, "1"))}, angle_to(cue, mirror), 0.5)
@@ -129,3 +131,13 @@ def test_a_cushion_before_the_contact_does_not_count_as_the_rail(setup):
 def test_ruleset_for_builds_the_games_ruleset(setup):
     rules, state, _ = setup()
     assert type(ruleset_for(state.game)) is type(rules)
+
+
+@GAMES
+def test_frozen_ball_driven_into_its_cushion_counts_as_the_rail(setup):
+    """Simplification (docs/rules.md): the 1 rests against the bottom cushion and is driven into it; the engine
+    reports the cushion contact, so the shot is legal (the WPA would want the ball to leave and come back)."""
+    rules, state, _ = setup()
+    s = shoot({"cue": (1.0, 0.4), "1": (1.0, R), **parked(others(state, "1"))}, -math.pi / 2, 0.5)
+    assert s.first_contact == 1 and 1 in s.rail_balls and not s.pocketed
+    assert rules.call(state, s).legal
