@@ -2,7 +2,7 @@
 
     python -m agents.evaluate --env BilliardsOneBall-v0 --players random geometric search runs/one_ball_sac-*/
     python -m agents.evaluate --players runs/main/train --episodes 1000 --out runs/main/eval
-    billiards-evaluate --env BilliardsThreeBalls-v0 --players geometric search --episodes 300
+    python -m agents.evaluate --env BilliardsThreeBalls-v0 --players geometric search --episodes 300
 
 A player is a baseline name (``random``, ``geometric``, ``search``: see :mod:`agents.baselines`) or a trained
 model: a run folder (its ``best_model.zip``, else ``final_model.zip``) or a model ``.zip`` inside one. A
@@ -453,7 +453,7 @@ def _pairs(items: Sequence[str] | None) -> dict[str, Any]:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(prog="billiards-evaluate", description=__doc__.split("\n\n")[0])
+    p = argparse.ArgumentParser(prog="python -m agents.evaluate", description=__doc__.split("\n\n")[0])
     p.add_argument("--players", nargs="+", default=list(BASELINES),
                    help="baseline names (random, geometric, search) and/or run folders / model .zip files")
     p.add_argument("--env", help="env id (default: the first model's, else BilliardsOneBall-v0)")
@@ -472,7 +472,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         players = build_players(args.players, args.env, _pairs(args.env_kwargs) if args.env_kwargs else None)
     except (FileNotFoundError, ValueError) as exc:
-        print(f"billiards-evaluate: error: {exc}", file=sys.stderr)
+        print(f"agents.evaluate: error: {exc}", file=sys.stderr)
         return 2
     out = Path(args.out) if args.out else Path("runs") / f"eval-{time.strftime('%Y%m%d-%H%M%S')}"
     report = evaluate(players, args.episodes, args.seed, out, args.gif_episodes, args.gif_player, args.quiet)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Create a separate venv with pooltool-billiards 0.6.0 for the speed comparison of `billiards-bench`
-# (`python -m billiards_env.bench --only pooltool`). Not needed by billiards_env itself or its tests.
+# Create a separate venv with pooltool-billiards 0.6.0 for the speed comparison of the benchmarks
+# (`python -m benchmarks --only pooltool`, run from the repository root). Not needed by billiards_env itself or
+# its tests.
 #
 # A plain `pip install pooltool-billiards` resolves to the old 0.3.3: 0.6.0 pins panda3d==1.11.0.dev3702 on
 # Linux, a development build that is not on PyPI. So: download the 0.6.0 wheel, read its Requires-Dist, install

@@ -1,12 +1,12 @@
-"""Smoke test of the benchmark suite: the accuracy suite in a tiny configuration (no timed assertions)."""
+"""Smoke tests of the accuracy suite of ``benchmarks`` in a tiny configuration (no timed assertions)."""
 from __future__ import annotations
 
 import json
 
 import pytest
 
-from billiards_env.bench import accuracy
-from billiards_env.bench.common import break_shots, one_ball_shots, three_ball_shots, write_json
+from benchmarks import accuracy
+from benchmarks.common import break_shots, one_ball_shots, three_ball_shots, write_json
 
 DTS = (1 / 30, 1e-3)
 
@@ -57,7 +57,7 @@ def test_errors_are_sane(doc):
 
 
 def test_reports(doc, tmp_path):
-    from billiards_env.bench.common import machine_info
+    from benchmarks.common import machine_info
 
     doc["machine"] = machine_info()
     doc["target_exact_faster"] = accuracy.exact_faster_check(doc)

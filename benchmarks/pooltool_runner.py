@@ -17,7 +17,7 @@ from typing import Any
 from .common import Shot, log
 
 SCRIPT = Path(__file__).with_name("pooltool_bench.py")
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[1]
 SETUP = REPO / "benchmarks" / "pooltool_setup.sh"
 DEFAULT_VENV = REPO / ".venv-pooltool"
 

@@ -1,11 +1,11 @@
 """Time pooltool on the benchmark's shots. Run with the pooltool venv's Python, as a script:
 
-    .venv-pooltool/bin/python billiards_env/bench/pooltool_bench.py
+    .venv-pooltool/bin/python benchmarks/pooltool_bench.py
 
 It never imports billiards_env (that venv does not have it) and billiards_env never imports pooltool:
-``billiards_env.bench.pooltool_runner`` starts this script and talks to it through JSON lines, so that the
-caller can interleave rounds of pooltool timing with rounds of its own timing of the same shots (a shared,
-loaded machine then slows both alike).
+``benchmarks.pooltool_runner`` starts this script and talks to it through JSON lines, so that the caller can
+interleave rounds of pooltool timing with rounds of its own timing of the same shots (a shared, loaded machine
+then slows both alike).
 
 Protocol (one JSON document per line):
 

@@ -286,7 +286,7 @@ def render_markdown(doc: dict[str, Any], info: dict[str, Any], png_name: str | N
     lines = ["# Speed against error: `step` vs `exact`", ""]
     lines.append(machine_markdown(info, doc.get("end_load")))
     lines.append("")
-    lines.append("Produced by `python -m billiards_env.bench --only accuracy` "
+    lines.append("Produced by `python -m benchmarks --only accuracy` "
                  f"({'quick' if doc.get('quick') else 'full'} configuration, {doc['wall_time_s']:.0f} s). "
                  "Shots: seeded random one-ball shots (cue + 1 object ball, aimed at it with a random cut, "
                  "0.5-3 m/s), three-ball shots (cue + 2, 0.5-4 m/s), 15-ball breaks (touching rack, cue ball "

@@ -1,8 +1,11 @@
-"""``python -m billiards_env.bench [--quick] [--only speed|accuracy|pooltool|latency] [--out docs/bench]``.
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency] [--out docs/bench]``, from the
+repository root.
 
 Without ``--only`` every part runs: the accuracy suite (speed against error, ``speed_vs_error.md/.json/.png``),
-then the speed benchmarks, pooltool and the first-call latency (``speed.md/.json``). ``--quick`` runs a small
-configuration of everything (about a minute); the full run is sized for about ten minutes on two cores.
+then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``).
+``--quick`` runs a small configuration of everything (about a minute); the full run takes about four minutes on
+two cores. ``--only env`` also prints a table of ``env.step`` throughput per id (``--env-seconds``,
+``--env-ids``, ``--env-compare``).
 """
 from __future__ import annotations
 
@@ -10,15 +13,15 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "accuracy", "pooltool", "latency")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency")
 
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(
-        prog="billiards-bench",
-        description="Benchmarks of billiards_env: speed against error of the step solver vs exact "
-                    "(speed_vs_error.md/.json/.png), and speed: time per shot, env.step/s, first-call latency, "
-                    "pooltool (speed.md/.json).")
+        prog="python -m benchmarks",
+        description="Benchmarks of billiards_env (run from the repository root): speed against error of the step "
+                    "solver vs exact (speed_vs_error.md/.json/.png), and speed: time per shot, env.step/s, "
+                    "first-call latency, pooltool (speed.md/.json).")
     ap.add_argument("--quick", action="store_true", help="small configuration (about a minute)")
     ap.add_argument("--only", choices=SECTIONS, action="append",
                     help="run only this part (repeatable); default: all")
@@ -28,6 +31,12 @@ def main(argv: list[str] | None = None) -> int:
                          "$BILLIARDS_BENCH_POOLTOOL_PYTHON)")
     ap.add_argument("--no-pooltool-setup", action="store_true",
                     help="do not run benchmarks/pooltool_setup.sh when the pooltool venv is missing")
+    ap.add_argument("--env-seconds", type=float, default=None,
+                    help="env section: timing per env id and wrapping (default 3 s, 1 s with --quick)")
+    ap.add_argument("--env-ids", nargs="+", default=None, help="env section: the ids to time (default: all)")
+    ap.add_argument("--env-compare", action="store_true",
+                    help="env section: also time the unwrapped envs with shots through Simulator.run(validate=False) "
+                         "instead of the in-place kernel call (printed only)")
     ap.add_argument("--render-only", action="store_true",
                     help="measure nothing: re-write the Markdown (and the plot) from the JSON files in --out")
     args = ap.parse_args(argv)
@@ -51,10 +60,11 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     if "accuracy" in only:
         accuracy.main(args.out, quick=args.quick)
-    rest = tuple(s for s in ("speed", "pooltool", "latency") if s in only)
+    rest = tuple(s for s in ("speed", "env", "pooltool", "latency") if s in only)
     if rest:
         speed.main(args.out, quick=args.quick, sections=rest, pooltool_python=args.pooltool_python,
-                   allow_setup=not args.no_pooltool_setup)
+                   allow_setup=not args.no_pooltool_setup, env_seconds=args.env_seconds,
+                   env_ids=tuple(args.env_ids) if args.env_ids else None, env_compare=args.env_compare)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; outputs in {args.out}")
     return 0
 

@@ -1,7 +1,7 @@
 """First-call latency probe, run in a fresh process by :mod:`.speed` as a script (not with ``-m``, which would
 import the ``billiards_env`` package before the clock starts):
 
-    python billiards_env/bench/first_call.py [--env ID]
+    python benchmarks/first_call.py [--env ID]
 
 Prints one JSON line: ``import_s`` (importing the physics package, numpy and numba included), ``first_s``
 (building a table, balls and a simulator and running the first shot: numba loads the kernel from its cache or

@@ -206,7 +206,7 @@ def engine_version() -> str | None:
     (read-only git queries; None outside a git checkout)."""
     import subprocess
 
-    repo = Path(__file__).resolve().parents[2]
+    repo = Path(__file__).resolve().parents[1]
     try:
         head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=repo, capture_output=True, text=True,
                               timeout=10)

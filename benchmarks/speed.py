@@ -3,12 +3,13 @@
 Sections (each can run alone; ``speed.json`` keeps the sections of earlier runs that this run did not redo,
 each with its own time stamp, and ``speed.md`` is rendered from it):
 
-- ``ours``: a fixed single-ball shot, seeded random single-ball shots and a 15-ball break with the ``exact``
-  solver (rolling friction, mu 0.01), timed through ``Simulator.run(balls)`` (the default, which validates the
-  balls) and ``run(balls, validate=False)``, plus where the time of one shot goes (validation, the numba kernel,
-  the Python around it).
-- ``env_steps``: ``env.step`` per second for each registered env id, made with ``gymnasium.make(id)`` (and the
-  unwrapped env for reference), random actions, resets outside the timed calls.
+- ``speed`` (``ours`` in ``speed.json``): a fixed single-ball shot, seeded random single-ball shots and a
+  15-ball break with the ``exact`` solver (rolling friction, mu 0.01), timed through ``Simulator.run(balls)``
+  (the default, which validates the balls) and ``run(balls, validate=False)``, plus where the time of one shot
+  goes (validation, the numba kernel, the Python around it).
+- ``env`` (``env_steps`` in ``speed.json``): ``env.step`` per second for each registered env id, made with
+  ``gymnasium.make(id)`` (and the unwrapped env for reference), random actions, resets outside the timed calls
+  (:func:`time_env`, the one env-timing function of the repository).
 - ``latency``: a fresh process doing import + first shot, with the numba cache warm and cold.
 - ``pooltool``: the same kinds of shot in pooltool 0.6.0 (its own venv, a subprocess), and our times for the
   very same shots measured in the same run, as ratios.
@@ -28,11 +29,11 @@ from typing import Any
 import numpy as np
 
 from billiards_env.physics import Physics, Simulator, Table, validate_balls
+from billiards_env.registration import ENV_IDS
 
-from .common import (Shot, break_shots, fmt_num, fmt_time, load_now, log, machine_info, machine_markdown,
+from .common import (Shot, break_shots, fmt_num, fmt_rate, fmt_time, load_now, log, machine_info, machine_markdown,
                      one_ball_shots, repeat_median, straight_shot, time_call, write_json)
 
-ENV_IDS = ("BilliardsOneBall-v0", "BilliardsThreeBalls-v0", "BilliardsRack-v0")
 FIRST_CALL = Path(__file__).with_name("first_call.py")
 
 #: Targets: (key, description).
@@ -137,8 +138,69 @@ def run_ours(quick: bool, table: Table | None = None) -> dict[str, Any]:
 
 # ------------------------------------------------------------------------------------------------ env.step
 
-def run_env_steps(quick: bool, ids: tuple[str, ...] = ENV_IDS) -> dict[str, Any]:
-    seconds = 1.0 if quick else 3.0
+#: The fields of a :func:`time_env` measurement that ``speed.json`` keeps per id and wrapping.
+ENV_REPORT_KEYS = ("steps", "resets", "steps_per_s", "steps_per_s_with_resets", "mean_episode_steps")
+
+
+def time_env(env_id: str, seconds: float, wrapped: bool = True, fast: bool = True, seed: int = 0,
+             **kwargs: Any) -> dict[str, Any]:
+    """``env.step`` throughput of ``env_id``: seeded random actions, ``reset`` at every episode end (timed apart).
+
+    ``wrapped``: the env as ``gymnasium.make(env_id, **kwargs)`` returns it (passive checker and order enforcing
+    wrappers), else its ``.unwrapped``. ``fast=False``: shots through ``Simulator.run(validate=False)`` instead
+    of the env's in-place kernel call (what that fast path saves). Returns ``steps``, ``resets``,
+    ``steps_per_s`` (time inside ``step`` only), ``steps_per_s_with_resets``, ``steps_per_cpu_s`` (per CPU second
+    of this process: steadier on a busy machine), ``step_us``, ``reset_us``, ``events_per_shot`` and
+    ``mean_episode_steps``."""
+    import gymnasium as gym
+
+    import billiards_env  # noqa: F401  (registers the ids)
+
+    env = gym.make(env_id, **kwargs)
+    if not fast:
+        if not hasattr(env.unwrapped, "_fast"):
+            raise RuntimeError(f"{env_id} has no in-place fast path to switch off (no `_fast` attribute)")
+        env.unwrapped._fast = False
+    if not wrapped:
+        env = env.unwrapped
+    env.action_space.seed(seed)
+    actions = [env.action_space.sample() for _ in range(4096)]
+    env.reset(seed=seed)
+    for k in range(20):  # warm-up
+        _, _, term, trunc, _ = env.step(actions[k])
+        if term or trunc:
+            env.reset()
+    steps = resets = events = 0
+    t_step = t_reset = 0.0
+    start = time.perf_counter()
+    cpu0 = time.process_time()
+    while time.perf_counter() - start < seconds:
+        for _ in range(100):
+            a = actions[steps % len(actions)]
+            t0 = time.perf_counter()
+            _, _, term, trunc, info = env.step(a)
+            t_step += time.perf_counter() - t0
+            steps += 1
+            events += info["n_events"]
+            if term or trunc:
+                t0 = time.perf_counter()
+                env.reset()
+                t_reset += time.perf_counter() - t0
+                resets += 1
+    cpu = time.process_time() - cpu0
+    env.close()
+    return {"steps": steps, "resets": resets, "steps_per_s": steps / t_step,
+            "steps_per_s_with_resets": steps / (t_step + t_reset),
+            "mean_episode_steps": steps / resets if resets else None,
+            "steps_per_cpu_s": steps / cpu if cpu > 0 else None, "step_us": 1e6 * t_step / steps,
+            "reset_us": 1e6 * t_reset / resets if resets else None, "events_per_shot": events / steps}
+
+
+def run_env_steps(quick: bool, ids: tuple[str, ...] = ENV_IDS, seconds: float | None = None,
+                  compare: bool = False) -> dict[str, Any]:
+    """The ``env`` section: :func:`time_env` of every id through ``gymnasium.make`` and unwrapped (and with
+    ``compare`` unwrapped through ``Simulator.run``); prints a table of every measurement."""
+    seconds = seconds if seconds is not None else (1.0 if quick else 3.0)
     try:
         import gymnasium as gym
 
@@ -149,13 +211,19 @@ def run_env_steps(quick: bool, ids: tuple[str, ...] = ENV_IDS) -> dict[str, Any]
     missing = [i for i in ids if i not in gym.registry]
     if missing:
         out["note"] = f"not registered yet: {', '.join(missing)} (skipped)"
+    table: list[tuple[str, str, str, dict[str, Any]]] = []
     for env_id in ids:
         if env_id in missing:
             continue
         row: dict[str, Any] = {}
         try:
-            for label, unwrap in (("make", False), ("unwrapped", True)):
-                row[label] = _time_env(gym, env_id, seconds if not unwrap else seconds / 2, unwrap)
+            for label, wrapped in (("make", True), ("unwrapped", False)):
+                m = time_env(env_id, seconds if wrapped else seconds / 2, wrapped=wrapped)
+                row[label] = {k: m[k] for k in ENV_REPORT_KEYS}
+                table.append((env_id, label, "kernel", m))
+            if compare:
+                table.append((env_id, "unwrapped", "Simulator.run",
+                              time_env(env_id, seconds / 2, wrapped=False, fast=False)))
         except Exception as exc:
             row["error"] = f"{type(exc).__name__}: {exc}"
         out["envs"][env_id] = row
@@ -165,39 +233,19 @@ def run_env_steps(quick: bool, ids: tuple[str, ...] = ENV_IDS) -> dict[str, Any]
         else:
             log(f"[speed] {env_id}: {row.get('error')}")
     out["available"] = bool(out["envs"])
+    print(format_env_table(table), flush=True)
     return out
 
 
-def _time_env(gym, env_id: str, seconds: float, unwrap: bool) -> dict[str, Any]:
-    env = gym.make(env_id)
-    if unwrap:
-        env = env.unwrapped
-    env.action_space.seed(0)
-    actions = [env.action_space.sample() for _ in range(4096)]
-    env.reset(seed=0)
-    for k in range(20):  # warm-up
-        _, _, term, trunc, _ = env.step(actions[k])
-        if term or trunc:
-            env.reset()
-    steps = resets = 0
-    t_step = t_reset = 0.0
-    start = time.perf_counter()
-    while time.perf_counter() - start < seconds:
-        for _ in range(100):
-            a = actions[steps % len(actions)]
-            t0 = time.perf_counter()
-            _, _, term, trunc, _ = env.step(a)
-            t_step += time.perf_counter() - t0
-            steps += 1
-            if term or trunc:
-                t0 = time.perf_counter()
-                env.reset()
-                t_reset += time.perf_counter() - t0
-                resets += 1
-    env.close()
-    return {"steps": steps, "resets": resets, "steps_per_s": steps / t_step,
-            "steps_per_s_with_resets": steps / (t_step + t_reset),
-            "mean_episode_steps": steps / resets if resets else None}
+def format_env_table(rows: list[tuple[str, str, str, dict[str, Any]]]) -> str:
+    """One line per :func:`time_env` measurement ``(id, wrapping, shot path, result)``."""
+    lines = [f"{'id':<24} {'env':<10} {'path':<14} {'steps/s':>9} {'with resets':>12} {'per CPU-s':>10} "
+             f"{'step us':>8} {'reset us':>9} {'events/shot':>12}"]
+    for env_id, label, path, m in rows:
+        lines.append(f"{env_id:<24} {label:<10} {path:<14} {m['steps_per_s']:>9,.0f} "
+                     f"{m['steps_per_s_with_resets']:>12,.0f} {fmt_rate(m['steps_per_cpu_s']):>10} "
+                     f"{m['step_us']:>8.1f} {fmt_num(m['reset_us']):>9} {m['events_per_shot']:>12.1f}")
+    return "\n".join(lines)
 
 
 # ------------------------------------------------------------------------------------------------- latency
@@ -390,7 +438,7 @@ def targets(doc: dict[str, Any], accuracy: dict[str, Any] | None) -> list[dict[s
 def render_markdown(doc: dict[str, Any], accuracy: dict[str, Any] | None) -> str:
     info = doc["machine"]
     L = ["# Speed", "", machine_markdown(info, doc.get("end_load")), ""]
-    L.append("Produced by `python -m billiards_env.bench` (sections: `--only speed|pooltool|latency`). Timing: "
+    L.append("Produced by `python -m benchmarks` (sections: `--only speed|env|pooltool|latency`). Timing: "
              "`time.perf_counter`, median of repeats after a warm-up call; ratios only between numbers of the same "
              "run. Sections measured in different runs carry their own time stamps.")
     L.append("")
@@ -486,7 +534,7 @@ def render_markdown(doc: dict[str, Any], accuracy: dict[str, Any] | None) -> str
     if lat:
         L.append(f"## First-call latency in a fresh process ({lat['time']})")
         L.append("")
-        L.append("`python billiards_env/bench/first_call.py` in a subprocess: import the physics package (numpy, "
+        L.append("`python benchmarks/first_call.py` in a subprocess: import the physics package (numpy, "
                  "numba, and gymnasium through `billiards_env/__init__`), build a table and a simulator, run one "
                  "shot. Warm: the default numba cache (`__pycache__`), primed by a first run. Cold: "
                  "`NUMBA_CACHE_DIR` pointed at an empty temporary directory, so every kernel compiles.")
@@ -515,8 +563,9 @@ def render(out: Path) -> None:
     (out / "speed.md").write_text(render_markdown(doc, acc))
 
 
-def main(out: Path, quick: bool = False, sections: tuple[str, ...] = ("speed", "pooltool", "latency"),
-         pooltool_python: str | None = None, allow_setup: bool = True) -> dict[str, Any]:
+def main(out: Path, quick: bool = False, sections: tuple[str, ...] = ("speed", "env", "pooltool", "latency"),
+         pooltool_python: str | None = None, allow_setup: bool = True, env_seconds: float | None = None,
+         env_ids: tuple[str, ...] | None = None, env_compare: bool = False) -> dict[str, Any]:
     out.mkdir(parents=True, exist_ok=True)
     path = out / "speed.json"
     doc: dict[str, Any] = {}
@@ -531,7 +580,8 @@ def main(out: Path, quick: bool = False, sections: tuple[str, ...] = ("speed", "
     if "speed" in sections:
         ours = run_ours(quick)
         doc["ours"] = ours
-        doc["env_steps"] = run_env_steps(quick)
+    if "env" in sections:
+        doc["env_steps"] = run_env_steps(quick, ids=env_ids or ENV_IDS, seconds=env_seconds, compare=env_compare)
     if "pooltool" in sections:
         doc["pooltool"] = run_pooltool_section(quick, python=pooltool_python, allow_setup=allow_setup)
     if "latency" in sections:
