@@ -33,7 +33,7 @@ from typing import Any, Sequence
 import numpy as np
 import yaml
 
-from .config import (OFF_POLICY, SECTION, AlgoSetup, TrainConfig, TrainConfigError, load_train_config,
+from .config import (OFF_POLICY, AlgoSetup, TrainConfig, TrainConfigError, load_train_config,
                      parse_hyperparams)
 
 REPO_ROOT = Path(__file__).resolve().parent.parent

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import billiards_env  # noqa: F401
-from agents.baselines import SearchSettings, SearchPlayer, make_player, shot_context
+from billiards_env.players import SearchSettings, SearchPlayer, make_player, shot_context
 from agents.evaluate import baseline_player, evaluate, main, run_player, wilson_interval
 
 ONE = "BilliardsOneBall-v0"

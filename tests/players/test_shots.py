@@ -6,8 +6,8 @@ import math
 import numpy as np
 import pytest
 
-from agents.baselines import ShotContext, geometric_shot, search_shot, SearchSettings
-from agents.geometry import ghost_ball_shots, pocket_window, segment_blocked, speed_to_travel, travel_distance
+from billiards_env.players import ShotContext, geometric_shot, search_shot, SearchSettings
+from billiards_env.players.shots import ghost_ball_shots, pocket_window, segment_blocked, speed_to_travel, travel_distance
 from billiards_env.physics import BALL_RADIUS, Balls, Physics, Simulator, Table
 
 R = BALL_RADIUS

@@ -1,0 +1,58 @@
+"""billiards_env.players: baseline players for every env, and a library for pool AI (no Gymnasium imports).
+
+- ``random``: uniformly random actions;
+- ``geometric``: ghost-ball aiming at the easiest pocket (:mod:`.shots`, on :mod:`billiards_env.physics.aim`);
+- ``search``: simulates candidate shots with the exact solver and plays the best (:mod:`.search`).
+
+A player looks at the environment's true state (``env.unwrapped.balls``, ``.table``, ``.physics``, ``.simulator``,
+``.config``), chooses a shot ``(angle, speed)`` in physical units and turns it into an action with
+``env.unwrapped.action_from_shot(angle, speed)``, so the same player works with every action type. The decision
+functions (:func:`geometric_shot`, :func:`search_shot`) take plain physics objects (a :class:`ShotContext`), so
+they can be used without an environment::
+
+    player = make_player("search", seed=0)
+    obs, info = env.reset(seed=1)
+    action = player.act(env, obs)
+"""
+from __future__ import annotations
+
+from typing import Any, Callable, Protocol
+
+import numpy as np
+
+from .context import ShotContext, shot_context, to_action
+from .geometric import GeometricPlayer, geometric_shot
+from .random import RandomPlayer
+from .search import Outcome, SearchPlayer, SearchSettings, search_shot
+from .shots import MAX_CUT, ShotCandidate, direct_hit, ghost_ball_shots, position_score
+
+BASELINES = ("random", "geometric", "search")
+
+
+class Player(Protocol):
+    name: str
+
+    def reset(self, seed: int | None = None) -> None: ...
+
+    def act(self, env: Any, obs: Any) -> np.ndarray: ...
+
+
+PLAYERS: dict[str, Callable[..., Any]] = {
+    "random": RandomPlayer,
+    "geometric": GeometricPlayer,
+    "search": SearchPlayer,
+}
+
+
+def make_player(name: str, seed: int | None = 0, **kwargs: Any) -> Any:
+    """A baseline player by name: ``random``, ``geometric`` or ``search``."""
+    try:
+        cls = PLAYERS[name]
+    except KeyError:
+        raise ValueError(f"unknown baseline {name!r}; use one of {', '.join(PLAYERS)}") from None
+    return cls(seed=seed, **kwargs)
+
+
+__all__ = ["BASELINES", "Player", "ShotContext", "shot_context", "to_action", "geometric_shot", "search_shot",
+           "SearchSettings", "Outcome", "RandomPlayer", "GeometricPlayer", "SearchPlayer", "make_player", "PLAYERS",
+           "ShotCandidate", "ghost_ball_shots", "direct_hit", "position_score", "MAX_CUT"]
