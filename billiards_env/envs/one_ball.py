@@ -17,6 +17,7 @@ class OneBallEnv(BilliardsEnv):
     ## Action Space
 
     ``Box(-1, 1, (2,), float32)``. Finite values outside the box are clipped; NaN or inf raise ``ValueError``.
+    Any array of exactly two numbers is read as ``(a[0], a[1])``, so a batched ``(1, 2)`` action is accepted.
 
     | Num | Action | Min | Max | Meaning |
     |-----|--------|-----|-----|---------|
@@ -57,6 +58,9 @@ class OneBallEnv(BilliardsEnv):
     pocketed and the cue ball was not. A pocketed cue ball is put back on the head spot (or the nearest free
     point along the head string) so the final observation is a valid table.
 
+    ``step()`` after a step that returned ``terminated`` or ``truncated`` raises
+    ``gymnasium.error.ResetNeeded``: call ``reset()`` (vector envs and SB3 do).
+
     ``info`` of every step: ``is_success``, ``pocketed`` (ids pocketed by this shot), ``scratch``,
     ``first_contact`` (id of the first ball the cue ball hit, or None), ``n_events``, ``sim_time`` (simulated
     seconds), ``status`` (``rest``, ``time_cap`` or ``event_cap``), ``shots``, ``angle`` and ``speed`` (of
@@ -65,7 +69,8 @@ class OneBallEnv(BilliardsEnv):
     ## Arguments
 
     ``gym.make("BilliardsOneBall-v0", render_mode=None, config=None, **overrides)``: ``render_mode`` is
-    ``"human"`` (a window animating every shot), ``"rgb_array"`` (the table now) or ``"rgb_array_list"``
+    ``"human"`` (a window animating every shot; it needs a display, else ``reset()`` raises
+    ``HeadlessDisplayError``), ``"rgb_array"`` (the table now) or ``"rgb_array_list"``
     (every animation frame since the last render, for ``RecordVideo``). Any key of
     :class:`billiards_env.envs.config.EnvConfig` can be overridden (``speed_max=3.0``, ``aim="relative"``,
     ``angle_noise=0.01``, ``render_width=400``...) and ``config="scene.yaml"`` layers a YAML file over the

@@ -18,6 +18,7 @@ class RackEnv(BilliardsEnv):
     ## Action Space
 
     ``Box(-1, 1, (2,), float32)``. Finite values outside the box are clipped; NaN or inf raise ``ValueError``.
+    Any array of exactly two numbers is read as ``(a[0], a[1])``, so a batched ``(1, 2)`` action is accepted.
 
     | Num | Action | Min | Max | Meaning |
     |-----|--------|-----|-----|---------|
@@ -55,6 +56,9 @@ class RackEnv(BilliardsEnv):
     Terminated when every object ball is pocketed (``info["is_success"]`` True unless the cue ball was
     pocketed on that last shot); truncated after ``max_shots`` (50) shots. A pocketed cue ball is put back
     on the head spot, or the nearest free point along the head string, and play goes on.
+
+    ``step()`` after a step that returned ``terminated`` or ``truncated`` raises
+    ``gymnasium.error.ResetNeeded``: call ``reset()`` (vector envs and SB3 do).
 
     ``info`` of every step: ``is_success``, ``pocketed``, ``scratch``, ``first_contact``, ``n_events``,
     ``sim_time``, ``status`` (``rest``, ``time_cap`` or ``event_cap``), ``shots``, ``angle``, ``speed``.

@@ -16,6 +16,7 @@ class ThreeBallsEnv(BilliardsEnv):
     ## Action Space
 
     ``Box(-1, 1, (2,), float32)``. Finite values outside the box are clipped; NaN or inf raise ``ValueError``.
+    Any array of exactly two numbers is read as ``(a[0], a[1])``, so a batched ``(1, 2)`` action is accepted.
 
     | Num | Action | Min | Max | Meaning |
     |-----|--------|-----|-----|---------|
@@ -57,6 +58,9 @@ class ThreeBallsEnv(BilliardsEnv):
     was pocketed on that last shot. Truncated after ``max_shots`` (15) shots otherwise. A pocketed cue ball
     (scratch) is put back on the head spot, or the nearest free point along the head string, and play goes on;
     object balls pocketed on a scratch stay down and count.
+
+    ``step()`` after a step that returned ``terminated`` or ``truncated`` raises
+    ``gymnasium.error.ResetNeeded``: call ``reset()`` (vector envs and SB3 do).
 
     ``info`` of every step: ``is_success``, ``pocketed``, ``scratch``, ``first_contact``, ``n_events``,
     ``sim_time``, ``status`` (``rest``, ``time_cap`` or ``event_cap``), ``shots``, ``angle``, ``speed``.
