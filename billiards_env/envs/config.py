@@ -430,3 +430,13 @@ def config_table_markdown() -> str:
             for k, v in _section_dict(f.name, _default(f)).items():
                 lines.append(f"| `{f.name}.{k}` | `{v!r}` | |")
     return "\n".join(lines)
+
+
+if __name__ == "__main__":  # pragma: no cover - old habit; the key listing is `python -m billiards_env.envs`
+    import sys
+
+    from .__main__ import main
+
+    print("note: the listing is `python -m billiards_env.envs` (this module is imported by its package before it "
+          "runs, hence runpy's RuntimeWarning)", file=sys.stderr)
+    sys.exit(main(sys.argv[1:]))
