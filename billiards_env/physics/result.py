@@ -8,14 +8,15 @@ from typing import Any
 import numpy as np
 
 from .balls import Balls
-from .codes import CUSHION_NAMES, EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, EVENT_KINDS
+from .codes import (CUSHION_NAMES, EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP,
+                    EVENT_KINDS, MOTION_STATES)
 from .trajectory import Trajectory
 
 
 @dataclass(frozen=True)
 class EventLog:
     """Events in time order, as columns: ``time`` (s), ``kind`` (0 collision, 1 cushion, 2 pocket, 3 stop,
-    4 jam), ``ball`` (row), ``other`` (other ball's row, cushion 0-3 left/right/bottom/top, pocket index, the
+    4 jam; spin model: 5 roll, 6 spin), ``ball`` (row), ``other`` (other ball's row, cushion 0-3 left/right/bottom/top, pocket index, the
     number of balls in a jammed cluster, or -1),
     ``speed`` (normal impact speed, or the ball's speed when pocketed)."""
 
@@ -42,7 +43,7 @@ class EventLog:
                 ev["pocket"] = o
             elif k == EV_JAM:
                 ev["cluster_size"] = o
-            if k not in (EV_STOP, EV_JAM):
+            if k not in (EV_STOP, EV_JAM, EV_ROLL, EV_SPIN):
                 ev["speed"] = s
             out.append(ev)
         return out
@@ -65,6 +66,8 @@ class ShotResult:
     n_steps: int = 0  #: time steps taken (``step`` solver)
     n_tunnelled: int = 0  #: ball pairs that passed through each other within a step (``step`` solver)
     extra: dict[str, Any] = field(default_factory=dict)
+    #: spin model: each ball's final motion state (:data:`.codes.MOTION_STATES` codes); None for the other laws
+    motion_state: np.ndarray | None = None
 
     @property
     def newly_pocketed(self) -> np.ndarray:
@@ -83,18 +86,22 @@ class ShotResult:
         """The result as the JSON document ``billiards-sim`` prints."""
         b = self.balls
         balls = []
+        spin = self.motion_state is not None
         for i, bid in enumerate(b.ids):
             pocketed = bool(self.pocket[i] >= 0) or not bool(b.on_table[i])
-            balls.append({
+            ball: dict[str, Any] = {
                 "id": bid,
                 "x": float(b.pos[i, 0]),
                 "y": float(b.pos[i, 1]),
                 "vx": float(b.vel[i, 0]),
                 "vy": float(b.vel[i, 1]),
-                "pocketed": pocketed,
-                "pocket": int(self.pocket[i]) if self.pocket[i] >= 0 else None,
-                "pocketed_at": None if math.isnan(self.pocketed_at[i]) else float(self.pocketed_at[i]),
-            })
+            }
+            if spin:
+                ball.update(wx=float(b.ang[i, 0]), wy=float(b.ang[i, 1]), wz=float(b.ang[i, 2]),
+                            state=MOTION_STATES[int(self.motion_state[i])])
+            ball.update(pocketed=pocketed, pocket=int(self.pocket[i]) if self.pocket[i] >= 0 else None,
+                        pocketed_at=None if math.isnan(self.pocketed_at[i]) else float(self.pocketed_at[i]))
+            balls.append(ball)
         out: dict[str, Any] = {"status": self.status, "time": float(self.time), "n_events": int(self.n_events),
                                "solver": self.solver}
         if self.solver.startswith("step"):
@@ -103,4 +110,22 @@ class ShotResult:
         out["balls"] = balls
         if include_events:
             out["events"] = self.events.as_dicts(b.ids)
+            if spin:
+                self._add_event_states(out["events"])
         return out
+
+    def _add_event_states(self, events: list[dict[str, Any]]) -> None:
+        """Spin model: the motion state of each ball an event leaves behind (``state``, and ``other_state`` for
+        the other ball of a collision), read from the exact solver's state log (one row per involved ball after
+        each event, after one row per ball at the start). Nothing is added without that log."""
+        tr = self.trajectory
+        if tr is None or tr.interpolate or tr.state.shape[1] < 9:
+            return
+        row = self.trajectory.n_balls
+        codes = tr.state[:, 8]
+        for ev, k, o in zip(events, self.events.kind.tolist(), self.events.other.tolist()):
+            n_rows = 2 if k == EV_COLLISION else (o if k == EV_JAM else 1)
+            ev["state"] = MOTION_STATES[int(codes[row])]
+            if k == EV_COLLISION:
+                ev["other_state"] = MOTION_STATES[int(codes[row + 1])]
+            row += n_rows

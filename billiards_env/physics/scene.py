@@ -23,19 +23,22 @@ TABLE_FIELDS = {"length", "width", "cushion_restitution", "pockets", "corner_poc
 POCKET_FIELDS = {"x", "y", "radius"}
 #: The physics section's fields are :class:`Physics`'s: one set of names and defaults for scenes and envs.
 PHYSICS_FIELDS = {f.name for f in fields(Physics)}
-BALL_FIELDS = {"id", "x", "y", "vx", "vy", "radius", "mass"}
-SHOT_FIELDS = {"ball", "angle", "speed"}
+BALL_FIELDS = {"id", "x", "y", "vx", "vy", "wx", "wy", "wz", "radius", "mass"}
+SHOT_FIELDS = {"ball", "angle", "speed", "side", "top"}
 SOLVER_FIELDS = {"name", "dt", "contact"}
 SCENE_FIELDS = {"table", "physics", "balls", "shot", "solver", "max_time", "max_events"}
 
 
 @dataclass(frozen=True)
 class Shot:
-    """Strike ball ``ball`` at ``speed`` m/s in direction ``angle`` rad (0 = +x, counter-clockwise)."""
+    """Strike ball ``ball`` at ``speed`` m/s in direction ``angle`` rad (0 = +x, counter-clockwise), with the cue
+    tip ``side`` and ``top`` ball radii off centre (spin model; see :meth:`.Balls.strike`)."""
 
     ball: str
     angle: float
     speed: float
+    side: float = 0.0
+    top: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -60,7 +63,8 @@ class Scene:
         """The balls with the shot applied (if the scene has one)."""
         if self.shot is None:
             return self.balls.copy()
-        return self.balls.strike(self.shot.ball, self.shot.angle, self.shot.speed)
+        return self.balls.strike(self.shot.ball, self.shot.angle, self.shot.speed, side=self.shot.side,
+                                 top=self.shot.top)
 
     def run(self, solver: str | None = None, dt: float | None = None, contact: str | None = None,
             record: bool = False) -> ShotResult:
@@ -102,8 +106,8 @@ class Scene:
         if "balls" not in d:
             raise SceneError("scene: missing 'balls'; give a list of balls, e.g. [{\"id\": \"cue\", \"x\": 0.6, \"y\": 0.6}]")
         balls = _balls(d["balls"])
-        validate_balls(balls, table)
-        shot = _shot(d["shot"], balls) if d.get("shot") is not None else None
+        validate_balls(balls, table, allow_spin=physics.friction == "spin")
+        shot = _shot(d["shot"], balls, physics) if d.get("shot") is not None else None
         solver = parse_solver(d.get("solver", {}))
         max_time = check_positive("max_time", d.get("max_time", DEFAULT_MAX_TIME))
         max_events = d.get("max_events", DEFAULT_MAX_EVENTS)
@@ -112,6 +116,8 @@ class Scene:
         scene = cls(table, physics, balls, shot, solver=solver.name, dt=solver.dt, contact=solver.contact,
                     max_time=max_time, max_events=max_events)
         scene.simulator()  # checks solver name, contact and dt
+        if shot is not None:
+            scene.initial_balls()  # checks the shot (e.g. the tip offset's miscue limit)
         return scene
 
 
@@ -202,7 +208,7 @@ def _balls(value: Any) -> Balls:
     if not value:
         raise SceneError("balls: the scene has no balls; add at least one")
     n = len(value)
-    ids, pos, vel = [], np.zeros((n, 2)), np.zeros((n, 2))
+    ids, pos, vel, ang = [], np.zeros((n, 2)), np.zeros((n, 2)), np.zeros((n, 3))
     radius, mass = np.full(n, BALL_RADIUS), np.full(n, BALL_MASS)
     for i, b in enumerate(value):
         name = f"balls[{i}]"
@@ -216,12 +222,13 @@ def _balls(value: Any) -> Balls:
         ids.append(str(bid))
         pos[i] = (check_finite(f"{name}.x", bm["x"]), check_finite(f"{name}.y", bm["y"]))
         vel[i] = (check_finite(f"{name}.vx", bm.get("vx", 0.0)), check_finite(f"{name}.vy", bm.get("vy", 0.0)))
+        ang[i] = [check_finite(f"{name}.{f}", bm.get(f, 0.0)) for f in ("wx", "wy", "wz")]
         radius[i] = check_positive(f"{name}.radius", bm.get("radius", BALL_RADIUS))
         mass[i] = check_positive(f"{name}.mass", bm.get("mass", BALL_MASS))
-    return Balls(tuple(ids), pos, vel, radius, mass, np.ones(n, dtype=bool))
+    return Balls(tuple(ids), pos, vel, radius, mass, np.ones(n, dtype=bool), ang)
 
 
-def _shot(value: Any, balls: Balls) -> Shot:
+def _shot(value: Any, balls: Balls, physics: Physics) -> Shot:
     s = _mapping("shot", value, SHOT_FIELDS)
     ball = s.get("ball", balls.ids[0])
     if str(ball) not in balls.ids:
@@ -231,4 +238,10 @@ def _shot(value: Any, balls: Balls) -> Shot:
             raise SceneError(f"shot: missing '{f}' (angle in radians, speed in m/s)")
     angle = check_finite("shot.angle", s["angle"])
     speed = check_non_negative("shot.speed", s["speed"])
-    return Shot(str(ball), angle, speed)
+    side = check_finite("shot.side", s.get("side", 0.0))
+    top = check_finite("shot.top", s.get("top", 0.0))
+    if (side != 0.0 or top != 0.0) and physics.friction != "spin":
+        raise SceneError(f"shot.side, shot.top: ({side}, {top}) puts spin on the ball, but spin needs "
+                         f"physics.friction 'spin' (the scene's is {physics.friction!r}); set it, or strike with "
+                         "side = top = 0")
+    return Shot(str(ball), angle, speed, side, top)

@@ -15,6 +15,7 @@ from .kernel_io import kernel_params
 from .model import G, Physics
 from .result import EventLog, ShotResult
 from .step import CONTACT_MODES, simulate_step
+from .spin_motion import classify_all
 from .step_spin import simulate_step_spin
 from .table import Table
 from .trajectory import Trajectory
@@ -134,7 +135,8 @@ class Simulator:
         ev_int = k.ev_int
         events = EventLog(k.ev_time, ev_int[:, 0], ev_int[:, 1], ev_int[:, 2], k.ev_speed)
         return ShotResult(STATUS_NAMES[k.status], float(k.time), int(k.n_events), final, k.pocket, k.pocketed_at,
-                          events, self.name, traj, int(k.n_steps), int(k.n_tunnelled))
+                          events, self.name, traj, int(k.n_steps), int(k.n_tunnelled),
+                          motion_state=classify_all(vel, ang, radius, on) if self._spin else None)
 
 
 def simulate(

@@ -29,7 +29,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .codes import MS_ROLLING, MS_SLIDING, MS_SPINNING, MS_STATIONARY
+from .codes import MS_POCKETED, MS_ROLLING, MS_SLIDING, MS_SPINNING, MS_STATIONARY
 
 #: A slip below this fraction of ``|v| + R |(wx, wy)|`` is round-off: the ball rolls (or spins, or rests).
 SLIP_TOL = 1e-12
@@ -197,3 +197,14 @@ def sample_states(sc_t, sc_ball, sc_state, radius, n_balls, times, f_slide, f_ro
             for k in range(7):
                 out[q, b, k] = x[k]
     return out, on, code
+
+
+@njit(cache=True)
+def classify_all(vel, ang, radius, on_table):
+    """Every ball's motion state code (pocketed for a ball off the table)."""
+    n = vel.shape[0]
+    out = np.full(n, MS_POCKETED, np.int64)
+    for i in range(n):
+        if on_table[i]:
+            out[i] = classify(vel[i, 0], vel[i, 1], ang[i, 0], ang[i, 1], ang[i, 2], radius[i])
+    return out

@@ -174,7 +174,7 @@ def test_example_scene_runs_from_the_command_line(cli, example):
     assert len(doc["events"]) == doc["n_events"]
     times = [e["time"] for e in doc["events"]]
     assert times == sorted(times)
-    assert {e["kind"] for e in doc["events"]} <= {"collision", "cushion", "pocket", "stop"}
+    assert {e["kind"] for e in doc["events"]} <= {"collision", "cushion", "pocket", "stop", "roll", "spin"}
     # The command line and the Python API give the same numbers, to the last bit (JSON floats round-trip).
     res = scene.run()
     assert doc["status"] == res.status and doc["time"] == res.time and doc["n_events"] == res.n_events
