@@ -59,7 +59,8 @@ def test_unknown_section_is_refused(capsys):
 
 def test_committed_reports_are_what_the_renderers_make(tmp_path):
     """docs/bench/*.md are exactly the Markdown rendered from the JSON beside them (reports are generated, never
-    edited by hand; a change of format shows here)."""
+    edited by hand; a change of format shows here). After changing a renderer on purpose, re-write the reports
+    with ``python -m benchmarks --render-only``."""
     for name in ("speed.json", "speed_vs_error.json"):
         shutil.copy(DOCS / name, tmp_path / name)
     acc = json.loads((tmp_path / "speed_vs_error.json").read_text())
