@@ -12,6 +12,9 @@ Sections (``--only`` takes one, repeatable; default all):
   (:mod:`.first_call`); all in ``docs/bench/speed.md/.json``. ``speed.json`` keeps the sections of earlier runs
   that a run did not redo, each with its own time stamp.
 
+Not a section: ``python -m benchmarks.spin_crosscheck`` (:mod:`.spin_crosscheck`) compares the spin model with
+pooltool 0.6.0 scene by scene and prints the differences (evidence, no report file).
+
 Adding a section: write ``run_<name>(quick) -> dict`` (in :mod:`.speed` when its figures belong in
 ``speed.md``, else a module of its own with a ``main(out, quick)`` that writes its report), store its dict
 under a key of ``speed.json`` in :func:`.speed.main`, render it in :func:`.speed.render_markdown` (and a target
