@@ -10,14 +10,18 @@ env's job. The rules, and every simplification of the WPA rules: docs/rules.md.
 Example::
 
     from billiards_env.physics import Physics, Simulator, Table
-    from billiards_env.rules import NineBall, ShotInfo, ball_numbers, summarize_arrays
+    from billiards_env.physics.layout import rack_balls
+    from billiards_env.rules import EightBall, ShotInfo, ball_numbers, summarize_arrays
 
-    rules = NineBall()
+    table = Table()
+    sim = Simulator(table, Physics())
+    rules = EightBall()
     state = rules.initial_state(first_shooter=0)
-    status, t, n, pocket, events = sim.run_in_place(balls)          # one shot
-    summary = summarize_arrays(events, pocket, ball_numbers(balls.ids))
-    call = rules.call(state, summary, ShotInfo())
-    state = rules.next_state(state, call)                          # env: respot call.respot, place the cue ball
+    balls = rack_balls(table).strike("cue", angle=0.0, speed=8.0)
+    numbers = ball_numbers(balls.ids)                       # once per scene
+    status, t, n, pocket, events = sim.run_in_place(balls)  # one shot
+    call = rules.call(state, summarize_arrays(events, pocket, numbers), ShotInfo())
+    state = rules.next_state(state, call)  # the env respots call.respot and places the cue ball
 """
 from __future__ import annotations
 
