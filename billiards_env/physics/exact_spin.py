@@ -28,7 +28,7 @@ from .kernel_io import KernelResult
 from .roots import first_entry, quadratic_roots_in
 from .spin_collide import (is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
                            settle_on_cushion, wall_normal)
-from .spin_motion import advance, classify, piece_of, reach, spin_decay_rate, transition
+from .spin_motion import advance, classify, piece_of, reach, roll_on, slide_end, spin_decay_rate, transition
 
 # Columns of the per-ball motion table ``bs``: the state at the ball's last event (time T0), and its piece.
 T0, X, Y, VX, VY, WX, WY, WZ, AX, AY, DWX, DWY, ALPHA, TEND = range(14)
@@ -58,9 +58,12 @@ def _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin):
 
 @njit(cache=True)
 def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
-    """Start ball ``i`` on the piece its stored state calls for."""
-    _set_piece(bs, st, i, classify(bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ], r), r, f_slide, f_roll,
-               f_spin)
+    """Start ball ``i`` on the piece its stored state calls for (a ball found rolling, its slip round-off, is
+    put on rolling by :func:`.spin_motion.roll_on`)."""
+    state = classify(bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ], r)
+    if state == MS_ROLLING:
+        bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY] = roll_on(bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], r)
+    _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin)
 
 
 @njit(cache=True)
@@ -197,9 +200,35 @@ def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
 
 
 @njit(cache=True)
-def _copy_motion(bs, st, src, dst, radius):
-    """Give ball ``dst`` the piece of ``src`` (same velocity, same surface velocity ``R (wx, wy)``, same
-    acceleration and end), so a merged pair or cluster moves as one: its gaps stay exactly as they are."""
+def _slow_run(i, j, slow, slow_with, slow_runs):
+    """Count a collision of ``i`` and ``j`` towards their run of slow re-contacts (closing slower than the speed
+    floor, one after another with no faster one between); returns the run's length (0 after a fast one).
+
+    A ball that keeps pushing another one (friction drives it on, say a rolling ball without rolling
+    resistance behind a sliding one) hits it again and again at ever smaller speeds, but with pauses too long
+    for the jam's burst count. More than ``JAM_EVENTS`` such hits in a row are a sustained contact: the pair is
+    merged by the pressed-pair rule."""
+    if not slow:
+        slow_runs[i] = 0
+        slow_runs[j] = 0
+        return 0
+    for a, b in ((i, j), (j, i)):
+        if slow_with[a] == b:
+            slow_runs[a] += 1
+        else:
+            slow_with[a] = b
+            slow_runs[a] = 1
+    return min(slow_runs[i], slow_runs[j])
+
+
+@njit(cache=True)
+def _copy_motion(bs, st, src, dst, radius, f_slide, f_roll, f_spin):
+    """Give ball ``dst``, which has the velocity and surface velocity ``R (wx, wy)`` of ``src``, the piece of
+    ``src`` (acceleration and end), so a merged pair or cluster moves as one: its gaps stay exactly as they
+    are. Each keeps its own ``wz``; so balls that do not move are classified on their own (spinning or not)."""
+    if st[src] != MS_SLIDING and st[src] != MS_ROLLING:
+        _classify_piece(bs, st, dst, radius[dst], f_slide, f_roll, f_spin)
+        return
     k = radius[src] / radius[dst]
     bs[dst, VX] = bs[src, VX]
     bs[dst, VY] = bs[src, VY]
@@ -297,7 +326,7 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
         if h == 0:
             _classify_piece(bs, st, m, radius[m], f_slide, f_roll, f_spin)
         else:
-            _copy_motion(bs, st, first, m, radius)
+            _copy_motion(bs, st, first, m, radius, f_slide, f_roll, f_spin)
     return count
 
 
@@ -344,6 +373,8 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     st = np.full(n, MS_POCKETED, np.int64)
     t_hit = np.full(n, -math.inf)  # time of each ball's last collision (ball or cushion)
     burst = np.zeros(n, np.int64)  # collisions of each ball in its current contact cluster
+    slow_with = np.full(n, -1, np.int64)  # each ball's partner in its current run of slow re-contacts
+    slow_runs = np.zeros(n, np.int64)  # and the length of that run
     pocket_of = np.full(n, -1, np.int64)
     pocket_time = np.full(n, np.nan)
     for i in range(n):
@@ -453,10 +484,13 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 if dist > 0.0:
                     speed = resolve_ball_ball_spin(cv, cw, 0, 1, dx / dist, dy / dist, mass[bi], mass[bj],
                                                    radius[bi], radius[bj], e_b, mu_b, floor, clustered)
-                    if is_pressed_pair(cv, cw, 0, 1, dx, dy, radius[bi], radius[bj], f_slide, f_roll, f_spin,
-                                       floor):
+                    pushing = _slow_run(bi, bj, speed < floor, slow_with, slow_runs) > JAM_EVENTS
+                    if pushing or is_pressed_pair(cv, cw, 0, 1, dx, dy, radius[bi], radius[bj], f_slide, f_roll,
+                                                  f_spin, floor):
                         merge_pair(cv, cw, 0, 1, mass[bi], mass[bj], radius[bi], radius[bj])
                         merged = True
+                        slow_runs[bi] = 0
+                        slow_runs[bj] = 0
                 for q in range(2):
                     m = bi if q == 0 else bj
                     bs[m, VX] = cv[q, 0]
@@ -466,7 +500,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                     bs[m, WZ] = cw[q, 2]
                 _classify_piece(bs, st, bi, radius[bi], f_slide, f_roll, f_spin)
                 if merged:
-                    _copy_motion(bs, st, bi, bj, radius)
+                    _copy_motion(bs, st, bi, bj, radius, f_slide, f_roll, f_spin)
                 else:
                     _classify_piece(bs, st, bj, radius[bj], f_slide, f_roll, f_spin)
                 involved[1] = bj
@@ -526,7 +560,19 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
             pocket_of[bi] = bj
             pocket_time[bi] = t
         else:  # the ball's motion transition
-            _move_to(bs, bi, t)
+            if st[bi] == MS_SLIDING:  # the end of the slide in closed form (T0 is the slide's start)
+                x, y, vx, vy, wx, wy, wz = slide_end(bs[bi, X], bs[bi, Y], bs[bi, VX], bs[bi, VY], bs[bi, WX],
+                                                     bs[bi, WY], bs[bi, WZ], radius[bi], f_slide, f_spin)
+                bs[bi, X] = x
+                bs[bi, Y] = y
+                bs[bi, VX] = vx
+                bs[bi, VY] = vy
+                bs[bi, WX] = wx
+                bs[bi, WY] = wy
+                bs[bi, WZ] = wz
+                bs[bi, T0] = t
+            else:
+                _move_to(bs, bi, t)
             nxt = transition(st[bi], bs[bi, VX], bs[bi, VY], bs[bi, WZ])
             _set_piece(bs, st, bi, nxt, radius[bi], f_slide, f_roll, f_spin)
             kind = EV_ROLL if nxt == MS_ROLLING else (EV_SPIN if nxt == MS_SPINNING else EV_STOP)

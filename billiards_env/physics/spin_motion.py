@@ -114,6 +114,31 @@ def advance(t: float, x: float, y: float, vx: float, vy: float, wx: float, wy: f
 
 
 @njit(cache=True)
+def roll_on(vx: float, vy: float, wx: float, wy: float, r: float) -> tuple:
+    """The rolling state ``(vx, vy, wx, wy)`` a slip ``u`` ends in: the friction impulse that stops the slip
+    changes ``v`` by ``-2u/7`` and ``R z^ x w`` by ``-5u/7`` (``I = 2/5 m R^2``), so ``(wx, wy) = z^ x v / R``
+    after it. This is where a slide ends, whatever its duration (``v0 - mu g t_slide u^ = v0 - 2 u0 / 7``),
+    and how a ball whose slip is round-off is put on rolling: the impulse never adds energy, as snapping
+    ``w`` to ``v`` could."""
+    ux, uy = slip(vx, vy, wx, wy, r)
+    vx -= ux * (2.0 / 7.0)
+    vy -= uy * (2.0 / 7.0)
+    return vx, vy, -vy / r, vx / r
+
+
+@njit(cache=True)
+def slide_end(x: float, y: float, vx: float, vy: float, wx: float, wy: float, wz: float, r: float, f_slide: float,
+              f_spin: float) -> tuple:
+    """The state ``(x, y, vx, vy, wx, wy, wz)`` at the end of the slide that starts from this state, in closed
+    form (the velocity by :func:`roll_on`, exact whatever the rounding of the end time)."""
+    c = piece_of(MS_SLIDING, vx, vy, wx, wy, wz, r, f_slide, 0.0, f_spin)
+    tau = c[9]
+    nx, ny, nwx, nwy = roll_on(vx, vy, wx, wy, r)
+    return (x + tau * (vx + 0.5 * c[5] * tau), y + tau * (vy + 0.5 * c[6] * tau), nx, ny, nwx, nwy,
+            wz_after(wz, tau, spin_decay_rate(r, f_spin)))
+
+
+@njit(cache=True)
 def transition(state: int, vx: float, vy: float, wz: float) -> int:
     """The motion state after the end of a ``state`` piece, from the ``v`` and ``wz`` :func:`advance` gives
     there. Sliding ends in rolling (the slip is 0 there), or, if ``v`` is exactly 0 then, like rolling ends: in

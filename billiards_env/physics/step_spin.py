@@ -30,7 +30,7 @@ from .exact_spin import N_STATE_COLS
 from .kernel_io import KernelResult
 from .spin_collide import (acceleration, is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
                            settle_on_cushion, wall_normal)
-from .spin_motion import classify, slip, spin_decay_rate, wz_after
+from .spin_motion import classify, roll_on, slip, spin_decay_rate, wz_after
 from .step import _put_event
 
 
@@ -73,8 +73,7 @@ def _friction_step(vel, ang, i, r, dt, f_slide, f_roll, alpha):
         ux, uy = slip(vx, vy, wx, wy, r)
         su = math.hypot(ux, uy)
         if 3.5 * f_slide * dt >= su:  # the slip ends within the step: the ball rolls on
-            vx -= ux / 3.5
-            vy -= uy / 3.5
+            vx, vy, wx, wy = roll_on(vx, vy, wx, wy, r)
             state = MS_ROLLING
         else:
             hx = ux / su
@@ -85,6 +84,8 @@ def _friction_step(vel, ang, i, r, dt, f_slide, f_roll, alpha):
             ang[i, 0] = wx - k * hy
             ang[i, 1] = wy + k * hx
             return state
+    elif state == MS_ROLLING:  # put exactly on rolling (its slip is round-off)
+        vx, vy, wx, wy = roll_on(vx, vy, wx, wy, r)
     if state == MS_ROLLING:
         s = math.hypot(vx, vy)
         s_new = s - f_roll * dt
