@@ -11,6 +11,8 @@ ENVS: dict[str, str] = {
     "BilliardsOneBall-v0": "billiards_env.envs.one_ball:OneBallEnv",
     "BilliardsThreeBalls-v0": "billiards_env.envs.three_balls:ThreeBallsEnv",
     "BilliardsRack-v0": "billiards_env.envs.rack:RackEnv",
+    "Billiards9Ball-v0": "billiards_env.envs.nine_ball:NineBallEnv",
+    "Billiards8Ball-v0": "billiards_env.envs.eight_ball:EightBallEnv",
 }
 #: Every registered id, in registration order.
 ENV_IDS: tuple[str, ...] = tuple(ENVS)

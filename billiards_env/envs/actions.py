@@ -2,7 +2,7 @@
 
 Every action is a ``Box(-1, 1)`` vector laid out as::
 
-    [aim, power]  (+ [side, top] with spin_action)  (+ [place_x, place_y] in games with ball in hand)
+    [aim, power]  (+ [side, top] with spin_action)  (+ [place_x, place_y] in games)  (+ [pocket] / [push])
 
 - ``aim`` depends on the type: :class:`AbsoluteAim` (``angle = pi a``), :class:`RelativeAim` (``pi a`` from the
   direction cue -> target ball), :class:`GhostAim` (the direction the target ball leaves in, ``a *
@@ -15,6 +15,10 @@ Every action is a ``Box(-1, 1)`` vector laid out as::
 - ``place_x``, ``place_y``: where the cue ball goes when the shooter has ball in hand, linearly over the allowed
   area; ignored otherwise. A point that overlaps a ball or leaves the area is moved to the nearest legal point
   (:func:`billiards_env.physics.layout.nearest_free_point`).
+- ``pocket`` (8-ball with called 8s): the pocket called for the 8, ``k = floor((a + 1) / 2 * n_pockets)`` (the
+  table's pocket order); read only when the shooter is on the 8.
+- ``push`` (9-ball with push-outs): ``a > 0`` declares a push-out when one is allowed, and after the opponent's
+  push-out hands the shot back; ignored otherwise.
 
 Finite values outside ``[-1, 1]`` are clipped (a policy outputs anything); NaN/inf or a wrong number of values
 raise ``ValueError``. Any array holding the right number of values is accepted (``(2,)``, ``(1, 2)``...).
@@ -37,13 +41,16 @@ if TYPE_CHECKING:  # pragma: no cover
 class CueShot(NamedTuple):
     """One shot as played (before noise): cue direction ``angle`` (rad, 0 = +x, counter-clockwise), ``speed``
     (m/s), tip offsets ``side`` and ``top`` (fractions of R), and the cue ball's placement ``place`` (x, y) when
-    the shooter has ball in hand (else None)."""
+    the shooter has ball in hand (else None); ``pocket`` and ``push``: a game's declarations (see the module
+    docstring)."""
 
     angle: float
     speed: float
     side: float = 0.0
     top: float = 0.0
     place: tuple[float, float] | None = None
+    pocket: int | None = None  #: the pocket called for the 8 (8-ball)
+    push: bool = False  #: declare a push-out / hand the shot back (9-ball)
 
 
 def _clip(v: float) -> float:
@@ -73,16 +80,21 @@ class ActionType:
 
     name = "absolute"
 
-    def __init__(self, config: "EnvConfig", placement: bool = False) -> None:
+    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+                 n_pockets: int = 6) -> None:
         self.speed_lo = float(config.speed_min)
         self.speed_span = float(config.speed_max - config.speed_min)
         self.spin = bool(config.spin_action)
         self.max_tip = float(config.max_tip_offset)
         self.placement = bool(placement)
-        self.n = 2 + (2 if self.spin else 0) + (2 if self.placement else 0)
-        self.space = spaces.Box(-1.0, 1.0, shape=(self.n,), dtype=np.float32)
+        self.declarations = tuple(declarations)
+        self.n_pockets = int(n_pockets)
         self._spin_at = 2
         self._place_at = 4 if self.spin else 2
+        at = self._place_at + (2 if self.placement else 0)
+        self._declare_at = {name: at + k for k, name in enumerate(self.declarations)}
+        self.n = at + len(self.declarations)
+        self.space = spaces.Box(-1.0, 1.0, shape=(self.n,), dtype=np.float32)
 
     # --- the aim component (a subclass's part) ----------------------------------------------------------------
     def angle(self, env: "BilliardsEnv", a: float) -> float:
@@ -111,8 +123,8 @@ class ActionType:
         return [_clip(v) for v in values]
 
     def layout(self) -> str:
-        names = ["aim", "power"] + (["side", "top"] if self.spin else []) + (["place_x", "place_y"]
-                                                                             if self.placement else [])
+        names = ["aim", "power"] + (["side", "top"] if self.spin else []) \
+            + (["place_x", "place_y"] if self.placement else []) + list(self.declarations)
         return ", ".join(names)
 
     def shot(self, env: "BilliardsEnv", action: Any) -> CueShot:
@@ -123,21 +135,25 @@ class ActionType:
         if self.spin:
             u, v = square_to_disc(a[self._spin_at], a[self._spin_at + 1])
             side, top = self.max_tip * u, self.max_tip * v
-        place = None
+        pocket = None
+        if "pocket" in self._declare_at:
+            pocket = min(int(0.5 * (a[self._declare_at["pocket"]] + 1.0) * self.n_pockets), self.n_pockets - 1)
+        push = "push" in self._declare_at and a[self._declare_at["push"]] > 0.0
         area = env.task.ball_in_hand_area(env) if self.placement else None
         if area is None:
-            return CueShot(self.angle(env, a[0]), speed, side, top, None)
+            return CueShot(self.angle(env, a[0]), speed, side, top, None, pocket, push)
         x0, x1, y0, y1 = area
         k = self._place_at
         place = env.legal_cue_position(x0 + 0.5 * (a[k] + 1.0) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1.0) * (y1 - y0))
         with env.cue_moved_to(place):  # the aim is relative to where the cue ball will be
             angle = self.angle(env, a[0])
-        return CueShot(angle, speed, side, top, place)
+        return CueShot(angle, speed, side, top, place, pocket, push)
 
     def action(self, env: "BilliardsEnv", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
-               place: tuple[float, float] | None = None) -> np.ndarray:
+               place: tuple[float, float] | None = None, pocket: int | None = None,
+               push: bool = False) -> np.ndarray:
         """The action of a shot (inverse of :meth:`shot`); speeds outside the range clip, extra dims not given
-        take neutral values (no spin; the placement dims the middle of the area)."""
+        take neutral values (no spin; the placement dims the middle of the area; pocket 0; no push-out)."""
         for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
             if not math.isfinite(float(v)):
                 raise ValueError(f"action_from_shot: {name} must be finite, got {v!r}")
@@ -154,6 +170,11 @@ class ActionType:
         out[1] = 2.0 * (float(speed) - self.speed_lo) / self.speed_span - 1.0
         if self.spin:
             out[self._spin_at], out[self._spin_at + 1] = disc_to_square(side / self.max_tip, top / self.max_tip)
+        if "pocket" in self._declare_at:
+            k = 0 if pocket is None else min(max(int(pocket), 0), self.n_pockets - 1)
+            out[self._declare_at["pocket"]] = (2.0 * k + 1.0) / self.n_pockets - 1.0
+        if "push" in self._declare_at:
+            out[self._declare_at["push"]] = 1.0 if push else -1.0
         return np.clip(out, -1.0, 1.0).astype(np.float32)
 
 
@@ -190,8 +211,9 @@ class GhostAim(ActionType):
 
     name = "ghost"
 
-    def __init__(self, config: "EnvConfig", placement: bool = False) -> None:
-        super().__init__(config, placement)
+    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+                 n_pockets: int = 6) -> None:
+        super().__init__(config, placement, declarations, n_pockets)
         self.max_angle = math.radians(config.ghost_max_angle)
 
     def angle(self, env: "BilliardsEnv", a: float) -> float:
@@ -226,10 +248,11 @@ class GhostAim(ActionType):
 ACTION_TYPES = {"absolute": AbsoluteAim, "relative": RelativeAim, "ghost": GhostAim}
 
 
-def action_factory(config: "EnvConfig", placement: bool = False) -> ActionType:
-    """The action type named by ``config.action_type`` (with spin dims per ``config.spin_action`` and placement
-    dims when the task has ball in hand)."""
-    return ACTION_TYPES[config.action_type](config, placement)
+def action_factory(config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+                   n_pockets: int = 6) -> ActionType:
+    """The action type named by ``config.action_type`` (with spin dims per ``config.spin_action``, placement dims
+    when the task has ball in hand, and the task's declarations)."""
+    return ACTION_TYPES[config.action_type](config, placement, declarations, n_pockets)
 
 
 __all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "ACTION_TYPES", "action_factory",

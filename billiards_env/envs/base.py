@@ -24,9 +24,11 @@ import numpy as np
 
 from billiards_env.physics.balls import Balls, validate_balls
 from billiards_env.physics.errors import SceneError
-from billiards_env.physics.layout import (RACK_ORDER, foot_spot, head_spot, head_string_x, nearest_free_point,
-                                          place_random, rack_rows, triangle_positions)
+from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_positions, foot_spot, head_spot,
+                                          head_string_x, nearest_free_point, place_random, rack_rows,
+                                          triangle_positions)
 from billiards_env.physics.simulate import Simulator
+from billiards_env.physics.spin_collide import strike_spin
 
 from .actions import CueShot, action_factory
 from .config import ConfigError, EnvConfig, load_config
@@ -79,16 +81,20 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                                           mass=c.ball_mass)
         self.shots = 0
         self.last_shot: tuple[float, float, float, float] | None = None
+        #: Tip offsets ``(side, top)`` of the last shot (fractions of R; spin model).
+        self.last_tip: tuple[float, float] = (0.0, 0.0)
         self._needs_reset = True
 
         self.task = task_factory(self)
-        self.action_type = action_factory(c, placement=self.task.has_ball_in_hand)
+        self.action_type = action_factory(c, self.task.has_ball_in_hand, self.task.declarations,
+                                          self.table.n_pockets)
         self.observation_type = observation_factory(self)
         self.action_space = self.action_type.space
         self.observation_space = self.observation_type.space
 
         # Fast path: Simulator.run_in_place on the live arrays (exact solver, no copies, no result objects).
         self._fast = c.solver.name == "exact"
+        self._spin = self.physics.friction == "spin"
         self._pockets = [(float(px), float(py)) for px, py in self.table.pocket_xy]
 
         # Fixed part of the starting layout (rack and/or head-spot cue), checked once here.
@@ -103,6 +109,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._renderer: Any = None
         self._window: Any = None
         self._frames: list[np.ndarray] = []
+        self._animations: list[Any] = []
 
     # ======================================================================================================
     # Gymnasium API
@@ -114,6 +121,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         super().reset(seed=seed)
         b = self.balls
         b.vel.fill(0.0)
+        b.ang.fill(0.0)
         b.on_table.fill(True)
         if options:
             self._set_positions(options)
@@ -141,8 +149,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         shot = self.action_type.shot(self, action)
         if shot.place is not None:
             self.balls.pos[0] = shot.place
+        self.task.before_shot(self, shot)
         outcome, trajectory, played = self.play_shot(shot)
         self.shots += 1
+        self._animations = []
         reward, terminated, truncated, info = self.task.on_shot(self, outcome)
         info.update({
             "pocketed": tuple(self.ball_ids[i] for i in outcome.pocketed),
@@ -158,7 +168,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         if self.action_type.spin:
             info["side"], info["top"] = played.side, played.top
         if self._record:
-            self._animate(trajectory)
+            later = self._animations
+            self._animate(trajectory, final=not later)
+            for k, traj in enumerate(later):  # the opponent's reply in a game
+                self._animate(traj, final=k == len(later) - 1)
         self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
         return self.observation_type.observe(self), reward, terminated, truncated, info
 
@@ -182,7 +195,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         x0, y0 = float(b.pos[0, 0]), float(b.pos[0, 1])
         b.vel[0, 0] = speed * math.cos(angle)
         b.vel[0, 1] = speed * math.sin(angle)
+        if self._spin:
+            b.ang[0] = strike_spin(angle, speed, side, top, float(b.radius[0]))[2:]
         self.last_shot = (x0, y0, angle, speed)
+        self.last_tip = (side, top)
 
         trajectory = None
         if self._fast and not self._record:
@@ -197,8 +213,15 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             ev_int = np.stack([ev.kind, ev.ball, ev.other], axis=1) if len(ev) else np.zeros((0, 3), np.int64)
             trajectory = res.trajectory
         b.vel.fill(0.0)  # at rest (a capped shot is stopped where it is)
+        if self._spin:
+            b.ang.fill(0.0)
         outcome = ShotOutcome.from_arrays(status, sim_time, n_events, pocket_of, ev_int)
         return outcome, trajectory, CueShot(angle, speed, side, top, shot.place)
+
+    def queue_animation(self, trajectory: Any) -> None:
+        """Animate a shot the task played within this step (an opponent's), after the agent's (recording modes)."""
+        if self._record and trajectory is not None:
+            self._animations.append(trajectory)
 
     def render(self) -> np.ndarray | list[np.ndarray] | None:
         """``rgb_array``: the table now, ``(H, W, 3) uint8`` (the last shot's cue line drawn).
@@ -232,11 +255,13 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         return self.action_type.shot(self, action)
 
     def action_from_shot(self, angle: float, speed: float, side: float = 0.0, top: float = 0.0,
-                         place: tuple[float, float] | None = None) -> np.ndarray:
+                         place: tuple[float, float] | None = None, pocket: int | None = None,
+                         push: bool = False) -> np.ndarray:
         """The action that strikes the cue ball at ``angle`` (rad, 0 = +x, CCW) and ``speed`` (m/s) with tip
-        offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand) in the active action type (inverse of
-        :meth:`shot_from_action`). Speeds outside [speed_min, speed_max] clip; dims not given are neutral."""
-        return self.action_type.action(self, angle, speed, side, top, place)
+        offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand), calling ``pocket`` for the 8 or
+        declaring ``push`` (games), in the active action type (inverse of :meth:`shot_from_action`). Speeds
+        outside [speed_min, speed_max] clip; dims not given are neutral."""
+        return self.action_type.action(self, angle, speed, side, top, place, pocket, push)
 
     def target_ball(self) -> int | None:
         """Row of the ball to hit first (the relative and ghost aim's target): the task's choice (the lowest-
@@ -287,6 +312,11 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             for slot, number in enumerate(order):
                 rows.append(number)
                 pts.append((float(tri[slot, 0]), float(tri[slot, 1])))
+        if c.placement == "diamond":
+            dia = diamond_positions(foot_spot(self.table), c.ball_radius, gap=c.rack_gap)
+            for slot, number in enumerate(DIAMOND_ORDER):
+                rows.append(number)
+                pts.append((float(dia[slot, 0]), float(dia[slot, 1])))
         return rows, np.array(pts, dtype=float).reshape(-1, 2)
 
     def _check_layout(self) -> None:
@@ -328,10 +358,11 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
 
     def _set_positions(self, options: dict[str, Any]) -> None:
         b = self.balls
-        unknown = sorted(set(options) - {"positions", "pocketed"})
+        unknown = sorted(set(options) - {"positions", "pocketed"} - set(self.task.option_keys))
         if unknown:
+            extra = "".join(f", {k!r}" for k in self.task.option_keys)
             raise ValueError(f"reset options: unknown key(s) {unknown}; allowed: 'positions' ((N,2) metres, rows "
-                             "cue, 1..n) and 'pocketed' ((N,) bool)")
+                             f"cue, 1..n), 'pocketed' ((N,) bool){extra}")
         if "positions" in options:
             p = np.asarray(options["positions"], dtype=float)
             if p.shape != (self.n_balls, 2):
@@ -389,22 +420,26 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         times[-1] = duration
         return times
 
-    def _animate(self, trajectory: Any) -> None:
-        """Draw the shot just simulated: frames at :meth:`animation_times` of its trajectory, the last one
-        being the state after the shot (cue ball re-spotted if it was pocketed)."""
+    def _animate(self, trajectory: Any, final: bool = True) -> None:
+        """Draw a shot just simulated: frames at :meth:`animation_times` of its trajectory; the last one is the
+        state after the shot (``final``: the table now, cue ball re-spotted if it was pocketed; else the
+        trajectory's own end, when another shot follows in the same step)."""
         if trajectory is None:  # pragma: no cover - the record path always has one
             return
         times = self.animation_times(trajectory.duration)
-        pos, on = trajectory.sample(times[:-1]) if len(times) > 1 else (np.zeros((0, self.n_balls, 2)), None)
+        shown = times[:-1] if final else times
+        pos, on = trajectory.sample(shown) if len(shown) else (np.zeros((0, self.n_balls, 2)), None)
         if self.render_mode == "rgb_array_list":
             for k in range(len(pos)):
                 self._frames.append(self._draw_state(pos[k], on[k]))
-            self._frames.append(self._draw_state())
+            if final:
+                self._frames.append(self._draw_state())
         else:
             for k in range(len(pos)):
                 if not self._show((pos[k], on[k])):
                     return
-            self._show(None)
+            if final:
+                self._show(None)
 
     def _show(self, state: tuple[np.ndarray, np.ndarray] | None) -> bool:
         """Human mode: show one frame (``state`` or now) at render_fps, as soon as it is drawn; False once the

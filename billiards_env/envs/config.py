@@ -41,11 +41,13 @@ from billiards_env.physics.table import Table
 #: Directory of the packaged scene files (one per registered id).
 SCENES_DIR = Path(__file__).resolve().parent / "scenes"
 
-PLACEMENTS = ("random", "rack")
+PLACEMENTS = ("random", "rack", "diamond")
 CUE_PLACEMENTS = ("random", "kitchen", "head_spot")
 ACTION_TYPES = ("absolute", "relative", "ghost")
 OBSERVATION_TYPES = ("positions", "features")
-TASKS = ("pot",)
+TASKS = ("pot", "nine_ball", "eight_ball")
+OPPONENTS = ("geometric", "search", "random")
+FIRST_SHOOTERS = ("agent", "opponent", "random")
 MAX_OBJECT_BALLS = 15
 #: The sections shared with scene files, and the parser of each.
 SECTIONS = {"table": parse_table, "physics": parse_physics, "solver": parse_solver}
@@ -75,9 +77,10 @@ class EnvConfig:
     n_object_balls: int = _doc("Object balls besides the cue ball (1-15); ids '1'..'n', observation order.",
                                default=1)
     placement: str = _doc("How object balls start: 'random' (uniform, non-overlapping, clear of cushions and "
-                          "pockets, drawn from the env's np_random at every reset) or 'rack' (a touching triangle "
-                          "at the foot spot, apex towards the cue; the standard 15-ball order when n = 15).",
-                          default="random")
+                          "pockets, drawn from the env's np_random at every reset), 'rack' (a touching triangle "
+                          "at the foot spot, apex towards the cue; the standard 15-ball order when n = 15; the games "
+                          "shuffle it as the rules say) or 'diamond' (the 9-ball diamond: 1 at the apex, 9 in the "
+                          "middle).", default="random")
     cue_placement: str = _doc("Where the cue ball starts: 'random' (anywhere, like the object balls), 'kitchen' "
                               "(random behind the head string, x < length/4) or 'head_spot' (length/4, width/2).",
                               default="random")
@@ -133,8 +136,8 @@ class EnvConfig:
                                  default="positions")
 
     # --- task: reward and episode ---------------------------------------------------------------------------------
-    task: str = _doc("What the episode asks: 'pot' (pocket the object balls; success when the table is cleared).",
-                     default="pot")
+    task: str = _doc("What the episode asks: 'pot' (pocket the object balls; success when the table is cleared), "
+                     "'nine_ball' or 'eight_ball' (a game under its rules against an opponent).", default="pot")
     pot_reward: float = _doc("Reward per object ball pocketed.", default=1.0)
     scratch_penalty: float = _doc("Subtracted when the cue ball is pocketed (then re-spotted).", default=1.0)
     miss_penalty: float = _doc("Subtracted when the cue ball touches no ball.", default=0.0)
@@ -142,6 +145,20 @@ class EnvConfig:
     single_shot: bool = _doc("True: the episode terminates after one shot whatever happens.", default=False)
     max_shots: int = _doc("Shot limit: the episode is truncated after this many shots if the table is not "
                           "cleared.", default=15)
+
+    # --- games (task 'nine_ball' / 'eight_ball') ------------------------------------------------------------------
+    opponent: str | None = _doc("Games: the opponent's policy, 'geometric', 'search' or 'random' (a player of "
+                                "billiards_env.players; env.unwrapped.set_opponent(policy) sets any other), or None: "
+                                "play alone, the episode ends at the first foul or miss (run-out practice).",
+                                default="geometric")
+    first_shooter: str = _doc("Games: who breaks: 'agent', 'opponent' or 'random' (drawn at every reset).",
+                              default="agent")
+    rules: dict = _doc("Games: options of the ruleset (billiards_env.rules NineBallOptions / EightBallOptions), "
+                       "e.g. {push_out: true} or {call_eight: false}; the env defaults are the rules' own, except "
+                       "push_out false.", default_factory=dict)
+    win_reward: float = _doc("Games: reward when the agent wins the game.", default=1.0)
+    loss_penalty: float = _doc("Games: subtracted when the agent loses the game.", default=1.0)
+    foul_penalty: float = _doc("Games (shaping): subtracted for each foul of the agent; 0 = off.", default=0.0)
 
     # --- rendering --------------------------------------------------------------------------------------------
     render_width: int = _doc("Width (px) of rendered frames; the height follows the table's aspect.", default=800)
@@ -352,6 +369,12 @@ def _coerce(key: str, value: Any) -> Any:
         return value
     if tname == "str" and not isinstance(value, str):
         raise ConfigError(f"{key}: expected a string, got {value!r}")
+    if tname == "str | None" and value is not None and not isinstance(value, str):
+        raise ConfigError(f"{key}: expected a string or null, got {value!r}")
+    if tname == "dict":
+        if not isinstance(value, Mapping):
+            raise ConfigError(f"{key}: expected a mapping, got {type(value).__name__} {value!r}")
+        return dict(value)
     return value
 
 
@@ -385,8 +408,25 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _choice(cfg, "action_type", ACTION_TYPES)
     _choice(cfg, "observation_type", OBSERVATION_TYPES)
     _choice(cfg, "task", TASKS)
+    _choice(cfg, "first_shooter", FIRST_SHOOTERS)
+    _require(cfg.opponent is None or cfg.opponent in OPPONENTS, "opponent",
+             f"unknown player {cfg.opponent!r}; use one of {', '.join(map(repr, OPPONENTS))} or None (play alone)")
+    if cfg.task in ("nine_ball", "eight_ball"):
+        from billiards_env.rules import RulesError
+        from billiards_env.envs.games import game_spec
+
+        spec = game_spec(cfg.task)
+        _require(cfg.n_object_balls == spec.n_balls, "n_object_balls",
+                 f"{cfg.task} is played with {spec.n_balls} object balls, got {cfg.n_object_balls}")
+        try:
+            spec.options(cfg.rules)
+        except (RulesError, TypeError) as exc:
+            raise ConfigError(f"rules: {exc}") from None
+    else:
+        _require(not cfg.rules, "rules", "only the games (task 'nine_ball' or 'eight_ball') have rules")
     for key in ("cushion_margin", "pocket_margin", "ball_gap", "rack_gap", "angle_noise", "speed_noise", "tip_noise",
-                "pot_reward", "scratch_penalty", "miss_penalty", "step_penalty"):
+                "pot_reward", "scratch_penalty", "miss_penalty", "step_penalty", "win_reward", "loss_penalty",
+                "foul_penalty"):
         v = getattr(cfg, key)
         _require(v >= 0, key, f"must be >= 0, got {v}" + (
             " (penalties are magnitudes: a positive value is subtracted from the reward)" if "penalty" in key else ""))
@@ -416,6 +456,10 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     if cfg.placement == "random":
         free = min(t.length, t.width) - 2 * (r + cfg.cushion_margin)
         _require(free > 0, "cushion_margin", f"{cfg.cushion_margin} m leaves no room on the table; lower it")
+    elif cfg.placement == "diamond":
+        _require(n == 9, "placement", f"'diamond' racks 9 object balls, got n_object_balls {n}")
+        _require(rack_fits(t, 15, r, cfg.rack_gap), "rack_gap",
+                 f"a diamond with gap {cfg.rack_gap} m does not fit on the table; lower rack_gap")
     else:
         _require(rack_fits(t, n, r, cfg.rack_gap), "rack_gap",
                  f"a {n}-ball rack with gap {cfg.rack_gap} m does not fit on the table; lower rack_gap")

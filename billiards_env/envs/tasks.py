@@ -54,6 +54,10 @@ class Task:
     name = "task"
     #: Whether the shooter can get ball in hand (the action then has the placement dims).
     has_ball_in_hand = False
+    #: Extra keys of ``reset(options=...)`` the task reads (besides ``positions`` and ``pocketed``).
+    option_keys: tuple[str, ...] = ()
+    #: Declarations the action carries (``"pocket"``: the 8's called pocket; ``"push"``: a 9-ball push-out).
+    declarations: tuple[str, ...] = ()
 
     def __init__(self, env: "BilliardsEnv") -> None:
         self.config = env.config
@@ -74,6 +78,9 @@ class Task:
         """The rectangle ``(x0, x1, y0, y1)`` where the shooter may place the cue ball now, or None (no ball in
         hand)."""
         return None
+
+    def before_shot(self, env: "BilliardsEnv", shot: Any) -> None:
+        """Called with the shot (a :class:`~.actions.CueShot`) before it is played (a game reads the declarations)."""
 
     def feature_bounds(self, env: "BilliardsEnv") -> tuple[np.ndarray, np.ndarray]:
         """Bounds of the task's observation features (none by default)."""
@@ -113,12 +120,13 @@ class PotTask(Task):
         return float(reward), terminated, truncated, {"is_success": bool(cleared and not outcome.scratch)}
 
 
-TASKS = {"pot": PotTask}
-
-
 def task_factory(env: "BilliardsEnv") -> Task:
-    """The task named by ``env.config.task``."""
-    return TASKS[env.config.task](env)
+    """The task named by ``env.config.task`` (``pot``, or a game: ``nine_ball``, ``eight_ball``)."""
+    if env.config.task == "pot":
+        return PotTask(env)
+    from .games import EightBallTask, NineBallTask
+
+    return {"nine_ball": NineBallTask, "eight_ball": EightBallTask}[env.config.task](env)
 
 
-__all__ = ["ShotOutcome", "first_contact", "Task", "PotTask", "TASKS", "task_factory"]
+__all__ = ["ShotOutcome", "first_contact", "Task", "PotTask", "task_factory"]

@@ -14,6 +14,9 @@ import billiards_env  # noqa: E402,F401  (registers the ids)
 from billiards_env.registration import ENV_IDS  # noqa: E402
 
 IDS = list(ENV_IDS)
+#: The pot-the-balls scenes (one ball, three balls, rack) and the games.
+POT_IDS = ["BilliardsOneBall-v0", "BilliardsThreeBalls-v0", "BilliardsRack-v0"]
+GAME_IDS = [i for i in IDS if i not in POT_IDS]
 RENDER_MODES = ["human", "rgb_array", "rgb_array_list"]
 #: Small frames and few of them: rendering tests stay fast (a 20 s shot becomes a handful of frames).
 FAST_RENDER = {"render_width": 160, "render_fps": 1000, "render_speedup": 5000.0}

@@ -11,7 +11,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from billiards_env.physics import Balls, Simulator  # noqa: E402
-from env_helpers import IDS, L, W, corner_pot_scene, scratch_scene  # noqa: E402
+from env_helpers import IDS, POT_IDS, L, W, corner_pot_scene, scratch_scene  # noqa: E402
 
 
 def rollout(env, seed, actions):
@@ -38,7 +38,8 @@ def same(a, b):
 # --- seeding --------------------------------------------------------------------------------------------------
 @pytest.mark.parametrize("env_id", IDS)
 def test_same_seed_same_trajectory_bit_for_bit(env_id):
-    actions = np.random.default_rng(7).uniform(-1, 1, (6, 2)).astype(np.float32)
+    n_act = gym.make(env_id).action_space.shape[0]
+    actions = np.random.default_rng(7).uniform(-1, 1, (6, n_act)).astype(np.float32)
     kw = {"angle_noise": 0.02, "speed_noise": 0.05, "cue_placement": "kitchen"} if env_id != "BilliardsOneBall-v0" \
         else {"angle_noise": 0.02, "speed_noise": 0.05}
     a = rollout(gym.make(env_id, **kw), 11, actions)
@@ -193,7 +194,7 @@ def test_multi_shot_episode_terminates_when_cleared_and_truncates_at_the_limit()
 
 
 # --- the fast path is the simulator ---------------------------------------------------------------------------
-@pytest.mark.parametrize("env_id", IDS)
+@pytest.mark.parametrize("env_id", POT_IDS)  # (a game's step also plays the opponent's reply)
 def test_fast_step_matches_simulator_run(env_id):
     """``step`` runs the exact kernel in place; the result equals ``Simulator.run`` on the same shot."""
     env = gym.make(env_id).unwrapped
