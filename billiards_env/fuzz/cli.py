@@ -1,6 +1,7 @@
 """The fuzz command: run random shots in worker processes, check every one, summarise, save the failing cases.
 
-``python -m billiards_env.fuzz --shots 100000 [--seed S] [--solver exact|step|both] [--workers 2] [--out DIR]``;
+``python -m billiards_env.fuzz --shots 100000 [--seed S] [--solver exact|step|both] [--spin P] [--workers 2]
+[--out DIR]`` (``--spin``: the share of spin-model shots, 0 by default; 1 for spin only);
 ``--check FILE`` runs one scene file and prints its violations; ``--shrink FILE`` prints a smaller scene that
 still fails. A failing case is saved as a scene file under ``--out`` (so that ``billiards-sim FILE --events``
 reproduces it) and listed with its violations in ``--out/violations.jsonl``.
@@ -99,12 +100,13 @@ class Stats:
 
 
 def _run_chunk(args: tuple) -> Stats:
-    seed, lo, hi, mode, max_time, max_events, keep = args
+    seed, lo, hi, mode, max_time, max_events, keep, spin = args
     stats = Stats()
     for idx in range(lo, hi):
         rng = shot_rng(seed, idx)
         solver = _solver_for(mode, rng)
-        scene_dict = random_scene(NumpySource(rng), solver=solver, max_time=max_time, max_events=max_events)
+        scene_dict = random_scene(NumpySource(rng), solver=solver, max_time=max_time, max_events=max_events,
+                                  spin=spin)
         rep, _ = run_case(scene_dict)
         stats.add(rep, scene_dict, f"seed{seed}-shot{idx}", keep_failure=len(stats.failures) < keep)
     return stats
@@ -114,7 +116,8 @@ def _warm_up() -> None:
     """Compile (or load from cache) the numba kernels once per process before timing."""
     rng = shot_rng(0, 0)
     for solver in ("exact", "step"):
-        run_case(random_scene(NumpySource(rng), solver=solver, max_time=1.0))
+        for spin in (0.0, 1.0):
+            run_case(random_scene(NumpySource(rng), solver=solver, max_time=1.0, spin=spin))
 
 
 def format_summary(stats: Stats, wall: float) -> str:
@@ -161,6 +164,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--seed", type=int, default=0, help="run seed; shot i of seed S is reproducible alone")
     p.add_argument("--solver", choices=("exact", "step", "both"), default="exact",
                    help="solver of every shot; 'both' draws one per shot")
+    p.add_argument("--spin", type=float, default=0.0,
+                   help="share of shots under the spin model (0 by default: rolling and drag only, the same shots "
+                        "as before the spin model for a given seed; 1: spin only)")
     p.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
     p.add_argument("--out", default="fuzz-failures", help="folder for failing cases (scene files)")
     p.add_argument("--max-time", type=float, default=None,
@@ -193,8 +199,11 @@ def main(argv: list[str] | None = None) -> int:
             print(f"  {name}: {msg}", file=sys.stderr)
         return 1 if rep.violations else 0
     out = Path(args.out)
+    if not 0.0 <= args.spin <= 1.0:
+        print("fuzz: --spin is a share of the shots, in [0, 1]", file=sys.stderr)
+        return 2
     chunks = [(args.seed, lo, min(lo + args.chunk, args.start + args.shots), args.solver, args.max_time,
-               args.max_events, args.keep) for lo in range(args.start, args.start + args.shots, args.chunk)]
+               args.max_events, args.keep, args.spin) for lo in range(args.start, args.start + args.shots, args.chunk)]
     total = Stats()
     _warm_up()
     t0 = time.perf_counter()
@@ -222,7 +231,7 @@ def main(argv: list[str] | None = None) -> int:
             pool.close()
             pool.join()
     wall = time.perf_counter() - t0
-    print(f"fuzz: seed {args.seed}, solver {args.solver}, workers {args.workers}")
+    print(f"fuzz: seed {args.seed}, solver {args.solver}, spin share {args.spin:g}, workers {args.workers}")
     print(format_summary(total, wall))
     if saved:
         print(f"failing cases: {len(saved)} scene files under {out}/ (index: {out}/violations.jsonl); "

@@ -134,10 +134,12 @@ def _rack(src: Source, n: int, r: float, length: float, width: float) -> list[tu
 
 
 def random_scene(src: Source, solver: str | None = None, max_time: float | None = None,
-                 max_events: int = DEFAULT_MAX_EVENTS) -> dict[str, Any]:
+                 max_events: int = DEFAULT_MAX_EVENTS, spin: float = 0.0) -> dict[str, Any]:
     """A random scene dict in the scene-file format, with a shot and solver settings.
 
-    ``solver``: ``"exact"``, ``"step"`` or None (drawn). The cue is ball 0 (id ``"cue"``).
+    ``solver``: ``"exact"``, ``"step"`` or None (drawn). The cue is ball 0 (id ``"cue"``). ``spin``: the chance
+    that the scene uses the spin model (:func:`spin_physics`); its draws come after all the others, so with the
+    default 0 a seed gives the same rolling/drag scenes as before the spin model existed.
     """
     length, width, r = L_DEFAULT, W_DEFAULT, R_DEFAULT
     # table
@@ -195,7 +197,36 @@ def random_scene(src: Source, solver: str | None = None, max_time: float | None 
         solver_d["contact"] = src.choice(CONTACT_MODES)
     if max_time is None:
         max_time = DEFAULT_MAX_TIME if solver == "exact" else DEFAULT_STEP_MAX_TIME
-    return {"table": table, "physics": physics, "balls": balls,
-            "shot": {"ball": "cue", "angle": float(angle), "speed": float(speed)},
-            "solver": solver_d, "max_time": float(max_time), "max_events": int(max_events)}
+    scene = {"table": table, "physics": physics, "balls": balls,
+             "shot": {"ball": "cue", "angle": float(angle), "speed": float(speed)},
+             "solver": solver_d, "max_time": float(max_time), "max_events": int(max_events)}
+    if spin >= 1.0 or (spin > 0.0 and src.chance(spin)):
+        spin_physics(src, scene)
+    return scene
+
+
+def spin_physics(src: Source, scene: dict[str, Any]) -> None:
+    """Turn ``scene`` (from :func:`random_scene`) into a spin-model scene, in place: random sliding, rolling and
+    spinning friction (the defaults, random values, now and then 0), ball-ball friction (throw) and cushion
+    friction, the ball restitution kept; a random tip offset anywhere on the disc ``side^2 + top^2 <= 0.25``
+    (its edge included); now and then object balls that already spin."""
+    e_b = scene["physics"]["ball_restitution"]
+
+    def friction(default: float, hi: float) -> float:  # now and then 0: that ball or spin never stops
+        return 0.0 if src.chance(0.04) else float(src.choice((default, src.uniform(0.0, hi))))
+
+    scene["physics"] = {"friction": "spin", "ball_restitution": e_b, "mu_slide": friction(0.2, 0.5),
+                        "mu_roll": friction(0.01, 0.05), "mu_spin": friction(0.0127, 0.05),
+                        "ball_friction": float(src.choice((0.0, 0.0, 0.06, src.uniform(0.0, 0.5)))),
+                        "cushion_friction": friction(0.2, 1.0)}
+    radius = src.choice((0.0, src.uniform(0.0, 0.5), src.uniform(0.0, 0.5), 0.5))
+    phi = src.uniform(-math.pi, math.pi)
+    side, top = radius * math.cos(phi), radius * math.sin(phi)
+    if side * side + top * top > 0.25:  # rounding on the edge
+        side, top = side * (1 - 1e-15), top * (1 - 1e-15)
+    scene["shot"]["side"] = float(side)
+    scene["shot"]["top"] = float(top)
+    for ball in scene["balls"][1:]:
+        if src.chance(0.1):
+            ball["wx"], ball["wy"], ball["wz"] = (float(src.uniform(-100.0, 100.0)) for _ in range(3))
 

@@ -43,6 +43,8 @@ def shrink_case(scene_dict: dict[str, Any], invariant: str | None = None, max_ro
         simplifications = [("table", "pockets", ([],)), ("table", "cushion_restitution", (1.0, 0.0, 0.85)),
                            ("physics", "min_speed", (0.0,)), ("physics", "mu_roll", (0.01,)),
                            ("physics", "drag_k", (0.0, 1.0)), ("physics", "ball_restitution", (1.0, 0.0, 0.5)),
+                           ("physics", "mu_slide", (0.2,)), ("physics", "mu_spin", (0.0127,)),
+                           ("physics", "ball_friction", (0.0, 0.06)), ("physics", "cushion_friction", (0.2, 0.0)),
                            ("max_events", None, (2000,)), ("max_time", None, (10.0,))]
         for sec, key, values in simplifications:
             if (sec, key) in done:

@@ -15,7 +15,8 @@ Invariants (tolerances are the module constants below):
   the same at every event time and half-way between consecutive event times (a missed collision shows here).
 - ``energy`` (exact, per event from the state log): the kinetic energy of the two balls of a collision, or of the
   ball of a cushion hit, does not rise by more than ``ENERGY_REL_TOL`` relative. ``energy`` (step): the total
-  kinetic energy over the solver's snapshots never rises.
+  kinetic energy over the solver's snapshots never rises. Under the spin model the kinetic energy includes the
+  rotation (``I = 2/5 m R^2``) and every event is checked (motion transitions too).
 - ``momentum`` (exact, per collision): the pair's momentum is unchanged up to ``MOMENTUM_REL_TOL`` relative (plus
   ``m * min_speed`` for a ball stopped by the minimum-speed rule right after the hit).
 - ``contact`` (exact): two balls collide at contact distance (``|d - (r_i + r_j)| <= CONTACT_TOL``); a cushion hit
@@ -24,7 +25,10 @@ Invariants (tolerances are the module constants below):
   previous logged state puts it (up to ``CONTINUITY_TOL``): no jumps.
 - ``pocket``: a pocketed ball stays pocketed (its on-table flag never comes back), takes part in no later event,
   and the result's pocket list agrees with the final on-table flags.
-- ``status``: the shot ended with ``rest`` (then every ball on the table has zero velocity), ``time_cap`` (at
+- ``spin_state`` (spin model, exact): a transition leaves the state its kind names (``roll``: rolling, ``spin``:
+  spinning, ``stop``: stationary), and a logged rolling state does not slip.
+- ``status``: the shot ended with ``rest`` (then every ball on the table has zero velocity, and under the spin
+  model zero angular velocity), ``time_cap`` (at
   ``max_time``) or ``event_cap`` (exact, at ``max_events``); event times are ascending and within the cap.
 - ``zeno`` (exact): more than ``ZENO_BURST`` events at one instant (consecutive events less than ``ZENO_SPAN``
   apart), or an event cap reached while the last half of the events spans less than ``ZENO_SPAN``: endless
@@ -41,8 +45,11 @@ from typing import Any
 
 import numpy as np
 
-from .codes import EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, STATUS_NAMES
+from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP, MS_ROLLING, MS_SPINNING,
+                    MS_STATIONARY, SPIN, STATUS_NAMES)
+from .model import G
 from .scene import Scene
+from .spin_motion import carry_rows
 
 # --------------------------------------------------------------------------------------------- tolerances
 BOUNDS_TOL = 1e-9  #: a centre may sit this far outside [r, L - r] (m)
@@ -63,8 +70,11 @@ ZENO_SPAN = 1e-9  #: events closer than this (s) form one burst (one instant, up
 #: hundred at most); an event cap reached inside a burst is a Zeno hang.
 ZENO_BURST = 5000
 
+#: spin model: a logged rolling state may slip by this much relative to ``|v| + R |(wx, wy)|`` (round-off)
+ROLLING_SLIP_TOL = 1e-12
+
 INVARIANTS = ("exception", "finite", "bounds", "overlap", "overlap_during", "energy", "momentum", "contact",
-              "continuity", "pocket", "status", "zeno")
+              "continuity", "pocket", "status", "zeno", "spin_state")
 
 
 def step_overlap_tolerance(speed: float, dt: float) -> float:
@@ -189,7 +199,8 @@ def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
     speed0 = float(np.max(np.hypot(b0.vel[:, 0], b0.vel[:, 1]))) if n else 0.0
 
     # ---- finite
-    arrays = {"final pos": fin.pos, "final vel": fin.vel, "event time": ev.time, "event speed": ev.speed}
+    arrays = {"final pos": fin.pos, "final vel": fin.vel, "final ang": fin.ang, "event time": ev.time,
+              "event speed": ev.speed}
     if tr is not None:
         arrays["state log"] = tr.state
         arrays["state-log time"] = tr.times
@@ -204,7 +215,7 @@ def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
         rep.fail("status", f"unknown status {result.status!r}")
     on_f = np.asarray(fin.on_table, bool)
     if result.status == "rest":
-        mv = on_f & ((fin.vel[:, 0] != 0.0) | (fin.vel[:, 1] != 0.0))
+        mv = on_f & ((fin.vel[:, 0] != 0.0) | (fin.vel[:, 1] != 0.0) | np.any(fin.ang != 0.0, axis=1))
         if mv.any():
             rep.fail("status", f"status rest but balls {np.flatnonzero(mv).tolist()} still moving")
     elif result.status == "time_cap":
@@ -291,7 +302,7 @@ def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
     if exact:
         _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, sample_between)
     else:
-        _check_step_snapshots(rep, result, mass)
+        _check_step_snapshots(rep, result, mass, radius)
     return rep
 
 
@@ -322,13 +333,29 @@ def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, samp
         return
     st = tr.state
     p = prev[rows]
-    dt = tr.times[rows] - tr.times[p]
-    # closed-form state just before each logged event (pocketed balls do not move)
-    on_prev = st[p, 4] > 0.5
-    bx, by, bvx, bvy = _np_closed_form(st[p, 0], st[p, 1], np.where(on_prev, st[p, 2], 0.0),
-                                       np.where(on_prev, st[p, 3], 0.0), dt, law, a, k, v_min)
-    before = np.zeros((len(tr.times), 4))
-    before[rows] = np.stack([bx, by, bvx, bvy], axis=1)
+    spin = law == SPIN
+    # closed-form state just before each logged event (pocketed balls do not move): x y vx vy wx wy wz
+    before = np.zeros((len(tr.times), 7))
+    if spin:
+        ph = scene.physics
+        before[rows] = carry_rows(tr.times, np.ascontiguousarray(st), np.ascontiguousarray(radius[tr.ball[rows]]),
+                                  p, rows, ph.mu_slide * G, ph.mu_roll * G, ph.mu_spin * G)
+    else:
+        dt = tr.times[rows] - tr.times[p]
+        on_prev = st[p, 4] > 0.5
+        bx, by, bvx, bvy = _np_closed_form(st[p, 0], st[p, 1], np.where(on_prev, st[p, 2], 0.0),
+                                           np.where(on_prev, st[p, 3], 0.0), dt, law, a, k, v_min)
+        before[rows, :4] = np.stack([bx, by, bvx, bvy], axis=1)
+    bx, by = before[rows, 0], before[rows, 1]
+    # after each row: the logged state (angular velocity in columns 5-7 under spin)
+    after_w = st[:, 5:8] if spin else np.zeros((len(tr.times), 3))
+    rot = 0.2 * mass[tr.ball] * radius[tr.ball] ** 2  # I / 2
+
+    def ke_before(rr):
+        return 0.5 * mass[tr.ball[rr]] * (before[rr, 2] ** 2 + before[rr, 3] ** 2) + rot[rr] * (before[rr, 4:7] ** 2).sum(-1)
+
+    def ke_after(rr):
+        return 0.5 * mass[tr.ball[rr]] * (st[rr, 2] ** 2 + st[rr, 3] ** 2) + rot[rr] * (after_w[rr] ** 2).sum(-1)
     # continuity: logged position after the event vs the closed form before it
     jump = np.hypot(st[rows, 0] - bx, st[rows, 1] - by)
     if len(jump):
@@ -353,8 +380,8 @@ def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, samp
         mi, mj = mass[i], mass[j]
         vbi, vbj = before[ri, 2:4], before[rj, 2:4]
         vai, vaj = st[ri, 2:4], st[rj, 2:4]
-        ke_b = 0.5 * (mi * (vbi ** 2).sum(1) + mj * (vbj ** 2).sum(1))
-        ke_a = 0.5 * (mi * (vai ** 2).sum(1) + mj * (vaj ** 2).sum(1))
+        ke_b = ke_before(ri) + ke_before(rj)
+        ke_a = ke_after(ri) + ke_after(rj)
         gain = np.where(ke_b > 0, (ke_a - ke_b) / np.where(ke_b > 0, ke_b, 1.0), np.where(ke_a > 0, np.inf, 0.0))
         q = int(np.argmax(gain))
         rep.max_energy_gain = max(rep.max_energy_gain, float(gain[q]))
@@ -384,14 +411,20 @@ def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, samp
     cu = np.flatnonzero(kinds == EV_CUSHION)
     if len(cu):
         rr = start[cu]
-        sb = np.hypot(before[rr, 2], before[rr, 3])
-        sa = np.hypot(st[rr, 2], st[rr, 3])
-        gain = np.where(sb > 0, (sa * sa - sb * sb) / np.where(sb > 0, sb * sb, 1.0), np.where(sa > 0, np.inf, 0.0))
+        if spin:  # spin turns into speed at a cushion (running english): only the total energy cannot rise
+            sb, sa = ke_before(rr), ke_after(rr)
+            gain = np.where(sb > 0, (sa - sb) / np.where(sb > 0, sb, 1.0), np.where(sa > 0, np.inf, 0.0))
+            what = "kinetic energy"
+        else:
+            sb = np.hypot(before[rr, 2], before[rr, 3])
+            sa = np.hypot(st[rr, 2], st[rr, 3])
+            gain = np.where(sb > 0, (sa * sa - sb * sb) / np.where(sb > 0, sb * sb, 1.0), np.where(sa > 0, np.inf, 0.0))
+            what = "speed"
         q = int(np.argmax(gain))
         rep.max_energy_gain = max(rep.max_energy_gain, float(gain[q]))
         if gain[q] > ENERGY_REL_TOL:
             rep.fail("energy", f"cushion event {int(cu[q])} (ball {int(ev.ball[cu[q]])}) at t={float(ev.time[cu[q]])!r}: "
-                               f"speed {float(sb[q])!r} -> {float(sa[q])!r}")
+                               f"{what} {float(sb[q])!r} -> {float(sa[q])!r}")
         b = ev.ball[cu]
         c = ev.other[cu]
         wall = np.where(c == 0, radius[b], np.where(c == 1, L - radius[b], np.where(c == 2, radius[b], W - radius[b])))
@@ -403,11 +436,40 @@ def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, samp
     # ---- jams: the cluster's kinetic energy never rises
     for q in np.flatnonzero(kinds == EV_JAM).tolist():
         rr = np.arange(start[q], start[q] + int(ev.other[q]))
-        mb = mass[tr.ball[rr]]
-        ke_b = 0.5 * float(np.sum(mb * (before[rr, 2] ** 2 + before[rr, 3] ** 2)))
-        ke_a = 0.5 * float(np.sum(mb * (st[rr, 2] ** 2 + st[rr, 3] ** 2)))
+        ke_b = float(np.sum(ke_before(rr)))
+        ke_a = float(np.sum(ke_after(rr)))
         if ke_a > ke_b * (1.0 + ENERGY_REL_TOL) + 1e-300:
             rep.fail("energy", f"jam event {q} at t={float(ev.time[q])!r}: cluster kinetic energy {ke_b!r} -> {ke_a!r}")
+    # ---- spin model: motion transitions (energy, and the state each one names); rolling states do not slip
+    if spin:
+        for code, kind, name in ((MS_ROLLING, EV_ROLL, "roll"), (MS_SPINNING, EV_SPIN, "spin"),
+                                 (MS_STATIONARY, EV_STOP, "stop")):
+            tq = np.flatnonzero(kinds == kind)
+            if len(tq) == 0:
+                continue
+            rr = start[tq]
+            bad = np.flatnonzero(st[rr, 8] != code)
+            if len(bad):
+                rep.fail("spin_state", f"{name} event {int(tq[bad[0]])} at t={float(ev.time[tq[bad[0]]])!r} leaves ball "
+                                       f"{int(ev.ball[tq[bad[0]]])} in motion state {int(st[rr[bad[0]], 8])}")
+            sb, sa = ke_before(rr), ke_after(rr)
+            gain = np.where(sb > 0, (sa - sb) / np.where(sb > 0, sb, 1.0), np.where(sa > 0, np.inf, 0.0))
+            q = int(np.argmax(gain))
+            rep.max_energy_gain = max(rep.max_energy_gain, float(gain[q]))
+            if gain[q] > ENERGY_REL_TOL:
+                rep.fail("energy", f"{name} event {int(tq[q])} (ball {int(ev.ball[tq[q]])}) at "
+                                   f"t={float(ev.time[tq[q]])!r}: kinetic energy {float(sb[q])!r} -> {float(sa[q])!r}")
+        rl = np.flatnonzero(st[:, 8] == MS_ROLLING)
+        if len(rl):
+            r_rl = radius[tr.ball[rl]]
+            ux = st[rl, 2] - r_rl * st[rl, 6]
+            uy = st[rl, 3] + r_rl * st[rl, 5]
+            scale = np.hypot(st[rl, 2], st[rl, 3]) + r_rl * np.hypot(st[rl, 5], st[rl, 6])
+            bad = np.flatnonzero(np.hypot(ux, uy) > ROLLING_SLIP_TOL * scale)
+            if len(bad):
+                q = int(rl[bad[0]])
+                rep.fail("spin_state", f"ball {int(tr.ball[q])} logged rolling at t={float(tr.times[q])!r} slips at "
+                                       f"{float(np.hypot(ux[bad[0]], uy[bad[0]])):.3g} m/s")
     # ---- pockets
     po = np.flatnonzero(kinds == EV_POCKET)
     if len(po):
@@ -433,9 +495,10 @@ def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, samp
             rep.fail("overlap_during", f"balls {i} and {j} overlap by {ov:.3g} m at t={float(tu[s])!r}")
 
 
-def _check_step_snapshots(rep, result, mass):
+def _check_step_snapshots(rep, result, mass, radius):
     """Step solver: rebuild the full state at each all-ball snapshot (pocket rows in between only remove balls);
-    the total kinetic energy must never rise from one snapshot to the next. Also measures overlaps."""
+    the total kinetic energy (with the rotation, under the spin model) must never rise from one snapshot to the
+    next. Also measures overlaps."""
     tr = result.trajectory
     n = int(tr.n_balls)
     if len(tr.times) == 0:
@@ -446,7 +509,9 @@ def _check_step_snapshots(rep, result, mass):
         return
     pos = np.zeros((len(full), n, 2))
     vel = np.zeros((len(full), n, 2))
+    ang = np.zeros((len(full), n, 3))
     on = np.zeros((len(full), n), bool)
+    spin = tr.state.shape[1] >= 9
     for b in range(n):
         rows = np.flatnonzero(tr.ball == b)
         k = np.searchsorted(tr.times[rows], full, side="right") - 1
@@ -454,8 +519,15 @@ def _check_step_snapshots(rep, result, mass):
         r = rows[np.maximum(k, 0)]
         pos[:, b] = np.where(ok[:, None], tr.state[r, 0:2], np.nan)
         vel[:, b] = np.where(ok[:, None], tr.state[r, 2:4], 0.0)
+        if spin:
+            ang[:, b] = np.where(ok[:, None], tr.state[r, 5:8], 0.0)
         on[:, b] = ok & (tr.state[r, 4] > 0.5)
-    ke = 0.5 * np.sum(np.where(on, mass[None, :] * (vel ** 2).sum(-1), 0.0), axis=1)
+    ke_ball = mass[None, :] * (vel ** 2).sum(-1)
+    if spin:
+        ke_ball = 0.5 * ke_ball + 0.2 * (mass * radius ** 2)[None, :] * (ang ** 2).sum(-1)
+    else:
+        ke_ball = 0.5 * ke_ball
+    ke = np.sum(np.where(on, ke_ball, 0.0), axis=1)
     if len(ke) > 1:
         prev, nxt = ke[:-1], ke[1:]
         gain = np.where(prev > 0, (nxt - prev) / np.where(prev > 0, prev, 1.0), np.where(nxt > 0, np.inf, 0.0))

@@ -32,7 +32,8 @@ from numba import njit
 from .codes import MS_POCKETED, MS_ROLLING, MS_SLIDING, MS_SPINNING, MS_STATIONARY
 
 #: A slip below this fraction of ``|v| + R |(wx, wy)|`` is round-off: the ball rolls (or spins, or rests).
-SLIP_TOL = 1e-12
+#: (Putting such a ball on rolling, :func:`roll_on`, changes its momentum by at most 4/7 of this, relative.)
+SLIP_TOL = 1e-13
 
 
 @njit(cache=True)
@@ -232,4 +233,24 @@ def classify_all(vel, ang, radius, on_table):
     for i in range(n):
         if on_table[i]:
             out[i] = classify(vel[i, 0], vel[i, 1], ang[i, 0], ang[i, 1], ang[i, 2], radius[i])
+    return out
+
+
+@njit(cache=True)
+def carry_rows(sc_t, sc_state, radius_of_row, prev, rows, f_slide, f_roll, f_spin):
+    """For each logged row ``rows[q]`` of the exact spin solver, the state ``x y vx vy wx wy wz`` its ball had
+    just before it: its previous row ``prev[q]`` carried forward by the closed form (for the invariant checks:
+    continuity, and energy and momentum before each event). ``radius_of_row[q]``: that ball's radius."""
+    out = np.empty((rows.shape[0], 7))
+    for q in range(rows.shape[0]):
+        s = sc_state[prev[q]]
+        r = radius_of_row[q]
+        if s[4] <= 0.5:  # pocketed: it does not move
+            c = piece_of(MS_POCKETED, 0.0, 0.0, 0.0, 0.0, 0.0, r, f_slide, f_roll, f_spin)
+        else:
+            c = piece_of(int(s[8]), s[2], s[3], s[5], s[6], s[7], r, f_slide, f_roll, f_spin)
+        dt = min(sc_t[rows[q]] - sc_t[prev[q]], c[9])
+        x = advance(dt, s[0], s[1], c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], spin_decay_rate(r, f_spin))
+        for k in range(7):
+            out[q, k] = x[k]
     return out

@@ -274,16 +274,19 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                 ny = dy / dist if dist > 0.0 else 0.0
                 speed = resolve_ball_ball_spin(vel, ang, i, j, nx, ny, mass[i], mass[j], radius[i], radius[j], e_b,
                                                mu_b, floor, False)
-                if is_pressed_pair(vel, ang, i, j, dx, dy, radius[i], radius[j], f_slide, f_roll, f_spin, floor):
+                merged = is_pressed_pair(vel, ang, i, j, dx, dy, radius[i], radius[j], f_slide, f_roll, f_spin,
+                                         floor)
+                if merged:
                     merge_pair(vel, ang, i, j, mass[i], mass[j], radius[i], radius[j])
                 if back >= 0.0:
                     for m in (i, j):
                         pos[m, 0] += vel[m, 0] * back
                         pos[m, 1] += vel[m, 1] * back
-                if speed > 0.0:
+                if speed > 0.0 or merged:
                     for m in (i, j):
                         moving[m] = True
                         code[m] = classify(vel[m, 0], vel[m, 1], ang[m, 0], ang[m, 1], ang[m, 2], radius[m])
+                if speed > 0.0:
                     _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_COLLISION, i, j, speed)
                     n_ev += 1
 
