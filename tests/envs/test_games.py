@@ -1,0 +1,176 @@
+"""The game envs (Billiards9Ball-v0, Billiards8Ball-v0): scripted tables played through env.step, checked
+against the rules' calls; ball in hand; the called 8; the players following the rules."""
+from __future__ import annotations
+
+import math
+import os
+
+os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+
+import gymnasium as gym  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import billiards_env  # noqa: E402,F401
+from billiards_env.physics.layout import foot_spot, head_string_x  # noqa: E402
+from billiards_env.players import make_player  # noqa: E402
+
+L, W, R = 2.54, 1.27, 0.028575
+PARKED = [(0.3 + 0.1 * k, 0.1) for k in range(15)]  # out of the way along the bottom cushion
+TOP_RIGHT = 5  # pocket index (L, W)
+
+
+def table(n_balls: int, cue: tuple[float, float], placed: dict[int, tuple[float, float]]):
+    """Positions (rows cue, 1..n) and pocketed flags: the balls in ``placed`` where given, the others pocketed."""
+    pos = np.array([cue] + PARKED[:n_balls], dtype=float)
+    off = np.ones(n_balls + 1, dtype=bool)
+    off[0] = False
+    for number, xy in placed.items():
+        pos[number] = xy
+        off[number] = False
+    return pos, off
+
+
+def corner_pot(env, number: int, speed: float = 1.2):
+    """Ball ``number`` 0.2 m from the top-right pocket on the diagonal, the cue 0.4 m behind it: the action that
+    pots it straight (a stun-like stop of the cue ball)."""
+    return env.unwrapped.action_from_shot(math.pi / 4, speed)
+
+
+DIAG_BALL = (L - 0.25, W - 0.25)
+DIAG_CUE = (L - 0.65, W - 0.65)
+
+
+def test_nine_ball_legal_pot_keeps_the_turn_and_the_nine_wins():
+    env = gym.make("Billiards9Ball-v0", opponent="geometric")
+    pos, off = table(9, DIAG_CUE, {1: DIAG_BALL, 9: (0.6, 0.7)})
+    env.reset(seed=0, options={"positions": pos, "pocketed": off})
+    obs, reward, terminated, truncated, info = env.step(corner_pot(env, 1))
+    assert info["pocketed"] == ("1",) and not info["foul"] and not info["turn_over"]
+    assert info["opponent_shots"] == 0 and info["shooter"] == 0 and info["legal_targets"] == (9,)
+    assert (reward, terminated) == (0.0, False)
+    # Now the 9 alone: put it on the diagonal and pot it legally -> the agent wins.
+    pos2 = env.unwrapped.balls.pos.copy()
+    pos2[0], pos2[9] = DIAG_CUE, DIAG_BALL
+    env.unwrapped.balls.pos[...] = pos2
+    obs, reward, terminated, truncated, info = env.step(corner_pot(env, 9))
+    assert terminated and info["winner"] == 0 and info["is_success"] and info["call"] == "9 pocketed"
+    assert reward == pytest.approx(1.0)
+    with pytest.raises(gym.error.ResetNeeded):
+        env.step(env.action_space.sample())
+
+
+def test_nine_ball_wrong_ball_first_is_a_foul_with_ball_in_hand_for_the_opponent():
+    env = gym.make("Billiards9Ball-v0", opponent=None)  # alone: the episode ends at the first foul
+    pos, off = table(9, DIAG_CUE, {1: (0.5, 0.3), 2: DIAG_BALL, 9: (0.6, 0.9)})
+    env.reset(seed=0, options={"positions": pos, "pocketed": off})
+    obs, reward, terminated, truncated, info = env.step(corner_pot(env, 2))
+    assert info["first_contact"] == "2" and info["foul"] and info["foul_reason"] == "wrong ball first"
+    assert terminated and info["winner"] == -1 and reward == 0.0
+    assert info["ball_in_hand"] == "anywhere" and info["shooter"] == 1
+    assert not env.unwrapped.balls.on_table[2]  # balls pocketed on a foul stay down (all but the 9)
+
+
+def test_the_nine_pocketed_on_a_foul_is_respotted_on_the_foot_spot():
+    env = gym.make("Billiards9Ball-v0", opponent=None)
+    pos, off = table(9, DIAG_CUE, {3: (0.4, 1.0), 9: DIAG_BALL})
+    env.reset(seed=0, options={"positions": pos, "pocketed": off})
+    obs, reward, terminated, truncated, info = env.step(corner_pot(env, 9))
+    assert info["pocketed"] == ("9",) and info["foul_reason"] == "wrong ball first"
+    u = env.unwrapped
+    assert u.balls.on_table[9] and np.allclose(u.balls.pos[9], foot_spot(u.table))
+
+
+def test_ball_in_hand_placement_moves_to_the_nearest_legal_point():
+    env = gym.make("Billiards9Ball-v0", opponent=None)
+    pos, off = table(9, (0.5, 0.5), {1: (1.5, 0.6), 9: (2.0, 0.9)})
+    env.reset(seed=0, options={"positions": pos, "pocketed": off, "ball_in_hand": "anywhere"})
+    u = env.unwrapped
+    target = (1.5 + 0.01, 0.6)  # on top of the 1
+    action = u.action_from_shot(0.0, 1.0, place=target)
+    shot = u.shot_from_action(action)
+    d = math.dist(shot.place, (1.5, 0.6))
+    assert d >= 2 * R and d == pytest.approx(2 * R, abs=1e-5)  # just off the ball, on the side asked for
+    assert shot.place[0] > 1.5
+    # A point off the table moves inside the allowed area.
+    shot = u.shot_from_action(u.action_from_shot(0.0, 1.0, place=(5.0, -1.0)))
+    assert shot.place == pytest.approx((L - R, R))
+
+
+def test_break_ball_in_hand_is_behind_the_head_string():
+    env = gym.make("Billiards9Ball-v0")
+    env.reset(seed=3)
+    u = env.unwrapped
+    assert u.task.state.break_shot and u.task.ball_in_hand_area(u)[1] == pytest.approx(head_string_x(u.table))
+    shot = u.shot_from_action(np.array([0.0, 1.0, 1.0, 0.0], dtype=np.float32))  # place_x = +1: the far edge
+    assert shot.place[0] <= head_string_x(u.table) + 1e-12
+
+
+def test_action_round_trip_with_placement_and_called_pocket():
+    env = gym.make("Billiards8Ball-v0", opponent=None)
+    env.reset(seed=1)
+    u = env.unwrapped
+    place = (0.4, 0.5)
+    for pocket in range(6):
+        shot = u.shot_from_action(u.action_from_shot(0.7, 3.0, place=place, pocket=pocket))
+        assert shot.pocket == pocket and shot.place == pytest.approx(place, abs=1e-6)
+        assert math.cos(shot.angle - 0.7) == pytest.approx(1.0, abs=1e-8) and shot.speed == pytest.approx(3.0)
+
+
+@pytest.mark.parametrize("called, wins", [(TOP_RIGHT, True), (0, False)])
+def test_eight_ball_called_pocket_decides_the_game(called, wins):
+    env = gym.make("Billiards8Ball-v0", opponent="geometric")
+    pos, off = table(15, DIAG_CUE, {8: DIAG_BALL, 9: (0.6, 0.7)})
+    env.reset(seed=0, options={"positions": pos, "pocketed": off, "groups": ("solids", "stripes")})
+    u = env.unwrapped
+    assert u.task.needs_called_pocket()  # solids cleared: on the 8
+    obs, reward, terminated, truncated, info = env.step(u.action_from_shot(math.pi / 4, 1.2, pocket=called))
+    assert terminated and info["pocketed"] == ("8",)
+    assert info["winner"] == (0 if wins else 1)
+    assert reward == pytest.approx(1.0 if wins else -1.0)
+    assert info["call"] == ("8 pocketed" if wins else "8 in an uncalled pocket")
+
+
+def test_opponent_replies_inside_step_and_game_features_follow_the_state():
+    env = gym.make("Billiards9Ball-v0", opponent="geometric")
+    pos, off = table(9, (0.3, 0.2), {1: (1.3, 1.1), 9: (2.0, 0.4)})
+    obs, _ = env.reset(seed=0, options={"positions": pos, "pocketed": off})
+    u = env.unwrapped
+    # A miss that touches nothing: a foul, the opponent replies with ball in hand and shoots until it misses or wins.
+    obs, reward, terminated, truncated, info = env.step(u.action_from_shot(-math.pi / 2, 0.6))
+    assert info["foul_reason"] == "no contact" and info["opponent_shots"] >= 1
+    assert terminated == (info["winner"] != -1)
+    if not terminated:
+        feats = obs[-11:]
+        assert feats[10] == 1.0  # the agent's turn
+        assert feats[3] == pytest.approx(min(u.task.state.on_table) / 15.0)
+
+
+@pytest.mark.parametrize("game", ["Billiards9Ball-v0", "Billiards8Ball-v0"])
+@pytest.mark.parametrize("player", ["geometric", "search"])
+def test_players_follow_the_rules(game, player):
+    """The baselines hit a legal ball first, place ball in hand legally, and break from the kitchen."""
+    env = gym.make(game, opponent="geometric", first_shooter="agent")
+    p = make_player(player, seed=0)
+    u = env.unwrapped
+    fouls = wrong = placed = 0
+    for seed in range(2 if player == "search" else 4):
+        obs, _ = env.reset(seed=seed)
+        for _ in range(4):
+            legal = {str(n) for n in u.task.rules.legal_targets(u.task.state)}
+            area = u.task.ball_in_hand_area(u)
+            action = p.act(env, obs)
+            if area is not None:
+                place = u.shot_from_action(action).place
+                x0, x1, y0, y1 = area
+                assert x0 <= place[0] <= x1 and y0 <= place[1] <= y1
+                others = [u.balls.pos[i] for i in range(1, u.n_balls) if u.balls.on_table[i]]
+                assert all(math.dist(place, q) >= 2 * R for q in others)
+                placed += 1
+            obs, reward, terminated, truncated, info = env.step(action)
+            fouls += info["foul"]
+            wrong += info["first_contact"] is not None and info["first_contact"] not in legal
+            if terminated or truncated:
+                break
+    assert placed >= 1  # every game starts with ball in hand in the kitchen
+    assert wrong == 0
