@@ -1,8 +1,9 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency] [--out docs/bench]``, from the
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin] [--out docs/bench]``, from the
 repository root.
 
 Without ``--only`` every part runs: the accuracy suite (speed against error, ``speed_vs_error.md/.json/.png``),
-then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``).
+then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``), then the
+spin model's speed (against pooltool) and speed against error (``spin.md/.json``).
 ``--quick`` runs a small configuration of everything (about a minute); the full run takes about four minutes on
 two cores. ``--only env`` also prints a table of ``env.step`` throughput per id (``--env-seconds``,
 ``--env-ids``, ``--env-compare``).
@@ -13,7 +14,7 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -44,7 +45,7 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, speed
+    from . import accuracy, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -56,6 +57,8 @@ def main(argv: list[str] | None = None) -> int:
             accuracy.render(args.out)
         if (args.out / "speed.json").exists():
             speed.render(args.out)
+        if (args.out / "spin.json").exists():
+            spin.render(args.out)
         log(f"[bench] re-rendered the reports in {args.out}")
         return 0
     if "accuracy" in only:
@@ -65,6 +68,9 @@ def main(argv: list[str] | None = None) -> int:
         speed.main(args.out, quick=args.quick, sections=rest, pooltool_python=args.pooltool_python,
                    allow_setup=not args.no_pooltool_setup, env_seconds=args.env_seconds,
                    env_ids=tuple(args.env_ids) if args.env_ids else None, env_compare=args.env_compare)
+    if "spin" in only:
+        spin.main(args.out, quick=args.quick, pooltool_python=args.pooltool_python,
+                  allow_setup=not args.no_pooltool_setup)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; outputs in {args.out}")
     return 0
 

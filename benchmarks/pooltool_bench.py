@@ -10,7 +10,9 @@ then slows both alike).
 Protocol (one JSON document per line):
 
 - in: the spec: table size and, per kind of shot, its shots: the balls' centres (metres, in billiards_env's
-  frame: x along the table's length), the struck ball's row, the cue angle (rad, 0 = +x) and speed (m/s).
+  frame: x along the table's length), the struck ball's row, the cue angle (rad, 0 = +x) and speed (m/s), and
+  optionally the tip offsets ``side`` and ``top`` (fractions of R; pooltool's ``a = -side``, ``b = top``;
+  without them pooltool's default tip, ``a = 0``, ``b = 0.25``).
   pooltool's table has its length along y, so a point ``(x, y)`` becomes ``(y, x)`` and an angle ``a``
   becomes ``90 - degrees(a)`` degrees.
 - out: ``{"ready": true, "import_s", "first_shot_s", "first_call_s": {kind: s}, versions}`` after importing
@@ -48,6 +50,8 @@ def main() -> int:
         balls = {bid: pt.Ball.create(bid, xy=(y, x)) for bid, (x, y) in zip(ids, shot["pos"])}
         s = pt.System(cue=pt.Cue(cue_ball_id=ids[shot["ball"]]), table=table, balls=balls)
         s.strike(V0=shot["speed"], phi=(90.0 - math.degrees(shot["angle"])) % 360.0)
+        if "side" in shot:  # spin shots: pooltool's frame is ours mirrored (x <-> y): our right english is its left
+            s.strike(a=-shot["side"], b=shot["top"])
         return s
 
     def run(shot: dict) -> tuple[float, int, int]:
