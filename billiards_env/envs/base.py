@@ -218,6 +218,18 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         outcome = ShotOutcome.from_arrays(status, sim_time, n_events, pocket_of, ev_int)
         return outcome, trajectory, CueShot(angle, speed, side, top, shot.place)
 
+    def observe(self, player: int | None = None) -> np.ndarray:
+        """The observation of the table now (what ``reset`` and ``step`` return). ``player`` (games: 0 or 1): the
+        game features take that player's point of view (own group, own fouls, whose turn) instead of the shooter's;
+        the two-player env (:mod:`billiards_env.multi`) observes each agent so."""
+        if player is None:
+            return self.observation_type.observe(self)
+        seen_by = getattr(self.task, "seen_by", None)
+        if seen_by is None:
+            raise ValueError(f"observe(player={player!r}): task {self.task.name!r} has no players; call observe()")
+        with seen_by(player):
+            return self.observation_type.observe(self)
+
     def queue_animation(self, trajectory: Any) -> None:
         """Animate a shot the task played within this step (an opponent's), after the agent's (recording modes)."""
         if self._record and trajectory is not None:

@@ -12,8 +12,9 @@ Reward (the agent's): ``+win_reward`` for a won game, ``-loss_penalty`` for a lo
 """
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any, Callable, Iterator
 
 import numpy as np
 
@@ -89,6 +90,7 @@ class GameTask(Task):
         self.state: GameState = self.rules.initial_state()
         self.last_call: Call | None = None
         self._shot: Any = None
+        self._viewer: int | None = None  # see seen_by()
         self._rack_slots: np.ndarray | None = None
 
     # --- configuration -------------------------------------------------------------------------------------------
@@ -182,11 +184,11 @@ class GameTask(Task):
         return np.zeros(N_FEATURES, np.float32), np.ones(N_FEATURES, np.float32)
 
     def features(self, env: "BilliardsEnv", player: int | None = None) -> np.ndarray:
-        """The game seen by ``player`` (default: the shooter): ball in hand (anywhere/kitchen), break shot, the
-        lowest legal target / 15, own group (solids, stripes), on the 8, own and opponent's fouls in a row / 2,
-        push-out available, and whether it is this player's turn."""
+        """The game seen by ``player`` (default: the player of :meth:`seen_by`, else the shooter): ball in hand
+        (anywhere/kitchen), break shot, the lowest legal target / 15, own group (solids, stripes), on the 8, own and
+        opponent's fouls in a row / 2, push-out available, and whether it is this player's turn."""
         s = self.state
-        me = s.shooter if player is None else player
+        me = player if player is not None else (s.shooter if self._viewer is None else self._viewer)
         out = np.zeros(N_FEATURES, np.float32)
         mine = s.shooter == me and not s.game_over
         out[0] = 1.0 if (mine and s.ball_in_hand) else 0.0
@@ -203,6 +205,18 @@ class GameTask(Task):
         out[9] = 1.0 if s.push_out_available else 0.0
         out[10] = 1.0 if mine else 0.0
         return out
+
+    @contextlib.contextmanager
+    def seen_by(self, player: int) -> Iterator[None]:
+        """Within the block :meth:`features` (so the env's observation) takes ``player``'s point of view instead of
+        the shooter's: how the two-player env (:mod:`billiards_env.multi`) observes each agent."""
+        if player not in (0, 1):
+            raise ValueError(f"player: must be 0 or 1, got {player!r}")
+        saved, self._viewer = self._viewer, player
+        try:
+            yield
+        finally:
+            self._viewer = saved
 
     # --- shots ----------------------------------------------------------------------------------------------------
     def before_shot(self, env: "BilliardsEnv", shot: "CueShot") -> None:
@@ -239,10 +253,22 @@ class GameTask(Task):
                 n_opp = self._opponent_turn(env)
         s = self.state
         if s.game_over:
-            reward += c.win_reward if s.winner == self.agent else -c.loss_penalty
+            reward += self._result_reward(s.winner, self.agent)
         terminated = bool(s.game_over or practice_over)
         truncated = bool(not terminated and env.shots >= c.max_shots)
         return float(reward), terminated, truncated, self._info(env, call, n_opp)
+
+    def reward_of(self, call: Call, player: int) -> float:
+        """``player``'s reward for the one shot judged by ``call`` (whoever shot it): the shaping of its own shot,
+        plus the win/loss reward if the shot ended the game. The two-player env gives each player its own."""
+        r = self._shaping(call, player)
+        if call.game_over:
+            r += self._result_reward(call.winner, player)
+        return float(r)
+
+    def _result_reward(self, winner: int | None, player: int) -> float:
+        c = self.config
+        return c.win_reward if winner == player else -c.loss_penalty
 
     def _shaping(self, call: Call, player: int) -> float:
         c = self.config
@@ -258,7 +284,7 @@ class GameTask(Task):
 
     def _opponent_turn(self, env: "BilliardsEnv") -> int:
         """Let the opponent shoot until the agent's turn or the end of the game; the number of shots."""
-        policy = _as_policy(self.opponent)
+        policy = as_policy(self.opponent)
         n = 0
         while not self.state.game_over and self.state.shooter != self.agent and n < MAX_TURN_SHOTS:
             obs = env.observation_type.observe(env)
@@ -295,8 +321,9 @@ class GameTask(Task):
         return info
 
 
-def _as_policy(policy: Any) -> Callable[[Any, Any], np.ndarray]:
-    """``(env, obs) -> action`` from a player, an SB3-style model or a callable ``obs -> action``."""
+def as_policy(policy: Any) -> Callable[[Any, Any], np.ndarray]:
+    """``(env, obs) -> action`` from a player (``act(env, obs)``), an SB3-style model (``predict``, deterministic)
+    or a callable ``obs -> action``; ``env`` is the single-agent env (players read its balls, table and task)."""
     if hasattr(policy, "act"):
         return policy.act
     if hasattr(policy, "predict"):
@@ -318,4 +345,5 @@ class EightBallTask(GameTask):
     name = EIGHT_BALL
 
 
-__all__ = ["GameSpec", "GAMES", "game_spec", "GameTask", "NineBallTask", "EightBallTask", "MAX_TURN_SHOTS"]
+__all__ = ["GameSpec", "GAMES", "game_spec", "GameTask", "NineBallTask", "EightBallTask", "MAX_TURN_SHOTS",
+           "as_policy"]
