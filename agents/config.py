@@ -2,7 +2,7 @@
 
 A config file is a YAML mapping. The entry named after the env id is in the RL Zoo format, so
 ``python -m rl_zoo3.train --algo sac --env BilliardsOneBall-v0 --gym-packages billiards_env
---conf-file configs/train/one_ball_sac.yaml`` trains from the same file::
+--conf-file configs/train/one_ball_sac.yaml --log-interval 2000`` trains from the same file::
 
     BilliardsOneBall-v0:
       n_timesteps: !!float 1e6
@@ -11,8 +11,7 @@ A config file is a YAML mapping. The entry named after the env id is in the RL Z
       learning_rate: !!float 1e-3        # or "lin_1e-3" for a linear schedule
       batch_size: 256
       policy_kwargs: "dict(net_arch=[128, 128])"
-      env_wrapper: [agents.wrappers.CutAimWrapper]
-      env_kwargs: {aim: relative}        # RL Zoo >= 2.7 reads this; older: pass --env-kwargs
+      env_kwargs: {action_type: ghost, observation_type: features}   # RL Zoo >= 2.7 reads this
       ...                                # any other constructor argument of the algorithm
 
     billiards:                           # agents.train only (the RL Zoo ignores other top-level keys)
@@ -188,7 +187,7 @@ def _eval_kwargs_string(text: str, key: str) -> Any:
 
 
 def resolve_class(name: str, key: str) -> Any:
-    """A class from a dotted name (``agents.wrappers.CutAimWrapper``)."""
+    """A class from a dotted name (``gymnasium.wrappers.TimeAwareObservation``)."""
     module, _, attr = name.rpartition(".")
     if not module:
         raise TrainConfigError(f"{key}: {name!r} is not a dotted name (module.Class)")

@@ -4,7 +4,7 @@
     python -m agents.evaluate --players runs/main/train --episodes 1000 --out runs/main/eval
     python -m agents.evaluate --env BilliardsThreeBalls-v0 --players geometric search --episodes 300
 
-A player is a baseline name (``random``, ``geometric``, ``search``: see :mod:`agents.baselines`) or a trained
+A player is a baseline name (``random``, ``geometric``, ``search``: see :mod:`billiards_env.players`) or a trained
 model: a run folder (its ``best_model.zip``, else ``final_model.zip``) or a model ``.zip`` inside one. A
 model is played with its run's env kwargs and wrappers (from the run's ``config.yaml``) and deterministic
 actions; baselines play the same scene (the first model's env kwargs unless ``--env-kwargs`` is given).
@@ -30,7 +30,7 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from .baselines import BASELINES, make_player
+from billiards_env.players import BASELINES, make_player
 
 
 # --- statistics ---------------------------------------------------------------------------------------------

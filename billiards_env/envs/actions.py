@@ -194,7 +194,7 @@ class RelativeAim(ActionType):
         if t is None:
             return 0.0
         p = env.balls.pos
-        return math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0])
+        return aim_angle(p[0], p[t])
 
     def angle(self, env: "BilliardsEnv", a: float) -> float:
         return math.pi * a + self._base(env)

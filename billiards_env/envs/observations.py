@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from gymnasium import spaces
 
-from billiards_env.physics.aim import pocket_bearings, pocket_mouth_axes
+from billiards_env.physics.aim import pocket_bearings, pocket_mouth_axes, wrap_angle
 
 from ._kernels import observation
 
@@ -94,8 +94,7 @@ class ShotFeatures(ObservationType):
         out[0:2] = v / max(d, 1e-12)
         out[2] = min(d * scale, 1.0)
         bearing, dist, square = pocket_bearings(b.pos[t], env.table, self._axes)
-        rel = bearing - math.atan2(v[1], v[0])
-        rel = (rel + math.pi) % (2.0 * math.pi) - math.pi
+        rel = wrap_angle(bearing - math.atan2(v[1], v[0]))
         order = np.argsort(np.abs(rel), kind="stable")
         out[3::3] = rel[order] / math.pi
         out[4::3] = np.minimum(np.maximum(dist[order], 1e-12) * scale, 1.0)

@@ -4,8 +4,8 @@ bounces) into a pocket.
 
 This module is the one home of these formulas. The exact solver calls its compiled ray tests
 (:func:`ray_circle_entry`, :func:`ray_cushion_hit`) to find every pocket and cushion event, so a player aiming
-with them sees pockets and cushions exactly as the engine does. The baseline players (``agents/geometry.py``),
-the action wrappers and the renderer's aim line call it too. How far a ball rolls and how fast it still goes come
+with them sees pockets and cushions exactly as the engine does. The baseline players (:mod:`billiards_env.players`),
+the envs' action and observation types and the renderer's aim line call it too. How far a ball rolls and how fast it still goes come
 from :mod:`.motion`; what a collision does comes from :mod:`.collide` (the same code the solvers run).
 
 Conventions: SI units (m, m/s, kg); angles in radians, 0 = +x, counter-clockwise; points and vectors are
