@@ -25,8 +25,16 @@ from .kernel_io import KernelResult
 from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
 from .roots import first_entry
 
+#: Compile options of the kernel's internal helpers: called only from compiled code, so they need no Python entry
+#: wrappers (which would be compiled, optimised and cached for each of them: a good part of a cold compile).
+_internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+#: Typed (non-literal) integer initial values: a literal -1 or 0 passed on to a compiled helper would make numba
+#: compile a second specialisation of it for the literal.
+_NONE = np.int64(-1)
+_ZERO = np.int64(0)
 
-@njit(cache=True)
+
+@_internal
 def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
     """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state."""
     vx = v0[i, 0]
@@ -46,7 +54,7 @@ def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
     return x, y, ux * sp, uy * sp
 
 
-@njit(cache=True)
+@_internal
 def _advance(i, t, t0, p0, v0, tstop, law, a, k):
     """Move ball ``i``'s reference state to time ``t``."""
     x, y, vx, vy = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
@@ -57,7 +65,7 @@ def _advance(i, t, t0, p0, v0, tstop, law, a, k):
     t0[i] = t
 
 
-@njit(cache=True)
+@_internal
 def _set_stop_time(i, t0, v0, tstop, law, a, k, v_min):
     s = math.hypot(v0[i, 0], v0[i, 1])
     if s <= v_min or s == 0.0:
@@ -68,7 +76,7 @@ def _set_stop_time(i, t0, v0, tstop, law, a, k, v_min):
         tstop[i] = t0[i] + time_to_stop(s, law, a, k, v_min)
 
 
-@njit(cache=True)
+@_internal
 def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     """Next stop, cushion or pocket event of ball ``i``: ``(time, kind, other)``."""
     vx = v0[i, 0]
@@ -114,7 +122,7 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     return t_stop, EV_STOP, -1
 
 
-@njit(cache=True)
+@_internal
 def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (stop, cushion, pocket), since that event recomputes the pair anyway."""
@@ -168,7 +176,7 @@ def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
     return t + min(drag_time_for_phi(phi, k), window)
 
 
-@njit(cache=True)
+@_internal
 def _count_burst(i, t, t_hit, burst):
     """Record a collision of ball ``i`` at ``t``; True if it follows its previous one within ``CONTACT_TIME``."""
     clustered = t - t_hit[i] <= CONTACT_TIME
@@ -177,7 +185,7 @@ def _count_burst(i, t, t_hit, burst):
     return clustered
 
 
-@njit(cache=True)
+@_internal
 def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved):
     """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
@@ -186,13 +194,16 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     law = prm.law
     a = prm.decel
     k = prm.drag_k
-    px = np.empty(n)
-    py = np.empty(n)
+    pxy = np.empty((2, n))
+    px = pxy[0]
+    py = pxy[1]
     for m in range(n):
         if on_table[m]:
             px[m], py[m], _, _ = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
-    member = np.zeros(n, np.bool_)
-    member[seed] = True
+    member = np.empty(n, np.int64)  # 1: in the cluster
+    for m in range(n):
+        member[m] = 0
+    member[seed] = 1
     involved[0] = seed
     count = 1
     head = 0
@@ -200,9 +211,9 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
         q = involved[head]
         head += 1
         for m in range(n):
-            if on_table[m] and not member[m]:
+            if on_table[m] and member[m] == 0:
                 if math.hypot(px[q] - px[m], py[q] - py[m]) <= radius[q] + radius[m] + 1e-9:
-                    member[m] = True
+                    member[m] = 1
                     involved[count] = m
                     count += 1
     total = 0.0
@@ -232,7 +243,7 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     return count
 
 
-@njit(cache=True)
+@_internal
 def _grow(arr):
     """``arr`` (1-D) copied into an array twice as long."""
     out = np.empty(arr.shape[0] * 2, arr.dtype)
@@ -241,7 +252,7 @@ def _grow(arr):
     return out
 
 
-@njit(cache=True)
+@_internal
 def _grow_rows(arr):
     """``arr`` (2-D) copied into an array with twice the rows."""
     out = np.empty((arr.shape[0] * 2, arr.shape[1]), arr.dtype)
@@ -251,7 +262,7 @@ def _grow_rows(arr):
     return out
 
 
-@njit(cache=True)
+@_internal
 def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table):
     sc_t[n_sc] = t
     sc_ball[n_sc] = i
@@ -282,14 +293,31 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params
     floor = prm.speed_floor
     decel = a if law == ROLLING else 0.0
 
-    t0 = np.zeros(n)
-    t_hit = np.full(n, -math.inf)  # time of each ball's last collision (ball or cushion)
-    burst = np.zeros(n, np.int64)  # collisions of each ball in its current contact cluster
+    # Per-ball scratch rows: one allocation per type (fewer allocations per shot, fewer functions to compile).
+    fw = np.empty((5, n))
+    t0 = fw[0]
+    t_hit = fw[1]  # time of each ball's last collision (ball or cushion)
+    tstop = fw[2]
+    pocket_time = fw[3]
+    ball_t = fw[4]
+    iw = np.empty((5, n), np.int64)
+    burst = iw[0]  # collisions of each ball in its current contact cluster
+    pocket_of = iw[1]
+    ball_kind = iw[2]
+    ball_other = iw[3]
+    involved = iw[4]
+    for i in range(n):
+        t0[i] = 0.0
+        t_hit[i] = -math.inf
+        tstop[i] = 0.0
+        pocket_time[i] = np.nan
+        ball_t[i] = math.inf
+        burst[i] = 0
+        pocket_of[i] = -1
+        ball_kind[i] = -1
+        ball_other[i] = -1
     p0 = pos.copy()
     v0 = vel.copy()
-    tstop = np.zeros(n)
-    pocket_of = np.full(n, -1, np.int64)
-    pocket_time = np.full(n, np.nan)
     for i in range(n):
         if on_table[i]:
             _set_stop_time(i, t0, v0, tstop, law, a, k, v_min)
@@ -297,10 +325,10 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params
             v0[i, 0] = 0.0
             v0[i, 1] = 0.0
 
-    ball_t = np.full(n, math.inf)
-    ball_kind = np.full(n, -1, np.int64)
-    ball_other = np.full(n, -1, np.int64)
-    pair_t = np.full((n, n), math.inf)
+    pair_t = np.empty((n, n))
+    for i in range(n):
+        for j in range(n):
+            pair_t[i, j] = math.inf
     for i in range(n):
         if on_table[i]:
             ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm)
@@ -317,21 +345,20 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params
     sc_t = np.empty(sc_cap)
     sc_ball = np.empty(sc_cap, np.int64)
     sc_state = np.empty((sc_cap, 5))
-    n_sc = 0
+    n_sc = _ZERO
     if record:
         for i in range(n):
             _log_state(n_sc, sc_t, sc_ball, sc_state, 0.0, i, p0, v0, on_table)
             n_sc += 1
 
-    involved = np.empty(n, np.int64)
     t = 0.0
     n_events = 0
     status = STATUS_REST
     while True:
         best = math.inf
-        kind = -1
-        bi = -1
-        bj = -1
+        kind = _NONE
+        bi = _NONE
+        bj = _NONE
         for i in range(n):
             if ball_t[i] < best:
                 best = ball_t[i]
