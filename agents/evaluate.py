@@ -32,6 +32,7 @@ import numpy as np
 
 from billiards_env.players import BASELINES, make_player
 
+from .config import ALGOS
 
 # --- statistics ---------------------------------------------------------------------------------------------
 
@@ -118,7 +119,7 @@ def model_player(path: str | Path, env_id: str | None = None, label: str | None 
 
         with zipfile.ZipFile(model_zip) as z:
             data = json.loads(z.read("data"))
-        algo = next((a for a in ("sac", "td3", "ppo", "a2c", "ddpg")
+        algo = next((a for a in ALGOS
                      if a.upper() in str(data.get("policy_class", {}).get(":serialized:", ""))
                      or a in str(model_zip).lower()), "sac")
     model = algo_class(algo).load(str(model_zip), device="cpu")

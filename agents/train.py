@@ -33,7 +33,7 @@ from typing import Any, Sequence
 import numpy as np
 import yaml
 
-from .config import (OFF_POLICY, AlgoSetup, TrainConfig, TrainConfigError, load_train_config,
+from .config import (ALGOS, OFF_POLICY, AlgoSetup, TrainConfig, TrainConfigError, load_train_config,
                      parse_hyperparams)
 
 REPO_ROOT = Path(__file__).resolve().parent.parent
@@ -42,7 +42,9 @@ REPO_ROOT = Path(__file__).resolve().parent.parent
 def algo_class(name: str) -> Any:
     import stable_baselines3 as sb3
 
-    return {"sac": sb3.SAC, "td3": sb3.TD3, "ppo": sb3.PPO, "a2c": sb3.A2C, "ddpg": sb3.DDPG}[name]
+    if name not in ALGOS:
+        raise TrainConfigError(f"algo: unknown algorithm {name!r}; use one of {', '.join(ALGOS)}")
+    return getattr(sb3, name.upper())  # the class of each name in ALGOS (config.py: the one list)
 
 
 def make_env_fn(env_id: str, env_kwargs: dict[str, Any], wrapper: Any = None, render_mode: str | None = None):
