@@ -13,7 +13,7 @@ Reward (the agent's): ``+win_reward`` for a won game, ``-loss_penalty`` for a lo
 from __future__ import annotations
 
 import contextlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any, Callable, Iterator
 
 import numpy as np
@@ -25,6 +25,7 @@ from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, NINE_BALL, SOLID
                                  ball_numbers, summarize_arrays)
 from billiards_env.rules.state import Call
 
+from .game_hud import Score, game_hud
 from .tasks import ShotOutcome, Task
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -89,6 +90,10 @@ class GameTask(Task):
             self.opponent = make_player(c.opponent, seed=0)
         self.state: GameState = self.rules.initial_state()
         self.last_call: Call | None = None
+        #: Games won over the env's life and balls pocketed per player in this game (the HUD's score).
+        self.score = Score()
+        #: The players' names in the HUD (None: "agent" and the opponent's name).
+        self.player_names: tuple[str, str] | None = None
         self._shot: Any = None
         self._viewer: int | None = None  # see seen_by()
         self._rack_slots: np.ndarray | None = None
@@ -106,6 +111,7 @@ class GameTask(Task):
             self.opponent.reset(int(rng.integers(2**31)))
         opts = options or {}
         self.last_call = None
+        self.score.new_game()
         if "positions" in opts:
             on = tuple(n for n in self._numbers_on(env) if n)
             self.state = GameState(self.spec.name, on, shooter=self.agent,
@@ -126,6 +132,7 @@ class GameTask(Task):
             if not self.state.game_over:
                 return self._info(env, None, n)
             env.balls.on_table.fill(True)  # the opponent won from the break: rack again
+            self.score.new_game()
             env.balls.vel.fill(0.0)
         raise RuntimeError("the opponent won every game before the agent's first shot")  # pragma: no cover
 
@@ -185,7 +192,7 @@ class GameTask(Task):
 
     def features(self, env: "BilliardsEnv", player: int | None = None) -> np.ndarray:
         """The game seen by ``player`` (default: the player of :meth:`seen_by`, else the shooter): ball in hand
-        (anywhere/kitchen), break shot, the lowest legal target / 15, own group (solids, stripes), on the 8, own and
+        (anywhere/kitchen), break shot, its lowest legal target / 15, own group (solids, stripes), on the 8, own and
         opponent's fouls in a row / 2, push-out available, and whether it is this player's turn."""
         s = self.state
         me = player if player is not None else (s.shooter if self._viewer is None else self._viewer)
@@ -194,7 +201,9 @@ class GameTask(Task):
         out[0] = 1.0 if (mine and s.ball_in_hand) else 0.0
         out[1] = 1.0 if (mine and s.ball_in_hand == KITCHEN) else 0.0
         out[2] = 1.0 if s.break_shot else 0.0
-        targets = self.rules.legal_targets(s) if not s.game_over else ()
+        # The viewer's own targets (8-ball: its group) also when it is not its turn (the two-player env).
+        targets = self.rules.legal_targets(s if me == s.shooter else replace(s, shooter=me)) \
+            if not s.game_over else ()
         out[3] = targets[0] / 15.0 if targets else 0.0
         if s.groups is not None:
             out[4] = 1.0 if s.groups[me] == SOLIDS else 0.0
@@ -218,6 +227,11 @@ class GameTask(Task):
         finally:
             self._viewer = saved
 
+    def hud(self, env: "BilliardsEnv") -> dict[str, Any]:
+        """What the game shows on screen: players, whose turn, groups, ball in hand, the last call, the score, the
+        target (:func:`~billiards_env.envs.game_hud.game_hud`)."""
+        return game_hud(self, env)
+
     # --- shots ----------------------------------------------------------------------------------------------------
     def before_shot(self, env: "BilliardsEnv", shot: "CueShot") -> None:
         self._shot = shot
@@ -237,6 +251,7 @@ class GameTask(Task):
         if not b.on_table[0]:
             spot_cue_ball(b.pos, b.on_table, r, env.table)  # in hand for the next shooter
         self.last_call = call
+        self.score.record(call)
         self._shot = None
         return call
 

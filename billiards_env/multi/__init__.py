@@ -1,0 +1,33 @@
+"""billiards_env.multi: the games for two players, as PettingZoo AEC envs, and matches between policies.
+
+::
+
+    from billiards_env.multi import eight_ball_v0, nine_ball_v0, play_match
+    from billiards_env.players import make_player
+
+    env = nine_ball_v0.env(angle_noise=0.01)      # every config key of the single-agent envs
+    env.reset(seed=0)
+    for agent in env.agent_iter():                # "player_0", "player_1": whoever is to shoot
+        obs, reward, terminated, truncated, info = env.last()
+        action = None if terminated or truncated else env.action_space(agent).sample()
+        env.step(action)
+
+    result = play_match(nine_ball_v0.env, [make_player("geometric"), make_player("random")], n_games=10, seed=0)
+    result.winners, result.wins                   # per game: 0 / 1 (the policy) or -1 (truncated)
+
+- :mod:`.nine_ball_v0`, :mod:`.eight_ball_v0`: ``env(**config)`` (wrapped) and ``raw_env``; the manual is
+  :class:`.aec.BilliardsGameAEC`. Built on the single-agent game env (``env.unwrapped.game_env``), which plays and
+  judges every shot; the two-player env only passes the turn and gives each agent its view and its reward.
+- :func:`play_match` (:mod:`.match`): games between two policies (players, SB3 models, callables), seats
+  alternating, for self-play evaluation and leagues.
+
+PettingZoo is a dependency; Gymnasium's registry does not list these (PettingZoo has none): import the modules.
+"""
+from __future__ import annotations
+
+from . import eight_ball_v0, nine_ball_v0
+from .aec import AGENTS, BilliardsGameAEC
+from .match import GameRecord, MatchResult, play_match
+
+__all__ = ["nine_ball_v0", "eight_ball_v0", "BilliardsGameAEC", "AGENTS", "play_match", "MatchResult",
+           "GameRecord"]
