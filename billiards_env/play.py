@@ -1,12 +1,22 @@
-"""``billiards-play``: play a billiards scene with the mouse.
+"""``billiards-play``: play a billiards scene, or a game of 9-ball or 8-ball, with the mouse.
 
 Aim: move the mouse; the cue and its aim line follow from the cue ball towards the pointer.
 Shoot: press the left button, drag away from the press point to set the power (the bar below the table),
 release to shoot; the shot animates. Right click (or Esc) while dragging cancels the shot.
-Keys: R starts a new episode, Esc / Q (or closing the window) quits.
+Ball in hand (games): drag the cue ball, or click (or right-click) where to put it; a spot that is not allowed
+(outside the kitchen on a break, on another ball) moves to the nearest legal point.
+The 8 (8-ball): when you are on the 8, call its pocket: click the pocket, or press 1-6 (the numbers on the rail).
+Spin (--spin): the arrow keys move the cue tip on the cue-ball diagram (right of the power bar), or click the
+diagram; C centres it.
+Keys: R starts a new episode (a new game), Esc / Q (or closing the window) quits.
 
-``--demo`` plays one scripted shot (aim at the target ball, drag, release) from synthetic pygame events and
-quits, so the program can be smoke-tested headless (``SDL_VIDEODRIVER=dummy billiards-play --demo``).
+Games: --opponent geometric|search|random plays against a baseline player (you break; its shots animate after
+yours), --opponent human lets two people play at one window, taking turns. The panel under the table shows whose
+turn it is, the groups, ball in hand, the last call and the score.
+
+``--demo`` plays a scripted turn (aim at the target ball, drag, release; in a game: place the cue ball, break,
+and shoot until the opponent has replied) from synthetic pygame events and quits, so the program can be
+smoke-tested headless (``SDL_VIDEODRIVER=dummy billiards-play --demo --env Billiards9Ball-v0``).
 Without a display (no DISPLAY/WAYLAND_DISPLAY, pygame's offscreen or dummy video driver) anything but ``--demo``
 stops at once with exit status 2 and a hint, instead of playing in a window nobody can see.
 """
@@ -24,23 +34,34 @@ os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
 #: Drag distance for full power, as a fraction of the table image width.
 POWER_DRAG = 0.35
-#: Power below which a release cancels the shot instead of playing it.
+#: Power below which a release cancels the shot instead of playing it (with ball in hand: puts the cue ball there).
 MIN_POWER = 0.02
 PANEL_HEIGHT = 56
 PANEL_BG = (28, 28, 32)
 TEXT = (226, 226, 220)
 BAR_BG = (60, 60, 66)
+#: Step of the arrow keys on the tip offset (fraction of the ball radius).
+TIP_STEP = 0.05
+#: A press within this many ball radii of the cue ball (with ball in hand) picks it up.
+PICK_RADII = 1.8
+#: A press within this many pocket radii of a pocket (when the 8 needs a call) calls that pocket.
+POCKET_PICK = 1.6
+OPPONENTS = ("geometric", "search", "random", "human")
 
 
 class PlayApp:
     """The interactive game: an env in ``render_mode="human"`` drawing into this app's pygame window, its
-    renderer, a power bar and a status line.
+    renderer, a power bar, a status line and (with spin) the tip diagram.
 
-    Drawing of the table and cue comes from :mod:`billiards_env.render` (through ``env.unwrapped.renderer``).
-    Shots are animated by the env's own human mode, frame by frame as they are drawn, through a
-    :class:`PlayWindow` that adds the panel; between shots the app draws the table with the aiming cue.
-    ``run(events)`` takes the events from pygame, or from ``events`` (an iterable of per-frame event lists) for
-    scripted, headless runs.
+    Drawing of the table, the cue and a game's panel comes from :mod:`billiards_env.render` (through
+    ``env.unwrapped.renderer`` and ``env.unwrapped.render_data()``). Shots are animated by the env's own human
+    mode, frame by frame as they are drawn, through a :class:`PlayWindow` that adds the app's panel; between shots
+    the app draws the table with the aiming cue. ``run(events)`` takes the events from pygame, or from ``events``
+    (an iterable of per-frame event lists) for scripted, headless runs.
+
+    Games: ``opponent`` is a baseline player's name (the env plays its turns inside ``step``; default the env's
+    own, ``geometric``) or ``"human"`` (nobody plays automatically: two people take turns). ``spin`` plays with
+    the spin model and tip offsets (``friction="spin"``, ``spin_action=True``).
 
     Without a display the constructor raises :class:`~billiards_env.render.window.HeadlessDisplayError` unless
     ``allow_headless`` (default: the ``BILLIARDS_ALLOW_HEADLESS`` environment variable) is true.
@@ -48,24 +69,44 @@ class PlayApp:
 
     def __init__(self, env_id: str = "BilliardsOneBall-v0", seed: int | None = None, width: int = 800,
                  speedup: float = 1.0, realtime: bool = True, allow_headless: bool | None = None,
-                 **env_kwargs: Any) -> None:
+                 opponent: str | None = None, spin: bool = False, **env_kwargs: Any) -> None:
         import gymnasium as gym
         import pygame
 
         import billiards_env  # noqa: F401  (registers the ids)
         from billiards_env.render.window import require_display
 
-        require_display("billiards-play", "Try `billiards-play --demo` (one scripted shot, no window needed)",
+        if opponent is not None and opponent not in OPPONENTS:
+            raise ValueError(f"opponent: unknown {opponent!r}; use one of {', '.join(OPPONENTS)}")
+        if spin:
+            env_kwargs = {**env_kwargs, "friction": "spin", "spin_action": True}
+        if opponent is not None:
+            env_kwargs = {**env_kwargs, "opponent": None if opponent == "human" else opponent}
+        require_display("billiards-play", "Try `billiards-play --demo` (a scripted turn, no window needed)",
                         allow_headless)
         self.pg = pygame
         self.env_id = env_id
         try:
             self.env = gym.make(env_id, render_mode="human", render_width=width, render_speedup=speedup,
                                 **env_kwargs)
+            self.core = self.env.unwrapped
+            self.is_game = hasattr(self.core.task, "state")
+            if opponent is not None and not self.is_game:
+                raise ValueError(f"opponent: {env_id} is not a game; --opponent applies to Billiards9Ball-v0 and "
+                                 "Billiards8Ball-v0")
         except BaseException:
             pygame.display.quit()
             raise
-        self.core = self.env.unwrapped
+        self.two_people = opponent == "human"
+        if self.is_game:
+            task = self.core.task
+            if self.two_people:
+                task.auto_opponent = False  # nobody plays inside step: the players take turns at the window
+                task.player_names = ("player 1", "player 2")
+            else:
+                from billiards_env.envs.game_hud import player_names
+
+                task.player_names = ("you", player_names(task)[1])
         self.renderer = self.core.renderer
         self.fps = self.core.config.render_fps
         self.realtime = realtime
@@ -76,69 +117,151 @@ class PlayApp:
         pygame.display.set_caption(f"billiards-play: {env_id}")
         self.font = pygame.font.Font(None, 22)
         self.clock = pygame.time.Clock()
-        # pixel <-> metre mapping from the renderer's own forward map (affine per axis, y flipped)
-        p0, p1 = self.renderer.to_pixels_float(np.array([[0.0, 0.0], [1.0, 1.0]]))
-        self._px0, self._pscale = p0, p1 - p0
+        self.spin = bool(self.core.action_type.spin)
+        self.max_tip = float(self.core.config.max_tip_offset)
+        self.tip = (0.0, 0.0)
         self.aim = 0.0
         self.dragging = False
         self.press: tuple[int, int] | None = None
         self.power = 0.0
+        self.place: tuple[float, float] | None = None  # the cue ball's spot while in hand
+        self.placing = False  # dragging the cue ball
+        self.tip_drag = False
+        self.pocket: int | None = None  # the pocket called for the 8
         self.running = True
         self.frames_shown = 0
         self.shots = 0
+        self.opponent_shots = 0
         self.total = 0.0
         self.done = False
         self.success = False
         self.status = ""
         self.last_info: dict[str, Any] | None = None
+        self.last_action: np.ndarray | None = None
         self.core._window = PlayWindow(self)  # the env's human mode shows its frames here (see BilliardsEnv._show)
         self.reset(seed)
 
     # --- coordinates ------------------------------------------------------------------------------------
     def to_table(self, pixel: tuple[float, float]) -> tuple[float, float]:
         """Window pixel (column, row) to table metres."""
-        x = (pixel[0] - self._px0[0]) / self._pscale[0]
-        y = (pixel[1] - self._px0[1]) / self._pscale[1]
+        x, y = self.renderer.to_table(pixel)
         return float(x), float(y)
 
     def ball_pixel(self, row: int) -> tuple[int, int]:
-        """Window pixel of ball ``row`` (0 = cue ball)."""
-        c, r = self.renderer.to_pixels(self.core.balls.pos[row])[0]
+        """Window pixel of ball ``row`` (0 = cue ball; while in hand, where it is being placed)."""
+        xy = self.cue_xy() if row == 0 else self.core.balls.pos[row]
+        c, r = self.renderer.to_pixels(np.asarray(xy))[0]
         return int(c), int(r)
+
+    def pocket_pixel(self, k: int) -> tuple[int, int]:
+        c, r = self.renderer.to_pixels(self.core.table.pocket_xy[k])[0]
+        return int(c), int(r)
+
+    @property
+    def tip_diagram(self) -> tuple[tuple[float, float], float]:
+        """Centre and radius (px) of the app's tip diagram, at the right end of its panel."""
+        w, h = self.table_size
+        r = 0.4 * PANEL_HEIGHT
+        return (w - r - 10.0, h + PANEL_HEIGHT / 2.0), r
 
     # --- game -------------------------------------------------------------------------------------------
     def reset(self, seed: int | None = None) -> None:
         self.env.reset(seed=seed)
         self.shots, self.total, self.done, self.success = 0, 0.0, False, False
+        self.opponent_shots = 0
         self.dragging, self.press, self.power = False, None, 0.0
+        self._new_turn()
+        self.status = self._hint("aim with the mouse; press, drag and release to shoot")
+
+    def _new_turn(self) -> None:
+        """Before a shot: pick up the cue ball if in hand, forget the called pocket, aim at the target."""
+        self.placing = self.tip_drag = False
+        self.pocket = None
+        self.place = None
+        if self.in_hand():
+            x, y = self.core.balls.pos[0]
+            self.place = self.core.legal_cue_position(float(x), float(y))
         t = self.core.target_ball()
-        if t is not None:
-            p = self.core.balls.pos
-            self.aim = math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0])
-        self.status = "aim with the mouse; press, drag and release to shoot"
+        if t is not None and not self.done:
+            cx, cy = self.cue_xy()
+            p = self.core.balls.pos[t]
+            self.aim = math.atan2(p[1] - cy, p[0] - cx)
+
+    def in_hand(self) -> bool:
+        """The shooter has the cue ball in hand (games)."""
+        return not self.done and self.core.task.ball_in_hand_area(self.core) is not None
+
+    def needs_pocket(self) -> bool:
+        """The shooter is on the 8 and must call its pocket (8-ball)."""
+        return not self.done and self.is_game and self.core.task.needs_called_pocket()
+
+    def cue_xy(self) -> tuple[float, float]:
+        if self.place is not None:
+            return self.place
+        x, y = self.core.balls.pos[0]
+        return float(x), float(y)
+
+    def put_cue_ball(self, pixel: tuple[float, float]) -> None:
+        """Ball in hand: put the cue ball at ``pixel`` (the env's nearest legal point)."""
+        self.place = self.core.legal_cue_position(*self.to_table(pixel))
 
     def speed(self) -> float:
         c = self.core.config
         return c.speed_min + self.power * (c.speed_max - c.speed_min)
 
-    def shoot(self) -> dict[str, Any]:
-        """Play the shot set by ``aim`` and ``power``; the env animates it in the window as it is drawn, with the
-        power bar already gone (the click shows at once)."""
-        action = self.core.action_from_shot(self.aim, self.speed())
+    def shoot(self) -> dict[str, Any] | None:
+        """Play the shot set by ``aim``, ``power``, the tip, the placement and the called pocket; the env animates
+        it (and a game's opponent's reply) in the window as it is drawn, with the power bar already gone."""
+        if self.needs_pocket() and self.pocket is None:
+            self.status = "call the 8's pocket first: click a pocket or press 1-6"
+            self.dragging, self.power = False, 0.0
+            return None
+        side, top = self.tip if self.spin else (0.0, 0.0)
+        action = self.core.action_from_shot(self.aim, self.speed(), side, top, place=self.place, pocket=self.pocket)
+        self.last_action = action
         self.status = f"shot {self.shots + 1}: {self.speed():.2f} m/s ..."
         self.dragging, self.power = False, 0.0  # released: the bar goes, the balls move
+        self.place = None
         _, reward, terminated, truncated, info = self.env.step(action)
         self.last_info = info
         self.shots += 1
         self.total += float(reward)
-        potted = ", ".join(b for b in info["pocketed"] if b != "cue") or "nothing"
-        self.status = f"shot {self.shots}: {info['speed']:.2f} m/s, potted {potted}" + (
-            ", SCRATCH (cue ball re-spotted)" if info["scratch"] else "") + f", reward {float(reward):+.2f}"
+        self.opponent_shots += int(info.get("opponent_shots", 0))
         if terminated or truncated:
             self.done = True
             self.success = bool(info["is_success"])
-            self.status += (" - table cleared!" if self.success else " - episode over") + " (R or click: new)"
+        self.status = self._game_status(info) if self.is_game else self._scene_status(info, float(reward))
+        self._new_turn()
         return info
+
+    def _scene_status(self, info: dict[str, Any], reward: float) -> str:
+        potted = ", ".join(b for b in info["pocketed"] if b != "cue") or "nothing"
+        out = f"shot {self.shots}: {info['speed']:.2f} m/s, potted {potted}" + (
+            ", SCRATCH (cue ball re-spotted)" if info["scratch"] else "") + f", reward {reward:+.2f}"
+        if self.done:
+            out += (" - table cleared!" if self.success else " - episode over") + " (R or click: new)"
+        return out
+
+    def _game_status(self, info: dict[str, Any]) -> str:
+        hud = self.core.task.hud(self.core)
+        names = hud["players"]
+        out = f"shot {self.shots}: {info['speed']:.2f} m/s"
+        if self.opponent_shots and info.get("opponent_shots"):
+            n = info["opponent_shots"]
+            out += f"; {names[1]} played {n} shot{'s' if n > 1 else ''}"
+        if self.done:
+            winner = hud["winner"]
+            result = "no winner" if winner is None else f"{names[winner]} won{'!' if winner == 0 else ''}"
+            return f"{out}; {result} (R or click: new game)"
+        return self._hint(out + f"; {names[hud['shooter']]} to shoot")
+
+    def _hint(self, base: str) -> str:
+        """``base`` with what the shooter must do next: place the cue ball, call the 8's pocket."""
+        if self.in_hand():
+            base += "; ball in hand: drag it, or click where to put it"
+        if self.needs_pocket():
+            base += "; call the 8's pocket (click it or press 1-6)"
+        return base
 
     # --- input ------------------------------------------------------------------------------------------
     def handle(self, e: Any) -> None:
@@ -146,49 +269,130 @@ class PlayApp:
         if e.type == pg.QUIT:
             self.running = False
         elif e.type == pg.KEYDOWN:
-            if e.key == pg.K_ESCAPE and self.dragging:
-                self.dragging, self.power = False, 0.0
-            elif e.key in (pg.K_ESCAPE, pg.K_q):
-                self.running = False
-            elif e.key == pg.K_r:
-                self.reset()
+            self._key(e)
         elif e.type == pg.MOUSEBUTTONDOWN:
             if self.done:
                 self.reset()
             elif e.button == 1:
-                self.set_aim(e.pos)
-                self.dragging, self.press, self.power = True, tuple(e.pos), 0.0
-            elif e.button == 3 and self.dragging:
-                self.dragging, self.power = False, 0.0
+                self._press(e.pos)
+            elif e.button == 3:
+                if self.dragging:
+                    self.dragging, self.power = False, 0.0
+                elif self.in_hand():
+                    self.put_cue_ball(e.pos)
         elif e.type == pg.MOUSEMOTION:
-            if self.dragging and self.press is not None:
+            if self.placing:
+                self.put_cue_ball(e.pos)
+            elif self.tip_drag:
+                self.set_tip_at(e.pos)
+            elif self.dragging and self.press is not None:
                 d = math.hypot(e.pos[0] - self.press[0], e.pos[1] - self.press[1])
                 self.power = min(1.0, d / (POWER_DRAG * self.table_size[0]))
             elif not self.done:
                 self.set_aim(e.pos)
-        elif e.type == pg.MOUSEBUTTONUP and e.button == 1 and self.dragging:
-            if self.power >= MIN_POWER:
-                self.shoot()
+        elif e.type == pg.MOUSEBUTTONUP and e.button == 1:
+            if self.placing or self.tip_drag:
+                self.placing = self.tip_drag = False
+            elif self.dragging:
+                if self.power >= MIN_POWER:
+                    self.shoot()
+                elif self.in_hand():  # a click, not a drag: put the cue ball there
+                    self.put_cue_ball(e.pos)
+                self.dragging, self.power = False, 0.0
+
+    def _press(self, pos: tuple[int, int]) -> None:
+        """Left button down: on the tip diagram, a pocket to call, the cue ball in hand, or the start of a shot."""
+        (cx, cy), r = self.tip_diagram
+        if self.spin and math.hypot(pos[0] - cx, pos[1] - cy) <= r * 1.15:
+            self.tip_drag = True
+            self.set_tip_at(pos)
+            return
+        if self.needs_pocket():
+            k = self._pocket_at(pos)
+            if k is not None:
+                self.pocket = k
+                self.status = f"pocket {k + 1} called for the 8"
+                return
+        if self.in_hand():
+            bx, by = self.ball_pixel(0)
+            pick = PICK_RADII * float(self.core.balls.radius[0]) * self.renderer.pixels_per_metre
+            if math.hypot(pos[0] - bx, pos[1] - by) <= max(pick, 6.0):
+                self.placing = True
+                return
+        self.set_aim(pos)
+        self.dragging, self.press, self.power = True, tuple(pos), 0.0
+
+    def _pocket_at(self, pos: tuple[int, int]) -> int | None:
+        t = self.core.table
+        ppm = self.renderer.pixels_per_metre
+        for k in range(t.n_pockets):
+            px, py = self.pocket_pixel(k)
+            if math.hypot(pos[0] - px, pos[1] - py) <= POCKET_PICK * float(t.pocket_radius[k]) * ppm:
+                return k
+        return None
+
+    def _key(self, e: Any) -> None:
+        pg = self.pg
+        if e.key == pg.K_ESCAPE and self.dragging:
             self.dragging, self.power = False, 0.0
+        elif e.key in (pg.K_ESCAPE, pg.K_q):
+            self.running = False
+        elif e.key == pg.K_r:
+            self.reset()
+        elif self.spin and e.key in (pg.K_LEFT, pg.K_RIGHT, pg.K_UP, pg.K_DOWN):
+            ds = {pg.K_LEFT: -TIP_STEP, pg.K_RIGHT: TIP_STEP}.get(e.key, 0.0)
+            dt = {pg.K_DOWN: -TIP_STEP, pg.K_UP: TIP_STEP}.get(e.key, 0.0)
+            self.set_tip(self.tip[0] + ds, self.tip[1] + dt)
+        elif self.spin and e.key == pg.K_c:
+            self.set_tip(0.0, 0.0)
+        elif self.needs_pocket() and pg.K_1 <= e.key <= pg.K_9 and e.key - pg.K_1 < self.core.table.n_pockets:
+            self.pocket = e.key - pg.K_1
+            self.status = f"pocket {self.pocket + 1} called for the 8"
+
+    def set_tip(self, side: float, top: float) -> None:
+        """Tip offsets (fractions of R), moved onto the disc of radius ``max_tip_offset`` if outside."""
+        r = math.hypot(side, top)
+        if r > self.max_tip:
+            side, top = side * self.max_tip / r, top * self.max_tip / r
+        self.tip = (round(side, 6), round(top, 6))
+
+    def set_tip_at(self, pixel: tuple[int, int]) -> None:
+        from billiards_env.render.overlays import tip_from_point
+
+        centre, r = self.tip_diagram
+        self.tip = tip_from_point(pixel, centre, r, self.max_tip)
 
     def set_aim(self, pixel: tuple[int, int]) -> None:
         """Aim from the cue ball towards ``pixel`` (unchanged if the pointer is on the cue ball's centre)."""
         x, y = self.to_table(pixel)
-        cx, cy = self.core.balls.pos[0]
+        cx, cy = self.cue_xy()
         if math.hypot(x - cx, y - cy) > 1e-3:
             self.aim = math.atan2(y - cy, x - cx)
 
     # --- drawing ----------------------------------------------------------------------------------------
     def draw(self) -> None:
         b = self.core.balls
-        cue = None if self.done else (float(b.pos[0, 0]), float(b.pos[0, 1]), self.aim)
-        surf = self.renderer.draw(b.pos, b.on_table, self.core.ball_numbers, cue=cue)
+        pos, on = b.pos, b.on_table
+        if self.place is not None:
+            pos, on = pos.copy(), on.copy()
+            pos[0], on[0] = self.place, True
+        data = self.core.render_data()
+        cx, cy = self.cue_xy()
+        data["cue"] = None if self.done else (cx, cy, self.aim)
+        if self.spin:
+            data["tip"] = self.tip  # the shot being prepared
+        if "hud" in data and self.needs_pocket():
+            data["hud"] = {**data["hud"], "called_pocket": self.pocket}
+        surf = self.renderer.draw(pos, on, self.core.ball_numbers, **data)
         self.screen.blit(surf, (0, 0))
         self.draw_panel()
         self.pg.display.flip()
         self.frames_shown += 1
 
     def draw_panel(self) -> None:
+        from billiards_env.render.overlays import draw_tip_diagram
+        from billiards_env.render.paint import text
+
         pg = self.pg
         w, h = self.table_size
         pg.draw.rect(self.screen, PANEL_BG, pg.Rect(0, h, w, PANEL_HEIGHT))
@@ -200,9 +404,15 @@ class PlayApp:
             colour = (int(60 + 195 * self.power), int(200 - 140 * self.power), 60)
             pg.draw.rect(self.screen, colour, fill, border_radius=4)
         label = f"power {self.speed():.2f} m/s" if self.dragging else \
-            f"shots {self.shots}/{self.core.config.max_shots}   return {self.total:+.2f}"
-        self.screen.blit(self.font.render(label, True, TEXT), (bar.right + 10, bar.top))
-        self.screen.blit(self.font.render(self.status, True, TEXT), (10, h + 32))
+            f"shots {self.shots}/{self.core.config.max_shots}" + ("" if self.is_game else f"   return {self.total:+.2f}")
+        room = w - 20
+        if self.spin:
+            (cx, cy), r = self.tip_diagram
+            draw_tip_diagram(self.screen, (cx, cy), r, *self.tip)
+            label += f"   tip: side {self.tip[0]:+.2f} R, top {self.tip[1]:+.2f} R"
+            room = int(cx - r) - 20
+        text(self.screen, label, 22, TEXT, (bar.right + 10, bar.centery), max_width=room - bar.right)
+        text(self.screen, self.status, 22, TEXT, (10, h + 40), max_width=room)
 
     # --- loop -------------------------------------------------------------------------------------------
     def run(self, events: Iterable[list[Any]] | None = None, max_frames: int | None = None) -> dict[str, Any]:
@@ -230,8 +440,8 @@ class PlayApp:
                     self.clock.tick(self.fps)
         finally:
             self.close()
-        return {"shots": self.shots, "return": self.total, "done": self.done, "is_success": self.success,
-                "frames_shown": self.frames_shown}
+        return {"shots": self.shots, "opponent_shots": self.opponent_shots, "return": self.total, "done": self.done,
+                "is_success": self.success, "frames_shown": self.frames_shown}
 
     def close(self) -> None:
         self.env.close()
@@ -270,12 +480,15 @@ class PlayWindow:
         """The app closes the display itself (:meth:`PlayApp.close`)."""
 
 
-def demo_events(app: PlayApp, power: float = 0.5) -> Iterator[list[Any]]:
-    """A scripted shot: point at the target ball, press there, drag ``power`` of full power, release, quit.
-    A generator: each step reads the live state, so it works for any scene and seed."""
+# --- scripted play (--demo, tests) ------------------------------------------------------------------------------
+def mouse_shot(app: PlayApp, power: float, target: tuple[int, int] | None = None) -> Iterator[list[Any]]:
+    """Events of one shot: point at ``target`` (default: the target ball), press there, drag ``power`` of full
+    power straight back towards the cue ball, release. Reads the live state when it starts."""
     pg = app.pg
-    t = app.core.target_ball() or 1
-    bx, by = app.ball_pixel(t)
+    if target is None:
+        t = app.core.target_ball() or 1
+        target = app.ball_pixel(t)
+    bx, by = target
     cx, cy = app.ball_pixel(0)
     yield [pg.event.Event(pg.MOUSEMOTION, pos=(bx, by), rel=(0, 0), buttons=(0, 0, 0))]
     yield [pg.event.Event(pg.MOUSEBUTTONDOWN, pos=(bx, by), button=1)]
@@ -284,6 +497,37 @@ def demo_events(app: PlayApp, power: float = 0.5) -> Iterator[list[Any]]:
     end = (int(round(bx - (bx - cx) / n * drag)), int(round(by - (by - cy) / n * drag)))
     yield [pg.event.Event(pg.MOUSEMOTION, pos=end, rel=(0, 0), buttons=(1, 0, 0))]
     yield [pg.event.Event(pg.MOUSEBUTTONUP, pos=end, button=1)]
+
+
+def mouse_drag(app: PlayApp, start: tuple[int, int], end: tuple[int, int]) -> Iterator[list[Any]]:
+    """Events of a left-button drag from ``start`` to ``end`` (e.g. the cue ball in hand to a new spot)."""
+    pg = app.pg
+    yield [pg.event.Event(pg.MOUSEMOTION, pos=start, rel=(0, 0), buttons=(0, 0, 0))]
+    yield [pg.event.Event(pg.MOUSEBUTTONDOWN, pos=start, button=1)]
+    mid = ((start[0] + end[0]) // 2, (start[1] + end[1]) // 2)
+    yield [pg.event.Event(pg.MOUSEMOTION, pos=mid, rel=(0, 0), buttons=(1, 0, 0))]
+    yield [pg.event.Event(pg.MOUSEMOTION, pos=end, rel=(0, 0), buttons=(1, 0, 0))]
+    yield [pg.event.Event(pg.MOUSEBUTTONUP, pos=end, button=1)]
+
+
+def demo_events(app: PlayApp, power: float = 0.5, max_shots: int = 4) -> Iterator[list[Any]]:
+    """A scripted turn, then quit. A scene: one shot at the target ball with ``power``. A game: with ball in hand
+    drag the cue ball a little towards the side rail, call pocket 1 if on the 8, shoot at the target ball (the
+    break at full power), and go on until the opponent has replied, the game is over or ``max_shots`` were played.
+    A generator: each step reads the live state, so it works for any scene and seed."""
+    pg = app.pg
+    if not app.is_game:
+        yield from mouse_shot(app, power)
+    else:
+        for k in range(max_shots):
+            if app.in_hand():
+                cx, cy = app.ball_pixel(0)
+                yield from mouse_drag(app, (cx, cy), (cx - 12, cy - 20))
+            if app.needs_pocket():
+                yield [pg.event.Event(pg.KEYDOWN, key=pg.K_1, mod=0, unicode="1", scancode=0)]
+            yield from mouse_shot(app, 1.0 if k == 0 else power)
+            if app.done or app.opponent_shots or app.two_people:
+                break
     yield [pg.event.Event(pg.QUIT)]
 
 
@@ -293,14 +537,19 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="billiards-play", description=__doc__.split("\n\n")[0].split(": ", 1)[1],
                                 epilog=__doc__.split("\n\n", 1)[1],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--env", default="BilliardsOneBall-v0", choices=list(ENV_IDS), help="scene to play")
+    p.add_argument("--env", default="BilliardsOneBall-v0", choices=list(ENV_IDS), help="scene or game to play")
+    p.add_argument("--opponent", default=None, choices=list(OPPONENTS),
+                   help="games: the opponent, a baseline player or 'human' (two people take turns); default: the "
+                        "env's (geometric)")
+    p.add_argument("--spin", action="store_true",
+                   help="the spin model with tip offsets (friction='spin', spin_action=True): draw, follow, english")
     p.add_argument("--seed", type=int, default=None, help="seed of the first episode (default: random)")
     p.add_argument("--width", type=int, default=1000, help="window width in pixels")
     p.add_argument("--speedup", type=float, default=2.0,
                    help="animation playback speed (simulated seconds per second; 1 = real time)")
     p.add_argument("--config", default=None, help="a YAML file of env config keys layered over the scene's")
     p.add_argument("--demo", action="store_true",
-                   help="play one scripted shot from synthetic events, print a summary and quit (headless test)")
+                   help="play a scripted turn from synthetic events, print a summary and quit (headless test)")
     return p
 
 
@@ -311,14 +560,16 @@ def main(argv: list[str] | None = None) -> int:
 
     try:
         app = PlayApp(args.env, seed=args.seed, width=args.width, speedup=args.speedup,
-                      realtime=not args.demo, allow_headless=True if args.demo else None, **kwargs)
+                      realtime=not args.demo, allow_headless=True if args.demo else None, opponent=args.opponent,
+                      spin=args.spin, **kwargs)
     except (ValueError, HeadlessDisplayError) as exc:  # bad config (the message names the key), or no display
         print(f"billiards-play: error: {exc}", file=sys.stderr)
         return 2
     if args.demo:
         summary = app.run(demo_events(app))
         print(f"billiards-play demo: {summary}")
-        return 0 if summary["shots"] == 1 else 1
+        replied = not app.is_game or app.two_people or summary["done"] or summary["opponent_shots"] > 0
+        return 0 if summary["shots"] >= 1 and replied else 1
     app.run()
     return 0
 

@@ -109,7 +109,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._renderer: Any = None
         self._window: Any = None
         self._frames: list[np.ndarray] = []
-        self._animations: list[Any] = []
+        self._animations: list[tuple[Any, dict[str, Any]]] = []  # (trajectory, what to draw with it)
+        self._shot_view: dict[str, Any] = {}  # what to draw with the shot just played (recording modes)
+        self._orientations: np.ndarray | None = None  # the balls' orientations (spin model, animations)
 
     # ======================================================================================================
     # Gymnasium API
@@ -129,6 +131,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             self._place(self.np_random, b.pos)
         self.shots = 0
         self.last_shot = None
+        self.last_tip = (0.0, 0.0)
+        self._orientations = None
         self._needs_reset = False
         info = self.task.reset(self, options)
         if self.render_mode == "rgb_array_list":
@@ -151,6 +155,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             self.balls.pos[0] = shot.place
         self.task.before_shot(self, shot)
         outcome, trajectory, played = self.play_shot(shot)
+        view = self._shot_view
         self.shots += 1
         self._animations = []
         reward, terminated, truncated, info = self.task.on_shot(self, outcome)
@@ -169,9 +174,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             info["side"], info["top"] = played.side, played.top
         if self._record:
             later = self._animations
-            self._animate(trajectory, final=not later)
-            for k, traj in enumerate(later):  # the opponent's reply in a game
-                self._animate(traj, final=k == len(later) - 1)
+            self._animate(trajectory, view, final=not later)
+            for k, (traj, seen) in enumerate(later):  # the opponent's reply in a game
+                self._animate(traj, seen, final=k == len(later) - 1)
         self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
         return self.observation_type.observe(self), reward, terminated, truncated, info
 
@@ -199,6 +204,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             b.ang[0] = strike_spin(angle, speed, side, top, float(b.radius[0]))[2:]
         self.last_shot = (x0, y0, angle, speed)
         self.last_tip = (side, top)
+        if self._record:  # drawn with this shot's animation: its cue and tip, a game's HUD before the call
+            self._shot_view = self.render_data(orientations=False)
 
         trajectory = None
         if self._fast and not self._record:
@@ -233,7 +240,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     def queue_animation(self, trajectory: Any) -> None:
         """Animate a shot the task played within this step (an opponent's), after the agent's (recording modes)."""
         if self._record and trajectory is not None:
-            self._animations.append(trajectory)
+            self._animations.append((trajectory, self._shot_view))
 
     def render(self) -> np.ndarray | list[np.ndarray] | None:
         """``rgb_array``: the table now, ``(H, W, 3) uint8`` (the last shot's cue line drawn).
@@ -404,21 +411,49 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         if self._renderer is None:
             from billiards_env.render import TableRenderer
 
-            self._renderer = TableRenderer(self.table, self.config.ball_radius, width_px=self.config.render_width)
+            self._renderer = TableRenderer(self.table, self.config.ball_radius, width_px=self.config.render_width,
+                                           hud=self.task.hud(self) is not None)
         return self._renderer
 
     def _cue_overlay(self) -> tuple[float, float, float] | None:
         s = self.last_shot
         return None if s is None else (s[0], s[1], s[2])
 
+    def render_data(self, orientations: bool = True) -> dict[str, Any]:
+        """What is drawn besides the balls, as plain data (keywords of ``TableRenderer.draw``): the last shot's cue
+        (``cue``), under the spin model its tip offset (``tip``, on a cue-ball diagram) and the balls' orientations
+        (``orientations``, turned by the animated shots), and a game's HUD (``hud``, from ``task.hud``; players,
+        turn, the last call, the score). Front-ends (``billiards-play``) draw with it."""
+        data: dict[str, Any] = {"cue": self._cue_overlay()}
+        if self._spin:
+            data["tip"] = self.last_tip
+            if orientations:
+                data["orientations"] = self._orientations_now()
+        hud = self.task.hud(self)
+        if hud is not None:
+            data["hud"] = hud
+        return data
+
+    def _orientations_now(self) -> np.ndarray:
+        if self._orientations is None:
+            self._orientations = np.tile(np.eye(3), (self.n_balls, 1, 1))
+        return self._orientations
+
     def _draw_state(self, positions: np.ndarray | None = None, on_table: np.ndarray | None = None,
-                    surface: bool = False) -> Any:
-        """The table with the balls at ``positions`` (default: now), as an array (or a pygame surface)."""
+                    surface: bool = False, view: dict[str, Any] | None = None,
+                    orientations: np.ndarray | None = None) -> Any:
+        """The table with the balls at ``positions`` (default: now), as an array (or a pygame surface); ``view``
+        (an animated shot's cue, tip and HUD) and ``orientations`` replace those of now."""
         r = self._ensure_renderer()
         pos = self.balls.pos if positions is None else positions
         on = self.balls.on_table if on_table is None else on_table
+        data = self.render_data()
+        if view:
+            data.update(view)
+        if orientations is not None:
+            data["orientations"] = orientations
         draw = r.draw if surface else r.render_array
-        return draw(pos, on, self.ball_numbers, cue=self._cue_overlay())
+        return draw(pos, on, self.ball_numbers, **data)
 
     def animation_times(self, duration: float) -> np.ndarray:
         """Simulated instants (s) drawn for a shot lasting ``duration`` s: ``frame_times(duration, render_fps)``
@@ -432,30 +467,37 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         times[-1] = duration
         return times
 
-    def _animate(self, trajectory: Any, final: bool = True) -> None:
-        """Draw a shot just simulated: frames at :meth:`animation_times` of its trajectory; the last one is the
-        state after the shot (``final``: the table now, cue ball re-spotted if it was pocketed; else the
-        trajectory's own end, when another shot follows in the same step)."""
+    def _animate(self, trajectory: Any, view: dict[str, Any] | None = None, final: bool = True) -> None:
+        """Draw a shot just simulated: frames at :meth:`animation_times` of its trajectory, with ``view`` (the
+        shot's cue, tip and HUD); the last one is the state after the shot (``final``: the table now, cue ball
+        re-spotted if it was pocketed; else the trajectory's own end, when another shot follows in the same step).
+        Under the spin model the balls turn with their spins (:func:`~billiards_env.render.animation.sample_frames`)
+        and keep the orientation they end in."""
         if trajectory is None:  # pragma: no cover - the record path always has one
             return
+        from billiards_env.render.animation import sample_frames
+
         times = self.animation_times(trajectory.duration)
-        shown = times[:-1] if final else times
-        pos, on = trajectory.sample(shown) if len(shown) else (np.zeros((0, self.n_balls, 2)), None)
-        if self.render_mode == "rgb_array_list":
-            for k in range(len(pos)):
-                self._frames.append(self._draw_state(pos[k], on[k]))
-            if final:
+        pos, on, turned = sample_frames(trajectory, times, self._orientations_now() if self._spin else None)
+        if turned is not None:
+            self._orientations = turned[-1]
+        shown = len(times) - 1 if final else len(times)
+        for k in range(shown):
+            state = (pos[k], on[k], None if turned is None else turned[k])
+            if self.render_mode == "rgb_array_list":
+                self._frames.append(self._draw_state(state[0], state[1], view=view, orientations=state[2]))
+            elif not self._show(state, view):
+                return
+        if final:
+            if self.render_mode == "rgb_array_list":
                 self._frames.append(self._draw_state())
-        else:
-            for k in range(len(pos)):
-                if not self._show((pos[k], on[k])):
-                    return
-            if final:
+            else:
                 self._show(None)
 
-    def _show(self, state: tuple[np.ndarray, np.ndarray] | None) -> bool:
-        """Human mode: show one frame (``state`` or now) at render_fps, as soon as it is drawn; False once the
-        user closed the window. The window is a :class:`~billiards_env.render.HumanWindow` made on first use, or
+    def _show(self, state: tuple[np.ndarray, np.ndarray, np.ndarray | None] | None,
+              view: dict[str, Any] | None = None) -> bool:
+        """Human mode: show one frame (``state``: positions, flags, orientations, drawn with ``view``; or now) at
+        render_fps, as soon as it is drawn; False once the user closed the window. The window is a :class:`~billiards_env.render.HumanWindow` made on first use, or
         whatever a front-end put in ``_window`` before (``closed``, ``show(surface, fps)``, ``close()``):
         ``billiards-play`` shows the env's frames in its own window that way."""
         import pygame
@@ -475,7 +517,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             w = self._window = HumanWindow(r.size, title=self.env_id)
         if w.closed:
             return False
-        surf = self._draw_state(surface=True) if state is None else self._draw_state(state[0], state[1], True)
+        surf = self._draw_state(surface=True) if state is None else \
+            self._draw_state(state[0], state[1], True, view, state[2])
         w.show(surf, self.config.render_fps)
         return True
 

@@ -93,6 +93,11 @@ class Task:
         """Score a shot: ``(reward, terminated, truncated, info)``."""
         raise NotImplementedError
 
+    def hud(self, env: "BilliardsEnv") -> dict[str, Any] | None:
+        """Plain data for the renderer's game panel (players, whose turn, the last call, the score:
+        :mod:`billiards_env.render.hud`), or None: no panel (the frames keep their size)."""
+        return None
+
 
 class PotTask(Task):
     """Pocket the object balls: ``+pot_reward`` per object ball pocketed, ``-scratch_penalty`` for a pocketed cue

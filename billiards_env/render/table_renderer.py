@@ -6,6 +6,13 @@ or video driver. The static table (rails, cloth, cushions, pockets) is painted o
 pre-rendered shaded sprites (supersampled, so their edges and numbers are anti-aliased) cached per number
 and pixel radius, so a frame is one background copy plus a few blits.
 
+Given the balls' orientations (the spin model's animations), each ball is drawn turned (:mod:`.sprites`): its
+number disc and stripe, and the cue ball's red dots, roll and spin with it; a ball is redrawn only when its
+orientation changed. Given a tip offset, a small cue-ball diagram in the tray shows where the last shot struck
+the cue ball. Given a HUD (a game's plain data, :mod:`.hud`), a panel below the tray shows the players, whose turn
+it is, the score and the last call, and the table shows the legal target, the kitchen when the cue ball is in
+hand behind the head string, and the pockets to call.
+
 Conventions: table origin at a corner, x along the length, y along the width, angles counter-clockwise from
 +x. The image shows table y = 0 at the BOTTOM (screen y is flipped).
 """
@@ -13,7 +20,7 @@ from __future__ import annotations
 
 import math
 import os
-from typing import TYPE_CHECKING, Sequence
+from typing import TYPE_CHECKING, Any, Mapping, Sequence
 
 import numpy as np
 
@@ -23,6 +30,11 @@ import pygame  # noqa: E402  (after the banner switch)
 from billiards_env.physics.aim import ray_cushion_distance  # noqa: E402
 
 from . import colors as C  # noqa: E402
+from .paint import (aa_disc, mix, radius_key, scale_colour, smoothstep, surface_from_rgba,  # noqa: E402
+                    surface_to_array)
+from .hud import draw_panel, panel_height  # noqa: E402
+from .overlays import draw_kitchen, draw_pocket_labels, draw_ring, draw_tip_diagram  # noqa: E402
+from .sprites import SUPERSAMPLE, OrientedSprites, ball_rgba, shadow_sprite  # noqa: E402,F401
 
 if TYPE_CHECKING:
     from billiards_env.physics.table import Table
@@ -38,17 +50,9 @@ SPOT_RADIUS = 0.005  #: head and foot spots
 CUSHION_PROFILE = ((0.0, 0.10, 0.86), (0.10, 0.22, 1.06), (0.22, 0.40, 1.12), (0.40, 0.65, 1.04),
                    (0.65, 0.88, 0.96), (0.88, 1.0, 0.86))
 
-# --- ball sprite look (angles in radians, lengths in ball radii) ------------------------------------------
-SUPERSAMPLE = 5  #: sub-samples per pixel side for sprites (anti-aliasing)
-DISC_ANGLE = math.radians(27.0)  #: angular radius of the number disc on the sphere
-DISC_TILT = math.radians(41.0)  #: how far the number disc is turned away from the viewer (keeps the centre free)
-STRIPE_HALF_ANGLE = math.radians(33.0)  #: half-width of a stripe band, as an angle
-FLAT_CORE = 0.42  #: radius (in ball radii) inside which shading leaves the main colour untouched
-HIGHLIGHT_AT = (-0.36, -0.40)  #: specular highlight centre (screen x right, y down): light from the top left
-HIGHLIGHT_SIGMA = 0.10
+# --- ball look ------------------------------------------------------------------------------------------
 SHADOW_OFFSET = (0.20, 0.26)  #: ball shadow offset on the cloth (ball radii, down-right)
 CUE_SHADOW_OFFSET = (0.012, 0.016)  #: cue stick shadow offset (metres, down-right: the cue is higher)
-GOLDEN_ANGLE = math.radians(137.50776)  #: spreads the ball orientations so the rack looks natural
 
 #: Cue stick from the tip backwards: (length m, half-width at start m, half-width at end m, colour).
 CUE_SEGMENTS: tuple[tuple[float, float, float, tuple[int, int, int]], ...] = (
@@ -72,11 +76,13 @@ class TableRenderer:
 
     ``ball_radius`` is in metres: one value for all balls or one per ball (``(N,)``, matching ``draw``).
     The image is ``width_px`` wide; its height follows the table's aspect ratio plus the rail border, plus a
-    tray strip below the table for pocketed balls when ``tray`` is true.
+    tray strip below the table for pocketed balls when ``tray`` is true, plus the game panel when ``hud`` is true
+    (frames then need a ``hud`` mapping).
     """
 
     def __init__(
-        self, table: "Table", ball_radius: float | np.ndarray, width_px: int = 800, tray: bool = True
+        self, table: "Table", ball_radius: float | np.ndarray, width_px: int = 800, tray: bool = True,
+        hud: bool = False,
     ) -> None:
         if int(width_px) < 64:
             raise ValueError(f"width_px must be at least 64, got {width_px!r}")
@@ -95,8 +101,12 @@ class TableRenderer:
         self._origin = BORDER * self.pixels_per_metre  # pixel coordinate of the playing area's edge
         max_r = float(radius.max()) * self.pixels_per_metre
         self.tray_height_px = int(math.ceil(2.0 * max_r + max(8.0, 1.2 * max_r))) if tray else 0
-        self.height_px = self.table_height_px + self.tray_height_px
+        self.hud_height_px = panel_height(self.width_px) if hud else 0
+        self.height_px = self.table_height_px + self.tray_height_px + self.hud_height_px
         self._sprites: dict[tuple[int, int], tuple[pygame.Surface, int]] = {}
+        self._oriented: dict[int, OrientedSprites] = {}
+        self._turned: dict[int, tuple[tuple[int, int, bytes], pygame.Surface, int]] = {}  # per ball row
+        self._panel_cache: tuple[str, pygame.Surface] | None = None
         self._shadows: dict[int, tuple[pygame.Surface, int]] = {}
         self._overlay: pygame.Surface | None = None
         self._background = self._paint_background()
@@ -125,6 +135,29 @@ class TableRenderer:
         """Table points ``(N,2)`` in metres to integer pixels ``(N,2)`` as (column, row); y is flipped."""
         return np.rint(self.to_pixels_float(xy)).astype(int)
 
+    def to_table(self, pixel: tuple[float, float] | np.ndarray) -> np.ndarray:
+        """Image pixel ``(column, row)`` to the table point ``(x, y)`` in metres (inverse of
+        :meth:`to_pixels_float`)."""
+        col, row = (float(v) for v in pixel)
+        return np.array([(col - self._origin) / self.pixels_per_metre,
+                         self.width - (row - self._origin) / self.pixels_per_metre])
+
+    @property
+    def tip_diagram(self) -> tuple[tuple[float, float], float]:
+        """Centre (px) and radius (px) of the tip-offset diagram: at the right end of the tray (without a tray, in
+        the bottom-right corner of the frame)."""
+        if self.tray_height_px:
+            r = 0.40 * self.tray_height_px
+            return (self.width_px - max(self.width_px * 0.03, 2.0 * r) - r,
+                    self.table_height_px + 0.5 * self.tray_height_px), r
+        r = 0.3 * BORDER * self.pixels_per_metre
+        return (self.width_px - 1.6 * r, self.table_height_px - 1.6 * r), r
+
+    @property
+    def hud_rect(self) -> pygame.Rect:
+        """Pixel rectangle of the game panel (empty without a HUD)."""
+        return pygame.Rect(0, self.table_height_px + self.tray_height_px, self.width_px, self.hud_height_px)
+
     # --- frames -----------------------------------------------------------------------------------------
     def draw(
         self,
@@ -132,29 +165,62 @@ class TableRenderer:
         on_table: np.ndarray,
         numbers: Sequence[int],
         cue: tuple[float, float, float] | None = None,
+        *,
+        orientations: np.ndarray | None = None,
+        tip: tuple[float, float] | None = None,
+        hud: Mapping[str, Any] | None = None,
     ) -> pygame.Surface:
         """A new surface with the balls on the table, pocketed balls in the tray, and the cue if given.
 
         ``cue = (x, y, angle)``: the cue ball position (m) and shot direction (radians, CCW from +x) of the
         last shot; an aim line runs from there to the cushion and the stick lies behind the ball.
+        ``orientations`` (N, 3, 3): each ball's rotation (body to table frame; the spin model) to draw it turned,
+        the cue ball with red dots; None: every ball as at rest. ``tip = (side, top)``: the tip offset of the last
+        shot (fractions of R) on a cue-ball diagram in the tray. ``hud``: a game's data for the panel (needs a
+        renderer made with ``hud=True``); see :mod:`.hud`.
         """
         pos, flags, nums, radii = self._check_state(positions, on_table, numbers)
+        if hud is not None and not self.hud_height_px:
+            raise ValueError("hud: this renderer has no panel; make it with TableRenderer(..., hud=True)")
         frame = self._background.copy()
         centres = self.to_pixels(pos)
         radii_px = radii * self.pixels_per_metre
         live = np.flatnonzero(flags)
         cue_radius = float(radii[nums == 0][0]) if np.any(nums == 0) else float(self.ball_radius.max())
+        if hud is not None:
+            self._draw_table_marks(frame, hud, pos, flags, nums, radii_px)
         if cue is not None:
             self._draw_aim_line(frame, cue, cue_radius)
         for k in live:
             self._blit_shadow(frame, centres[k], radii_px[k])
-        for k in live:
-            self._blit_ball(frame, nums[k], centres[k], radii_px[k])
+        if orientations is None:
+            for k in live:
+                self._blit_ball(frame, nums[k], centres[k], radii_px[k])
+        else:
+            self._blit_turned(frame, live, nums, centres, radii_px, orientations)
         if cue is not None:
             self._draw_cue_stick(frame, cue, cue_radius)
         if self.tray_height_px:
             self._draw_tray_balls(frame, nums[~flags], radii_px[~flags])
+        if tip is not None:
+            side, top = (float(v) for v in tip)
+            if not (math.isfinite(side) and math.isfinite(top)):
+                raise ValueError(f"tip must be two finite numbers (side, top), got {tip!r}")
+            centre, r = self.tip_diagram
+            draw_tip_diagram(frame, centre, r, side, top)
+        if hud is not None:
+            frame.blit(self._panel(hud), self.hud_rect.topleft)
         return frame
+
+    def _panel(self, hud: Mapping[str, Any]) -> pygame.Surface:
+        """The game panel for ``hud`` (the last one is kept: an animation draws the same panel on every frame)."""
+        key = repr(sorted(hud.items()))
+        if self._panel_cache is None or self._panel_cache[0] != key:
+            rect = self.hud_rect
+            panel = pygame.Surface(rect.size)
+            draw_panel(panel, pygame.Rect(0, 0, rect.width, rect.height), hud, self._ball_sprite)
+            self._panel_cache = (key, panel)
+        return self._panel_cache[1]
 
     def render_array(
         self,
@@ -162,9 +228,11 @@ class TableRenderer:
         on_table: np.ndarray,
         numbers: Sequence[int],
         cue: tuple[float, float, float] | None = None,
+        **extras: Any,
     ) -> np.ndarray:
-        """``draw`` as a contiguous ``(H, W, 3) uint8`` array (rows top to bottom, like an image)."""
-        return surface_to_array(self.draw(positions, on_table, numbers, cue))
+        """``draw`` as a contiguous ``(H, W, 3) uint8`` array (rows top to bottom, like an image); ``extras`` are
+        ``draw``'s keywords (``orientations``, ``tip``, ``hud``)."""
+        return surface_to_array(self.draw(positions, on_table, numbers, cue, **extras))
 
     def background(self) -> pygame.Surface:
         """A copy of the static table without balls."""
@@ -200,20 +268,71 @@ class TableRenderer:
         sprite, half = self._ball_sprite(int(number), radius_px)
         frame.blit(sprite, (int(centre[0]) - half, int(centre[1]) - half))
 
+    def _blit_turned(self, frame: pygame.Surface, live: np.ndarray, nums: np.ndarray, centres: np.ndarray,
+                     radii_px: np.ndarray, orientations: np.ndarray) -> None:
+        """Balls ``live`` drawn at their orientations: the sprites of balls whose orientation (or number, size)
+        changed since the last frame are made in one batch per size, the others reused."""
+        rot = np.ascontiguousarray(orientations, dtype=float)
+        if rot.shape != (len(nums), 3, 3) or not np.all(np.isfinite(rot[live])):
+            raise ValueError(f"orientations must be finite rotation matrices, shape ({len(nums)}, 3, 3), got "
+                             f"shape {rot.shape}")
+        keys = {int(k): (int(nums[k]), radius_key(radii_px[k]), rot[k].tobytes()) for k in live}
+        stale: dict[int, list[int]] = {}
+        for k, key in keys.items():
+            cached = self._turned.get(k)
+            if cached is None or cached[0] != key:
+                stale.setdefault(key[1], []).append(k)
+        for rk, rows in stale.items():
+            if rk not in self._oriented:
+                self._oriented[rk] = OrientedSprites(rk / 10.0)
+            maker = self._oriented[rk]
+            for k, rgba in zip(rows, maker.rgba(nums[rows], rot[rows])):
+                self._turned[k] = (keys[k], surface_from_rgba(rgba), maker.half)
+        for k in live:
+            _, sprite, half = self._turned[int(k)]
+            frame.blit(sprite, (int(centres[k][0]) - half, int(centres[k][1]) - half))
+
+    def _draw_table_marks(self, frame: pygame.Surface, hud: Mapping[str, Any], pos: np.ndarray, flags: np.ndarray,
+                          nums: np.ndarray, radii_px: np.ndarray) -> None:
+        """The HUD's marks on the table: the kitchen when the cue ball is in hand behind the head string, rings
+        around the target balls, and when a pocket must be called the pocket numbers and the called pocket."""
+        kitchen_x = hud.get("kitchen_x")
+        if kitchen_x is not None:
+            draw_kitchen(frame, self.playing_rect, float(self.to_pixels_float(np.array([kitchen_x, 0.0]))[0, 0]))
+        targets = {int(n) for n in (hud.get("targets") or ())}
+        for k in np.flatnonzero(flags):
+            if int(nums[k]) in targets:
+                r = radii_px[k]
+                draw_ring(frame, self.to_pixels_float(pos[k])[0], 1.5 * r, max(1.5, 0.2 * r))
+        if hud.get("call_pocket"):
+            pockets = np.asarray(self.table.pocket_xy, dtype=float)
+            centre = np.array([self.length / 2.0, self.width / 2.0])
+            away = pockets - centre
+            away = np.sign(away) * (np.abs(away) > 1e-9)  # corners diagonally, side pockets straight out
+            away /= np.maximum(np.linalg.norm(away, axis=1), 1e-12)[:, None]
+            size = max(10, int(round(0.42 * BORDER * self.pixels_per_metre)))
+            reach = np.asarray(self.table.pocket_radius) * 1.32 * self.pixels_per_metre + 0.62 * size + 1.0
+            offset = away * reach[:, None] * np.array([1.0, -1.0])
+            called = hud.get("called_pocket")
+            if called is not None and 0 <= int(called) < len(pockets):
+                r = float(self.table.pocket_radius[int(called)]) * self.pixels_per_metre
+                draw_ring(frame, self.to_pixels_float(pockets[int(called)])[0], 1.25 * r, max(2.0, 0.15 * r))
+            draw_pocket_labels(frame, self.to_pixels_float(pockets), offset, size)
+
     def _blit_shadow(self, frame: pygame.Surface, centre: np.ndarray, radius_px: float) -> None:
-        key = _radius_key(radius_px)
+        key = radius_key(radius_px)
         if key not in self._shadows:
-            self._shadows[key] = _shadow_sprite(key / 10.0)
+            self._shadows[key] = shadow_sprite(key / 10.0)
         sprite, half = self._shadows[key]
         dx, dy = (round(o * radius_px) for o in SHADOW_OFFSET)
         frame.blit(sprite, (int(centre[0]) - half + dx, int(centre[1]) - half + dy))
 
     def _ball_sprite(self, number: int, radius_px: float) -> tuple[pygame.Surface, int]:
         """Cached shaded sprite of ball ``number`` and its centre offset (the sprite's middle pixel)."""
-        key = (number, _radius_key(radius_px))
+        key = (number, radius_key(radius_px))
         if key not in self._sprites:
             rgba = ball_rgba(number, key[1] / 10.0)
-            self._sprites[key] = (_surface_from_rgba(rgba), rgba.shape[0] // 2)
+            self._sprites[key] = (surface_from_rgba(rgba), rgba.shape[0] // 2)
         return self._sprites[key]
 
     def _draw_tray_balls(self, frame: pygame.Surface, numbers: np.ndarray, radii_px: np.ndarray) -> None:
@@ -247,12 +366,12 @@ class TableRenderer:
         length = reach * self.pixels_per_metre
         if length <= r_px + 2:
             return
-        colour = _mix(C.CLOTH, C.AIM_LINE, 0.55)
+        colour = mix(C.CLOTH, C.AIM_LINE, 0.55)
         p0 = start + direction * (r_px + 1.5)
         p1 = start + direction * length
         width = max(1, int(round(self.pixels_per_metre * 0.004)))
         pygame.draw.aaline(frame, colour, p0.tolist(), p1.tolist(), width)
-        _aa_disc(frame, colour, p1, max(1.5, 0.3 * r_px))
+        aa_disc(frame, colour, p1, max(1.5, 0.3 * r_px))
 
     def _draw_cue_stick(self, frame: pygame.Surface, cue: tuple[float, float, float], radius: float) -> None:
         """The cue stick lying behind the cue ball along the shot line, with its shadow on the table."""
@@ -325,7 +444,7 @@ class TableRenderer:
         noise = np.random.default_rng(11).normal(0.0, 0.015, streak.shape)
         shade = 1.0 - 0.10 * streak + 0.05 * np.sin(along * 3.0 + phase) + noise
         d_out = np.minimum(d_long, d_short) / ppm
-        shade *= 0.72 + 0.28 * _smoothstep(0.0, 0.014, d_out)  # rounded outer edge
+        shade *= 0.72 + 0.28 * smoothstep(0.0, 0.014, d_out)  # rounded outer edge
         shade *= 1.0 + 0.10 * np.exp(-((d_out - 0.02) / 0.008) ** 2)  # light catching the top of the rail
         wood = np.array(C.RAIL, dtype=float) * shade[:, None]
         cover = _rounded_rect_coverage(xx, yy, w, h, RAIL_CORNER_RADIUS * ppm)[:, None]
@@ -335,8 +454,8 @@ class TableRenderer:
         """Dark leather around each pocket hole, seen on the rail."""
         centres = self.to_pixels_float(self.table.pocket_xy)
         for c, r in zip(centres, np.asarray(self.table.pocket_radius) * self.pixels_per_metre):
-            _aa_disc(surface, C.RAIL_DARK, c, r * 1.32)
-            _aa_disc(surface, C.POCKET_LINER, c, r * 1.20)
+            aa_disc(surface, C.RAIL_DARK, c, r * 1.32)
+            aa_disc(surface, C.POCKET_LINER, c, r * 1.20)
 
     def _paint_cloth(self, surface: pygame.Surface) -> None:
         """The cushion band (black where no cushion covers it: pocket throats) and the lit cloth."""
@@ -354,7 +473,7 @@ class TableRenderer:
         pixels = np.empty((rect.h, rect.w, 4), np.uint8)
         pixels[..., :3] = np.clip(np.array(C.CLOTH, np.float32) * light[..., None] + 0.5, 0, 255)
         pixels[..., 3] = 255
-        surface.blit(_surface_from_rgba(pixels), rect.topleft)
+        surface.blit(surface_from_rgba(pixels), rect.topleft)
 
     def _paint_cushions(self, surface: pygame.Surface) -> None:
         """Cushions along the four sides, cut at the pockets with angled jaws."""
@@ -365,10 +484,10 @@ class TableRenderer:
             for t0, t1, gain in CUSHION_PROFILE:  # strips from the nose (t=0) back to the rail (t=1)
                 strip = [pts[0] + (pts[3] - pts[0]) * t0, pts[1] + (pts[2] - pts[1]) * t0,
                          pts[1] + (pts[2] - pts[1]) * t1, pts[0] + (pts[3] - pts[0]) * t1]
-                colour = _scale(C.CUSHION, gain)
+                colour = scale_colour(C.CUSHION, gain)
                 pygame.draw.polygon(surface, colour, [p.tolist() for p in strip])
             nose = pts[:2]
-            pygame.draw.aaline(surface, _mix(C.CUSHION, (0, 0, 0), 0.45), nose[0].tolist(), nose[1].tolist())
+            pygame.draw.aaline(surface, mix(C.CUSHION, (0, 0, 0), 0.45), nose[0].tolist(), nose[1].tolist())
             back = pts[2:]
             pygame.draw.aaline(surface, C.RAIL_DARK, back[0].tolist(), back[1].tolist())
 
@@ -424,8 +543,8 @@ class TableRenderer:
         """Pockets as black circles of their capture radius, with a faint rim for depth."""
         centres = self.to_pixels_float(self.table.pocket_xy)
         for c, r in zip(centres, np.asarray(self.table.pocket_radius) * self.pixels_per_metre):
-            _aa_disc(surface, (14, 14, 14), c, r)
-            _aa_disc(surface, C.POCKET, c, r - max(1.0, 0.08 * r))
+            aa_disc(surface, (14, 14, 14), c, r)
+            aa_disc(surface, C.POCKET, c, r - max(1.0, 0.08 * r))
 
     def _paint_sights(self, surface: pygame.Surface) -> None:
         """Diamond sights on the rails (thirds between pockets) and the head and foot spots on the cloth."""
@@ -442,9 +561,9 @@ class TableRenderer:
             pts = self.to_pixels_float(np.array([p + da, p + dc, p - da, p - dc])).tolist()
             pygame.draw.polygon(surface, C.DIAMOND, pts)
             pygame.draw.aalines(surface, C.DIAMOND, True, pts)
-        spot = _mix(C.CLOTH, (0, 0, 0), 0.25)
+        spot = mix(C.CLOTH, (0, 0, 0), 0.25)
         for x in (L * 0.25, L * 0.75):
-            _aa_disc(surface, spot, self.to_pixels_float(np.array([x, W / 2]))[0], SPOT_RADIUS * self.pixels_per_metre)
+            aa_disc(surface, spot, self.to_pixels_float(np.array([x, W / 2]))[0], SPOT_RADIUS * self.pixels_per_metre)
 
     def _paint_tray(self, surface: pygame.Surface) -> None:
         """A dark channel below the table that holds pocketed balls."""
@@ -452,143 +571,10 @@ class TableRenderer:
         inset = max(2, h // 8)
         rect = pygame.Rect(inset, top + inset, self.width_px - 2 * inset, h - 2 * inset)
         pygame.draw.rect(surface, C.TRAY, rect, border_radius=max(2, rect.h // 2))
-        pygame.draw.rect(surface, _mix(C.TRAY, (0, 0, 0), 0.5), rect, width=1, border_radius=max(2, rect.h // 2))
-
-
-# --- sprites (pure numpy, cached by the renderer) -------------------------------------------------------------
-def ball_rgba(number: int, radius_px: float, supersample: int = SUPERSAMPLE) -> np.ndarray:
-    """A shaded, anti-aliased ``(S, S, 4) uint8`` sprite of ball ``number``; the ball's centre is pixel ``S//2``.
-
-    Shading (rim darkening, a highlight to the top left) and the number disc stay outside a central core,
-    so the centre pixel is the ball's main colour exactly (also enforced for tiny radii).
-    """
-    half = int(math.ceil(radius_px)) + 1
-    size = 2 * half + 1
-    coords = (np.arange(size * supersample) + 0.5) / supersample - (half + 0.5)
-    v, u = np.meshgrid(coords / radius_px, coords / radius_px, indexing="ij")  # u right, v down, in radii
-    r2 = u * u + v * v
-    inside = r2 <= 1.0
-    nz = np.sqrt(np.clip(1.0 - r2, 0.0, 1.0))
-    normal = np.stack([u, v, nz], axis=-1)
-    colour = _ball_albedo(number, normal)
-    colour = _shade(colour, u, v, np.sqrt(r2))
-    w = inside.astype(float)
-    block = (size, supersample, size, supersample)
-    cover = w.reshape(block).mean(axis=(1, 3))
-    summed = (colour * w[..., None]).reshape(block + (3,)).sum(axis=(1, 3))
-    rgb = summed / np.maximum(cover * supersample * supersample, 1e-9)[..., None]
-    rgba = np.dstack([np.clip(np.rint(rgb), 0, 255), np.rint(cover * 255)]).astype(np.uint8)
-    rgba[half, half] = (*C.ball_colour(number), 255)
-    return rgba
-
-
-def _ball_albedo(number: int, normal: np.ndarray) -> np.ndarray:
-    """Surface colour at each sample's normal: body, stripe band, number disc and printed number."""
-    main = np.array(C.ball_colour(number), dtype=float)
-    shape = normal.shape[:-1]
-    if number == 0:
-        return np.broadcast_to(np.array(C.CUE_BALL, dtype=float), shape + (3,)).copy()
-    phi = number * GOLDEN_ANGLE + 0.35
-    toward = np.array([math.cos(phi), math.sin(phi), 0.0])  # screen direction the disc is turned to
-    disc_dir = np.array([toward[0] * math.sin(DISC_TILT), toward[1] * math.sin(DISC_TILT), math.cos(DISC_TILT)])
-    if C.is_stripe(number):
-        band_axis = np.array([-toward[1], toward[0], 0.0])  # band runs through the centre and the disc
-        in_band = np.abs(normal @ band_axis) < math.sin(STRIPE_HALF_ANGLE)
-        colour = np.where(in_band[..., None], main, np.array(C.STRIPE_WHITE, dtype=float))
-    else:
-        colour = np.broadcast_to(main, shape + (3,)).copy()
-    in_disc = normal @ disc_dir > math.cos(DISC_ANGLE)
-    colour[in_disc] = C.NUMBER_DISC
-    ink = _number_ink(number, normal, disc_dir) * in_disc
-    return colour * (1.0 - ink[..., None]) + np.array(C.NUMBER_INK, dtype=float) * ink[..., None]
-
-
-def _number_ink(number: int, normal: np.ndarray, disc_dir: np.ndarray) -> np.ndarray:
-    """Ink coverage 0..1 of the printed number, mapped onto the (tilted) disc so it foreshortens with it."""
-    glyph = _glyph(str(number))
-    gh, gw = glyph.shape
-    e1 = np.array([1.0, 0.0, 0.0]) - disc_dir[0] * disc_dir  # screen-right projected onto the disc plane
-    e1 /= np.linalg.norm(e1)
-    e2 = np.cross(disc_dir, e1)  # points screen-down, like glyph rows
-    disc_r = math.sin(DISC_ANGLE)
-    scale = min(1.10 * disc_r / gh, 1.45 * disc_r / gw)  # sphere units per glyph pixel
-    col = np.floor(normal @ e1 / scale + gw / 2.0).astype(int)
-    row = np.floor(normal @ e2 / scale + gh / 2.0).astype(int)
-    ok = (col >= 0) & (col < gw) & (row >= 0) & (row < gh)
-    ink = np.zeros(normal.shape[:-1])
-    ink[ok] = glyph[row[ok], col[ok]]
-    return ink
-
-
-_GLYPHS: dict[str, np.ndarray] = {}
-
-
-def _glyph(text: str) -> np.ndarray:
-    """High-resolution ink mask (rows, cols) in 0..1 of ``text`` in pygame's default bold font, cropped."""
-    if text not in _GLYPHS:
-        if not pygame.font.get_init():
-            pygame.font.init()
-        surf = pygame.font.Font(None, 120).render(text, True, (255, 255, 255))
-        alpha = pygame.surfarray.array_alpha(surf).T.astype(float) / 255.0
-        rows, cols = np.flatnonzero(alpha.any(axis=1)), np.flatnonzero(alpha.any(axis=0))
-        _GLYPHS[text] = alpha[rows[0]:rows[-1] + 1, cols[0]:cols[-1] + 1]
-    return _GLYPHS[text]
-
-
-def _shade(colour: np.ndarray, u: np.ndarray, v: np.ndarray, r: np.ndarray) -> np.ndarray:
-    """Sphere shading that leaves the core (r < FLAT_CORE) untouched: rim darkening, a darker lower-right
-    side, a soft specular highlight at the top left and a faint cloth-green bounce light on the lower rim."""
-    rim = _smoothstep(FLAT_CORE, 1.02, r)
-    away = np.clip((u + v) * 0.7071, 0.0, 1.0)  # toward the lower right, away from the light
-    shade = 1.0 - 0.30 * rim**1.6 - 0.22 * rim * away
-    out = colour * shade[..., None]
-    bounce = (rim**3 * away * 0.10)[..., None]
-    out = out * (1.0 - bounce) + np.array(C.CLOTH, dtype=float) * bounce
-    hx, hy = HIGHLIGHT_AT
-    spec = np.exp(-((u - hx) ** 2 + (v - hy) ** 2) / (2.0 * HIGHLIGHT_SIGMA**2))
-    spec = np.where(r < FLAT_CORE * 0.6, 0.0, spec)  # the core keeps the main colour
-    return out + (255.0 - out) * (0.85 * spec)[..., None]
-
-
-def _shadow_sprite(radius_px: float) -> tuple[pygame.Surface, int]:
-    """Soft translucent black disc (the ball's shadow on the cloth) and its centre offset."""
-    half = int(math.ceil(radius_px * 1.35)) + 1
-    yy, xx = np.mgrid[-half:half + 1, -half:half + 1].astype(float)
-    d = np.hypot(xx, yy) / radius_px
-    alpha = 105.0 * (1.0 - _smoothstep(0.55, 1.25, d))
-    rgba = np.zeros(d.shape + (4,), np.uint8)
-    rgba[..., 3] = np.rint(alpha).astype(np.uint8)
-    return _surface_from_rgba(rgba), half
-
-
-def surface_to_array(surface: pygame.Surface) -> np.ndarray:
-    """A surface's pixels as a contiguous ``(H, W, 3) uint8`` array.
-
-    Same values as ``surfarray.array3d(surface).transpose(1, 0, 2)``, but read row-major in one copy,
-    which is several times faster for full frames.
-    """
-    w, h = surface.get_size()
-    return np.frombuffer(pygame.image.tobytes(surface, "RGB"), dtype=np.uint8).reshape(h, w, 3).copy()
+        pygame.draw.rect(surface, mix(C.TRAY, (0, 0, 0), 0.5), rect, width=1, border_radius=max(2, rect.h // 2))
 
 
 # --- small drawing helpers -------------------------------------------------------------------------------
-def _aa_disc(surface: pygame.Surface, colour: tuple[int, int, int], centre: np.ndarray, radius: float) -> None:
-    """An anti-aliased filled circle at a sub-pixel centre (coverage computed by supersampling)."""
-    if radius <= 0:
-        return
-    x0, y0 = int(math.floor(centre[0] - radius)) - 1, int(math.floor(centre[1] - radius)) - 1
-    n_x, n_y = int(math.ceil(radius * 2)) + 3, int(math.ceil(radius * 2)) + 3
-    ss = 4
-    ys = y0 + (np.arange(n_y * ss) + 0.5) / ss - 0.5 - centre[1]
-    xs = x0 + (np.arange(n_x * ss) + 0.5) / ss - 0.5 - centre[0]
-    inside = (ys[:, None] ** 2 + xs[None, :] ** 2) <= radius * radius
-    cover = inside.reshape(n_y, ss, n_x, ss).mean(axis=(1, 3))
-    rgba = np.zeros((n_y, n_x, 4), np.uint8)
-    rgba[..., :3] = colour
-    rgba[..., 3] = np.rint(cover * 255).astype(np.uint8)
-    surface.blit(_surface_from_rgba(rgba), (x0, y0))
-
-
 def _cylinder_quad(
     surface: pygame.Surface, a: np.ndarray, b: np.ndarray, w0: float, w1: float, lit: np.ndarray,
     colour: tuple[int, int, int],
@@ -619,29 +605,3 @@ def _rounded_rect_coverage(xx: np.ndarray, yy: np.ndarray, w: float, h: float, r
     cy = np.clip(yy, radius, h - radius)
     dist = np.hypot(xx - cx, yy - cy)
     return np.clip(radius - dist + 0.5, 0.0, 1.0)
-
-
-def _smoothstep(edge0: float, edge1: float, x: np.ndarray) -> np.ndarray:
-    t = np.clip((x - edge0) / (edge1 - edge0), 0.0, 1.0)
-    return t * t * (3.0 - 2.0 * t)
-
-
-def _mix(a: tuple[int, int, int], b: tuple[int, int, int], t: float) -> tuple[int, int, int]:
-    """Colour ``a`` moved a fraction ``t`` toward ``b``."""
-    return tuple(int(round(x + (y - x) * t)) for x, y in zip(a, b))  # type: ignore[return-value]
-
-
-def _scale(colour: tuple[int, int, int], gain: float) -> tuple[int, int, int]:
-    """Colour brightened (gain > 1) or darkened (gain < 1), clipped to 0-255."""
-    return tuple(int(min(255, max(0, round(c * gain)))) for c in colour)  # type: ignore[return-value]
-
-
-def _radius_key(radius_px: float) -> int:
-    """Cache key of a pixel radius: tenths of a pixel."""
-    return max(1, int(round(radius_px * 10)))
-
-
-def _surface_from_rgba(rgba: np.ndarray) -> pygame.Surface:
-    """A per-pixel-alpha surface from an ``(H, W, 4) uint8`` array (no display needed)."""
-    h, w = rgba.shape[:2]
-    return pygame.image.frombuffer(np.ascontiguousarray(rgba).tobytes(), (w, h), "RGBA").copy()
