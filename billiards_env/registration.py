@@ -18,15 +18,23 @@ ENVS: dict[str, str] = {
 ENV_IDS: tuple[str, ...] = tuple(ENVS)
 
 
+def vector_entry_point(env_id: str) -> str:
+    """``module:Class`` of the native vector env of ``env_id`` (``billiards_env/envs/vector.py`` defines one per
+    id, named after the env class: ``OneBallEnv`` -> ``OneBallVectorEnv``)."""
+    name = ENVS[env_id].rsplit(":", 1)[1]
+    return f"billiards_env.envs.vector:{name.removesuffix('Env')}VectorEnv"
+
+
 def register_envs() -> None:
-    """Register every id with Gymnasium (idempotent; a no-op without Gymnasium: physics-only use)."""
+    """Register every id with Gymnasium, with its native vector env as ``vector_entry_point`` (so
+    ``gymnasium.make_vec(id, n)`` returns it); idempotent; a no-op without Gymnasium: physics-only use."""
     try:
         from gymnasium.envs.registration import register, registry
     except ImportError:  # pragma: no cover - physics-only use without gymnasium
         return
     for env_id, entry_point in ENVS.items():
         if env_id not in registry:
-            register(id=env_id, entry_point=entry_point)
+            register(id=env_id, entry_point=entry_point, vector_entry_point=vector_entry_point(env_id))
 
 
-__all__ = ["ENVS", "ENV_IDS", "register_envs"]
+__all__ = ["ENVS", "ENV_IDS", "register_envs", "vector_entry_point"]

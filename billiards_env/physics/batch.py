@@ -268,7 +268,13 @@ def _use_parallel(n: int, threads: int | None) -> bool:
         if threads < 1:
             raise ValueError(f"threads: must be >= 1 (or None for numba's default), got {threads}")
         return threads > 1
-    return n >= PARALLEL_MIN_ROWS
+    return n >= PARALLEL_MIN_ROWS and _default_threads() > 1
+
+
+def _default_threads() -> int:
+    import numba
+
+    return numba.get_num_threads()
 
 
 def _empty_log(n: int, cap: int) -> tuple[np.ndarray, ...]:
@@ -279,31 +285,50 @@ def _empty_log(n: int, cap: int) -> tuple[np.ndarray, ...]:
 _NO_LOG = _empty_log(0, 0)
 
 
-def _simulate_rows(sim: Simulator, pos, vel, ang, on, radius, mass, struck, events: bool,
-                   threads: int | None, spin: bool) -> BatchResult:
-    n, b = on.shape
-    out = (np.empty(n, np.int64), np.empty(n), np.empty(n, np.int64), np.empty((n, b), np.int64), np.empty((n, b)),
-           np.empty(n, np.int64), np.empty((n, b), np.int64), np.empty((n, b), np.bool_),
-           np.empty((n, N_KINDS), np.int64))
+def new_outputs(n: int, b: int) -> tuple[np.ndarray, ...]:
+    """Empty result arrays for ``n`` rows of ``b`` balls (status, time, n_events, pocket, pocketed_at,
+    first_contact, cushions, rail_after_contact, event_counts), to fill with :func:`simulate_into`."""
+    return (np.empty(n, np.int64), np.empty(n), np.empty(n, np.int64), np.empty((n, b), np.int64), np.empty((n, b)),
+            np.empty(n, np.int64), np.empty((n, b), np.int64), np.empty((n, b), np.bool_),
+            np.empty((n, N_KINDS), np.int64))
+
+
+def simulate_into(sim: Simulator, pos: np.ndarray, vel: np.ndarray, on: np.ndarray, radius: np.ndarray,
+                  mass: np.ndarray, ang: np.ndarray, struck: np.ndarray, out: tuple[np.ndarray, ...],
+                  threads: int | None = None) -> None:
+    """The hot loop of :func:`run_tables` without its checks and allocations, for callers that keep their arrays
+    (a vector env): simulate every row in place into ``out`` (from :func:`new_outputs`). ``radius``/``mass``:
+    ``(1, B)`` or ``(N, B)``; ``ang``: ``(N, B, 3)`` (read only under the spin model); ``struck``: ``(N,)`` int64."""
+    spin = sim._spin
     common = (radius, mass, sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), struck, out)
-    log = None
-    if not events and _use_parallel(n, threads):
+    if _use_parallel(pos.shape[0], threads):
         with _thread_count(threads):
             if spin:
                 _rows_spin_parallel(pos, vel, ang, on, *common)
             else:
                 _rows_exact_parallel(pos, vel, on, *common)
+    elif spin:
+        _rows_spin(pos, vel, ang, on, *common, False, _NO_LOG)
     else:
-        empty = _empty_log(n, 16 * n + 16) if events else _NO_LOG
+        _rows_exact(pos, vel, on, *common, False, _NO_LOG)
+
+
+def _simulate_rows(sim: Simulator, pos, vel, ang, on, radius, mass, struck, events: bool,
+                   threads: int | None, spin: bool) -> BatchResult:
+    n, b = on.shape
+    out = new_outputs(n, b)
+    log = None
+    if events:
+        common = (radius, mass, sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), struck, out)
+        empty = _empty_log(n, 16 * n + 16)
         if spin:
-            log = _rows_spin(pos, vel, ang, on, *common, events, empty)
+            raw = _rows_spin(pos, vel, ang, on, *common, True, empty)
         else:
-            log = _rows_exact(pos, vel, on, *common, events, empty)
-        if events:
-            m = int(log[0][n])
-            log = EventBatch(log[0], *(a[:m] for a in log[1:]))
-        else:
-            log = None
+            raw = _rows_exact(pos, vel, on, *common, True, empty)
+        m = int(raw[0][n])
+        log = EventBatch(raw[0], *(a[:m] for a in raw[1:]))
+    else:
+        simulate_into(sim, pos, vel, on, radius, mass, ang, struck, out, threads)
     return BatchResult(out[0], out[1], out[2], pos, vel, on, *out[3:], ang if spin else None, log)
 
 
@@ -406,4 +431,5 @@ def run_tables(sim: Simulator, pos: np.ndarray, vel: np.ndarray, on_table: np.nd
     return res if spin else res._replace(ang=None)
 
 
-__all__ = ["BatchResult", "EventBatch", "N_KINDS", "PARALLEL_MIN_ROWS", "run_shots", "run_tables"]
+__all__ = ["BatchResult", "EventBatch", "N_KINDS", "PARALLEL_MIN_ROWS", "run_shots", "run_tables", "new_outputs",
+           "simulate_into"]

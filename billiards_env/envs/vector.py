@@ -1,0 +1,505 @@
+"""Native Gymnasium vector envs: N tables of one id stepped by array code, one compiled physics call per step.
+
+``gymnasium.make_vec(id, num_envs)`` returns one (each id is registered with a ``vector_entry_point``)::
+
+    import gymnasium as gym
+    import billiards_env  # noqa: F401
+
+    envs = gym.make_vec("BilliardsOneBall-v0", num_envs=256)        # vectorization_mode="vector_entry_point"
+    obs, info = envs.reset(seed=0)                                   # sub-env k seeded with 0 + k
+    obs, reward, terminated, truncated, info = envs.step(envs.action_space.sample())
+
+Sub-env ``k`` behaves exactly as ``gym.make(id, **kwargs)`` reset with the same seed and fed the same actions:
+the same observations, rewards, terminations, truncations and info, bit for bit, as Gymnasium's
+``SyncVectorEnv`` over single envs would return (``tests/envs/test_vector_env.py`` checks it for every id). The
+difference is speed: for the pot task (``BilliardsOneBall-v0``, ``BilliardsThreeBalls-v0``, ``BilliardsRack-v0``
+and any config of them) a step runs the actions, noise, strikes, scoring, re-spotting, resets and observations
+of all tables in compiled array code, and every table's shot in one call of the batch physics
+(:mod:`billiards_env.physics.batch`, spread over numba's threads); each sub-env draws from its own
+``numpy.random.Generator``, seeded as the single env is. Tasks played under the rules of a game (9-ball, 8-ball:
+rules engines and an opponent in Python) and the ``step`` solver run their sub-envs one by one (the same results,
+at single-env speed).
+
+Options (keyword arguments besides the env's own config keys): ``autoreset_mode`` (``"next_step"``, Gymnasium's
+default, ``"same_step"`` or ``"disabled"``; declared in ``metadata["autoreset_mode"]``), ``render_mode`` and
+``render_env`` (the sub-env drawn; ``rgb_array`` returns its frame, ``rgb_array_list`` its animated shots),
+``threads`` (numba threads for the physics: None chooses, 1 runs serially; the results do not depend on it).
+"""
+from __future__ import annotations
+
+from typing import Any, ClassVar
+
+import gymnasium as gym
+import numpy as np
+from gymnasium.envs.registration import load_env_creator
+from gymnasium.utils import seeding
+from gymnasium.vector import AutoresetMode, SyncVectorEnv, VectorEnv
+from gymnasium.vector.utils import batch_space
+from numba import typed
+
+from billiards_env.physics.balls import Balls
+from billiards_env.physics.batch import new_outputs, simulate_into
+from billiards_env.physics.codes import STATUS_NAMES
+from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES, head_spot
+from billiards_env.registration import ENVS, vector_entry_point
+
+from ._vector_kernels import (AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, PLACED, finish_shots, observe_positions,
+                              place_tables, prepare_shots)
+from .base import RENDER_MODES, BilliardsEnv
+from .config import ConfigError
+
+_AIMS = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}
+_STATUS = np.array(STATUS_NAMES, dtype=object)
+
+
+class _TableView:
+    """Sub-env ``k`` seen as an env by the observation and task code (its balls are views of the vector's
+    arrays), for the parts that stay in Python (the ``features`` observation)."""
+
+    def __init__(self, template: BilliardsEnv, balls: Balls) -> None:
+        self.balls = balls
+        self.table = template.table
+        self.task = template.task
+        self.config = template.config
+        self.n_balls = template.n_balls
+        self.physics = template.physics
+
+    def target_ball(self) -> int | None:
+        return self.task.target_ball(self)
+
+
+class BilliardsVectorEnv(VectorEnv):
+    """``num_envs`` tables of the id :attr:`env_id` (see the module docstring). Constructor:
+    ``BilliardsVectorEnv(num_envs=1, *, autoreset_mode="next_step", render_mode=None, render_env=0, threads=None,
+    config=None, **overrides)``, the last two as for the single env."""
+
+    #: The registered id whose env this vectorises (set by the per-id subclasses below).
+    env_id: ClassVar[str] = "BilliardsOneBall-v0"
+    metadata: dict[str, Any] = {"render_modes": RENDER_MODES, "autoreset_mode": AutoresetMode.NEXT_STEP}
+
+    def __init__(self, num_envs: int = 1, *, autoreset_mode: str | AutoresetMode = AutoresetMode.NEXT_STEP,
+                 render_mode: str | None = None, render_env: int = 0, threads: int | None = None,
+                 max_episode_steps: int | None = None, **kwargs: Any) -> None:
+        if isinstance(num_envs, bool) or not isinstance(num_envs, (int, np.integer)) or num_envs < 1:
+            raise ValueError(f"num_envs: must be a positive integer, got {num_envs!r}")
+        if not 0 <= render_env < num_envs:
+            raise ValueError(f"render_env: the sub-env to draw must be in [0, {num_envs}), got {render_env}")
+        if max_episode_steps is not None:
+            raise ValueError("max_episode_steps: the billiards envs end episodes themselves; set the max_shots "
+                             "config key instead")
+        self.autoreset_mode = _autoreset_mode(autoreset_mode)
+        self.num_envs = int(num_envs)
+        self.render_mode = render_mode
+        self.render_env = int(render_env)
+        self.threads = threads
+        self._kwargs = dict(kwargs)
+        env_cls = load_env_creator(ENVS[self.env_id])
+        #: The env whose config, spaces and parts every sub-env shares; it also draws ``render_env``.
+        self.template: BilliardsEnv = env_cls(render_mode=render_mode, **kwargs)
+        t = self.template
+        c = t.config
+        self.metadata = {**type(self).metadata, "render_fps": c.render_fps, "autoreset_mode": self.autoreset_mode}
+        self.single_observation_space = t.observation_space
+        self.single_action_space = t.action_space
+        self.observation_space = batch_space(t.observation_space, self.num_envs)
+        self.action_space = batch_space(t.action_space, self.num_envs)
+        self.spec = None
+        self.closed = False
+        #: Native array path (the pot task on the exact solver); otherwise the sub-envs run one by one.
+        self.native = c.task == "pot" and c.solver.name == "exact"
+        if self.native:
+            self._setup_native(t)
+        else:
+            self._sync = SyncVectorEnv(
+                [lambda k=k: env_cls(render_mode=render_mode if k == self.render_env else None, **kwargs)
+                 for k in range(self.num_envs)], copy=True, autoreset_mode=self.autoreset_mode)
+
+    # ======================================================================================================
+    # Native path: set-up
+    # ======================================================================================================
+    def _setup_native(self, t: BilliardsEnv) -> None:
+        c = t.config
+        n, nb = self.num_envs, t.n_balls
+        self.ball_ids = t.ball_ids
+        self.pos = np.zeros((n, nb, 2))
+        self.vel = np.zeros((n, nb, 2))
+        self.ang = np.zeros((n, nb, 3))
+        self.on_table = np.ones((n, nb), np.bool_)
+        self.shots = np.zeros(n, np.int64)
+        self._radius = np.ascontiguousarray(t.balls.radius, dtype=float).reshape(1, nb)
+        self._mass = np.ascontiguousarray(t.balls.mass, dtype=float).reshape(1, nb)
+        self._struck = np.zeros(n, np.int64)
+        self._out = new_outputs(n, nb)
+        self._played = np.zeros((n, 4))
+        self._start = np.zeros((n, 2))
+        self._reward = np.zeros(n)
+        self._term = np.zeros(n, np.bool_)
+        self._trunc = np.zeros(n, np.bool_)
+        self._success = np.zeros(n, np.bool_)
+        self._scratch = np.zeros(n, np.bool_)
+        self._pmask = np.zeros(n, np.int64)
+        self._obs = np.zeros((n,) + t.observation_space.shape, np.float32)
+        self._needs_reset = np.ones(n, np.bool_)
+        self._ever_reset = False
+        self._has_shot = np.zeros(n, np.bool_)  # a shot since the last reset (the rendered cue line)
+        # Layout of a reset (the template's, checked when it was made).
+        self._fixed_rows = np.asarray(t._fixed_rows, np.int64)
+        self._fixed_xy = np.ascontiguousarray(t._fixed_xy, dtype=float).reshape(-1, 2)
+        self._rand_rows = np.asarray(t._random_rows, np.int64)
+        self._regions = np.asarray(t._regions, dtype=float).reshape(-1, 4)
+        self._pockets = np.asarray(t._pockets, dtype=float).reshape(-1, 2)
+        # Shots and scoring.
+        a = t.action_type
+        self._aim = _AIMS[a.name]
+        self._max_ghost = float(getattr(a, "max_angle", 0.0))
+        self._spin_model = t._spin
+        self._head = head_spot(t.table)
+        self._positions_obs = t.observation_type.name == "positions" and t.observation_type.n_task == 0
+        self._sx = 1.0 / t.table.length
+        self._sy = 1.0 / t.table.width
+        self._first_obj = np.array(self.ball_ids + (None,), dtype=object)  # index -1 -> None
+        self._pocketed_names: dict[int, tuple[str, ...]] = {}
+        # Per-sub-env random generators (as each single env's np_random), and the compiled code's view of them.
+        self._rngs: list[np.random.Generator | None] = [None] * n
+        self._rng_seeds: list[int | None] = [None] * n
+        self._gens: Any = None
+        # Views for the Python parts (features observation).
+        self._views = [_TableView(t, Balls(self.ball_ids, self.pos[k], self.vel[k], t.balls.radius, t.balls.mass,
+                                           self.on_table[k], self.ang[k])) for k in range(n)]
+
+    # ======================================================================================================
+    # Gymnasium API
+    # ======================================================================================================
+    def reset(self, *, seed: int | list[int | None] | None = None, options: dict[str, Any] | None = None
+              ) -> tuple[np.ndarray, dict[str, Any]]:
+        """Reset every sub-env (or those of ``options["reset_mask"]``): ``seed`` None, an int (sub-env ``k`` gets
+        ``seed + k``) or one seed per sub-env, as ``SyncVectorEnv``. Other options go to every sub-env."""
+        if not self.native:
+            return self._sync.reset(seed=seed, options=options)
+        n = self.num_envs
+        if seed is None:
+            seeds: list[int | None] = [None] * n
+        elif isinstance(seed, (int, np.integer)) and not isinstance(seed, bool):
+            seeds = [int(seed) + k for k in range(n)]
+        else:
+            seeds = list(seed)
+            if len(seeds) != n:
+                raise ValueError(f"seed: {len(seeds)} seeds for num_envs={n}; give one per sub-env, an int or None")
+        options = dict(options) if options else {}
+        mask = options.pop("reset_mask", None)
+        if mask is None:
+            rows = np.arange(n)
+        else:
+            mask = np.asarray(mask)
+            if mask.shape != (n,) or mask.dtype != np.bool_ or not mask.any():
+                raise ValueError(f"options['reset_mask']: expected a bool array of shape ({n},) with at least one "
+                                 "True")
+            rows = np.flatnonzero(mask)
+        self._seed_rows(rows, seeds)
+        self._reset_rows(rows, options or None)
+        self._observe(rows)
+        self._ever_reset = True
+        return self._obs.copy(), {}
+
+    def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
+        """Step every sub-env (one shot each; sub-envs whose episode ended reset as ``autoreset_mode`` says)."""
+        if not self.native:
+            return self._sync.step(actions)
+        if not self._ever_reset:
+            raise gym.error.ResetNeeded("call reset() before step(): the tables have no balls yet")
+        n = self.num_envs
+        act = self._parse(actions)
+        mode = self.autoreset_mode
+        if mode == AutoresetMode.NEXT_STEP:
+            resetting = self._needs_reset.copy()
+            active = ~resetting
+        else:
+            if mode == AutoresetMode.DISABLED and self._needs_reset.any():
+                k = int(np.flatnonzero(self._needs_reset)[0])
+                raise gym.error.ResetNeeded(f"sub-env {k}: its episode ended; with autoreset_mode='disabled' reset it "
+                                            "(options={'reset_mask': ...}) before stepping")
+            resetting = np.zeros(n, np.bool_)
+            active = np.ones(n, np.bool_)
+        t = self.template
+        c = t.config
+        a = t.action_type
+        played, start = self._played, self._start
+        prepare_shots(act, active, self._aim, self._max_ghost, self.pos, self.on_table, self._radius[0], a.speed_lo,
+                      a.speed_span, a.spin, a.max_tip, c.angle_noise, c.speed_noise, c.tip_noise, self._gen_list(),
+                      self._spin_model, self.vel, self.ang, played, start)
+        render_before = self._render_snapshot(active)
+        simulate_into(t.simulator, self.pos, self.vel, self.on_table, self._radius, self._mass, self.ang,
+                      self._struck, self._out, self.threads)
+        status, sim_time, n_events, pocket, _, first = self._out[:6]
+        if not finish_shots(active, pocket, first, self.pos, self.on_table, self.vel, self.ang, self.shots,
+                            c.ball_radius, self._head[0], self._head[1], t.table.width, c.pot_reward,
+                            c.scratch_penalty, c.miss_penalty, c.step_penalty, c.single_shot, c.max_shots,
+                            self._reward, self._term, self._trunc, self._success, self._scratch, self._pmask):
+            raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
+        stepped = np.flatnonzero(active)
+        self._has_shot |= active
+        if render_before is not None:
+            self._render_shot(render_before)
+        reward = np.where(active, self._reward, 0.0)
+        term = active & self._term
+        trunc = active & self._trunc
+        done = term | trunc
+        step_info = self._step_info(stepped, status, sim_time, n_events, first)
+        self._observe(stepped)
+        infos: dict[str, Any] = {}
+        if mode == AutoresetMode.SAME_STEP and done.any():
+            ended = np.flatnonzero(done)
+            final_obs = np.full(n, None, dtype=object)
+            for k, row in zip(ended.tolist(), self._obs[ended]):  # (rows of a fresh copy)
+                final_obs[k] = row
+            final_mask = done.copy()
+            kept = np.flatnonzero(active & ~done)
+            infos = _select(step_info, kept, n)
+            infos["final_obs"], infos["_final_obs"] = final_obs, final_mask
+            infos["final_info"], infos["_final_info"] = _select(step_info, ended, n), final_mask.copy()
+            self._reset_rows(ended, None)
+            self._observe(ended)
+            self._needs_reset[:] = False
+        else:
+            infos = _select(step_info, stepped, n)
+            self._needs_reset = done
+        if resetting.any():
+            rows = np.flatnonzero(resetting)
+            self._reset_rows(rows, None)
+            self._observe(rows)
+        return self._obs.copy(), reward, term, trunc, infos
+
+    def render(self) -> Any:
+        """The rendered sub-env (``render_env``) as its single env renders: ``rgb_array`` its table now,
+        ``rgb_array_list`` its frames since the last call (shots animated), ``human`` its window."""
+        if not self.native:
+            return self._sync.envs[self.render_env].render()
+        self._sync_template()
+        return self.template.render()
+
+    def close_extras(self, **kwargs: Any) -> None:
+        if self.native:
+            self.template.close()
+        else:
+            self._sync.close()
+
+    @property
+    def np_random_seed(self) -> tuple[int | None, ...]:
+        """The seed of each sub-env's generator (None: drawn from the OS)."""
+        if not self.native:
+            return self._sync.np_random_seed
+        return tuple(self._rng_seeds)
+
+    @property
+    def envs(self) -> list[gym.Env]:
+        """The sub-env objects of the one-by-one path (games, step solver); the native path has none."""
+        if self.native:
+            raise AttributeError("the native vector env keeps its tables as arrays (pos, on_table, shots...), not as "
+                                 "env objects")
+        return self._sync.envs
+
+    # ======================================================================================================
+    # Native path: the parts of a step
+    # ======================================================================================================
+    def _parse(self, actions: Any) -> np.ndarray:
+        """Actions as a C-contiguous (N, n) float64 array clipped to [-1, 1] (NaN/inf raise, as in the env)."""
+        n_act = self.template.action_type.n
+        try:
+            act = np.asarray(actions, dtype=np.float64).reshape(self.num_envs, n_act)
+        except (ValueError, TypeError):
+            raise ValueError(f"actions: expected {self.num_envs} x {n_act} numbers in [-1, 1] "
+                             f"({self.template.action_type.layout()}), got shape {np.shape(actions)}") from None
+        if not np.isfinite(act).all():
+            k = int(np.flatnonzero(~np.isfinite(act).all(axis=1))[0])
+            raise ValueError(f"actions[{k}]: must be finite numbers, got {act[k].tolist()}; check the policy's output "
+                             "for NaN/inf")
+        return np.ascontiguousarray(np.clip(act, -1.0, 1.0))
+
+    def _seed_rows(self, rows: np.ndarray, seeds: list[int | None]) -> None:
+        changed = False
+        for k in rows.tolist():
+            s = seeds[k]
+            if s is not None or self._rngs[k] is None:
+                self._rngs[k], self._rng_seeds[k] = seeding.np_random(s)
+                changed = True
+        if changed:
+            self._gens = None
+
+    def _gen_list(self) -> Any:
+        """The sub-envs' generators as a numba typed list (rebuilt only when a generator was replaced)."""
+        if self._gens is None:
+            self._gens = typed.List(self._rngs)
+        return self._gens
+
+    def _reset_rows(self, rows: np.ndarray, options: dict[str, Any] | None) -> None:
+        if rows.size == 0:
+            return
+        for k in rows.tolist():
+            if self._rngs[k] is None:
+                self._seed_rows(np.array([k]), [None] * self.num_envs)
+        rows = np.ascontiguousarray(rows, dtype=np.int64)
+        self.shots[rows] = 0
+        self._needs_reset[rows] = False
+        self._has_shot[rows] = False
+        if options:
+            for k in rows.tolist():
+                self._reset_with_options(k, options)
+            self._render_reset(rows)
+            return
+        t = self.template
+        c = t.config
+        bad = place_tables(rows, self._gen_list(), self.pos, self.vel, self.ang, self.on_table, self._fixed_rows,
+                           self._fixed_xy, self._rand_rows, self._regions, self._pockets, c.pocket_margin,
+                           2.0 * c.ball_radius + c.ball_gap, PLACE_BATCH, PLACE_TRIES)
+        if bad != PLACED:
+            raise ConfigError(f"{self.env_id}: could not place the balls at random; lower n_object_balls, "
+                              "pocket_margin, ball_gap or cushion_margin")
+        self._render_reset(rows)
+
+    def _reset_with_options(self, k: int, options: dict[str, Any]) -> None:
+        """A scene set by ``reset(options=...)`` for sub-env ``k``, with the single env's own checks."""
+        t = self.template
+        saved = (t.balls, t._np_random)
+        view = self._views[k].balls
+        view.vel.fill(0.0)
+        view.ang.fill(0.0)
+        view.on_table.fill(True)
+        t.balls, t._np_random = view, self._rngs[k]
+        try:
+            t._set_positions(options)
+        finally:
+            t.balls, t._np_random = saved
+
+    def _observe(self, rows: np.ndarray) -> None:
+        if rows.size == 0:
+            return
+        if self._positions_obs:
+            observe_positions(np.ascontiguousarray(rows, dtype=np.int64), self.pos, self.on_table, self._sx, self._sy,
+                              self._obs)
+        else:
+            ot = self.template.observation_type
+            for k in rows.tolist():
+                self._obs[k] = ot.observe(self._views[k])
+
+    def _step_info(self, rows: np.ndarray, status, sim_time, n_events, first) -> dict[str, np.ndarray]:
+        """The single env's step ``info`` of every table, as arrays (rows not in ``rows`` are filler)."""
+        n = self.num_envs
+        pocketed = np.full(n, None, dtype=object)
+        masks, which = np.unique(self._pmask[rows], return_inverse=True)
+        pocketed[rows] = self._pocketed_tuples(masks)[which]
+        first_contact = np.full(n, None, dtype=object)
+        first_contact[rows] = self._first_obj[first[rows]]
+        status_arr = np.full(n, None, dtype=object)
+        status_arr[rows] = _STATUS[status[rows]]
+        info = {
+            "is_success": self._success.copy(),
+            "pocketed": pocketed,
+            "scratch": self._scratch.copy(),
+            "first_contact": first_contact,
+            "n_events": n_events.copy(),
+            "sim_time": sim_time.copy(),
+            "status": status_arr,
+            "shots": self.shots.copy(),
+            "angle": self._played[:, 0].copy(),
+            "speed": self._played[:, 1].copy(),
+        }
+        if self.template.action_type.spin:
+            info["side"] = self._played[:, 2].copy()
+            info["top"] = self._played[:, 3].copy()
+        return info
+
+    def _pocketed_tuples(self, masks: np.ndarray) -> np.ndarray:
+        """The ``pocketed`` info value (ids of the rows set in each bit mask) of each mask, as an object array."""
+        out = np.empty(len(masks), dtype=object)
+        names = self._pocketed_names
+        ids = self.ball_ids
+        for j, m in enumerate(masks.tolist()):
+            got = names.get(m)
+            if got is None:
+                got = names[m] = tuple(ids[i] for i in range(len(ids)) if m >> i & 1)
+            out[j] = got
+        return out
+
+    # ======================================================================================================
+    # Rendering (the template env draws sub-env render_env)
+    # ======================================================================================================
+    def _sync_template(self) -> None:
+        k = self.render_env
+        b = self.template.balls
+        b.pos[...] = self.pos[k]
+        b.on_table[...] = self.on_table[k]
+        self.template.last_shot = None
+        if self._has_shot[k]:
+            x, y = self._start[k].tolist()
+            angle, speed = self._played[k, :2].tolist()
+            self.template.last_shot = (x, y, angle, speed)
+
+    def _render_reset(self, rows: np.ndarray) -> None:
+        """The rendered table was reset: start its frame list (``rgb_array_list``) or show it (``human``), as the
+        single env's ``reset`` does."""
+        if self.render_mode not in ("rgb_array_list", "human") or self.render_env not in rows:
+            return
+        self._sync_template()
+        t = self.template
+        if self.render_mode == "rgb_array_list":
+            t._frames = [t._draw_state()]
+        else:
+            t._show(None)
+
+    def _render_snapshot(self, active: np.ndarray) -> Balls | None:
+        """The rendered table before its shot (animated modes only), to re-simulate with the trajectory kept."""
+        k = self.render_env
+        if self.render_mode not in ("rgb_array_list", "human") or not active[k]:
+            return None
+        t = self.template
+        return Balls(self.ball_ids, self.pos[k].copy(), self.vel[k].copy(), t.balls.radius.copy(),
+                     t.balls.mass.copy(), self.on_table[k].copy(), self.ang[k].copy())
+
+    def _render_shot(self, before: Balls) -> None:
+        """Animate the rendered table's shot: the same shot simulated again with its trajectory (bit-identical to
+        the one played), drawn by the template env."""
+        t = self.template
+        res = t.simulator.run(before, record=True, validate=False)
+        self._sync_template()
+        t._animate(res.trajectory, final=True)
+
+
+def _autoreset_mode(mode: str | AutoresetMode) -> AutoresetMode:
+    """An :class:`AutoresetMode` from itself, its value (``"NextStep"``) or its name (``"next_step"``)."""
+    if isinstance(mode, AutoresetMode):
+        return mode
+    for m in AutoresetMode:
+        if str(mode) in (m.value, m.name, m.name.lower()):
+            return m
+    raise ValueError(f"autoreset_mode: {mode!r}; use one of {[m.name.lower() for m in AutoresetMode]} (or an "
+                     "AutoresetMode)")
+
+
+def _select(info: dict[str, np.ndarray], rows: np.ndarray, n: int) -> dict[str, np.ndarray]:
+    """The vector ``info`` of the sub-envs ``rows``: each key's array with the others blanked as Gymnasium's
+    vector envs leave them (0, False or None), and its ``_key`` mask. Empty if ``rows`` is."""
+    if rows.size == 0:
+        return {}
+    mask = np.zeros(n, np.bool_)
+    mask[rows] = True
+    out: dict[str, np.ndarray] = {}
+    for key, arr in info.items():
+        blank = np.full(n, None, dtype=object) if arr.dtype == object else np.zeros(n, dtype=arr.dtype)
+        blank[rows] = arr[rows]
+        out[key] = blank
+        out["_" + key] = mask.copy()
+    return out
+
+
+def _vector_class(env_id: str) -> type[BilliardsVectorEnv]:
+    """The subclass of :class:`BilliardsVectorEnv` for ``env_id``, named as its ``vector_entry_point`` says."""
+    name = vector_entry_point(env_id).rsplit(":", 1)[1]
+    return type(name, (BilliardsVectorEnv,), {"env_id": env_id, "__module__": __name__,
+                                               "__doc__": f"The native vector env of ``{env_id}``."})
+
+
+#: Registered id -> its vector env class (``vector_entry_point`` of each id; one module attribute per class).
+VECTOR_ENVS: dict[str, type[BilliardsVectorEnv]] = {env_id: _vector_class(env_id) for env_id in ENVS}
+globals().update({cls.__name__: cls for cls in VECTOR_ENVS.values()})
+
+__all__ = ["BilliardsVectorEnv", "VECTOR_ENVS"] + [c.__name__ for c in VECTOR_ENVS.values()]

@@ -1,0 +1,165 @@
+"""The native vector env (``envs/vector.py``) equals N single envs: ``gym.make_vec(id, n)`` against Gymnasium's
+``SyncVectorEnv`` over ``gym.make(id)`` with the same seeds and actions gives the same observations, rewards,
+terminations, truncations and info, bit for bit, in every autoreset mode, for every id and the configs that take
+other code paths (aim types, noise, spin, features, truncation)."""
+from __future__ import annotations
+
+import numba
+import numpy as np
+import pytest
+from env_helpers import FAST_RENDER, GAME_IDS, IDS, POT_IDS, gym
+from gymnasium.vector import AutoresetMode, SyncVectorEnv
+
+from billiards_env.envs.vector import BilliardsVectorEnv
+
+
+def _same_info(a: dict, b: dict, where: str = "info") -> None:
+    assert set(a) == set(b), (where, sorted(a), sorted(b))
+    for key in a:
+        x, y = a[key], b[key]
+        if isinstance(x, dict):
+            _same_info(x, y, f"{where}/{key}")
+            continue
+        assert x.dtype == y.dtype, (where, key, x.dtype, y.dtype)
+        if x.dtype == object:
+            for p, q in zip(x.tolist(), y.tolist()):
+                if isinstance(p, np.ndarray):
+                    assert np.array_equal(p, q), (where, key)
+                else:
+                    assert p == q, (where, key, p, q)
+        else:
+            assert np.array_equal(x, y), (where, key, x, y)
+
+
+def _compare(env_id: str, mode: AutoresetMode, steps: int, n: int = 4, seed: int = 7, **kwargs) -> dict:
+    """Step the native vector env and SyncVectorEnv side by side; returns counts of what was exercised."""
+    vec = gym.make_vec(env_id, n, autoreset_mode=mode, **kwargs)
+    ref = SyncVectorEnv([lambda: gym.make(env_id, **kwargs) for _ in range(n)], autoreset_mode=mode)
+    obs, info = vec.reset(seed=seed)
+    obs_r, info_r = ref.reset(seed=seed)
+    assert np.array_equal(obs, obs_r)
+    _same_info(info, info_r)
+    rng = np.random.default_rng(seed)
+    seen = {"done": 0, "scratch": 0, "pocketed": 0}
+    needs_reset = np.zeros(n, bool)
+    for step in range(steps):
+        if mode == AutoresetMode.DISABLED and needs_reset.any():
+            obs, _ = vec.reset(options={"reset_mask": needs_reset.copy()})
+            obs_r, _ = ref.reset(options={"reset_mask": needs_reset.copy()})
+            assert np.array_equal(obs, obs_r)
+        action = rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32)
+        out, out_r = vec.step(action), ref.step(action)
+        for x, y, name in zip(out[:4], out_r[:4], ("obs", "reward", "terminated", "truncated")):
+            assert x.dtype == y.dtype and np.array_equal(x, y), (step, name, x, y)
+        _same_info(out[4], out_r[4])
+        needs_reset = out[2] | out[3]
+        seen["done"] += int(needs_reset.sum())
+        info = out[4].get("final_info", out[4])
+        seen["scratch"] += int(np.sum(info.get("scratch", [])))
+        seen["pocketed"] += sum(len(p) for p in info.get("pocketed", []) if p)
+    vec.close()
+    ref.close()
+    return seen
+
+
+@pytest.mark.parametrize("mode", list(AutoresetMode))
+@pytest.mark.parametrize("env_id", POT_IDS)
+def test_native_vector_env_equals_single_envs(env_id, mode):
+    seen = _compare(env_id, mode, steps=25 if env_id != "BilliardsRack-v0" else 12)
+    assert seen["done"] > 0 or env_id == "BilliardsRack-v0"
+    assert seen["pocketed"] > 0
+
+
+@pytest.mark.parametrize("kwargs", [
+    {"action_type": "relative", "angle_noise": 0.01, "speed_noise": 0.05, "max_shots": 3},
+    {"action_type": "ghost", "observation_type": "features"},
+    {"physics": {"friction": "spin"}, "spin_action": True, "tip_noise": 0.05},
+    {"step_penalty": 0.1, "miss_penalty": 0.5, "scratch_penalty": 2.0, "n_object_balls": 5},
+], ids=["relative-noise-truncation", "ghost-features", "spin", "rewards"])
+def test_native_paths_equal_single_envs(kwargs):
+    seen = _compare("BilliardsThreeBalls-v0", AutoresetMode.SAME_STEP, steps=20, **kwargs)
+    assert seen["done"] > 0 and seen["scratch"] + seen["pocketed"] > 0
+
+
+@pytest.mark.parametrize("env_id", GAME_IDS)
+def test_game_ids_vectorise_with_the_same_results(env_id):
+    vec = gym.make_vec(env_id, 2)
+    assert isinstance(vec.unwrapped, BilliardsVectorEnv) and not vec.unwrapped.native
+    _compare(env_id, AutoresetMode.NEXT_STEP, steps=4, n=2)
+
+
+def test_every_id_has_a_native_vector_entry_point():
+    for env_id in IDS:
+        spec = gym.spec(env_id)
+        assert spec.vector_entry_point is not None
+        vec = gym.make_vec(env_id, 2)  # the default mode uses the vector entry point
+        assert isinstance(vec, BilliardsVectorEnv) and vec.env_id == env_id
+        assert isinstance(vec.metadata["autoreset_mode"], AutoresetMode)
+        assert vec.single_observation_space == gym.make(env_id).observation_space
+        vec.close()
+
+
+def test_seeding_per_sub_env():
+    vec = gym.make_vec("BilliardsThreeBalls-v0", 3)
+    single = gym.make("BilliardsThreeBalls-v0")
+    obs, _ = vec.reset(seed=[11, None, 5])
+    assert np.array_equal(obs[0], single.reset(seed=11)[0]) and np.array_equal(obs[2], single.reset(seed=5)[0])
+    assert vec.np_random_seed[0] == 11 and vec.np_random_seed[2] == 5
+    # Resetting without a seed continues each sub-env's stream, as a single env does.
+    single.reset(seed=11)
+    again, _ = vec.reset(options={"reset_mask": np.array([True, False, False])})
+    assert np.array_equal(again[0], single.reset()[0]) and np.array_equal(again[1:], obs[1:])
+
+
+def test_result_does_not_depend_on_the_thread_count():
+    if numba.config.NUMBA_NUM_THREADS < 2:
+        pytest.skip("needs two numba threads")
+    runs = []
+    for threads in (1, 2):
+        vec = gym.make_vec("BilliardsThreeBalls-v0", 32, threads=threads, autoreset_mode="same_step")
+        vec.reset(seed=1)
+        rng = np.random.default_rng(2)
+        runs.append([vec.step(rng.uniform(-1, 1, vec.action_space.shape))[:4] for _ in range(5)])
+    for a, b in zip(*runs):
+        for x, y in zip(a, b):
+            assert np.array_equal(x, y)
+
+
+def test_render_draws_the_chosen_sub_env():
+    vec = gym.make_vec("BilliardsThreeBalls-v0", 3, render_mode="rgb_array", render_env=2, **FAST_RENDER)
+    single = gym.make("BilliardsThreeBalls-v0", render_mode="rgb_array", **FAST_RENDER)
+    vec.reset(seed=4)
+    single.reset(seed=6)
+    assert np.array_equal(vec.render(), single.render())
+    actions = np.array([[0.3, 0.2]] * 3, np.float32)
+    vec.step(actions)
+    single.step(actions[2])
+    assert np.array_equal(vec.render(), single.render())  # after the shot, with its cue line
+
+    vec = gym.make_vec("BilliardsOneBall-v0", 2, render_mode="rgb_array_list", render_env=1, **FAST_RENDER)
+    single = gym.make("BilliardsOneBall-v0", render_mode="rgb_array_list", **FAST_RENDER)
+    vec.reset(seed=0)
+    single.reset(seed=1)
+    vec.step(np.array([[0.1, 0.5], [0.1, 0.5]], np.float32))
+    single.step(np.array([0.1, 0.5], np.float32))
+    frames, frames_single = vec.render(), single.render()
+    assert len(frames) == len(frames_single) > 2
+    assert all(np.array_equal(a, b) for a, b in zip(frames, frames_single))
+
+
+def test_bad_use_is_refused_with_the_fix():
+    vec = gym.make_vec("BilliardsOneBall-v0", 2, autoreset_mode="disabled")
+    with pytest.raises(gym.error.ResetNeeded, match="reset"):
+        vec.step(np.zeros((2, 2), np.float32))
+    vec.reset(seed=0)
+    with pytest.raises(ValueError, match=r"actions\[1\]: must be finite"):
+        vec.step(np.array([[0.0, 0.0], [np.nan, 0.0]]))
+    with pytest.raises(ValueError, match="expected 2 x 2 numbers"):
+        vec.step(np.zeros(3))
+    vec.step(np.zeros((2, 2), np.float32))  # one-shot episodes: both end
+    with pytest.raises(gym.error.ResetNeeded, match="reset_mask"):
+        vec.step(np.zeros((2, 2), np.float32))
+    with pytest.raises(ValueError, match="autoreset_mode"):
+        gym.make_vec("BilliardsOneBall-v0", 2, autoreset_mode="sometimes")
+    with pytest.raises(ValueError, match="render_env"):
+        gym.make_vec("BilliardsOneBall-v0", 2, render_env=2)
