@@ -165,8 +165,9 @@ class PlayApp:
         return (w - r - 10.0, h + PANEL_HEIGHT / 2.0), r
 
     # --- game -------------------------------------------------------------------------------------------
-    def reset(self, seed: int | None = None) -> None:
-        self.env.reset(seed=seed)
+    def reset(self, seed: int | None = None, options: dict[str, Any] | None = None) -> None:
+        """A new episode (a new game): ``env.reset(seed=seed, options=options)``."""
+        self.env.reset(seed=seed, options=options)
         self.shots, self.total, self.done, self.success = 0, 0.0, False, False
         self.opponent_shots = 0
         self.dragging, self.press, self.power = False, None, 0.0

@@ -43,6 +43,14 @@ def panel_height(width_px: int) -> int:
     return max(MIN_HEIGHT, int(round(HEIGHT_FRACTION * width_px)))
 
 
+def turn_marker(rect: pygame.Rect, player: int) -> tuple[float, float, float]:
+    """Centre ``(x, y)`` and radius (px) of ``player``'s turn marker in a panel at ``rect`` (filled for the player
+    to shoot)."""
+    mark = max(2.5, 0.10 * rect.height)
+    pad = max(4, int(round(0.012 * rect.width)))
+    return rect.left + pad + mark, rect.top + rect.height * (0.27 + 0.48 * player), mark
+
+
 def draw_panel(surface: pygame.Surface, rect: pygame.Rect, hud: Mapping[str, Any], ball_icon: BallIcon) -> None:
     """Paint the panel for ``hud`` into ``rect``: one row per player on the left (turn marker, name, games won,
     group, the balls pocketed in this game as small balls), the game and its status and the last call on the
@@ -60,10 +68,8 @@ def draw_panel(surface: pygame.Surface, rect: pygame.Rect, hud: Mapping[str, Any
     left_w = int(0.56 * w)
     winner = hud.get("winner")
     for p in (0, 1):
-        y = rect.top + h * (0.27 + 0.48 * p)
+        x, y, mark = turn_marker(rect, p)
         turn = shooter == p
-        mark = max(2.5, 0.10 * h)
-        x = rect.left + pad + mark
         if turn or winner == p:
             pygame.draw.circle(surface, WIN if winner == p else TURN, (int(round(x)), int(round(y))),
                                int(round(mark)))
@@ -113,4 +119,4 @@ def _draw_balls(surface: pygame.Surface, numbers: Any, x0: float, x1: float, y: 
         surface.blit(sprite, (int(round(c[0])) - half, int(round(c[1])) - half))
 
 
-__all__ = ["draw_panel", "panel_height", "HEIGHT_FRACTION"]
+__all__ = ["draw_panel", "panel_height", "turn_marker", "HEIGHT_FRACTION"]

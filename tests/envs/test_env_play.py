@@ -120,3 +120,129 @@ def test_small_drag_cancels():
     script = [[E(pygame.MOUSEBUTTONDOWN, pos=(cx + 30, cy), button=1)],
               [E(pygame.MOUSEBUTTONUP, pos=(cx + 30, cy), button=1)], [E(pygame.QUIT)]]
     assert app.run(script)["shots"] == 0
+
+
+# --- games and spin ------------------------------------------------------------------------------------------
+def _press_release(pos, button=1):
+    return [[E(pygame.MOUSEBUTTONDOWN, pos=pos, button=button)], [E(pygame.MOUSEBUTTONUP, pos=pos, button=button)]]
+
+
+def _key(key):
+    return [E(pygame.KEYDOWN, key=key, mod=0, unicode="", scancode=0)]
+
+
+def _feed(app: play.PlayApp, batches) -> None:
+    for batch in batches:
+        for e in batch:
+            app.handle(e)
+
+
+def test_game_demo_places_breaks_and_the_opponent_replies(capsys, monkeypatch):
+    import ast
+
+    monkeypatch.delenv(ALLOW_HEADLESS_ENV, raising=False)
+    assert play.main(["--env", "Billiards9Ball-v0", "--seed", "0", "--demo", "--width", "240",
+                      "--speedup", "50", "--opponent", "random"]) == 0
+    out = capsys.readouterr().out
+    summary = ast.literal_eval(out.split("billiards-play demo: ", 1)[1].strip())
+    assert summary["shots"] >= 1 and (summary["opponent_shots"] >= 1 or summary["done"])
+
+
+def test_opponent_is_refused_for_a_scene(capsys):
+    assert play.main(["--env", "BilliardsOneBall-v0", "--opponent", "random", "--demo"]) == 2
+    assert "not a game" in capsys.readouterr().err
+
+
+def test_ball_in_hand_drag_and_click_map_to_the_placement_dims():
+    from billiards_env.physics.layout import head_string_x
+
+    app = play.PlayApp("Billiards9Ball-v0", seed=0, width=400, speedup=50.0, realtime=False, allow_headless=True,
+                       opponent="random")
+    core = app.core
+    assert app.in_hand() and app.place is not None
+    kitchen_x = head_string_x(core.table)
+    # a click (no drag) on an empty spot of the kitchen puts the cue ball there
+    spot = tuple(int(v) for v in core.renderer.to_pixels(np.array([0.4, 0.3]))[0])
+    _feed(app, [[E(pygame.MOUSEMOTION, pos=spot, rel=(0, 0), buttons=(0, 0, 0))]] + _press_release(spot))
+    assert app.place == pytest.approx(core.legal_cue_position(*app.to_table(spot)))
+    # dragging it past the head string stops it at the kitchen's edge (the nearest legal point)
+    far = tuple(int(v) for v in core.renderer.to_pixels(np.array([1.5, 0.9]))[0])
+    _feed(app, list(play.mouse_drag(app, app.ball_pixel(0), far)))
+    r = core.config.ball_radius
+    assert app.place[0] == pytest.approx(kitchen_x, abs=1e-9) and app.place[1] == pytest.approx(
+        core.legal_cue_position(*app.to_table(far))[1])
+    wanted = app.place
+    area = core.task.ball_in_hand_area(core)
+    assert area == pytest.approx((r, kitchen_x, r, core.table.width - r))
+    _feed(app, list(play.mouse_shot(app, 1.0)))
+    assert app.shots == 1
+    k = core.action_type._place_at
+    a = app.last_action
+    x0, x1, y0, y1 = area
+    placed = (x0 + 0.5 * (a[k] + 1) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1) * (y1 - y0))
+    assert placed == pytest.approx(wanted, abs=1e-6)  # the placement dims carry the spot (float32)
+    app.close()
+
+
+def test_calling_the_pocket_for_the_8():
+    app = play.PlayApp("Billiards8Ball-v0", seed=0, width=400, speedup=50.0, realtime=False, allow_headless=True,
+                       opponent="random")
+    core = app.core
+    pos = np.array(core.balls.pos)
+    pos[0], pos[8] = (0.8, 0.4), (1.9, 0.9)
+    pocketed = np.ones(16, bool)
+    pocketed[[0, 8, 12]] = False  # solids cleared: the agent (solids) is on the 8; one stripe left
+    pos[12] = (2.3, 0.2)
+    app.reset(seed=0, options={"positions": pos, "pocketed": pocketed, "groups": ("solids", "stripes")})
+    assert app.needs_pocket() and app.pocket is None
+    _feed(app, list(play.mouse_shot(app, 0.5)))
+    assert app.shots == 0 and "call" in app.status  # no shot without a call
+    _feed(app, [_key(pygame.K_3)])
+    assert app.pocket == 2
+    _feed(app, _press_release(app.pocket_pixel(4)))
+    assert app.pocket == 4 and app.shots == 0
+    hud_frame = app.core.render_data()["hud"]
+    assert hud_frame["call_pocket"]
+    _feed(app, list(play.mouse_shot(app, 0.5)))
+    assert app.shots == 1
+    assert core.shot_from_action(app.last_action).pocket == 4
+    app.close()
+
+
+def test_spin_keys_and_the_tip_diagram_set_the_tip():
+    app = play.PlayApp("BilliardsOneBall-v0", seed=3, width=400, speedup=50.0, realtime=False, allow_headless=True,
+                       spin=True)
+    assert app.spin and app.core.physics.friction == "spin"
+    _feed(app, [_key(pygame.K_RIGHT), _key(pygame.K_RIGHT), _key(pygame.K_UP), _key(pygame.K_DOWN),
+                _key(pygame.K_DOWN)])
+    assert app.tip == pytest.approx((2 * play.TIP_STEP, -play.TIP_STEP))
+    (cx, cy), r = app.tip_diagram
+    _feed(app, _press_release((int(cx - 0.3 * r), int(cy - 0.2 * r))))  # a click on the diagram
+    assert app.tip == pytest.approx((-0.3, 0.2), abs=1.0 / r)
+    assert app.shots == 0
+    _feed(app, [_key(pygame.K_LEFT)] * 20)
+    assert math.hypot(*app.tip) == pytest.approx(app.max_tip)  # held on the disc of legal offsets
+    tip = app.tip
+    _feed(app, list(play.mouse_shot(app, 0.4)))
+    info = app.last_info
+    assert app.shots == 1 and (info["side"], info["top"]) == pytest.approx(tip, abs=1e-6)
+    app.close()
+
+
+def test_two_people_take_turns():
+    app = play.PlayApp("Billiards9Ball-v0", seed=0, width=300, speedup=50.0, realtime=False, allow_headless=True,
+                       opponent="human")
+    core = app.core
+    pos = np.zeros((10, 2))
+    pos[:, 0] = np.linspace(1.0, 2.3, 10)
+    pos[:, 1] = 0.9
+    pos[0] = (0.5, 0.3)
+    app.reset(seed=0, options={"positions": pos})
+    assert core.task.hud(core)["players"] == ("player 1", "player 2")
+    cx, cy = app.ball_pixel(0)
+    below = (cx, cy + 40)  # straight down into the near cushion: no contact, a foul
+    _feed(app, list(play.mouse_shot(app, 0.2, target=below)))
+    assert app.shots == 1 and app.opponent_shots == 0
+    assert core.task.state.shooter == 1 and app.in_hand()  # player 2 to shoot, with the cue ball in hand
+    assert "player 2 to shoot" in app.status
+    app.close()
