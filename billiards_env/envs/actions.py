@@ -17,8 +17,9 @@ Every action is a ``Box(-1, 1)`` vector laid out as::
   (:func:`billiards_env.physics.layout.nearest_free_point`).
 - ``pocket`` (8-ball with called 8s): the pocket called for the 8, ``k = floor((a + 1) / 2 * n_pockets)`` (the
   table's pocket order); read only when the shooter is on the 8.
-- ``push`` (9-ball with push-outs): ``a > 0`` declares a push-out when one is allowed, and after the opponent's
-  push-out hands the shot back; ignored otherwise.
+- ``push`` (9-ball with push-outs): ``a > 0`` declares a push-out when one is allowed; ignored otherwise. (After
+  a push-out the incoming player always plays: the envs do not offer the pass-back of
+  :meth:`billiards_env.rules.NineBall.pass_back`.)
 
 Finite values outside ``[-1, 1]`` are clipped (a policy outputs anything); NaN/inf or a wrong number of values
 raise ``ValueError``. Any array holding the right number of values is accepted (``(2,)``, ``(1, 2)``...).
@@ -50,7 +51,7 @@ class CueShot(NamedTuple):
     top: float = 0.0
     place: tuple[float, float] | None = None
     pocket: int | None = None  #: the pocket called for the 8 (8-ball)
-    push: bool = False  #: declare a push-out / hand the shot back (9-ball)
+    push: bool = False  #: declare a push-out (9-ball)
 
 
 def _clip(v: float) -> float:
