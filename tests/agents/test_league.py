@@ -1,0 +1,51 @@
+"""The league: Elo fitted to head-to-head results, and a short real match."""
+from __future__ import annotations
+
+import os
+
+os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+
+import pytest  # noqa: E402
+
+from agents.league import PairResult, fit_elo, main, play_pair, load_player  # noqa: E402
+
+
+def pair(a, b, wa, wb, unfinished=0):
+    return PairResult(a, b, wa + wb + unfinished, wa, wb, unfinished, 0, 0.0)
+
+
+def test_even_results_give_equal_ratings_and_the_anchor_sits_at_1000():
+    elo = fit_elo(["random", "x"], [pair("random", "x", 10, 10)])
+    assert elo["random"] == pytest.approx(1000.0) and elo["x"] == pytest.approx(1000.0, abs=1e-6)
+
+
+def test_ratings_follow_the_bradley_terry_odds():
+    # 3:1 odds with one virtual draw added (regularisation): (30.5 / 10.5) -> 400 log10(30.5 / 10.5) points.
+    elo = fit_elo(["a", "b"], [pair("a", "b", 30, 10)], anchor=None)
+    import math
+
+    assert elo["a"] - elo["b"] == pytest.approx(400 * math.log10(30.5 / 10.5), rel=1e-6)
+    assert (elo["a"] + elo["b"]) / 2 == pytest.approx(1500.0)
+
+
+def test_transitive_results_order_the_players():
+    names = ["random", "geometric", "search"]
+    pairs = [pair("random", "geometric", 2, 18), pair("random", "search", 1, 19), pair("geometric", "search", 8, 12)]
+    elo = fit_elo(names, pairs)
+    assert elo["search"] > elo["geometric"] > elo["random"] == pytest.approx(1000.0)
+
+
+def test_a_short_match_between_baselines():
+    res = play_pair("nine_ball", load_player("random"), load_player("geometric"), 4, seed=3, env_kwargs={})
+    assert res.wins_a + res.wins_b + res.unfinished == 4
+    assert sum(res.reasons.values()) == 4 and res.break_and_runs <= res.wins_a + res.wins_b
+    again = play_pair("nine_ball", load_player("random"), load_player("geometric"), 4, seed=3, env_kwargs={})
+    assert (again.wins_a, again.wins_b, again.reasons) == (res.wins_a, res.wins_b, res.reasons)  # seeded
+
+
+def test_cli_writes_the_report(tmp_path):
+    assert main(["--game", "eight_ball", "--players", "random", "geometric", "--games", "2", "--out",
+                 str(tmp_path)]) == 0
+    md = (tmp_path / "league.md").read_text()
+    assert "| random | geometric |" in md and "| player | Elo |" in md
+    assert main(["--players", "random"]) == 2
