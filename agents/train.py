@@ -62,18 +62,50 @@ def make_env_fn(env_id: str, env_kwargs: dict[str, Any], wrapper: Any = None, re
     return _make
 
 
+#: Which SB3 VecEnv trains: "auto" (the native vector env where it applies, else DummyVecEnv), "native", "dummy".
+VEC_ENVS = ("auto", "native", "dummy")
+
+
+def use_native(cfg: TrainConfig, setup: AlgoSetup, vec_env: str = "auto") -> bool:
+    """Whether to train on :class:`agents.vec.BilliardsVecEnv` (N tables in one call; the same transitions as
+    DummyVecEnv with the same seeds) rather than a DummyVecEnv of single envs: ``auto`` uses it where it applies
+    (no env wrapper; the pot task on the exact solver), ``native`` insists."""
+    from .vec import native_vec_env_supported
+
+    if vec_env not in VEC_ENVS:
+        raise TrainConfigError(f"vec_env: unknown {vec_env!r}; use one of {', '.join(VEC_ENVS)}")
+    if vec_env == "dummy":
+        return False
+    ok = native_vec_env_supported(cfg.env_id, setup.env_kwargs, setup.wrapper)
+    if vec_env == "native" and not ok:
+        raise TrainConfigError(f"vec_env: 'native' needs no env_wrapper and the pot task on the exact solver "
+                               f"({cfg.env_id} with these env_kwargs does not qualify); use 'auto' or 'dummy'")
+    return ok
+
+
 def make_vec_envs(cfg: TrainConfig, setup: AlgoSetup, n_envs: int, seed: int, monitor_dir: Path | None,
-                  vecnormalize_path: Path | None = None, training: bool = True) -> Any:
-    """DummyVecEnv of ``n_envs`` Monitor-wrapped envs (env steps are ~0.1 ms: subprocesses do not pay)."""
+                  vecnormalize_path: Path | None = None, training: bool = True, vec_env: str = "auto") -> Any:
+    """The training (or evaluation) VecEnv of ``n_envs`` envs, seeded with ``seed``: the native vector env under
+    a VecMonitor where it applies (:func:`use_native`), else a DummyVecEnv of Monitor-wrapped envs. Both log
+    ``*.monitor.csv`` files with ``is_success`` in ``monitor_dir``."""
     from stable_baselines3.common.env_util import make_vec_env
-    from stable_baselines3.common.vec_env import DummyVecEnv, VecNormalize
+    from stable_baselines3.common.vec_env import DummyVecEnv, VecMonitor, VecNormalize
 
     import billiards_env  # noqa: F401
 
     monitor_kwargs = {"info_keywords": ("is_success",), **setup.monitor_kwargs}
-    env = make_vec_env(make_env_fn(cfg.env_id, setup.env_kwargs), n_envs=n_envs, seed=seed,
-                       monitor_dir=str(monitor_dir) if monitor_dir else None, wrapper_class=setup.wrapper,
-                       vec_env_cls=DummyVecEnv, monitor_kwargs=monitor_kwargs)
+    if use_native(cfg, setup, vec_env):
+        from .vec import BilliardsVecEnv
+
+        if monitor_dir is not None:
+            monitor_dir.mkdir(parents=True, exist_ok=True)
+        env = BilliardsVecEnv(cfg.env_id, n_envs, setup.env_kwargs, threads=1)
+        env.seed(seed)
+        env = VecMonitor(env, str(monitor_dir / "vec") if monitor_dir else None, **monitor_kwargs)
+    else:
+        env = make_vec_env(make_env_fn(cfg.env_id, setup.env_kwargs), n_envs=n_envs, seed=seed,
+                           monitor_dir=str(monitor_dir) if monitor_dir else None, wrapper_class=setup.wrapper,
+                           vec_env_cls=DummyVecEnv, monitor_kwargs=monitor_kwargs)
     if setup.normalize is not None:
         if vecnormalize_path is not None and vecnormalize_path.exists():
             env = VecNormalize.load(str(vecnormalize_path), env)
@@ -160,8 +192,9 @@ class _Interrupted(Exception):
 
 
 def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = None,
-          progress_bar: bool | None = None, quiet: bool = False) -> dict[str, Any]:
-    """Train from a resolved config; returns the run summary (also written to ``run.json``)."""
+          progress_bar: bool | None = None, quiet: bool = False, vec_env: str = "auto") -> dict[str, Any]:
+    """Train from a resolved config; returns the run summary (also written to ``run.json``). ``vec_env``: see
+    :func:`use_native`."""
     import torch
     from stable_baselines3.common.callbacks import CallbackList
 
@@ -202,7 +235,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     session = len(list(monitor_dir.glob("session*"))) if resume else 0
     mon = monitor_dir / f"session{session}"
     vn_path = run_dir / "checkpoints" / ckpt_meta["vecnormalize"] if ckpt_meta.get("vecnormalize") else None
-    env = make_vec_envs(cfg, setup, setup.n_envs, s.seed + 1000 * session, mon, vn_path)
+    env = make_vec_envs(cfg, setup, setup.n_envs, s.seed + 1000 * session, mon, vn_path, vec_env=vec_env)
 
     if model_zip is not None:
         say(f"resuming from {model_zip}")
@@ -231,7 +264,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     eval_cb = None
     if s.eval_freq > 0 and s.n_eval_episodes > 0:
         eval_env = make_vec_envs(cfg, setup, min(s.n_eval_envs, s.n_eval_episodes), s.eval_seed, None, vn_path,
-                                 training=False)
+                                 training=False, vec_env=vec_env)
         (run_dir / "eval").mkdir(exist_ok=True)
         eval_cb = SeededEvalCallback(
             eval_env, eval_seed=s.eval_seed, clock=clock, stop_at_success=s.stop_at_success,
@@ -256,7 +289,8 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     remaining = max(total - offset_steps, 0)
     meta: dict[str, Any] = {
         "env_id": cfg.env_id, "algo": s.algo, "config_source": cfg.source, "run_dir": str(run_dir),
-        "n_envs": setup.n_envs, "n_timesteps": total, "env_kwargs": setup.env_kwargs,
+        "n_envs": setup.n_envs, "vec_env": "native" if use_native(cfg, setup, vec_env) else "dummy",
+        "n_timesteps": total, "env_kwargs": setup.env_kwargs,
         "env_wrapper": cfg.hyperparams.get("env_wrapper"), "seed": s.seed, "settings": asdict(s),
         "versions": _versions(), "git_commit": _git_commit(), "resumed_from": resumed_from,
         "started": time.strftime("%Y-%m-%dT%H:%M:%S"), "command": " ".join(sys.argv),
@@ -351,6 +385,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--set", nargs="*", metavar="KEY=VALUE", help="override billiards: settings")
     p.add_argument("--hp", nargs="*", metavar="KEY=VALUE", help="override hyperparameters of the env entry")
     p.add_argument("--env-kwargs", nargs="*", metavar="KEY=VALUE", help="override env kwargs")
+    p.add_argument("--vec-env", choices=VEC_ENVS, default="auto",
+                   help="auto (default): the native vector env where it applies, else DummyVecEnv")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.add_argument("--quiet", action="store_true")
     return p
@@ -380,7 +416,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         else:
             raise TrainConfigError("give --config FILE (see configs/train/) or --resume RUN_DIR")
         train(cfg, Path(args.run_dir) if args.run_dir else None, resume,
-              progress_bar=False if args.no_progress else None, quiet=args.quiet)
+              progress_bar=False if args.no_progress else None, quiet=args.quiet, vec_env=args.vec_env)
     except TrainConfigError as exc:
         print(f"agents.train: error: {exc}", file=sys.stderr)
         return 2
