@@ -81,6 +81,24 @@ def test_spin_about_the_vertical_turns_the_number_disc_with_it() -> None:
     assert np.mean(np.any(whole != rest, axis=-1)) < 0.01
 
 
+def disc_centre(sprite: np.ndarray) -> np.ndarray:
+    """Column and row of the middle of a sprite's number disc."""
+    disc = np.all(np.abs(sprite[..., :3].astype(int) - C.NUMBER_DISC) < 40, axis=-1) & (sprite[..., 3] == 255)
+    rows, cols = np.nonzero(disc)
+    return np.array([cols.mean(), rows.mean()])
+
+
+@pytest.mark.parametrize("number", [1, 3, 6])
+def test_rolling_carries_the_disc_the_way_the_ball_rolls(number: int) -> None:
+    """Turned as by rolling towards +x (spin about +y) the disc moves right on the image; towards -y (spin about
+    +x) it moves down (the image shows table y = 0 at the bottom)."""
+    maker = OrientedSprites(20.0)
+    rest, east, south = maker.rgba([number] * 3, np.stack([np.eye(3), _rotations(np.array([0.0, 0.3, 0.0])),
+                                                           _rotations(np.array([0.3, 0.0, 0.0]))]))
+    assert disc_centre(east)[0] > disc_centre(rest)[0] + 2 and abs(disc_centre(east)[1] - disc_centre(rest)[1]) < 1
+    assert disc_centre(south)[1] > disc_centre(rest)[1] + 2 and abs(disc_centre(south)[0] - disc_centre(rest)[0]) < 1
+
+
 def test_cue_ball_dots_show_under_the_spin_model_only() -> None:
     maker = OrientedSprites(15.0)
     dotted, plain = maker.rgba([0], np.eye(3)[None], cue_dots=True)[0], maker.rgba([0], np.eye(3)[None],
