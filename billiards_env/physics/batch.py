@@ -264,17 +264,25 @@ def _thread_count(threads: int | None) -> Iterator[None]:
 
 
 def _use_parallel(n: int, threads: int | None) -> bool:
+    """Whether ``n`` rows run on several threads: ``threads`` > 1 asks for it, 1 forbids it; None decides: at
+    least :data:`PARALLEL_MIN_ROWS` rows, more than one numba thread, and a core left idle by the rest of the
+    machine (1-minute load average below the core count less one half). numba's threads wait for the slowest
+    one, so on cores busy with other work a parallel batch is slower than a serial one."""
     if threads is not None:
         if threads < 1:
-            raise ValueError(f"threads: must be >= 1 (or None for numba's default), got {threads}")
+            raise ValueError(f"threads: must be >= 1 (or None to decide by the batch and the machine), got {threads}")
         return threads > 1
-    return n >= PARALLEL_MIN_ROWS and _default_threads() > 1
-
-
-def _default_threads() -> int:
+    if n < PARALLEL_MIN_ROWS:
+        return False
     import numba
 
-    return numba.get_num_threads()
+    if numba.get_num_threads() < 2:
+        return False
+    try:
+        load = os.getloadavg()[0]
+    except OSError:  # pragma: no cover - platforms without a load average
+        return True
+    return load < (os.cpu_count() or 1) - 0.5
 
 
 def _empty_log(n: int, cap: int) -> tuple[np.ndarray, ...]:
@@ -338,8 +346,9 @@ def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int =
     ``speeds[k]`` (m/s) along ``angles[k]`` (rad), with tip offsets ``side[k]``, ``top[k]`` under the spin model
     (see :meth:`.Balls.strike`). Row ``k`` equals ``sim.run(balls.strike(ball, angles[k], speeds[k]))``.
 
-    ``events``: also return every row's event log (the rows then run on one thread). ``threads``: None lets numba choose
-    (one thread below :data:`PARALLEL_MIN_ROWS` rows), 1 runs serially. ``validate``: check ``balls`` first.
+    ``events``: also return every row's event log (the rows then run on one thread). ``threads``: 1 runs the rows
+    serially, more spreads them over numba's threads, None decides (see :func:`_use_parallel`); the results do not
+    depend on it. ``validate``: check ``balls`` first.
     """
     spin = _check_simulator(sim)
     if validate:

@@ -9,7 +9,8 @@ from typing import Any
 import numpy as np
 
 from billiards_env.physics import Balls
-from billiards_env.rules import ShotInfo, summarize_result
+from billiards_env.physics.batch import BatchResult, run_shots
+from billiards_env.rules import ShotInfo, summarize_arrays
 
 from .context import ShotContext, shot_context, to_action
 from .geometric import break_shot, choose_placement
@@ -29,30 +30,36 @@ class Outcome:
     source: str = ""
 
 
-def _simulate(ctx: ShotContext, angle: float, speed: float) -> tuple[int, bool, bool, Balls, float]:
-    """Play a candidate: ``(pots, scratch, hit, final balls, value)``. Without a game the value is
-    :func:`_value`; in a game it is the rules' verdict (:func:`_game_value`)."""
-    res = ctx.simulator.run(ctx.balls.strike(ctx.cue, angle, speed), validate=False)
-    pots = int(sum(1 for j in ctx.targets if res.pocket[j] >= 0))
-    scratch = bool(res.pocket[ctx.cue] >= 0)
-    hit = res.first_contact(ctx.cue) >= 0
-    if ctx.game is None:
-        return pots, scratch, hit, res.balls, _value(pots, scratch, hit)
-    return pots, scratch, hit, res.balls, _game_value(ctx, res)
+def _simulate(ctx: ShotContext, angles: Any, speeds: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
+                                                                   np.ndarray, BatchResult]:
+    """Play candidate shots, all in one batch (:func:`~billiards_env.physics.batch.run_shots`; each row is the
+    single ``Simulator.run`` of its shot): ``(pots, scratch, hit, value, batch result)`` per candidate. Without a
+    game the value is :func:`_value`; in a game it is the rules' verdict (:func:`_game_value`)."""
+    game = ctx.game is not None
+    res = run_shots(ctx.simulator, ctx.balls, angles, speeds, ball=ctx.cue, validate=False, events=game)
+    targets = np.asarray(ctx.targets, dtype=np.int64)
+    pots = (res.pocket[:, targets] >= 0).sum(axis=1)
+    scratch = res.pocket[:, ctx.cue] >= 0
+    hit = res.first_contact >= 0
+    if not game:
+        return pots, scratch, hit, _value(pots, scratch, hit), res
+    values = np.array([_game_value(ctx, res.events.row(k), res.pocket[k]) for k in range(len(res.time))])
+    return pots, scratch, hit, values, res
 
 
-def _value(pots: int, scratch: bool, hit: bool) -> float:
-    return pots - 3.0 * scratch - (0.5 if not hit else 0.0)
+def _value(pots: Any, scratch: Any, hit: Any) -> Any:
+    """``pots - 3 scratch - 0.5 (no ball hit)``, for one candidate or arrays of them."""
+    return pots - 3.0 * scratch - np.where(hit, 0.0, 0.5)
 
 
-def _game_value(ctx: ShotContext, res: Any) -> float:
-    """A candidate's value under the game's rules: +10 for a won game, -10 for a lost one, -3 for a foul, +1 for
-    keeping the turn plus 0.1 per ball that counts."""
+def _game_value(ctx: ShotContext, events: Any, pocket: np.ndarray) -> float:
+    """A candidate's value under the game's rules (from its event log and pockets): +10 for a won game, -10 for a
+    lost one, -3 for a foul, +1 for keeping the turn plus 0.1 per ball that counts."""
     game = ctx.game
-    summary = summarize_result(res, game.numbers)
-    pocket = res.pocket[game.row_of[8]] if game.needs_called_pocket() and 8 in game.row_of else None
-    call = game.rules.call(game.state, summary, ShotInfo(called_pocket=None if pocket is None or pocket < 0
-                                                         else int(pocket)))
+    summary = summarize_arrays(np.stack([events.kind, events.ball, events.other], axis=1), pocket, game.numbers)
+    eight = pocket[game.row_of[8]] if game.needs_called_pocket() and 8 in game.row_of else None
+    call = game.rules.call(game.state, summary, ShotInfo(called_pocket=None if eight is None or eight < 0
+                                                         else int(eight)))
     if call.game_over:
         return 10.0 if call.winner == call.shooter else -10.0
     if call.foul:
@@ -76,7 +83,8 @@ class SearchSettings:
 
 def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
                 rng: np.random.Generator | None = None) -> tuple[float, float, Outcome]:
-    """Simulate candidate shots with the exact solver and pick the best outcome.
+    """Simulate candidate shots with the exact solver (in batches: one compiled call for all candidates, one for
+    the perturbed shots) and pick the best outcome.
 
     Candidates: every ghost-ball shot (best ``n_geometric``) at a few angle offsets and speed factors, plus a
     coarse sweep of directions and speeds (for kicks and banks when nothing is makeable). Ranking: the
@@ -92,38 +100,45 @@ def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
     for s in shots[: st.n_geometric]:
         for da in st.angle_offsets:
             for f in st.speed_factors:
-                cands.append((s.angle + da, float(np.clip(s.speed * f, lo, hi)), f"ghost:{s.target}->{s.pocket}"))
+                cands.append((s.angle + da, min(max(s.speed * f, lo), hi), f"ghost:{s.target}->{s.pocket}"))
     base = direct_hit(ctx.balls, ctx.cue, ctx.targets)[0]
     for k in range(st.sweep_angles):
         a = base + 2.0 * math.pi * k / st.sweep_angles
         for f in st.sweep_speeds:
             cands.append((a, lo + f * (hi - lo), "sweep"))
-    outs: list[Outcome] = []
-    for angle, speed, src in cands:
-        pots, scratch, hit, _, value = _simulate(ctx, angle, speed)
-        outs.append(Outcome(angle, speed, pots, scratch, hit, value, source=src))
-    outs.sort(key=lambda o: -o.value)
-    best_value = outs[0].value
-    top = [o for o in outs if o.value >= best_value - 1e-9][: max(st.top_k * 4, st.top_k)]
+    # Every candidate in one batch; the ranking is a stable sort on the value, as a list sort would be.
+    pots, scratch, hit, values, res = _simulate(ctx, [c[0] for c in cands], [c[1] for c in cands])
+    order = np.argsort(-values, kind="stable")
+    best_value = values[order[0]]
+    top = [int(k) for k in order[: max(st.top_k * 4, st.top_k)] if values[k] >= best_value - 1e-9]
     # Spread the shortlist over distinct shots (not seven offsets of one).
     shortlist: list[Outcome] = []
-    for o in top:
-        if all(abs(o.angle - q.angle) > 1e-3 or abs(o.speed - q.speed) > 0.05 for q in shortlist):
-            shortlist.append(o)
+    rows: list[int] = []
+    for k in top:
+        angle, speed, src = cands[k]
+        if all(abs(angle - q.angle) > 1e-3 or abs(speed - q.speed) > 0.05 for q in shortlist):
+            shortlist.append(Outcome(angle, speed, int(pots[k]), bool(scratch[k]), bool(hit[k]), float(values[k]),
+                                     source=src))
+            rows.append(k)
         if len(shortlist) >= st.top_k:
             break
     sa = ctx.angle_noise if ctx.angle_noise > 0 else st.robust_angle
     ss = ctx.speed_noise if ctx.speed_noise > 0 else st.robust_speed
     remaining = len(ctx.targets)
+    # Robustness: the perturbed shots of the whole shortlist in one batch (drawn in the order of a loop).
+    noisy_a: list[float] = []
+    noisy_v: list[float] = []
     for o in shortlist:
-        vals = []
         for _ in range(st.robust_samples):
-            a = o.angle + rng.normal(0.0, sa)
-            v = float(np.clip(o.speed * (1.0 + rng.normal(0.0, ss)), lo, hi))
-            vals.append(_simulate(ctx, a, v)[4])
-        o.robust = float(np.mean(vals))
+            noisy_a.append(o.angle + rng.normal(0.0, sa))
+            noisy_v.append(min(max(float(o.speed * (1.0 + rng.normal(0.0, ss))), lo), hi))
+    noisy_values = _simulate(ctx, noisy_a, noisy_v)[3] if noisy_a else np.zeros(0)
+    b = ctx.balls
+    for q, (o, k) in enumerate(zip(shortlist, rows)):
+        o.robust = float(np.mean(noisy_values[q * st.robust_samples:(q + 1) * st.robust_samples]))
         if remaining - o.pots > 0 and not o.scratch:
-            _, _, _, final, _ = _simulate(ctx, o.angle, o.speed)
+            final = Balls(b.ids, res.pos[k].copy(), res.vel[k].copy(), b.radius.copy(), b.mass.copy(),
+                          res.on_table[k].copy())  # the candidate's own final layout (simulated above)
             left = [j for j in ctx.targets if final.on_table[j]]
             sc = position_score(final, ctx.table, ctx.physics, ctx.cue, left, ctx.speed_range)
             o.position = min(sc / 0.01, 1.0)  # ~0.01 rad of cue tolerance is an easy shot
