@@ -10,7 +10,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from billiards_env.render import colors, frame_times  # noqa: E402
-from env_helpers import FAST_RENDER, IDS, L, W, corner_pot_scene, scratch_scene  # noqa: E402
+from env_helpers import FAST_RENDER, IDS, L, corner_pot_scene, scratch_scene  # noqa: E402
 
 
 @pytest.mark.parametrize("env_id", IDS)
@@ -316,7 +316,6 @@ def test_game_hud_data_follows_the_game():
     assert info["winner"] == 0 and hud["winner"] == 0 and hud["shooter"] is None
     assert hud["call"] == "9 pocketed: agent wins" and not hud["foul"]
     assert hud["wins"] == (1, 0) and hud["pocketed"] == ((9,), ())
-    env.reset(seed=0, options={"positions": full, "pocketed": pocketed})
     cue, _, _ = scratch_scene()
     full[0] = cue[0]
     env.reset(seed=0, options={"positions": full, "pocketed": pocketed})
