@@ -5,7 +5,8 @@
     python -m agents.evaluate --env BilliardsThreeBalls-v0 --players geometric search --episodes 300
 
 A player is a baseline name (``random``, ``geometric``, ``search``: see :mod:`billiards_env.players`) or a trained
-model: a run folder (its ``best_model.zip``, else ``final_model.zip``) or a model ``.zip`` inside one. A
+model: a run folder (its ``best_model.zip``, else ``final_model.zip``) or a model ``.zip`` inside one; an RLlib
+run folder of ``agents.rllib`` or any RLlib checkpoint (:mod:`agents.rllib.player`; needs the ``rllib`` extra). A
 model is played with its run's env kwargs and wrappers (from the run's ``config.yaml``) and deterministic
 actions; baselines play the same scene (the first model's env kwargs unless ``--env-kwargs`` is given).
 Episode ``k`` of every player starts from ``reset(seed=seed + k)``: the same tables, the same shot noise.
@@ -99,7 +100,12 @@ def _env_factory(env_id: str, env_kwargs: dict[str, Any], wrapper: Any = None) -
 
 
 def model_player(path: str | Path, env_id: str | None = None, label: str | None = None) -> PlayerSpec:
-    """A trained SB3 model as a player (its run's env kwargs, wrappers and VecNormalize statistics)."""
+    """A trained SB3 model as a player (its run's env kwargs, wrappers and VecNormalize statistics), or an RLlib
+    checkpoint / ``agents.rllib`` run folder (:func:`agents.rllib.player.rllib_player`)."""
+    from .rllib.player import is_rllib_path, rllib_player  # imports no Ray until it restores
+
+    if is_rllib_path(path):
+        return rllib_player(path, env_id, label)
     from .config import load_train_config, parse_hyperparams
     from .train import algo_class
 
@@ -456,7 +462,8 @@ def _pairs(items: Sequence[str] | None) -> dict[str, Any]:
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="python -m agents.evaluate", description=__doc__.split("\n\n")[0])
     p.add_argument("--players", nargs="+", default=list(BASELINES),
-                   help="baseline names (random, geometric, search) and/or run folders / model .zip files")
+                   help="baseline names (random, geometric, search) and/or run folders / model .zip files / RLlib "
+                        "checkpoints")
     p.add_argument("--env", help="env id (default: the first model's, else BilliardsOneBall-v0)")
     p.add_argument("--env-kwargs", nargs="*", metavar="KEY=VALUE", help="scene overrides for the baselines")
     p.add_argument("--episodes", type=int, default=500)

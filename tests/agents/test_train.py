@@ -15,7 +15,7 @@ from agents.evaluate import baseline_player, model_player, run_player
 from agents.train import algo_class, main, train
 
 REPO = Path(__file__).resolve().parents[2]
-CONFIGS = sorted((REPO / "configs" / "train").glob("*.yaml"))
+CONFIGS = sorted(p for p in (REPO / "configs" / "train").glob("*.yaml") if not p.name.startswith("rllib_"))  # SB3
 
 #: An easy scene through env kwargs: a half-size table with wide pockets, the cue ball on the head spot.
 EASY = {"table": {"length": 1.2, "width": 0.6, "corner_pocket_radius": 0.1, "side_pocket_radius": 0.09},
