@@ -360,8 +360,7 @@ def path_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table, physic
     return int(_path_pocket(float(start[0]), float(start[1]), float(velocity[0]), float(velocity[1]),
                             float(radius), float(table.length), float(table.width),
                             float(table.cushion_restitution), table.pocket_xy, table.pocket_radius,
-                            physics.law_code, physics.deceleration, physics.drag_rate, physics.min_speed,
-                            int(max_bounces)))
+                            *physics.path_args, physics.min_speed, int(max_bounces)))
 
 
 def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table, physics: Physics,

@@ -64,6 +64,16 @@ class Physics:
         """Drag rate ``k`` (1/s); 0 under ``rolling``."""
         return self.drag_k if self.friction == "drag" else 0.0
 
+    @property
+    def path_args(self) -> tuple[int, float, float]:
+        """``(law, a, k)`` for the distance-domain motion law of :mod:`.motion` (``stop_distance``,
+        ``speed_after_distance``, ``launch_speed``): ``a`` the rolling deceleration, ``k`` the drag rate under
+        ``drag`` or the sliding deceleration ``mu_slide g`` under ``spin`` (a ball set moving without spin slides
+        before it rolls)."""
+        if self.friction == "spin":
+            return self.law_code, self.deceleration, self.mu_slide * G
+        return self.law_code, self.deceleration, self.drag_rate
+
     @staticmethod
     def drag_k_from_factor(factor: float, frame_dt: float) -> float:
         """The drag rate ``k`` equivalent to the lecture's friction factor ``factor`` applied every ``frame_dt`` s."""

@@ -14,7 +14,7 @@ import math
 
 from numba import njit
 
-from .codes import DRAG, ROLLING  # noqa: F401  (DRAG re-exported for callers of the motion law)
+from .codes import DRAG, ROLLING, SPIN  # noqa: F401  (DRAG re-exported for callers of the motion law)
 
 
 _SERIES = 1e-5  # below this k*t, the drag formulas use their series (exact to round-off, and safe for tiny k)
@@ -99,6 +99,14 @@ def drag_time_for_phi(phi: float, k: float) -> float:
     return phi * _log1p_ratio(x)
 
 
+# --- distance domain: how far, how fast, how hard (players, aiming) -------------------------------------------
+# Under the spin model these describe a ball set moving WITHOUT spin (a stun strike, an object ball hit without
+# throw): it slides at the deceleration ``k = mu_slide g`` until its speed is 5/7 of the start (the slip is gone
+# after ``24/49 v0^2 / (2 k)`` metres), then rolls at ``a = mu_roll g``. See :meth:`.model.Physics.path_args`.
+_ROLL_FRACTION2 = 25.0 / 49.0  #: (5/7)^2: the speed a stunned ball keeps when it starts rolling, squared
+_SLIDE_FRACTION2 = 24.0 / 49.0  #: 1 - (5/7)^2
+
+
 @njit(cache=True)
 def stop_distance(speed: float, law: int, a: float, k: float, v_min: float) -> float:
     """Path length a ball moving at ``speed`` covers before it stops (``inf`` if it never does)."""
@@ -106,15 +114,25 @@ def stop_distance(speed: float, law: int, a: float, k: float, v_min: float) -> f
         return 0.0
     if law == ROLLING:
         return (speed * speed - v_min * v_min) / (2.0 * a) if a > 0.0 else math.inf
+    if law == SPIN:
+        if a <= 0.0 or k <= 0.0:
+            return math.inf
+        return _SLIDE_FRACTION2 * speed * speed / (2.0 * k) + _ROLL_FRACTION2 * speed * speed / (2.0 * a)
     return (speed - v_min) / k if k > 0.0 else math.inf
 
 
 @njit(cache=True)
 def speed_after_distance(speed: float, d: float, law: int, a: float, k: float) -> float:
     """Speed left after covering path length ``d`` (0 if the ball stops first): rolling ``sqrt(s^2 - 2 a d)``,
-    drag ``s - k d`` (under drag the speed falls linearly with distance)."""
+    drag ``s - k d`` (under drag the speed falls linearly with distance), spin: sliding then rolling."""
     if law == ROLLING:
         return math.sqrt(max(speed * speed - 2.0 * a * d, 0.0))
+    if law == SPIN:
+        d_slide = _SLIDE_FRACTION2 * speed * speed / (2.0 * k) if k > 0.0 else 0.0
+        if d <= d_slide:
+            return math.sqrt(max(speed * speed - 2.0 * k * d, 0.0))
+        v_roll2 = (speed * speed if k <= 0.0 else _ROLL_FRACTION2 * speed * speed)
+        return math.sqrt(max(v_roll2 - 2.0 * a * (d - d_slide), 0.0))
     return max(speed - k * d, 0.0)
 
 
@@ -125,6 +143,14 @@ def launch_speed(d: float, v_end: float, law: int, a: float, k: float) -> float:
     d = max(d, 0.0)
     if law == ROLLING:
         return math.sqrt(v_end * v_end + 2.0 * a * d)
+    if law == SPIN:
+        if k <= 0.0:
+            return math.sqrt(v_end * v_end + 2.0 * a * d)
+        # Arriving while rolling: v_end^2 = 25/49 v0^2 - 2 a (d - 24/49 v0^2 / 2k).
+        v0 = math.sqrt((v_end * v_end + 2.0 * a * d) / (_ROLL_FRACTION2 + _SLIDE_FRACTION2 * a / k))
+        if _SLIDE_FRACTION2 * v0 * v0 / (2.0 * k) <= d:
+            return v0
+        return math.sqrt(v_end * v_end + 2.0 * k * d)  # still sliding on arrival
     return v_end + k * d
 
 

@@ -54,12 +54,12 @@ def speed_to_travel(d: float, v_end: float, physics: Physics) -> float:
     """Launch speed for a ball to roll ``d`` metres and still move at ``v_end`` (both friction laws); ``v_end`` is
     raised to just above the law's stopping speed."""
     v_end = max(v_end, physics.min_speed * 1.05 + 1e-6)
-    return launch_speed(d, v_end, physics.law_code, physics.deceleration, physics.drag_rate)
+    return launch_speed(d, v_end, *physics.path_args)
 
 
 def travel_distance(speed: float, physics: Physics) -> float:
     """How far a ball launched at ``speed`` rolls before stopping (inf if it never stops)."""
-    return stop_distance(speed, physics.law_code, physics.deceleration, physics.drag_rate, physics.min_speed)
+    return stop_distance(speed, *physics.path_args, physics.min_speed)
 
 
 def ghost_ball_shots(
@@ -91,7 +91,6 @@ def ghost_ball_shots(
     rc = float(balls.radius[cue])
     mc = float(balls.mass[cue])
     e = physics.ball_restitution
-    law = physics.law_code
     lo, hi = speed_range
     out: list[ShotCandidate] = []
     for j in targets:
@@ -136,7 +135,7 @@ def ghost_ball_shots(
                         v0 = v_need
                     continue
                 s_try = float(max(v_need, lo))
-                v_imp = max(speed_after_distance(s_try, d_cue, law, physics.deceleration, physics.drag_rate), 1e-6)
+                v_imp = max(speed_after_distance(s_try, d_cue, *physics.path_args), 1e-6)
                 r_try = check_scratch and path_enters_pocket(
                     G, deflected_cue_velocity(v_imp * cue_dir, u, e, mc, mo), rc, table, physics)
                 if not reachable or (risk and not r_try):
