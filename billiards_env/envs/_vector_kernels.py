@@ -8,7 +8,10 @@ test ``tests/envs/test_vector_env.py`` checks it):
 - :func:`prepare_shots` is ``ActionType.shot`` (absolute, relative and ghost aim; power; tip offsets) followed
   by ``BilliardsEnv.play_shot``'s noise and strike;
 - :func:`finish_shots` is the rest of ``play_shot`` and ``PotTask.on_shot`` (re-spotting a pocketed cue ball as
-  :func:`~billiards_env.physics.layout.spot_cue_ball` does), and the positions observation.
+  :func:`~billiards_env.physics.layout.spot_cue_ball` does), and :func:`observe_positions` the positions
+  observation;
+- :func:`pot_step` (:func:`pot_step_spin`) does all of a step's shots in one serial call: strike, physics, score,
+  observation. The native vector env uses it when it runs serially, and the single env for its fast path.
 
 Random numbers come from each sub-env's own ``numpy.random.Generator`` (numba draws from the same bit generator
 state, with numpy's algorithms), in the single env's order.
@@ -20,6 +23,9 @@ import math
 import numpy as np
 from numba import njit
 
+from billiards_env.physics.batch import store_row
+from billiards_env.physics.exact import simulate_exact
+from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.spin_collide import strike_spin
 
 from ._kernels import observation
@@ -110,67 +116,135 @@ def _target(on):
     return -1
 
 
+# Constants of a pot env, packed in one float array (``cfg``) and one int array (``icfg``) by :func:`pack_config`.
+C_SPEED_LO, C_SPEED_SPAN, C_MAX_TIP, C_ANGLE_NOISE, C_SPEED_NOISE, C_TIP_NOISE, C_MAX_GHOST, C_BALL_RADIUS, \
+    C_HEAD_X, C_HEAD_Y, C_WIDTH, C_POT_REWARD, C_SCRATCH_PENALTY, C_MISS_PENALTY, C_STEP_PENALTY, C_SX, C_SY = range(17)
+I_AIM, I_SPIN_ACTION, I_SPIN_MODEL, I_SINGLE_SHOT, I_MAX_SHOTS, I_POSITIONS_OBS = range(6)
+# Columns of the per-table float outputs (``fout``) and int outputs (``iout``).
+F_REWARD, F_ANGLE, F_SPEED, F_SIDE, F_TOP, F_START_X, F_START_Y = range(7)
+O_TERMINATED, O_TRUNCATED, O_SUCCESS, O_SCRATCH, O_POCKETED = range(5)
+
+
+def pack_config(env) -> tuple[np.ndarray, np.ndarray]:
+    """The constants a pot env's shot needs, as ``(cfg float64, icfg int64)`` (see the ``C_*`` / ``I_*`` indices)."""
+    from billiards_env.physics.layout import head_spot
+
+    c = env.config
+    a = env.action_type
+    hx, hy = head_spot(env.table)
+    cfg = np.zeros(17)
+    cfg[C_SPEED_LO] = a.speed_lo
+    cfg[C_SPEED_SPAN] = a.speed_span
+    cfg[C_MAX_TIP] = a.max_tip
+    cfg[C_ANGLE_NOISE] = c.angle_noise
+    cfg[C_SPEED_NOISE] = c.speed_noise
+    cfg[C_TIP_NOISE] = c.tip_noise
+    cfg[C_MAX_GHOST] = float(getattr(a, "max_angle", 0.0))
+    cfg[C_BALL_RADIUS] = c.ball_radius
+    cfg[C_HEAD_X] = hx
+    cfg[C_HEAD_Y] = hy
+    cfg[C_WIDTH] = env.table.width
+    cfg[C_POT_REWARD] = c.pot_reward
+    cfg[C_SCRATCH_PENALTY] = c.scratch_penalty
+    cfg[C_MISS_PENALTY] = c.miss_penalty
+    cfg[C_STEP_PENALTY] = c.step_penalty
+    cfg[C_SX] = 1.0 / env.table.length
+    cfg[C_SY] = 1.0 / env.table.width
+    icfg = np.zeros(6, np.int64)
+    icfg[I_AIM] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
+    icfg[I_SPIN_ACTION] = int(a.spin)
+    icfg[I_SPIN_MODEL] = int(env.physics.friction == "spin")
+    icfg[I_SINGLE_SHOT] = int(c.single_shot)
+    icfg[I_MAX_SHOTS] = int(c.max_shots)
+    icfg[I_POSITIONS_OBS] = int(env.observation_type.name == "positions" and env.observation_type.n_task == 0)
+    return cfg, icfg
+
+
 @njit(cache=True)
-def prepare_shots(act, active, aim_kind, max_ghost, pos, on, radius, speed_lo, speed_span, spin_action, max_tip,
-                  angle_noise, speed_noise, tip_noise, gens, spin_model, vel, ang, played, start):
-    """Turn each active table's action (clipped float64) into the cue ball's velocity (and spin), as the single
-    env does: the aim type's angle, the power's speed, the tip offsets, then the shot noise drawn from the table's
-    generator. Writes ``played[k] = (angle, speed, side, top)`` and ``start[k] = (x, y)`` of the cue ball."""
-    for k in range(act.shape[0]):
+def draw_noise(active, gens, cfg, noise):
+    """The shot noise of every active table from its generator, in the single env's order: the angle's, the
+    speed's, then the two tip offsets' (each only when that noise is on): ``noise[k] = (da, ds, dside, dtop)``."""
+    an = cfg[C_ANGLE_NOISE]
+    sn = cfg[C_SPEED_NOISE]
+    tn = cfg[C_TIP_NOISE]
+    for k in range(noise.shape[0]):
         if not active[k]:
             continue
-        a0 = act[k, 0]
-        speed = speed_lo + 0.5 * (act[k, 1] + 1.0) * speed_span
-        side = 0.0
-        top = 0.0
-        if spin_action:
-            x = act[k, 2]
-            y = act[k, 3]
-            side = max_tip * (x * math.sqrt(1.0 - 0.5 * y * y))
-            top = max_tip * (y * math.sqrt(1.0 - 0.5 * x * x))
-        p = pos[k]
-        if aim_kind == AIM_ABSOLUTE:
-            angle = math.pi * a0
-        else:
-            t = _target(on[k])
-            if aim_kind == AIM_RELATIVE:
-                base = 0.0
-                if t >= 0:
-                    base = math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0])
-                angle = math.pi * a0 + base
-            elif t < 0:
-                angle = 0.0
-            else:
-                theta = math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0]) + a0 * max_ghost
-                contact = radius[0] + radius[t]
-                gx = p[t, 0] - contact * math.cos(theta)
-                gy = p[t, 1] - contact * math.sin(theta)
-                angle = math.atan2(gy - p[0, 1], gx - p[0, 0])
         g = gens[k]
-        if angle_noise > 0.0:
-            angle += g.normal(0.0, angle_noise)
-        if speed_noise > 0.0:
-            speed *= max(0.0, 1.0 + g.normal(0.0, speed_noise))
-        if tip_noise > 0.0:
-            side += g.normal(0.0, tip_noise)
-            top += g.normal(0.0, tip_noise)
-            r = math.hypot(side, top)
-            if r > 0.5 * (1.0 - 1e-12):  # keep it a legal tip position (no miscue)
-                side = side * 0.5 * (1.0 - 1e-12) / r
-                top = top * 0.5 * (1.0 - 1e-12) / r
-        start[k, 0] = p[0, 0]
-        start[k, 1] = p[0, 1]
-        vel[k, 0, 0] = speed * math.cos(angle)
-        vel[k, 0, 1] = speed * math.sin(angle)
-        if spin_model:
-            _, _, wx, wy, wz = strike_spin(angle, speed, side, top, radius[0])
-            ang[k, 0, 0] = wx
-            ang[k, 0, 1] = wy
-            ang[k, 0, 2] = wz
-        played[k, 0] = angle
-        played[k, 1] = speed
-        played[k, 2] = side
-        played[k, 3] = top
+        if an > 0.0:
+            noise[k, 0] = g.normal(0.0, an)
+        if sn > 0.0:
+            noise[k, 1] = g.normal(0.0, sn)
+        if tn > 0.0:
+            noise[k, 2] = g.normal(0.0, tn)
+            noise[k, 3] = g.normal(0.0, tn)
+
+
+@njit(cache=True)
+def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
+    """Table ``k``'s action (clipped float64) as the cue ball's velocity (and spin), as the single env does: the
+    aim type's angle, the power's speed, the tip offsets, then the shot noise (``noise[k]``, drawn beforehand:
+    :func:`draw_noise`). Writes the shot as played and the cue ball's start into ``fout[k]``."""
+    a0 = act[k, 0]
+    speed = cfg[C_SPEED_LO] + 0.5 * (act[k, 1] + 1.0) * cfg[C_SPEED_SPAN]
+    side = 0.0
+    top = 0.0
+    if icfg[I_SPIN_ACTION]:
+        x = act[k, 2]
+        y = act[k, 3]
+        side = cfg[C_MAX_TIP] * (x * math.sqrt(1.0 - 0.5 * y * y))
+        top = cfg[C_MAX_TIP] * (y * math.sqrt(1.0 - 0.5 * x * x))
+    p = pos[k]
+    aim = icfg[I_AIM]
+    if aim == AIM_ABSOLUTE:
+        angle = math.pi * a0
+    else:
+        t = _target(on[k])
+        if aim == AIM_RELATIVE:
+            base = 0.0
+            if t >= 0:
+                base = math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0])
+            angle = math.pi * a0 + base
+        elif t < 0:
+            angle = 0.0
+        else:
+            theta = math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0]) + a0 * cfg[C_MAX_GHOST]
+            contact = radius[0] + radius[t]
+            gx = p[t, 0] - contact * math.cos(theta)
+            gy = p[t, 1] - contact * math.sin(theta)
+            angle = math.atan2(gy - p[0, 1], gx - p[0, 0])
+    if cfg[C_ANGLE_NOISE] > 0.0:
+        angle += noise[k, 0]
+    if cfg[C_SPEED_NOISE] > 0.0:
+        speed *= max(0.0, 1.0 + noise[k, 1])
+    if cfg[C_TIP_NOISE] > 0.0:
+        side += noise[k, 2]
+        top += noise[k, 3]
+        r = math.hypot(side, top)
+        if r > 0.5 * (1.0 - 1e-12):  # keep it a legal tip position (no miscue)
+            side = side * 0.5 * (1.0 - 1e-12) / r
+            top = top * 0.5 * (1.0 - 1e-12) / r
+    fout[k, F_START_X] = p[0, 0]
+    fout[k, F_START_Y] = p[0, 1]
+    vel[k, 0, 0] = speed * math.cos(angle)
+    vel[k, 0, 1] = speed * math.sin(angle)
+    if icfg[I_SPIN_MODEL]:
+        _, _, wx, wy, wz = strike_spin(angle, speed, side, top, radius[0])
+        ang[k, 0, 0] = wx
+        ang[k, 0, 1] = wy
+        ang[k, 0, 2] = wz
+    fout[k, F_ANGLE] = angle
+    fout[k, F_SPEED] = speed
+    fout[k, F_SIDE] = side
+    fout[k, F_TOP] = top
+
+
+@njit(cache=True)
+def prepare_shots(act, active, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
+    """:func:`_prepare_row` for every active table."""
+    for k in range(act.shape[0]):
+        if active[k]:
+            _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout)
 
 
 @njit(cache=True)
@@ -200,46 +274,51 @@ def _spot_cue(pos, on, radius, hx, hy, width):
 
 
 @njit(cache=True)
-def finish_shots(active, pocket, first, pos, on, vel, ang, shots, ball_radius, hx, hy, width, pot_reward,
-                 scratch_penalty, miss_penalty, step_penalty, single_shot, max_shots, reward, terminated, truncated,
-                 success, scratch, pocketed_mask):
-    """Score each active table's shot as ``PotTask.on_shot``: balls at rest, a pocketed cue ball re-spotted,
-    reward, termination, truncation and success; ``pocketed_mask[k]`` has bit ``i`` set for each ball row ``i``
-    pocketed by the shot. Returns False if a cue ball could not be re-spotted."""
+def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iout):
+    """Score table ``k``'s shot as ``PotTask.on_shot``: balls at rest, a pocketed cue ball re-spotted, reward,
+    termination, truncation, success, scratch and the bit mask of the rows pocketed (``iout[k]``, ``fout[k]``).
+    Returns False if the cue ball could not be re-spotted."""
+    vel[k] = 0.0
+    ang[k] = 0.0
+    shots[k] += 1
+    n_pocketed = 0
+    mask = 0
+    for i in range(pos.shape[1]):
+        if pocket[k, i] >= 0:
+            n_pocketed += 1
+            mask |= 1 << i
+    sc = pocket[k, 0] >= 0
+    ok = True
+    if sc:
+        ok = _spot_cue(pos[k], on[k], cfg[C_BALL_RADIUS], cfg[C_HEAD_X], cfg[C_HEAD_Y], cfg[C_WIDTH])
+    n_potted = n_pocketed - (1 if sc else 0)
+    cleared = True
+    for i in range(1, pos.shape[1]):
+        if on[k, i]:
+            cleared = False
+            break
+    r = cfg[C_POT_REWARD] * n_potted - cfg[C_STEP_PENALTY]
+    if sc:
+        r -= cfg[C_SCRATCH_PENALTY]
+    if first[k] < 0:
+        r -= cfg[C_MISS_PENALTY]
+    term = cleared or icfg[I_SINGLE_SHOT] != 0
+    fout[k, F_REWARD] = r
+    iout[k, O_TERMINATED] = term
+    iout[k, O_TRUNCATED] = (not term) and shots[k] >= icfg[I_MAX_SHOTS]
+    iout[k, O_SUCCESS] = cleared and not sc
+    iout[k, O_SCRATCH] = sc
+    iout[k, O_POCKETED] = mask
+    return ok
+
+
+@njit(cache=True)
+def finish_shots(active, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iout):
+    """:func:`_finish_row` for every active table; False if a cue ball could not be re-spotted."""
     ok = True
     for k in range(pos.shape[0]):
-        if not active[k]:
-            continue
-        vel[k] = 0.0
-        ang[k] = 0.0
-        shots[k] += 1
-        n_pocketed = 0
-        mask = 0
-        for i in range(pos.shape[1]):
-            if pocket[k, i] >= 0:
-                n_pocketed += 1
-                mask |= 1 << i
-        pocketed_mask[k] = mask
-        sc = pocket[k, 0] >= 0
-        scratch[k] = sc
-        if sc:
-            ok = _spot_cue(pos[k], on[k], ball_radius, hx, hy, width) and ok
-        n_potted = n_pocketed - (1 if sc else 0)
-        cleared = True
-        for i in range(1, pos.shape[1]):
-            if on[k, i]:
-                cleared = False
-                break
-        r = pot_reward * n_potted - step_penalty
-        if sc:
-            r -= scratch_penalty
-        if first[k] < 0:
-            r -= miss_penalty
-        reward[k] = r
-        term = cleared or single_shot
-        terminated[k] = term
-        truncated[k] = (not term) and shots[k] >= max_shots
-        success[k] = cleared and not sc
+        if active[k]:
+            ok = _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iout) and ok
     return ok
 
 
@@ -251,5 +330,48 @@ def observe_positions(rows, pos, on, sx, sy, out):
         out[k] = observation(pos[k], on[k], sx, sy)
 
 
-__all__ = ["AIM_ABSOLUTE", "AIM_RELATIVE", "AIM_GHOST", "PLACED", "place_tables", "prepare_shots", "finish_shots",
-           "observe_positions"]
+@njit(cache=True)
+def _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs):
+    """Table ``k`` after its shot: the kernel result into ``out`` (as the batch stores it), the score
+    (:func:`_finish_row`) and the positions observation (when that is the observation type)."""
+    store_row(k, res, 0, out)
+    ok = _finish_row(k, out[3], out[5], pos, on, vel, ang, shots, cfg, icfg, fout, iout)
+    if icfg[I_POSITIONS_OBS]:
+        obs[k] = observation(pos[k], on[k], cfg[C_SX], cfg[C_SY])
+    return ok
+
+
+@njit(cache=True)
+def pot_step(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events, cfg,
+             icfg, noise, out, fout, iout, obs):
+    """One shot on every active table in one call, serially (``noise`` from :func:`draw_noise`):
+    :func:`_prepare_row`, the exact kernel (``out``: the
+    batch's result arrays, see :func:`billiards_env.physics.batch.new_outputs`) and :func:`_after_shot`. Returns
+    False if a cue ball could not be re-spotted."""
+    ok = True
+    for k in range(pos.shape[0]):
+        if active[k]:
+            _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
+            res = simulate_exact(pos[k], vel[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params, max_events,
+                                 False)
+            ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
+    return ok
+
+
+@njit(cache=True)
+def pot_step_spin(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events, cfg,
+                  icfg, noise, out, fout, iout, obs):
+    """:func:`pot_step` for the spin model (its own kernel: each model compiles only when used)."""
+    ok = True
+    for k in range(pos.shape[0]):
+        if active[k]:
+            _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
+            res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
+                                      max_events, False)
+            ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
+    return ok
+
+
+__all__ = ["AIM_ABSOLUTE", "AIM_RELATIVE", "AIM_GHOST", "PLACED", "pack_config", "place_tables", "prepare_shots",
+           "finish_shots", "observe_positions", "pot_step", "draw_noise",
+           "pot_step_spin"]

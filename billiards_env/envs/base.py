@@ -30,6 +30,8 @@ from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_pos
 from billiards_env.physics.simulate import Simulator
 from billiards_env.physics.spin_collide import strike_spin
 
+from ._pot_fast import pot_fast_step
+from ._seeding import np_random
 from .actions import CueShot, action_factory
 from .config import ConfigError, EnvConfig, load_config
 from .observations import observation_factory
@@ -95,6 +97,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         # Fast path: Simulator.run_in_place on the live arrays (exact solver, no copies, no result objects).
         self._fast = c.solver.name == "exact"
         self._spin = self.physics.friction == "spin"
+        # Fastest (the pot task on the exact solver): the whole shot in one compiled call (envs/_pot_fast.py).
+        self._pot_fast = pot_fast_step(self)
         self._pockets = [(float(px), float(py)) for px, py in self.table.pocket_xy]
 
         # Fixed part of the starting layout (rack and/or head-spot cue), checked once here.
@@ -120,7 +124,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
               ) -> tuple[np.ndarray, dict[str, Any]]:
         """Start an episode. ``options`` may set the scene: ``{"positions": (N,2) metres}`` (rows: cue, 1..n)
         with an optional ``"pocketed": (N,) bool`` (object balls already off the table); it is validated."""
-        super().reset(seed=seed)
+        if seed is not None:  # what gymnasium.Env.reset(seed=seed) does, with the same generator, faster
+            self._np_random, self._np_random_seed = np_random(seed)
         b = self.balls
         b.vel.fill(0.0)
         b.ang.fill(0.0)
@@ -150,6 +155,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                     f"step() after the end of the episode (shot {self.shots} returned terminated or truncated); call "
                     "reset() to start a new one (vector envs and SB3 do this for you)")
             raise gym.error.ResetNeeded("call reset() before step(): the table has no balls yet")
+        if self._pot_fast is not None and self._fast and not self._record:
+            return self._pot_fast.step(self, action)
         shot = self.action_type.shot(self, action)
         if shot.place is not None:
             self.balls.pos[0] = shot.place

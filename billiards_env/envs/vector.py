@@ -32,23 +32,24 @@ from typing import Any, ClassVar
 import gymnasium as gym
 import numpy as np
 from gymnasium.envs.registration import load_env_creator
-from gymnasium.utils import seeding
 from gymnasium.vector import AutoresetMode, SyncVectorEnv, VectorEnv
 from gymnasium.vector.utils import batch_space
 from numba import typed
 
 from billiards_env.physics.balls import Balls
-from billiards_env.physics.batch import new_outputs, simulate_into
+from billiards_env.physics.batch import new_outputs, simulate_into, use_parallel
 from billiards_env.physics.codes import STATUS_NAMES
-from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES, head_spot
+from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES
 from billiards_env.registration import ENVS, vector_entry_point
 
-from ._vector_kernels import (AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, PLACED, finish_shots, observe_positions,
-                              place_tables, prepare_shots)
+from ._seeding import np_random
+from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP,
+                              I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
+                              draw_noise, finish_shots, observe_positions, pack_config, place_tables, pot_step,
+                              pot_step_spin, prepare_shots)
 from .base import RENDER_MODES, BilliardsEnv
 from .config import ConfigError
 
-_AIMS = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}
 _STATUS = np.array(STATUS_NAMES, dtype=object)
 
 
@@ -130,14 +131,12 @@ class BilliardsVectorEnv(VectorEnv):
         self._mass = np.ascontiguousarray(t.balls.mass, dtype=float).reshape(1, nb)
         self._struck = np.zeros(n, np.int64)
         self._out = new_outputs(n, nb)
-        self._played = np.zeros((n, 4))
-        self._start = np.zeros((n, 2))
-        self._reward = np.zeros(n)
-        self._term = np.zeros(n, np.bool_)
-        self._trunc = np.zeros(n, np.bool_)
-        self._success = np.zeros(n, np.bool_)
-        self._scratch = np.zeros(n, np.bool_)
-        self._pmask = np.zeros(n, np.int64)
+        self._fout = np.zeros((n, 7))  # per table: reward, the shot as played, the cue ball's start (F_*)
+        self._iout = np.zeros((n, 5), np.int64)  # per table: terminated, truncated, success, scratch, pocketed (O_*)
+        self._cfg, self._icfg = pack_config(t)
+        c = t.config
+        self._noisy = c.angle_noise > 0.0 or c.speed_noise > 0.0 or c.tip_noise > 0.0
+        self._noise = np.zeros((n, 4))  # each table's shot noise (drawn by draw_noise when there is noise)
         self._obs = np.zeros((n,) + t.observation_space.shape, np.float32)
         self._needs_reset = np.ones(n, np.bool_)
         self._ever_reset = False
@@ -149,14 +148,8 @@ class BilliardsVectorEnv(VectorEnv):
         self._regions = np.asarray(t._regions, dtype=float).reshape(-1, 4)
         self._pockets = np.asarray(t._pockets, dtype=float).reshape(-1, 2)
         # Shots and scoring.
-        a = t.action_type
-        self._aim = _AIMS[a.name]
-        self._max_ghost = float(getattr(a, "max_angle", 0.0))
         self._spin_model = t._spin
-        self._head = head_spot(t.table)
-        self._positions_obs = t.observation_type.name == "positions" and t.observation_type.n_task == 0
-        self._sx = 1.0 / t.table.length
-        self._sy = 1.0 / t.table.width
+        self._positions_obs = bool(self._icfg[I_POSITIONS_OBS])
         self._first_obj = np.array(self.ball_ids + (None,), dtype=object)  # index -1 -> None
         self._pocketed_names: dict[int, tuple[str, ...]] = {}
         # Per-sub-env random generators (as each single env's np_random), and the compiled code's view of them.
@@ -221,31 +214,42 @@ class BilliardsVectorEnv(VectorEnv):
             resetting = np.zeros(n, np.bool_)
             active = np.ones(n, np.bool_)
         t = self.template
-        c = t.config
-        a = t.action_type
-        played, start = self._played, self._start
-        prepare_shots(act, active, self._aim, self._max_ghost, self.pos, self.on_table, self._radius[0], a.speed_lo,
-                      a.speed_span, a.spin, a.max_tip, c.angle_noise, c.speed_noise, c.tip_noise, self._gen_list(),
-                      self._spin_model, self.vel, self.ang, played, start)
-        render_before = self._render_snapshot(active)
-        simulate_into(t.simulator, self.pos, self.vel, self.on_table, self._radius, self._mass, self.ang,
-                      self._struck, self._out, self.threads)
-        status, sim_time, n_events, pocket, _, first = self._out[:6]
-        if not finish_shots(active, pocket, first, self.pos, self.on_table, self.vel, self.ang, self.shots,
-                            c.ball_radius, self._head[0], self._head[1], t.table.width, c.pot_reward,
-                            c.scratch_penalty, c.miss_penalty, c.step_penalty, c.single_shot, c.max_shots,
-                            self._reward, self._term, self._trunc, self._success, self._scratch, self._pmask):
+        sim = t.simulator
+        fout, iout, out = self._fout, self._iout, self._out
+        noise = self._noise
+        if self._noisy:
+            draw_noise(active, self._gen_list(), self._cfg, noise)
+        # Serially: one compiled call for the whole step. In parallel (or animating the rendered table): strike,
+        # simulate (spread over threads) and score in three calls.
+        split = use_parallel(n, self.threads) or self.render_mode in ("rgb_array_list", "human")
+        render_before = None
+        if split:
+            prepare_shots(act, active, self.pos, self.on_table, self._radius[0], self._cfg, self._icfg, noise,
+                          self.vel, self.ang, fout)
+            render_before = self._render_snapshot(active)
+            simulate_into(sim, self.pos, self.vel, self.on_table, self._radius, self._mass, self.ang, self._struck,
+                          out, self.threads)
+            ok = finish_shots(active, out[3], out[5], self.pos, self.on_table, self.vel, self.ang, self.shots,
+                              self._cfg, self._icfg, fout, iout)
+        else:
+            step = pot_step_spin if self._spin_model else pot_step
+            ok = step(act, active, self.pos, self.vel, self.ang, self.on_table, self.shots, self._radius, self._mass,
+                      sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), self._cfg, self._icfg, noise,
+                      out, fout, iout, self._obs)
+        if not ok:
             raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
+        status, sim_time, n_events, _, _, first = out[:6]
         stepped = np.flatnonzero(active)
         self._has_shot |= active
         if render_before is not None:
             self._render_shot(render_before)
-        reward = np.where(active, self._reward, 0.0)
-        term = active & self._term
-        trunc = active & self._trunc
+        reward = np.where(active, fout[:, F_REWARD], 0.0)
+        term = active & (iout[:, O_TERMINATED] != 0)
+        trunc = active & (iout[:, O_TRUNCATED] != 0)
         done = term | trunc
         step_info = self._step_info(stepped, status, sim_time, n_events, first)
-        self._observe(stepped)
+        if split or not self._positions_obs:
+            self._observe(stepped)
         infos: dict[str, Any] = {}
         if mode == AutoresetMode.SAME_STEP and done.any():
             ended = np.flatnonzero(done)
@@ -320,7 +324,7 @@ class BilliardsVectorEnv(VectorEnv):
         for k in rows.tolist():
             s = seeds[k]
             if s is not None or self._rngs[k] is None:
-                self._rngs[k], self._rng_seeds[k] = seeding.np_random(s)
+                self._rngs[k], self._rng_seeds[k] = np_random(s)
                 changed = True
         if changed:
             self._gens = None
@@ -374,8 +378,8 @@ class BilliardsVectorEnv(VectorEnv):
         if rows.size == 0:
             return
         if self._positions_obs:
-            observe_positions(np.ascontiguousarray(rows, dtype=np.int64), self.pos, self.on_table, self._sx, self._sy,
-                              self._obs)
+            observe_positions(np.ascontiguousarray(rows, dtype=np.int64), self.pos, self.on_table, self._cfg[C_SX],
+                              self._cfg[C_SY], self._obs)
         else:
             ot = self.template.observation_type
             for k in rows.tolist():
@@ -384,28 +388,29 @@ class BilliardsVectorEnv(VectorEnv):
     def _step_info(self, rows: np.ndarray, status, sim_time, n_events, first) -> dict[str, np.ndarray]:
         """The single env's step ``info`` of every table, as arrays (rows not in ``rows`` are filler)."""
         n = self.num_envs
+        iout, fout = self._iout, self._fout
         pocketed = np.full(n, None, dtype=object)
-        masks, which = np.unique(self._pmask[rows], return_inverse=True)
+        masks, which = np.unique(iout[rows, O_POCKETED], return_inverse=True)
         pocketed[rows] = self._pocketed_tuples(masks)[which]
         first_contact = np.full(n, None, dtype=object)
         first_contact[rows] = self._first_obj[first[rows]]
         status_arr = np.full(n, None, dtype=object)
         status_arr[rows] = _STATUS[status[rows]]
         info = {
-            "is_success": self._success.copy(),
+            "is_success": iout[:, O_SUCCESS] != 0,
             "pocketed": pocketed,
-            "scratch": self._scratch.copy(),
+            "scratch": iout[:, O_SCRATCH] != 0,
             "first_contact": first_contact,
             "n_events": n_events.copy(),
             "sim_time": sim_time.copy(),
             "status": status_arr,
             "shots": self.shots.copy(),
-            "angle": self._played[:, 0].copy(),
-            "speed": self._played[:, 1].copy(),
+            "angle": fout[:, F_ANGLE].copy(),
+            "speed": fout[:, F_SPEED].copy(),
         }
         if self.template.action_type.spin:
-            info["side"] = self._played[:, 2].copy()
-            info["top"] = self._played[:, 3].copy()
+            info["side"] = fout[:, F_SIDE].copy()
+            info["top"] = fout[:, F_TOP].copy()
         return info
 
     def _pocketed_tuples(self, masks: np.ndarray) -> np.ndarray:
@@ -430,9 +435,8 @@ class BilliardsVectorEnv(VectorEnv):
         b.on_table[...] = self.on_table[k]
         self.template.last_shot = None
         if self._has_shot[k]:
-            x, y = self._start[k].tolist()
-            angle, speed = self._played[k, :2].tolist()
-            self.template.last_shot = (x, y, angle, speed)
+            f = self._fout[k].tolist()
+            self.template.last_shot = (f[F_START_X], f[F_START_Y], f[F_ANGLE], f[F_SPEED])
 
     def _render_reset(self, rows: np.ndarray) -> None:
         """The rendered table was reset: start its frame list (``rgb_array_list``) or show it (``human``), as the

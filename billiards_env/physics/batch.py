@@ -89,11 +89,11 @@ class BatchResult(NamedTuple):
 
 # ------------------------------------------------------------------------------------------------ kernels
 # One pair of drivers per model (serial, and parallel over rows), so that a process compiles only the kernels of
-# the models it runs. ``out`` is the tuple of result arrays filled row by row (see :func:`_store`); ``radius`` and
+# the models it runs. ``out`` is the tuple of result arrays filled row by row (see :func:`store_row`); ``radius`` and
 # ``mass`` have one row per table or one row for all. The serial drivers also keep the event logs on request.
 
 @njit(cache=True)
-def _store(k, res, struck, out):
+def store_row(k, res, struck, out):
     """Row ``k`` of the result arrays ``out`` from kernel result ``res`` (``struck``: the ball whose first contact
     counts): status, time, event count, pockets, first contact, cushion hits (and after the first contact), and
     events by kind."""
@@ -160,7 +160,7 @@ def _rows_exact(pos, vel, on, radius, mass, pocket_xy, pocket_r, params, max_eve
         r = 0 if shared else k
         res = simulate_exact(pos[k], vel[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params, max_events,
                              False)
-        _store(k, res, struck[k], out)
+        store_row(k, res, struck[k], out)
         if keep:
             log = _append_log(k, res, log)
     return log
@@ -174,7 +174,7 @@ def _rows_exact_parallel(pos, vel, on, radius, mass, pocket_xy, pocket_r, params
         r = np.int64(0) if shared else np.int64(k)  # (a prange index may be unsigned: keep r an int64)
         res = simulate_exact(pos[k], vel[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params, max_events,
                              False)
-        _store(k, res, struck[k], out)
+        store_row(k, res, struck[k], out)
 
 
 @njit(cache=True)
@@ -185,7 +185,7 @@ def _rows_spin(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max
         r = 0 if shared else k
         res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
                                   max_events, False)
-        _store(k, res, struck[k], out)
+        store_row(k, res, struck[k], out)
         if keep:
             log = _append_log(k, res, log)
     return log
@@ -199,7 +199,7 @@ def _rows_spin_parallel(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, pa
         r = np.int64(0) if shared else np.int64(k)
         res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
                                   max_events, False)
-        _store(k, res, struck[k], out)
+        store_row(k, res, struck[k], out)
 
 
 @njit(cache=True)
@@ -263,7 +263,7 @@ def _thread_count(threads: int | None) -> Iterator[None]:
         numba.set_num_threads(before)
 
 
-def _use_parallel(n: int, threads: int | None) -> bool:
+def use_parallel(n: int, threads: int | None) -> bool:
     """Whether ``n`` rows run on several threads: ``threads`` > 1 asks for it, 1 forbids it; None decides: at
     least :data:`PARALLEL_MIN_ROWS` rows, more than one numba thread, and a core left idle by the rest of the
     machine (1-minute load average below the core count less one half). numba's threads wait for the slowest
@@ -309,7 +309,7 @@ def simulate_into(sim: Simulator, pos: np.ndarray, vel: np.ndarray, on: np.ndarr
     ``(1, B)`` or ``(N, B)``; ``ang``: ``(N, B, 3)`` (read only under the spin model); ``struck``: ``(N,)`` int64."""
     spin = sim._spin
     common = (radius, mass, sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), struck, out)
-    if _use_parallel(pos.shape[0], threads):
+    if use_parallel(pos.shape[0], threads):
         with _thread_count(threads):
             if spin:
                 _rows_spin_parallel(pos, vel, ang, on, *common)
@@ -347,7 +347,7 @@ def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int =
     (see :meth:`.Balls.strike`). Row ``k`` equals ``sim.run(balls.strike(ball, angles[k], speeds[k]))``.
 
     ``events``: also return every row's event log (the rows then run on one thread). ``threads``: 1 runs the rows
-    serially, more spreads them over numba's threads, None decides (see :func:`_use_parallel`); the results do not
+    serially, more spreads them over numba's threads, None decides (see :func:`use_parallel`); the results do not
     depend on it. ``validate``: check ``balls`` first.
     """
     spin = _check_simulator(sim)
@@ -441,4 +441,4 @@ def run_tables(sim: Simulator, pos: np.ndarray, vel: np.ndarray, on_table: np.nd
 
 
 __all__ = ["BatchResult", "EventBatch", "N_KINDS", "PARALLEL_MIN_ROWS", "run_shots", "run_tables", "new_outputs",
-           "simulate_into"]
+           "simulate_into", "store_row", "use_parallel"]

@@ -1,7 +1,8 @@
 """The native vector env (``envs/vector.py``) equals N single envs: ``gym.make_vec(id, n)`` against Gymnasium's
 ``SyncVectorEnv`` over ``gym.make(id)`` with the same seeds and actions gives the same observations, rewards,
 terminations, truncations and info, bit for bit, in every autoreset mode, for every id and the configs that take
-other code paths (aim types, noise, spin, features, truncation)."""
+other code paths (aim types, noise, spin, features, truncation). The single envs of the reference run their
+Python step path; the single env's compiled fast step (``envs/_pot_fast.py``) is checked against it too."""
 from __future__ import annotations
 
 import numba
@@ -31,10 +32,19 @@ def _same_info(a: dict, b: dict, where: str = "info") -> None:
             assert np.array_equal(x, y), (where, key, x, y)
 
 
+def python_path_env(env_id: str, **kwargs) -> gym.Env:
+    """``gym.make(env_id)`` on its Python step path (``_fast`` off: no compiled fast step, shots through
+    ``Simulator.run``): the reference the compiled paths must equal."""
+    env = gym.make(env_id, **kwargs)
+    env.unwrapped._fast = False
+    return env
+
+
 def _compare(env_id: str, mode: AutoresetMode, steps: int, n: int = 4, seed: int = 7, **kwargs) -> dict:
-    """Step the native vector env and SyncVectorEnv side by side; returns counts of what was exercised."""
+    """Step the native vector env and SyncVectorEnv of single envs on their Python path side by side; returns
+    counts of what was exercised."""
     vec = gym.make_vec(env_id, n, autoreset_mode=mode, **kwargs)
-    ref = SyncVectorEnv([lambda: gym.make(env_id, **kwargs) for _ in range(n)], autoreset_mode=mode)
+    ref = SyncVectorEnv([lambda: python_path_env(env_id, **kwargs) for _ in range(n)], autoreset_mode=mode)
     obs, info = vec.reset(seed=seed)
     obs_r, info_r = ref.reset(seed=seed)
     assert np.array_equal(obs, obs_r)
@@ -163,3 +173,25 @@ def test_bad_use_is_refused_with_the_fix():
         gym.make_vec("BilliardsOneBall-v0", 2, autoreset_mode="sometimes")
     with pytest.raises(ValueError, match="render_env"):
         gym.make_vec("BilliardsOneBall-v0", 2, render_env=2)
+
+
+@pytest.mark.parametrize("kwargs", [{}, {"action_type": "relative", "angle_noise": 0.02, "speed_noise": 0.1},
+                                    {"physics": {"friction": "spin"}, "spin_action": True, "tip_noise": 0.05}],
+                         ids=["plain", "relative-noise", "spin"])
+@pytest.mark.parametrize("env_id", POT_IDS)
+def test_single_env_fast_step_equals_its_python_path(env_id, kwargs):
+    fast, slow = gym.make(env_id, **kwargs), python_path_env(env_id, **kwargs)
+    assert fast.unwrapped._pot_fast is not None
+    rng = np.random.default_rng(5)
+    for episode in range(6):
+        obs = fast.reset(seed=episode)[0]
+        assert np.array_equal(obs, slow.reset(seed=episode)[0])
+        for _ in range(6):
+            a = rng.uniform(-1, 1, fast.action_space.shape).astype(np.float32)
+            out, ref = fast.step(a), slow.step(a)
+            assert np.array_equal(out[0], ref[0]) and out[0].dtype == ref[0].dtype
+            assert out[1:4] == ref[1:4] and out[4] == ref[4]
+            assert [type(v) for v in out[4].values()] == [type(v) for v in ref[4].values()]
+            assert fast.unwrapped.last_shot == slow.unwrapped.last_shot
+            if out[2] or out[3]:
+                break

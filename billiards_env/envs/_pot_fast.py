@@ -1,0 +1,111 @@
+"""The single env's fast step: a pot-task shot in one compiled call, the native vector env's
+(:func:`._vector_kernels.pot_step`) on the env's one table.
+
+``BilliardsEnv.step`` takes it when nothing else is needed: the pot task on the exact solver, not recording. The
+shot noise is drawn from ``env.np_random`` here, in the single env's order, and handed to the compiled code. It returns exactly what the Python path returns (the vector env tests compare
+the compiled code with that path, and ``tests/envs/test_vector_env.py`` checks this step against it too): only
+the Python around the shot goes (parsing the outcome, building intermediate objects, several compiled calls).
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from billiards_env.physics.batch import new_outputs
+from billiards_env.physics.codes import STATUS_NAMES
+
+from ._vector_kernels import (F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP, I_POSITIONS_OBS,
+                              O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, pack_config, pot_step,
+                              pot_step_spin)
+from .config import ConfigError
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .base import BilliardsEnv
+
+_ACTIVE = np.ones(1, np.bool_)
+
+
+class PotFastStep:
+    """The compiled step of one pot env (see the module docstring); :func:`pot_fast_step` makes it."""
+
+    def __init__(self, env: "BilliardsEnv") -> None:
+        self.cfg, self.icfg = pack_config(env)
+        nb = env.n_balls
+        self.out = new_outputs(1, nb)
+        self.fout = np.zeros((1, 7))
+        self.iout = np.zeros((1, 5), np.int64)
+        self.act = np.zeros((1, env.action_type.n))
+        self.shots = np.zeros(1, np.int64)
+        self.obs = np.zeros((1,) + env.observation_space.shape, np.float32)
+        self.positions = bool(self.icfg[I_POSITIONS_OBS])
+        self.kernel = pot_step_spin if env._spin else pot_step
+        c = env.config
+        self.noisy = c.angle_noise > 0.0 or c.speed_noise > 0.0 or c.tip_noise > 0.0
+        self.noise = np.zeros((1, 4))
+        self.names: dict[int, tuple[str, ...]] = {}
+        self.first_ids = env.ball_ids + (None,)  # index -1 -> None
+
+    def step(self, env: "BilliardsEnv", action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
+        """``env.step(action)`` for a pot env (the caller has checked that a step is allowed)."""
+        self.act[0] = env.action_type.parse(action)
+        if self.noisy:  # drawn as play_shot draws it: the angle's, the speed's, the tip offsets'
+            rng, c, noise = env.np_random, env.config, self.noise
+            if c.angle_noise > 0.0:
+                noise[0, 0] = float(rng.normal(0.0, c.angle_noise))
+            if c.speed_noise > 0.0:
+                noise[0, 1] = float(rng.normal(0.0, c.speed_noise))
+            if c.tip_noise > 0.0:
+                noise[0, 2] = float(rng.normal(0.0, c.tip_noise))
+                noise[0, 3] = float(rng.normal(0.0, c.tip_noise))
+        b = env.balls
+        sim = env.simulator
+        self.shots[0] = env.shots
+        fout, iout, out = self.fout, self.iout, self.out
+        if not self.kernel(self.act, _ACTIVE, b.pos[None], b.vel[None], b.ang[None], b.on_table[None], self.shots,
+                           b.radius[None], b.mass[None], sim._pocket_xy, sim._pocket_r, sim._params,
+                           sim.max_events, self.cfg, self.icfg, self.noise, out, fout, iout, self.obs):
+            raise ConfigError(f"{env.env_id}: could not re-spot the cue ball: the head of the table is full")
+        f = fout[0].tolist()
+        i = iout[0].tolist()
+        env.shots += 1
+        env.last_shot = (f[F_START_X], f[F_START_Y], f[F_ANGLE], f[F_SPEED])
+        env.last_tip = (f[F_SIDE], f[F_TOP])
+        env._animations = []
+        terminated = i[O_TERMINATED] != 0
+        truncated = i[O_TRUNCATED] != 0
+        mask = i[O_POCKETED]
+        pocketed = self.names.get(mask)
+        if pocketed is None:
+            ids = env.ball_ids
+            pocketed = self.names[mask] = tuple(ids[r] for r in range(len(ids)) if mask >> r & 1)
+        info = {
+            "is_success": i[O_SUCCESS] != 0,
+            "pocketed": pocketed,
+            "scratch": i[O_SCRATCH] != 0,
+            "first_contact": self.first_ids[int(out[5][0])],
+            "n_events": int(out[2][0]),
+            "sim_time": float(out[1][0]),
+            "status": STATUS_NAMES[int(out[0][0])],
+            "shots": env.shots,
+            "angle": f[F_ANGLE],
+            "speed": f[F_SPEED],
+        }
+        if env.action_type.spin:
+            info["side"], info["top"] = f[F_SIDE], f[F_TOP]
+        env._needs_reset = terminated or truncated
+        obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env)
+        return obs, f[F_REWARD], terminated, truncated, info
+
+
+def pot_fast_step(env: "BilliardsEnv") -> PotFastStep | None:
+    """The fast step of ``env`` if it applies (the pot task on the exact solver), else None. The env still takes
+    its Python path when recording or when ``env._fast`` is switched off."""
+    from .tasks import PotTask
+
+    if type(env.task) is not PotTask or env.config.solver.name != "exact":
+        return None
+    return PotFastStep(env)
+
+
+__all__ = ["PotFastStep", "pot_fast_step"]
