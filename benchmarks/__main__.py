@@ -1,9 +1,11 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin] [--out docs/bench]``, from the
-repository root.
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch] [--out docs/bench]``,
+from the repository root.
 
 Without ``--only`` every part runs: the accuracy suite (speed against error, ``speed_vs_error.md/.json/.png``),
 then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``), then the
-spin model's speed (against pooltool) and speed against error (``spin.md/.json``).
+spin model's speed (against pooltool) and speed against error (``spin.md/.json``), then the batch API, the native
+vector env, the search player, the single env and the first call against the targets of issue 12
+(``batch.md/.json``).
 ``--quick`` runs a small configuration of everything (about a minute); the full run takes about four minutes on
 two cores. ``--only env`` also prints a table of ``env.step`` throughput per id (``--env-seconds``,
 ``--env-ids``, ``--env-compare``).
@@ -14,7 +16,7 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -45,7 +47,7 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, speed, spin
+    from . import accuracy, batch, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -59,6 +61,8 @@ def main(argv: list[str] | None = None) -> int:
             speed.render(args.out)
         if (args.out / "spin.json").exists():
             spin.render(args.out)
+        if (args.out / "batch.json").exists():
+            batch.render(args.out)
         log(f"[bench] re-rendered the reports in {args.out}")
         return 0
     if "accuracy" in only:
@@ -71,6 +75,9 @@ def main(argv: list[str] | None = None) -> int:
     if "spin" in only:
         spin.main(args.out, quick=args.quick, pooltool_python=args.pooltool_python,
                   allow_setup=not args.no_pooltool_setup)
+    if "batch" in only:
+        batch.main(args.out, quick=args.quick, pooltool_python=args.pooltool_python,
+                   allow_setup=not args.no_pooltool_setup)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; outputs in {args.out}")
     return 0
 
