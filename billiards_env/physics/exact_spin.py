@@ -30,6 +30,14 @@ from .spin_collide import (is_pressed_pair, merge_pair, resolve_ball_ball_spin, 
                            settle_on_cushion, wall_normal)
 from .spin_motion import advance, classify, piece_of, reach, roll_on, slide_end, spin_decay_rate, transition
 
+#: Compile options of the kernel's internal helpers (called only from compiled code: no Python entry wrappers to
+#: compile and cache), as in :mod:`.exact`.
+_internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+#: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
+#: numba compile a second specialisation of it.
+_ROW0 = np.int64(0)
+_ROW1 = np.int64(1)
+
 # Columns of the per-ball motion table ``bs``: the state at the ball's last event (time T0), and its piece.
 T0, X, Y, VX, VY, WX, WY, WZ, AX, AY, DWX, DWY, ALPHA, TEND = range(14)
 N_COLS = 14
@@ -39,7 +47,7 @@ _TRANSITION = 100
 N_STATE_COLS = 9
 
 
-@njit(cache=True)
+@_internal
 def _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin):
     """Start ball ``i`` on the ``state`` piece from its stored state (made exact by :func:`piece_of`)."""
     c = piece_of(state, bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ], r, f_slide, f_roll, f_spin)
@@ -56,7 +64,7 @@ def _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin):
     st[i] = state
 
 
-@njit(cache=True)
+@_internal
 def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
     """Start ball ``i`` on the piece its stored state calls for (a ball found rolling, its slip round-off, is
     put on rolling by :func:`.spin_motion.roll_on`)."""
@@ -66,7 +74,7 @@ def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
     _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin)
 
 
-@njit(cache=True)
+@_internal
 def _state_at(bs, i, t):
     """``(x, y, vx, vy, wx, wy, wz)`` of ball ``i`` at time ``t`` (not past its piece's end)."""
     tau = min(t, bs[i, TEND]) - bs[i, T0]
@@ -76,7 +84,7 @@ def _state_at(bs, i, t):
                    bs[i, AY], bs[i, DWX], bs[i, DWY], bs[i, ALPHA])
 
 
-@njit(cache=True)
+@_internal
 def _move_to(bs, i, t):
     """Move ball ``i``'s reference state to time ``t`` (on the same piece)."""
     x, y, vx, vy, wx, wy, wz = _state_at(bs, i, t)
@@ -90,7 +98,7 @@ def _move_to(bs, i, t):
     bs[i, T0] = t
 
 
-@njit(cache=True)
+@_internal
 def _wall_time(c2, c1, c0, window, tol):
     """First time in ``[0, window]`` at which the wall distance ``c2 t^2 + c1 t + c0`` (positive on the table)
     reaches 0 from above; ``inf`` if none. A ball touching the wall (``c0 <= 0``) counts at once if it moves
@@ -107,7 +115,7 @@ def _wall_time(c2, c1, c0, window, tol):
     return r1 if n > 0 else math.inf
 
 
-@njit(cache=True)
+@_internal
 def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time):
     """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
     t0 = bs[i, T0]
@@ -129,6 +137,7 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     ax = bs[i, AX]
     ay = bs[i, AY]
     window = min(t_end, max_time) - t0
+    far = reach(window, vx, vy, ax, ay) * (1.0 + 1e-9) + 1e-12  # no pocket farther than this can be reached
     best = math.inf
     kind = -1
     other = -1
@@ -139,6 +148,8 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
         c0 = dx * dx + dy * dy - pocket_r[q] * pocket_r[q]
         if c0 <= 0.0:
             tau = 0.0
+        elif math.sqrt(dx * dx + dy * dy) - pocket_r[q] > far:
+            continue
         else:
             tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
                               2.0 * (dx * vx + dy * vy), c0, window, 0.0)
@@ -166,7 +177,7 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     return t_end, _TRANSITION, -1
 
 
-@njit(cache=True)
+@_internal
 def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (which recomputes the pair anyway)."""
@@ -199,7 +210,7 @@ def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
     return t + tau
 
 
-@njit(cache=True)
+@_internal
 def _slow_run(i, j, slow, slow_with, slow_runs):
     """Count a collision of ``i`` and ``j`` towards their run of slow re-contacts (closing slower than the speed
     floor, one after another with no faster one between); returns the run's length (0 after a fast one).
@@ -221,7 +232,7 @@ def _slow_run(i, j, slow, slow_with, slow_runs):
     return min(slow_runs[i], slow_runs[j])
 
 
-@njit(cache=True)
+@_internal
 def _copy_motion(bs, st, src, dst, radius, f_slide, f_roll, f_spin):
     """Give ball ``dst``, which has the velocity and surface velocity ``R (wx, wy)`` of ``src``, the piece of
     ``src`` (acceleration and end), so a merged pair or cluster moves as one: its gaps stay exactly as they
@@ -242,7 +253,7 @@ def _copy_motion(bs, st, src, dst, radius, f_slide, f_roll, f_spin):
     st[dst] = st[src]
 
 
-@njit(cache=True)
+@_internal
 def _touching_wall(x, y, r, length, width, wall):
     if wall == 0:
         return x <= r
@@ -253,7 +264,7 @@ def _touching_wall(x, y, r, length, width, wall):
     return y >= width - r
 
 
-@njit(cache=True)
+@_internal
 def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin, involved):
     """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
@@ -330,7 +341,7 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
     return count
 
 
-@njit(cache=True)
+@_internal
 def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, bs, st, on_table):
     sc_t[n_sc] = t
     sc_ball[n_sc] = i
@@ -482,12 +493,12 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                     cw[q, 2] = bs[m, WZ]
                 merged = False
                 if dist > 0.0:
-                    speed = resolve_ball_ball_spin(cv, cw, 0, 1, dx / dist, dy / dist, mass[bi], mass[bj],
+                    speed = resolve_ball_ball_spin(cv, cw, _ROW0, _ROW1, dx / dist, dy / dist, mass[bi], mass[bj],
                                                    radius[bi], radius[bj], e_b, mu_b, floor, clustered)
                     pushing = _slow_run(bi, bj, speed < floor, slow_with, slow_runs) > JAM_EVENTS
-                    if pushing or is_pressed_pair(cv, cw, 0, 1, dx, dy, radius[bi], radius[bj], f_slide, f_roll,
+                    if pushing or is_pressed_pair(cv, cw, _ROW0, _ROW1, dx, dy, radius[bi], radius[bj], f_slide, f_roll,
                                                   f_spin, floor):
-                        merge_pair(cv, cw, 0, 1, mass[bi], mass[bj], radius[bi], radius[bj])
+                        merge_pair(cv, cw, _ROW0, _ROW1, mass[bi], mass[bj], radius[bi], radius[bj])
                         merged = True
                         slow_runs[bi] = 0
                         slow_runs[bj] = 0
@@ -528,7 +539,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 cw[0, 0] = bs[bi, WX]
                 cw[0, 1] = bs[bi, WY]
                 cw[0, 2] = bs[bi, WZ]
-                speed = resolve_cushion_spin(cv, cw, 0, bj, r, e_c, mu_c)
+                speed = resolve_cushion_spin(cv, cw, _ROW0, bj, r, e_c, mu_c)
                 bs[bi, VX] = cv[0, 0]
                 bs[bi, VY] = cv[0, 1]
                 bs[bi, WX] = cw[0, 0]
@@ -542,7 +553,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                     cv[0, 1] = bs[bi, VY]
                     cw[0, 0] = bs[bi, WX]
                     cw[0, 1] = bs[bi, WY]
-                    settle_on_cushion(cv, cw, 0, bj)
+                    settle_on_cushion(cv, cw, _ROW0, bj)
                     bs[bi, VX] = cv[0, 0]
                     bs[bi, VY] = cv[0, 1]
                     bs[bi, WX] = cw[0, 0]

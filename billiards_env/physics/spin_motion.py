@@ -31,6 +31,10 @@ from numba import njit
 
 from .codes import MS_POCKETED, MS_ROLLING, MS_SLIDING, MS_SPINNING, MS_STATIONARY
 
+#: Typed (non-literal) state codes for calls with a fixed state: a literal would make numba compile a second
+#: specialisation of the callee.
+_SLIDING = np.int64(MS_SLIDING)
+_POCKETED = np.int64(MS_POCKETED)
 #: A slip below this fraction of ``|v| + R |(wx, wy)|`` is round-off: the ball rolls (or spins, or rests).
 #: (Putting such a ball on rolling, :func:`roll_on`, changes its momentum by at most 4/7 of this, relative.)
 SLIP_TOL = 1e-13
@@ -132,9 +136,14 @@ def slide_end(x: float, y: float, vx: float, vy: float, wx: float, wy: float, wz
               f_spin: float) -> tuple:
     """The state ``(x, y, vx, vy, wx, wy, wz)`` at the end of the slide that starts from this state, in closed
     form (the velocity by :func:`roll_on`, exact whatever the rounding of the end time)."""
-    c = piece_of(MS_SLIDING, vx, vy, wx, wy, wz, r, f_slide, 0.0, f_spin)
+    c = piece_of(_SLIDING, vx, vy, wx, wy, wz, r, f_slide, 0.0, f_spin)
     tau = c[9]
     nx, ny, nwx, nwy = roll_on(vx, vy, wx, wy, r)
+    ux, uy = slip(vx, vy, wx, wy, r)
+    if math.hypot(nx, ny) <= 1e-15 * (math.hypot(vx, vy) + math.hypot(ux, uy)):
+        # v0 and 2 u0 / 7 cancel to round-off: the slide ends at rest (a perfect stop shot), not with a speed
+        # (and an energy) made of rounding errors.
+        nx = ny = nwx = nwy = 0.0
     return (x + tau * (vx + 0.5 * c[5] * tau), y + tau * (vy + 0.5 * c[6] * tau), nx, ny, nwx, nwy,
             wz_after(wz, tau, spin_decay_rate(r, f_spin)))
 
@@ -246,7 +255,7 @@ def carry_rows(sc_t, sc_state, radius_of_row, prev, rows, f_slide, f_roll, f_spi
         s = sc_state[prev[q]]
         r = radius_of_row[q]
         if s[4] <= 0.5:  # pocketed: it does not move
-            c = piece_of(MS_POCKETED, 0.0, 0.0, 0.0, 0.0, 0.0, r, f_slide, f_roll, f_spin)
+            c = piece_of(_POCKETED, 0.0, 0.0, 0.0, 0.0, 0.0, r, f_slide, f_roll, f_spin)
         else:
             c = piece_of(int(s[8]), s[2], s[3], s[5], s[6], s[7], r, f_slide, f_roll, f_spin)
         dt = min(sc_t[rows[q]] - sc_t[prev[q]], c[9])

@@ -34,7 +34,11 @@ from .spin_motion import classify, roll_on, slip, spin_decay_rate, wz_after
 from .step import _put_event
 
 
-@njit(cache=True)
+#: Internal helpers: no Python entry wrappers (see :mod:`.exact_spin`).
+_internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+
+
+@_internal
 def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on, code, only):
     n = pos.shape[0]
     for i in range(n):
@@ -59,7 +63,7 @@ def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on, code, only):
     return n_sc, sc_t, sc_ball, sc_state
 
 
-@njit(cache=True)
+@_internal
 def _friction_step(vel, ang, i, r, dt, f_slide, f_roll, alpha):
     """Step 1 for ball ``i``: returns its motion state after the step."""
     vx = vel[i, 0]
