@@ -16,14 +16,15 @@ _STAMP = _PACKAGE / "__pycache__" / "kernels.sha256"
 
 
 def clear_stale_cache() -> bool:
-    """Delete numba's cached machine code if a kernel source (``physics/``, ``envs/_kernels.py``) changed since
-    it was compiled.
+    """Delete numba's cached machine code if a kernel source (``physics/``, the compiled ``envs/`` modules) changed
+    since it was compiled.
 
     numba keys each cached function on its own file only, so a kernel that calls into another module would
     otherwise keep stale code after that module changes. Returns True if the cache was cleared.
     """
     digest = hashlib.sha256()
-    kernel_sources = sorted((_PACKAGE / "physics").glob("*.py")) + [_PACKAGE / "envs" / "_kernels.py"]
+    kernel_sources = sorted((_PACKAGE / "physics").glob("*.py")) + [
+        _PACKAGE / "envs" / name for name in ("_kernels.py", "_vector_kernels.py", "_seeding.py")]
     for path in kernel_sources:
         digest.update(path.relative_to(_PACKAGE).as_posix().encode())
         digest.update(path.read_bytes())
@@ -39,7 +40,8 @@ def clear_stale_cache() -> bool:
 
 
 def warm_up() -> float:
-    """Physics kernels, then one reset and step of each registered env; returns the seconds it took."""
+    """Physics kernels, then one reset and step of each registered env and of the native vector env's paths;
+    returns the seconds it took."""
     start = time.perf_counter()
     clear_stale_cache()
     warm_up_physics()
@@ -49,6 +51,13 @@ def warm_up() -> float:
 
     for env_id in ENV_IDS:
         env = gym.make(env_id)
+        env.reset(seed=0)
+        env.step(env.action_space.sample())
+        env.close()
+    # The native vector env's kernels: serial (one call per step), parallel, with shot noise, and the spin model.
+    for kwargs in ({"threads": 1}, {"threads": 2, "angle_noise": 0.01},
+                   {"threads": 1, "physics": {"friction": "spin"}, "spin_action": True}):
+        env = gym.make_vec("BilliardsThreeBalls-v0", 2, **kwargs)
         env.reset(seed=0)
         env.step(env.action_space.sample())
         env.close()

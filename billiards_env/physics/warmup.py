@@ -13,7 +13,8 @@ from .table import Table
 
 
 def warm_up() -> float:
-    """Run one tiny shot through each solver and recording mode; returns the seconds it took."""
+    """Run one tiny shot through each solver and recording mode, and a tiny batch through each exact model's batch
+    drivers; returns the seconds it took."""
     start = time.perf_counter()
     plain = Balls.from_positions([[0.5, 0.5], [1.0, 0.5]]).strike(0, 0.0, 1.0)
     spin = Balls.from_positions([[0.5, 0.5], [1.0, 0.5]]).strike(0, 0.0, 1.0, side=0.2, top=-0.2)
@@ -29,7 +30,18 @@ def warm_up() -> float:
                     result.trajectory.sample_states([0.0, result.time])
             if solver == "exact":
                 sim.run_in_place(balls.copy())
+                _warm_batch(sim, balls)
     return time.perf_counter() - start
+
+
+def _warm_batch(sim: Simulator, balls: Balls) -> None:
+    """The batch drivers of ``sim``'s model (:mod:`.batch`): serial with the event log, and parallel."""
+    from .batch import run_shots
+
+    spin = sim.physics.friction == "spin"
+    kw = {"side": [0.1, 0.0], "top": [0.0, -0.1]} if spin else {}
+    for threads, events in ((1, True), (2, False)):
+        run_shots(sim, balls, [0.0, 1.0], [1.0, 0.5], threads=threads, events=events, **kw)
 
 
 if __name__ == "__main__":
