@@ -131,6 +131,16 @@ def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
     k = prm.drag_k
     xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
     xj, yj, vxj, vyj = _state_at(j, t, t0, p0, v0, tstop, law, a, k)
+    return _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
+
+
+@_internal
+def _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm):
+    """:func:`_predict_pair` from both balls' states at ``t`` (``i < j``), so that a ball's state is computed once
+    for all its pairs."""
+    law = prm.law
+    a = prm.decel
+    k = prm.drag_k
     si = math.hypot(vxi, vyi)
     sj = math.hypot(vxj, vyj)
     if si == 0.0 and sj == 0.0:
@@ -149,6 +159,23 @@ def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
         reach += distance(sj, window, law, a, k)
     if math.hypot(ax, ay) - dc > reach * (1.0 + 1e-9) + 1e-12:
         return math.inf
+    if si == 0.0 or sj == 0.0:
+        # One ball at rest: the other's centre runs along a straight segment of length ``reach`` (its direction is
+        # fixed between events). If that segment stays clear of the resting ball's contact circle (margins far
+        # above round-off), the quartic below has no root in the window either: most pairs end here.
+        if si > 0.0:
+            rx, ry, ux, uy = -ax, -ay, vxi / si, vyi / si
+        else:
+            rx, ry, ux, uy = ax, ay, vxj / sj, vyj / sj
+        along = rx * ux + ry * uy
+        if along <= 0.0:
+            gap = math.hypot(rx, ry)
+        elif along >= reach:
+            gap = math.hypot(rx - ux * reach, ry - uy * reach)
+        else:
+            gap = abs(rx * uy - ry * ux)
+        if gap > dc * (1.0 + 1e-9) + 1e-9:
+            return math.inf
     bx = vxi - vxj
     by = vyi - vyj
     closing_tol = 2.0 * dc * (1e-12 + 1e-14 * (si + sj))
@@ -463,21 +490,26 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params
                     sc_state = _grow_rows(sc_state)
                 _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table)
                 n_sc += 1
-            if on_table[i]:
-                ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(
-                    i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm
-                )
-            else:
+            if not on_table[i]:
                 ball_t[i] = math.inf
+                for m in range(n):
+                    if m != i:
+                        pair_t[min(i, m), max(i, m)] = math.inf
+                continue
+            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r,
+                                                                   prm)
+            xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, tstop, law, a, k)  # once for all pairs of ball i
             for m in range(n):
                 if m == i:
                     continue
-                lo = min(i, m)
-                hi = max(i, m)
-                if on_table[i] and on_table[m]:
-                    pair_t[lo, hi] = _predict_pair(lo, hi, t, t0, p0, v0, tstop, ball_t, radius, prm)
+                if not on_table[m]:
+                    pair_t[min(i, m), max(i, m)] = math.inf
+                    continue
+                xm, ym, vxm, vym = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
+                if i < m:
+                    pair_t[i, m] = _pair_time(i, m, t, xi, yi, vxi, vyi, xm, ym, vxm, vym, ball_t, radius, prm)
                 else:
-                    pair_t[lo, hi] = math.inf
+                    pair_t[m, i] = _pair_time(m, i, t, xm, ym, vxm, vym, xi, yi, vxi, vyi, ball_t, radius, prm)
 
     for i in range(n):
         if on_table[i]:
