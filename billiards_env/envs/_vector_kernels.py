@@ -4,12 +4,13 @@ Each function does for every sub-env what the single env does in Python, with th
 in the same order, so that sub-env ``k`` of a vector env equals a single env with the same seed bit for bit (the
 test ``tests/envs/test_vector_env.py`` checks it):
 
-- :func:`place_tables` is :func:`billiards_env.physics.layout.place_random` (and the fixed rows of a rack);
+- :func:`place_tables` runs :func:`billiards_env.physics.layout.place_random_rows` (the single env's placement)
+  per table;
 - :func:`prepare_shots` is ``ActionType.shot`` (absolute, relative and ghost aim; power; tip offsets) followed
   by ``BilliardsEnv.play_shot``'s noise and strike;
-- :func:`finish_shots` is the rest of ``play_shot`` and ``PotTask.on_shot`` (re-spotting a pocketed cue ball as
-  :func:`~billiards_env.physics.layout.spot_cue_ball` does), and :func:`observe_positions` the positions
-  observation;
+- :func:`finish_shots` is the rest of ``play_shot`` and ``PotTask.on_shot`` (re-spotting a pocketed cue ball
+  with :func:`~billiards_env.physics.layout.spot_cue_row`, the single env's code), and :func:`observe_positions`
+  the positions observation;
 - :func:`pot_step` (:func:`pot_step_spin`) does all of a step's shots in one serial call: strike, physics, score,
   observation. The native vector env uses it when it runs serially, and the single env for its fast path.
 
@@ -26,6 +27,7 @@ from numba import njit
 from billiards_env.physics.batch import store_row
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
+from billiards_env.physics.layout import place_random_rows, spot_cue_row
 from billiards_env.physics.spin_collide import strike_spin
 
 from ._kernels import observation
@@ -41,13 +43,10 @@ PLACED = -1
 def place_tables(rows, gens, pos, vel, ang, on, fixed_rows, fixed_xy, rand_rows, regions, pockets, pocket_margin,
                  min_dist, batch, tries):
     """Reset tables ``rows``: balls at rest on the table, the fixed rows at ``fixed_xy``, each random row drawn
-    uniformly in its region ``(x0, x_span, y0, y_span)`` away from pockets and placed balls (rejection sampling in
-    batches of ``batch`` candidates, as ``place_random``). Returns :data:`PLACED`, or the first table that could
-    not be placed."""
+    by :func:`~billiards_env.physics.layout.place_random_rows` (the single env's placement). Returns
+    :data:`PLACED`, or the first table that could not be placed."""
     nf = fixed_rows.shape[0]
     nr = rand_rows.shape[0]
-    pm2 = pocket_margin * pocket_margin
-    d2 = min_dist * min_dist
     placed = np.empty((nf + nr, 2))
     for q in range(rows.shape[0]):
         k = rows[q]
@@ -59,51 +58,9 @@ def place_tables(rows, gens, pos, vel, ang, on, fixed_rows, fixed_xy, rand_rows,
             pos[k, fixed_rows[f], 1] = fixed_xy[f, 1]
             placed[f, 0] = fixed_xy[f, 0]
             placed[f, 1] = fixed_xy[f, 1]
-        if nr == 0:
-            continue
-        g = gens[k]
-        first = g.random(2 * batch * nr)
-        n_placed = nf
-        for m in range(nr):
-            x0 = regions[m, 0]
-            sx = regions[m, 1]
-            y0 = regions[m, 2]
-            sy = regions[m, 3]
-            u = first[2 * batch * m: 2 * batch * (m + 1)]
-            found = False
-            x = 0.0
-            y = 0.0
-            for attempt in range(tries):
-                if attempt:
-                    u = g.random(2 * batch)
-                for c in range(0, 2 * batch, 2):
-                    x = x0 + sx * u[c]
-                    y = y0 + sy * u[c + 1]
-                    ok = True
-                    for p in range(pockets.shape[0]):
-                        if (x - pockets[p, 0]) * (x - pockets[p, 0]) + (y - pockets[p, 1]) * (y - pockets[p, 1]) < pm2:
-                            ok = False
-                            break
-                    if ok:
-                        for h in range(n_placed):
-                            qx = placed[h, 0]
-                            qy = placed[h, 1]
-                            if (x - qx) * (x - qx) + (y - qy) * (y - qy) < d2:
-                                ok = False
-                                break
-                    if ok:
-                        found = True
-                        break
-                if found:
-                    break
-            if not found:
-                return k
-            row = rand_rows[m]
-            pos[k, row, 0] = x
-            pos[k, row, 1] = y
-            placed[n_placed, 0] = x
-            placed[n_placed, 1] = y
-            n_placed += 1
+        if place_random_rows(gens[k], pos[k], rand_rows, regions, placed, nf, pockets, pocket_margin, min_dist,
+                             batch, tries) >= 0:
+            return k
     return PLACED
 
 
@@ -248,32 +205,6 @@ def prepare_shots(act, active, pos, on, radius, cfg, icfg, noise, vel, ang, fout
 
 
 @njit(cache=True)
-def _spot_cue(pos, on, radius, hx, hy, width):
-    """Put the pocketed cue ball (row 0) on the head spot or the nearest free point of the head string, as
-    :func:`billiards_env.physics.layout.spot_cue_ball` does. Returns False if the head of the table is full."""
-    n = pos.shape[0]
-    need2 = (2.0 * radius + 1e-6) ** 2
-    step = radius / 4.0
-    k_max = int((0.5 * width - radius) / step)
-    x = hx
-    while x >= radius:
-        for c in range(2 * k_max + 1):
-            y = hy + step * ((c + 1) // 2) * (1 if c % 2 else -1)
-            free = True
-            for q in range(1, n):
-                if on[q] and (x - pos[q, 0]) * (x - pos[q, 0]) + (y - pos[q, 1]) * (y - pos[q, 1]) < need2:
-                    free = False
-                    break
-            if free:
-                pos[0, 0] = x
-                pos[0, 1] = y
-                on[0] = True
-                return True
-        x -= 2.0 * radius
-    return False
-
-
-@njit(cache=True)
 def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iout):
     """Score table ``k``'s shot as ``PotTask.on_shot``: balls at rest, a pocketed cue ball re-spotted, reward,
     termination, truncation, success, scratch and the bit mask of the rows pocketed (``iout[k]``, ``fout[k]``).
@@ -290,7 +221,7 @@ def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iou
     sc = pocket[k, 0] >= 0
     ok = True
     if sc:
-        ok = _spot_cue(pos[k], on[k], cfg[C_BALL_RADIUS], cfg[C_HEAD_X], cfg[C_HEAD_Y], cfg[C_WIDTH])
+        ok = spot_cue_row(pos[k], on[k], cfg[C_BALL_RADIUS], 0, cfg[C_HEAD_X], cfg[C_HEAD_Y], cfg[C_WIDTH])
     n_potted = n_pocketed - (1 if sc else 0)
     cleared = True
     for i in range(1, pos.shape[1]):

@@ -11,6 +11,7 @@ import math
 from typing import Sequence
 
 import numpy as np
+from numba import njit
 
 from .balls import BALL_RADIUS, Balls
 from .errors import SceneError
@@ -99,6 +100,66 @@ def rack_fits(table: Table, n: int, radius: float, gap: float) -> bool:
 
 
 # --- random layouts -------------------------------------------------------------------------------------------
+@njit(cache=True)
+def place_random_rows(g, pos, rand_rows, regions, placed, n_placed, pockets, pocket_margin, min_dist, batch,
+                      tries):
+    """The compiled core of :func:`place_random` (one table; the native vector env runs it per sub-env): rows
+    ``rand_rows`` in order, each uniformly in its region ``regions[m] = (x0, x_span, y0, y_span)``, away from the
+    pocket centres ``pockets`` (K, 2) by ``pocket_margin`` and from the first ``n_placed`` points of ``placed``
+    (fixed balls; the array has room for every row) by ``min_dist``. Draws from the generator ``g``: one call for
+    ``batch`` candidates per row, more only when a row rejects its whole batch. Returns -1, or the first row that
+    could not be placed in ``tries`` batches."""
+    nr = rand_rows.shape[0]
+    if nr == 0:
+        return -1
+    pm2 = pocket_margin * pocket_margin
+    d2 = min_dist * min_dist
+    first = g.random(2 * batch * nr)
+    for m in range(nr):
+        x0 = regions[m, 0]
+        sx = regions[m, 1]
+        y0 = regions[m, 2]
+        sy = regions[m, 3]
+        u = first[2 * batch * m: 2 * batch * (m + 1)]
+        found = False
+        x = 0.0
+        y = 0.0
+        for attempt in range(tries):
+            if attempt:
+                u = g.random(2 * batch)
+            for c in range(0, 2 * batch, 2):
+                x = x0 + sx * u[c]
+                y = y0 + sy * u[c + 1]
+                ok = True
+                for p in range(pockets.shape[0]):
+                    dx = x - pockets[p, 0]
+                    dy = y - pockets[p, 1]
+                    if dx * dx + dy * dy < pm2:
+                        ok = False
+                        break
+                if ok:
+                    for h in range(n_placed):
+                        qx = placed[h, 0]
+                        qy = placed[h, 1]
+                        if (x - qx) * (x - qx) + (y - qy) * (y - qy) < d2:
+                            ok = False
+                            break
+                if ok:
+                    found = True
+                    break
+            if found:
+                break
+        if not found:
+            return rand_rows[m]
+        row = rand_rows[m]
+        pos[row, 0] = x
+        pos[row, 1] = y
+        placed[n_placed, 0] = x
+        placed[n_placed, 1] = y
+        n_placed += 1
+    return -1
+
+
 def place_random(rng: np.random.Generator, pos: np.ndarray, rows: Sequence[int],
                  regions: Sequence[tuple[float, float, float, float]], fixed_points: Sequence[tuple[float, float]],
                  pockets: Sequence[tuple[float, float]], pocket_margin: float, min_dist: float) -> None:
@@ -107,44 +168,20 @@ def place_random(rng: np.random.Generator, pos: np.ndarray, rows: Sequence[int],
     placed (``fixed_points``, then earlier rows). Writes ``pos[row]``.
 
     All draws come from ``rng``: one call for a first batch of :data:`PLACE_BATCH` candidates for every ball, more
-    only when a ball rejects its whole batch. Raises :class:`SceneError` after :data:`PLACE_TRIES` batches.
+    only when a ball rejects its whole batch (:func:`place_random_rows`). Raises :class:`SceneError` after
+    :data:`PLACE_TRIES` batches.
     """
-    placed = list(fixed_points)
-    if not rows:
+    rows_a = np.asarray(rows, dtype=np.int64).reshape(-1)
+    if not len(rows_a):
         return
-    pm2 = pocket_margin * pocket_margin
-    d2 = min_dist * min_dist
-    first = rng.random(2 * PLACE_BATCH * len(rows)).tolist()
-    for m, row in enumerate(rows):
-        x0, sx, y0, sy = regions[m]
-        u = first[2 * PLACE_BATCH * m: 2 * PLACE_BATCH * (m + 1)]
-        for attempt in range(PLACE_TRIES):
-            if attempt:
-                u = rng.random(2 * PLACE_BATCH).tolist()
-            for k in range(0, 2 * PLACE_BATCH, 2):
-                x = x0 + sx * u[k]
-                y = y0 + sy * u[k + 1]
-                ok = True
-                for px, py in pockets:
-                    if (x - px) * (x - px) + (y - py) * (y - py) < pm2:
-                        ok = False
-                        break
-                if ok:
-                    for qx, qy in placed:
-                        if (x - qx) * (x - qx) + (y - qy) * (y - qy) < d2:
-                            ok = False
-                            break
-                if ok:
-                    break
-            else:
-                continue
-            break
-        else:
-            raise SceneError(f"could not place ball row {row} at random after {PLACE_TRIES * PLACE_BATCH} tries; "
-                             "use fewer balls or smaller margins")
-        pos[row, 0] = x
-        pos[row, 1] = y
-        placed.append((x, y))
+    placed = np.zeros((len(fixed_points) + len(rows_a), 2))
+    placed[:len(fixed_points)] = np.asarray(fixed_points, dtype=float).reshape(-1, 2)
+    bad = place_random_rows(rng, pos, rows_a, np.asarray(regions, dtype=float).reshape(-1, 4), placed,
+                            len(fixed_points), np.asarray(pockets, dtype=float).reshape(-1, 2), float(pocket_margin),
+                            float(min_dist), PLACE_BATCH, PLACE_TRIES)
+    if bad >= 0:
+        raise SceneError(f"could not place ball row {bad} at random after {PLACE_TRIES * PLACE_BATCH} tries; "
+                         "use fewer balls or smaller margins")
 
 
 # --- re-spotting and ball in hand ----------------------------------------------------------------------------------
@@ -153,26 +190,41 @@ def _others(pos: np.ndarray, on_table: np.ndarray, row: int) -> list[tuple[float
             if on and k != row]
 
 
-def spot_cue_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int = 0) -> None:
-    """Put ball ``row`` (a pocketed cue ball) on the head spot, or the nearest free point along the head string
-    (searching outwards in y in steps of a quarter radius), or failing that the same search on lines further
-    towards the head cushion. Sets ``pos[row]`` and ``on_table[row]``."""
-    others = _others(pos, on_table, row)
+@njit(cache=True)
+def spot_cue_row(pos, on_table, radius, row, hx, hy, width):
+    """The compiled core of :func:`spot_cue_ball` (also run by the native vector env): ball ``row`` on the point
+    ``(hx, hy)`` or the nearest free point of the line ``x = hx`` (outwards in y in steps of a quarter radius),
+    then of lines further towards the cushion at ``x = 0``. Returns False if none is free."""
+    n = pos.shape[0]
     need2 = (2.0 * radius + 1e-6) ** 2
-    hx, hy = head_spot(table)
     step = radius / 4.0
-    k_max = int((0.5 * table.width - radius) / step)
+    k_max = int((0.5 * width - radius) / step)
     x = hx
     while x >= radius:
-        for k in range(2 * k_max + 1):
-            y = hy + step * ((k + 1) // 2) * (1 if k % 2 else -1)
-            if all((x - qx) * (x - qx) + (y - qy) * (y - qy) >= need2 for qx, qy in others):
+        for c in range(2 * k_max + 1):
+            y = hy + step * ((c + 1) // 2) * (1 if c % 2 else -1)
+            free = True
+            for q in range(n):
+                if q != row and on_table[q] and (x - pos[q, 0]) * (x - pos[q, 0]) + (y - pos[q, 1]) * (
+                        y - pos[q, 1]) < need2:
+                    free = False
+                    break
+            if free:
                 pos[row, 0] = x
                 pos[row, 1] = y
                 on_table[row] = True
-                return
+                return True
         x -= 2.0 * radius
-    raise SceneError("could not re-spot the cue ball: the head of the table is full")  # pragma: no cover
+    return False
+
+
+def spot_cue_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int = 0) -> None:
+    """Put ball ``row`` (a pocketed cue ball) on the head spot, or the nearest free point along the head string
+    (searching outwards in y in steps of a quarter radius), or failing that the same search on lines further
+    towards the head cushion (:func:`spot_cue_row`). Sets ``pos[row]`` and ``on_table[row]``."""
+    hx, hy = head_spot(table)
+    if not spot_cue_row(pos, on_table, float(radius), int(row), hx, hy, float(table.width)):
+        raise SceneError("could not re-spot the cue ball: the head of the table is full")  # pragma: no cover
 
 
 def spot_object_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int) -> None:
@@ -267,6 +319,7 @@ def nearest_free_point(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
 
 __all__ = [
     "RACK_ORDER", "DIAMOND_ORDER", "head_string_x", "head_spot", "foot_spot", "rack_rows", "triangle_positions",
-    "diamond_positions", "rack_balls", "rack_fits", "place_random", "spot_cue_ball", "spot_object_ball",
+    "diamond_positions", "rack_balls", "rack_fits", "place_random", "place_random_rows", "spot_cue_ball",
+    "spot_cue_row", "spot_object_ball",
     "nearest_free_point",
 ]
