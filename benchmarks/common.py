@@ -15,7 +15,7 @@ from typing import Any, Callable
 import numpy as np
 
 from billiards_env.physics import BALL_RADIUS, Balls, Physics, Table
-from billiards_env.physics.rack import rack_balls
+from billiards_env.physics.layout import rack_balls
 
 #: The lecture's per-frame friction factor and its frame, from which the drag law's rate is derived.
 DRAG_FACTOR = 0.999

@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from billiards_env.physics import Balls, Physics, Simulator, Table
-from billiards_env.physics.rack import rack_balls
+from billiards_env.physics.layout import rack_balls
 
 from .common import fmt_time, load_now, log, machine_info, machine_markdown, one_ball_shots, write_json
 

@@ -14,7 +14,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from ..physics.rack import triangle_positions
+from ..physics.layout import triangle_positions
 
 DEFAULT_MAX_TIME = 60.0
 DEFAULT_STEP_MAX_TIME = 20.0

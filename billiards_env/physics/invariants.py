@@ -50,6 +50,7 @@ import numpy as np
 from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP, MS_ROLLING, MS_SPINNING,
                     MS_STATIONARY, SPIN, STATUS_NAMES)
 from .model import G
+from .motion import advance_many
 from .scene import Scene
 from .spin_motion import carry_rows
 
@@ -142,45 +143,6 @@ def _overlap_series(pos: np.ndarray, radius: np.ndarray, on: np.ndarray) -> tupl
     k = int(np.argmax(ov))
     s, q = divmod(k, len(iu))
     return float(ov[s, q]), s, (int(iu[q]), int(ju[q]))
-
-
-def _np_closed_form(x, y, vx, vy, dt, law, a, k, v_min):
-    """Vectorised closed-form state ``dt`` after a logged state (the exact solver's ``_state_at``)."""
-    # A subnormal deceleration or drag rate makes the time to stop overflow to inf, which is the right answer.
-    with np.errstate(over="ignore", divide="ignore"):
-        return _np_closed_form_impl(x, y, vx, vy, dt, law, a, k, v_min)
-
-
-def _np_closed_form_impl(x, y, vx, vy, dt, law, a, k, v_min):
-    s = np.hypot(vx, vy)
-    moving = s > 0.0
-    ss = np.where(moving, s, 1.0)
-    ux, uy = vx / ss, vy / ss
-    # time to stop (from the logged speed), as motion.time_to_stop
-    if law == 0:
-        tts = np.where(s <= v_min, 0.0, (s - v_min) / a) if a > 0.0 else np.where(s <= v_min, 0.0, math.inf)
-    else:
-        if k > 0.0 and v_min > 0.0:
-            tts = np.where(s <= v_min, 0.0, np.log(np.maximum(ss, v_min) / v_min) / k)
-        else:
-            tts = np.where(s <= v_min, 0.0, math.inf)
-    tt = np.minimum(dt, tts)
-    if law == 0:
-        dist = tt * (s - 0.5 * a * tt)
-        sp = np.maximum(s - a * tt, 0.0)
-    elif k > 0.0:
-        kt = k * tt
-        small = kt < 1e-5  # series, as motion._expm1_ratio (exact for tiny, even subnormal, k)
-        ratio = np.where(small, 1.0 - kt * (0.5 - kt / 6.0), -np.expm1(-kt) / np.where(small, 1.0, kt))
-        dist = s * tt * ratio
-        sp = s * np.exp(-kt)
-    else:
-        dist = s * tt
-        sp = s
-    stopped = dt >= tts
-    sp = np.where(stopped | ~moving, 0.0, sp)
-    dist = np.where(moving, dist, 0.0)
-    return x + ux * dist, y + uy * dist, ux * sp, uy * sp
 
 
 def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
@@ -347,8 +309,10 @@ def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, samp
     else:
         dt = tr.times[rows] - tr.times[p]
         on_prev = st[p, 4] > 0.5
-        bx, by, bvx, bvy = _np_closed_form(st[p, 0], st[p, 1], np.where(on_prev, st[p, 2], 0.0),
-                                           np.where(on_prev, st[p, 3], 0.0), dt, law, a, k, v_min)
+        bx, by, bvx, bvy = advance_many(np.ascontiguousarray(st[p, 0]), np.ascontiguousarray(st[p, 1]),
+                                        np.where(on_prev, st[p, 2], 0.0), np.where(on_prev, st[p, 3], 0.0),
+                                        np.ascontiguousarray(dt, dtype=float), int(law), float(a), float(k),
+                                        float(v_min))
         before[rows, :4] = np.stack([bx, by, bvx, bvy], axis=1)
     bx, by = before[rows, 0], before[rows, 1]
     # after each row: the logged state (angular velocity in columns 5-7 under spin)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from .codes import DRAG, ROLLING, SPIN  # noqa: F401  (DRAG re-exported for callers of the motion law)
@@ -171,3 +172,16 @@ def advance(x: float, y: float, vx: float, vy: float, dt: float, law: int, a: fl
         return x + ux * d, y + uy * d, 0.0, 0.0
     sp = speed_after(s, tt, law, a, k)
     return x + ux * d, y + uy * d, ux * sp, uy * sp
+
+
+@njit(cache=True)
+def advance_many(x, y, vx, vy, dt, law: int, a: float, k: float, v_min: float) -> tuple:
+    """:func:`advance` for arrays of states (element-wise): positions and velocities ``dt`` after each."""
+    n = x.shape[0]
+    ox = np.empty(n)
+    oy = np.empty(n)
+    ovx = np.empty(n)
+    ovy = np.empty(n)
+    for i in range(n):
+        ox[i], oy[i], ovx[i], ovy[i] = advance(x[i], y[i], vx[i], vy[i], dt[i], law, a, k, v_min)
+    return ox, oy, ovx, ovy

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from billiards_env.physics import G, kinetic_energy, momentum
-from billiards_env.physics.rack import rack_balls
+from billiards_env.physics.layout import rack_balls
 from physics_helpers import (EV_CUSHION, EV_POCKET, EV_STOP, L, R, W, balls, carom, collision_velocities,
                              collisions, drag, events_of, frictionless, one_ball, polar, pool, rolling,
                              rolling_time_for_distance, run)

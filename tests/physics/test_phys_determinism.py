@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from billiards_env.physics import Simulator
-from billiards_env.physics.rack import rack_balls
+from billiards_env.physics.layout import rack_balls
 from physics_helpers import pool, rolling
 
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from billiards_env.physics import kinetic_energy, momentum
-from billiards_env.physics.rack import rack_balls
+from billiards_env.physics.layout import rack_balls
 from billiards_env.physics.simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME
 from physics_helpers import (EV_COLLISION, EV_CUSHION, EV_STOP, L, R, W, assert_valid_final_state, balls, carom,
                              collision_velocities, collisions, drag, events_of, frictionless, max_overlap, one_ball,

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from billiards_env.physics import kinetic_energy, momentum
-from billiards_env.physics.rack import rack_balls
+from billiards_env.physics.layout import rack_balls
 from physics_helpers import (L, R, W, assert_valid_final_state, balls, carom, collision_velocities, drag,
                              frictionless, max_overlap, polar, pool, rolling, run)
 

@@ -12,7 +12,7 @@ import pytest
 from billiards_env.physics import Balls, SceneError, Simulator
 from billiards_env.physics.codes import (EV_COLLISION, EV_CUSHION, EV_ROLL, EV_SPIN, EV_STOP, MS_ROLLING, MS_SLIDING,
                                          MS_SPINNING, MS_STATIONARY)
-from billiards_env.physics.rack import rack_balls
+from billiards_env.physics.layout import rack_balls
 from spin_helpers import (ALPHA, F_ROLL, F_SLIDE, M, R, energy_of, event_states, long_table, mirror_balls, run,
                           slide_time, sliding_position, spin_physics)
 

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from billiards_env.physics.codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP
-from billiards_env.physics.rack import rack_balls, triangle_positions
+from billiards_env.physics.layout import rack_balls, triangle_positions
 
 from .helpers import L, R, W, assert_invariants, scene_dict
 

@@ -105,7 +105,7 @@ import hashlib, json
 import numpy as np
 from billiards_env.fuzz.generator import NumpySource, random_scene, shot_rng
 from billiards_env.physics import Physics, Simulator, Table
-from billiards_env.physics.rack import rack_balls
+from billiards_env.physics.layout import rack_balls
 from billiards_env.physics.scene import Scene
 
 def digest(res):
