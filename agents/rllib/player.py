@@ -94,10 +94,19 @@ def checkpoint_config(checkpoint: str | Path) -> dict[str, Any]:
     return config if isinstance(config, dict) else config.to_dict()
 
 
+#: Options of the native vector env, not of a single env (dropped when a single env is made from a checkpoint).
+VECTOR_ONLY_KEYS = ("threads", "autoreset_mode", "render_env", "num_envs")
+
+
+def single_env_kwargs(kwargs: dict[str, Any]) -> dict[str, Any]:
+    """``kwargs`` without the vector-env-only options: what ``gym.make(id, **...)`` takes."""
+    return {k: v for k, v in kwargs.items() if k not in VECTOR_ONLY_KEYS}
+
+
 def env_of(config: dict[str, Any]) -> tuple[str | None, dict[str, Any], bool]:
     """``(env id, env kwargs, self_play)`` from a checkpoint's config (None if the env is not one of ours)."""
     env = str(config.get("env") or "")
-    kwargs = dict(config.get("env_config") or {})
+    kwargs = single_env_kwargs(dict(config.get("env_config") or {}))
     if env.startswith(SELF_PLAY_PREFIX):
         return env[len(SELF_PLAY_PREFIX):], kwargs, True
     if env.startswith(ENV_PREFIX):
@@ -209,4 +218,4 @@ def rllib_player(path: str | Path, env_id: str | None = None, label: str | None 
 
 
 __all__ = ["RLlibPolicy", "rllib_player", "is_rllib_path", "is_rllib_run", "is_checkpoint", "resolve_checkpoint",
-           "resume_checkpoint", "checkpoint_config", "env_of"]
+           "resume_checkpoint", "checkpoint_config", "env_of", "single_env_kwargs", "VECTOR_ONLY_KEYS"]

@@ -207,12 +207,13 @@ class Checkpoints:
 def evaluate_policy(algo: Any, cfg: RLlibConfig, episodes: int, seed: int) -> tuple[Any, list[dict[str, Any]]]:
     """The project's evaluation of the algorithm's current policy (deterministic, seeds ``seed + k``)."""
     from ..evaluate import PlayerSpec, _env_factory, run_player
-    from .player import RLlibPolicy
+    from .player import RLlibPolicy, single_env_kwargs
 
     s = cfg.settings
     policy = RLlibPolicy.from_algorithm(algo)
-    spec = PlayerSpec("current", "model", _env_factory(s.env_id, s.env_kwargs), policy.act,
-                      env_id=s.env_id, env_kwargs=s.env_kwargs)
+    kwargs = single_env_kwargs(s.env_kwargs)
+    spec = PlayerSpec("current", "model", _env_factory(s.env_id, kwargs), policy.act, env_id=s.env_id,
+                      env_kwargs=kwargs)
     return run_player(spec, episodes, seed)
 
 
@@ -248,7 +249,11 @@ def train(cfg: RLlibConfig, run_dir: Path | None = None, resume: Path | None = N
         (run_dir / "config.yaml").write_text(
             f"# Resolved config of this run (from {cfg.source}); rerun with --config {run_dir / 'config.yaml'}\n"
             + yaml.safe_dump(cfg.to_yaml_dict(), sort_keys=False))
-    (run_dir / "env.json").write_text(json.dumps({"id": s.env_id, "kwargs": s.env_kwargs}, indent=2))
+    from .player import single_env_kwargs
+
+    # What the checkpoint plays: gym.make(env["id"], **env["kwargs"]) (the evaluation's env).
+    (run_dir / "env.json").write_text(json.dumps({"id": s.env_id, "kwargs": single_env_kwargs(s.env_kwargs)},
+                                                 indent=2))
 
     import ray
 

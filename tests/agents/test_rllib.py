@@ -21,7 +21,7 @@ else:
 from agents.evaluate import build_players, evaluate, run_player  # noqa: E402
 from agents.rllib.algorithm import build_algorithm, init_ray  # noqa: E402
 from agents.rllib.config import RLlibConfigError, load_rllib_config  # noqa: E402
-from agents.rllib.player import RLlibPolicy, resolve_checkpoint, rllib_player  # noqa: E402
+from agents.rllib.player import RLlibPolicy, checkpoint_config, resolve_checkpoint, rllib_player  # noqa: E402
 from agents.rllib.selfplay import make_env  # noqa: E402
 from agents.rllib.train import train  # noqa: E402
 
@@ -56,6 +56,8 @@ def test_ppo_on_env_runners_checkpoints_resumes_and_evaluates(local_ray, tmp_pat
     # The env runners were remote actors stepping the native vector env.
     assert meta["rllib"]["num_env_runners"] == runners
     assert meta["rllib"]["gym_env_vectorize_mode"] == "vector_entry_point"
+    # ... with one physics thread per runner (its one CPU), an option of the vector env only.
+    assert checkpoint_config(run / "final_checkpoint")["env_config"] == {**AGENT_KWARGS, "threads": 1}
     assert meta["iterations"] == 2
     assert meta["timesteps"] >= 2 * SMALL_PPO["train_batch_size_per_learner"]
     progress = json.loads((run / "progress.json").read_text())

@@ -89,6 +89,9 @@ def test_paths_and_checkpoint_envs_are_recognised(tmp_path):
     assert env_of({"env": "billiards_env:BilliardsRack-v0", "env_config": {"speed_max": 3}}) == \
         ("BilliardsRack-v0", {"speed_max": 3}, False)
     assert env_of({"env": "billiards_selfplay:Billiards9Ball-v0"}) == ("Billiards9Ball-v0", {}, True)
+    # The native vector env's own options (set for the env runners) are not single-env options.
+    assert env_of({"env": "billiards_env:BilliardsOneBall-v0", "env_config": {"threads": 1, "speed_max": 2}}) == \
+        ("BilliardsOneBall-v0", {"speed_max": 2}, False)
 
 
 def test_the_cli_reports_bad_input_with_exit_status_2(capsys):
