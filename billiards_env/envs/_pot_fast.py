@@ -18,7 +18,7 @@ from billiards_env.physics.codes import STATUS_NAMES
 from ._vector_kernels import (F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP, I_POSITIONS_OBS,
                               O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, pack_config, pot_step,
                               pot_step_spin)
-from .config import ConfigError
+from .config import ConfigError, EnvConfig
 
 if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
@@ -98,14 +98,20 @@ class PotFastStep:
         return obs, f[F_REWARD], terminated, truncated, info
 
 
+def compiled_action(config: EnvConfig) -> bool:
+    """Whether the compiled pot step plays this config's action type (absolute, relative and ghost aim; the
+    ``candidates`` type, which lists shots in Python, runs the Python path)."""
+    return config.action_type in ("absolute", "relative", "ghost")
+
+
 def pot_fast_step(env: "BilliardsEnv") -> PotFastStep | None:
     """The fast step of ``env`` if it applies (the pot task on the exact solver), else None. The env still takes
     its Python path when recording or when ``env._fast`` is switched off."""
     from .tasks import PotTask
 
-    if type(env.task) is not PotTask or env.config.solver.name != "exact":
+    if type(env.task) is not PotTask or env.config.solver.name != "exact" or not compiled_action(env.config):
         return None
     return PotFastStep(env)
 
 
-__all__ = ["PotFastStep", "pot_fast_step"]
+__all__ = ["PotFastStep", "pot_fast_step", "compiled_action"]

@@ -6,7 +6,10 @@ Every action is a ``Box(-1, 1)`` vector laid out as::
 
 - ``aim`` depends on the type: :class:`AbsoluteAim` (``angle = pi a``), :class:`RelativeAim` (``pi a`` from the
   direction cue -> target ball), :class:`GhostAim` (the direction the target ball leaves in, ``a *
-  ghost_max_angle`` from the cue -> target line; the cue is aimed at the ghost-ball position that sends it there).
+  ghost_max_angle`` from the cue -> target line; the cue is aimed at the ghost-ball position that sends it there),
+  :class:`CandidateShots` (``candidates``: one of the candidate (ball, pocket) shots of
+  :mod:`billiards_env.envs.candidates`; ``power`` then scales that shot's own speed, and with ball in hand the
+  placement is set relative to it: see the class).
 - ``power``: ``speed = speed_min + (a + 1) / 2 (speed_max - speed_min)``.
 - ``side``, ``top``: the square ``[-1, 1]^2`` mapped onto the disc of tip offsets of radius ``max_tip_offset``
   (fractions of the ball radius) by the elliptical grid mapping ``(u, v) = (x sqrt(1 - y^2/2), y sqrt(1 - x^2/2))``:
@@ -26,13 +29,15 @@ raise ``ValueError``. Any array holding the right number of values is accepted (
 """
 from __future__ import annotations
 
+import contextlib
 import math
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 from gymnasium import spaces
 
-from billiards_env.physics.aim import aim_angle, ghost_ball_position, ray_circle_entry, wrap_angle
+from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_position, ray_circle_entry,
+                                       wrap_angle)
 
 if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
@@ -80,6 +85,8 @@ class ActionType:
     """Maps an action vector to a :class:`CueShot` and back. Subclasses define the aim component."""
 
     name = "absolute"
+    #: Whether :meth:`action` is the exact inverse of :meth:`shot` (every shot has its action).
+    exact_inverse = True
 
     def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
                  n_pockets: int = 6) -> None:
@@ -246,7 +253,172 @@ class GhostAim(ActionType):
         return wrap_angle(aim_angle(contact, obj) - base) / self.max_angle
 
 
-ACTION_TYPES = {"absolute": AbsoluteAim, "relative": RelativeAim, "ghost": GhostAim}
+#: ``candidates`` with the cue ball in hand: its distance (m) behind the ghost ball for ``place_x`` = -1 and +1, and
+#: the cut angle (rad) of the placement for ``|place_y|`` = 1.
+PLACE_BACK = (0.08, 0.8)
+PLACE_MAX_CUT = math.radians(60.0)
+#: ``candidates``: the speed (m/s) of the fallback full-ball hit when no candidate shot exists (the geometric
+#: player's firm hit); ``power`` scales it as it scales a candidate's speed.
+FALLBACK_SPEED = 2.0
+
+
+class CandidateShots(ActionType):
+    """Choose one of the candidate shots (:mod:`billiards_env.envs.candidates`) and play it for position.
+
+    - ``aim`` picks slot ``k = min(floor(|a| * candidate_slots), candidate_slots - 1)`` of the candidate list (the
+      easiest shot first, so values near 0 play the geometric player's choice); a slot past the end of a short list
+      is its last one.
+    - ``power``: the candidate's own speed (the ghost-ball speed that gets the ball to the pocket, as the geometric
+      player computes it) times ``candidate_speed_factor ** a``: softer below 0, firmer above.
+    - ``side``, ``top``: as every type.
+    - ``place_x``, ``place_y`` with the cue ball in hand: where to put it for the chosen (ball, pocket):
+      ``PLACE_BACK`` metres behind the ghost ball (``place_x`` -1 .. 1, 0.44 m at 0), at a cut of
+      ``place_y * 60`` degrees (0: straight in); moved to the nearest legal point. The cue is then aimed at that
+      ghost ball from where it stands.
+    - ``pocket`` (8-ball): ignored; the chosen candidate's pocket is called.
+    - The break: a full-ball hit on the nearest legal ball at ``speed_max * candidate_speed_factor ** min(a, 0)``
+      (full power from 0 up), the cue ball at ``x = x1 - |place_x| (x1 - x0)`` (0: on the head string) and ``y``
+      linear over the kitchen (0: the middle), as the geometric player breaks at 0.
+    - No candidate at all (no legal ball has a pocket window): a full-ball hit on the nearest legal ball at
+      ``FALLBACK_SPEED`` scaled by ``power``; in hand, placed as every type places it.
+
+    :meth:`action` (``action_from_shot``) is the nearest this type can express: the slot whose aim is closest to the
+    angle given, and its speed factor. It is not an exact inverse: players that aim shots of their own
+    (:mod:`billiards_env.players`) play as the env's opponent through an exact type (see
+    :meth:`billiards_env.envs.games.GameTask.set_opponent`).
+    """
+
+    name = "candidates"
+    exact_inverse = False
+
+    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+                 n_pockets: int = 6) -> None:
+        super().__init__(config, placement, declarations, n_pockets)
+        self.n_slots = int(config.candidate_slots)
+        self.log_factor = math.log(float(config.candidate_speed_factor))
+        self.speed_range = (self.speed_lo, self.speed_lo + self.speed_span)
+
+    def slots(self, env: "BilliardsEnv") -> Any:
+        """The candidate list of the table now (:func:`billiards_env.envs.candidates.candidate_slots`)."""
+        from .candidates import candidate_slots
+
+        return candidate_slots(env, self.n_slots, self.speed_range)
+
+    def _slot(self, a: float, n: int) -> int:
+        return min(int(abs(a) * self.n_slots), self.n_slots - 1, n - 1)
+
+    def _speed(self, base: float, a: float) -> float:
+        lo, hi = self.speed_range
+        return min(max(base * math.exp(a * self.log_factor), lo), hi)
+
+    def _power(self, speed: float, base: float) -> float:
+        return math.log(max(float(speed), 1e-9) / max(base, 1e-9)) / self.log_factor
+
+    def _placed_shot(self, env: "BilliardsEnv", slot: Any, place: tuple[float, float]) -> tuple[float, float]:
+        """Aim and base speed of ``slot`` from the cue ball placed at ``place``."""
+        from billiards_env.players.shots import ghost_ball_shots
+
+        b = env.balls
+        with env.cue_moved_to(place):
+            shots = ghost_ball_shots(b, env.table, env.physics, 0, [slot.target], self.speed_range,
+                                     math.radians(89.0))
+            ghost = slot.ghost(float(b.radius[0] + b.radius[slot.target]), b.pos)
+            angle = aim_angle(b.pos[0], ghost)
+        for s in shots:
+            if s.pocket == slot.pocket:
+                return s.angle, s.speed
+        return angle, FALLBACK_SPEED
+
+    def _place_for(self, env: "BilliardsEnv", slot: Any, px: float, py: float) -> tuple[float, float]:
+        b = env.balls
+        ghost = slot.ghost(float(b.radius[0] + b.radius[slot.target]), b.pos)
+        back = PLACE_BACK[0] + 0.5 * (px + 1.0) * (PLACE_BACK[1] - PLACE_BACK[0])
+        x, y = ghost - back * direction_vector(slot.obj_angle + py * PLACE_MAX_CUT)
+        x0, x1, y0, y1 = env.task.ball_in_hand_area(env)
+        return env.legal_cue_position(min(max(x, x0), x1), min(max(y, y0), y1))
+
+    def _direct(self, env: "BilliardsEnv", targets: Any) -> float:
+        from billiards_env.players.shots import direct_hit
+
+        return direct_hit(env.balls, 0, list(targets))[0]
+
+    def shot(self, env: "BilliardsEnv", action: Any) -> CueShot:
+        base = super().shot(env, action)  # side, top, declarations and the plain placement
+        a = self.parse(action)
+        cands = self.slots(env)
+        if cands.break_shot:
+            place = base.place
+            area = env.task.ball_in_hand_area(env) if self.placement else None
+            if area is not None:
+                x0, x1, y0, y1 = area
+                k = self._place_at
+                place = env.legal_cue_position(x1 - abs(a[k]) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1.0) * (y1 - y0))
+            with env.cue_moved_to(place) if place is not None else contextlib.nullcontext():
+                angle = self._direct(env, cands.targets)
+            speed = self.speed_range[1] * math.exp(min(a[1], 0.0) * self.log_factor)
+            return base._replace(angle=angle, speed=max(speed, self.speed_range[0]), place=place)
+        if not cands.slots:
+            with env.cue_moved_to(base.place) if base.place is not None else contextlib.nullcontext():
+                angle = self._direct(env, cands.targets)
+            return base._replace(angle=angle, speed=self._speed(FALLBACK_SPEED, a[1]))
+        slot = cands.slots[self._slot(a[0], len(cands.slots))]
+        if "pocket" in self._declare_at:  # the 8's called pocket: the chosen shot's
+            base = base._replace(pocket=slot.pocket)
+        if cands.in_hand:
+            k = self._place_at
+            place = self._place_for(env, slot, a[k], a[k + 1])
+            angle, speed = self._placed_shot(env, slot, place)
+            return base._replace(angle=angle, speed=self._speed(speed, a[1]), place=place)
+        return base._replace(angle=slot.shot.angle, speed=self._speed(slot.shot.speed, a[1]))
+
+    def action(self, env: "BilliardsEnv", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
+               place: tuple[float, float] | None = None, pocket: int | None = None,
+               push: bool = False) -> np.ndarray:
+        out = np.asarray(super().action(env, angle, speed, side, top, place, pocket, push), dtype=np.float64)
+        cands = self.slots(env)
+        out[0] = 0.0
+        if cands.break_shot:
+            area = env.task.ball_in_hand_area(env) if (self.placement and place is not None) else None
+            if area is not None:
+                x0, x1, y0, y1 = area
+                k = self._place_at
+                out[k] = (x1 - float(place[0])) / max(x1 - x0, 1e-12)
+                out[k + 1] = 2.0 * (float(place[1]) - y0) / max(y1 - y0, 1e-12) - 1.0
+            out[1] = min(self._power(speed, self.speed_range[1]), 0.0)
+            return np.clip(out, -1.0, 1.0).astype(np.float32)
+        if not cands.slots:
+            out[1] = self._power(speed, FALLBACK_SPEED)
+            return np.clip(out, -1.0, 1.0).astype(np.float32)
+        b = env.balls
+        k_best, best = 0, math.inf
+        if cands.in_hand and place is not None:
+            where = env.legal_cue_position(float(place[0]), float(place[1]))
+            for k, slot in enumerate(cands.slots):
+                g = slot.ghost(float(b.radius[0] + b.radius[slot.target]), b.pos)
+                err = abs(wrap_angle(float(angle) - aim_angle(where, g)))
+                if err < best:
+                    k_best, best = k, err
+            slot = cands.slots[k_best]
+            g = slot.ghost(float(b.radius[0] + b.radius[slot.target]), b.pos)
+            back = float(np.hypot(g[0] - where[0], g[1] - where[1]))
+            phi = wrap_angle(aim_angle(where, g) - slot.obj_angle)
+            k = self._place_at
+            out[k] = 2.0 * (back - PLACE_BACK[0]) / (PLACE_BACK[1] - PLACE_BACK[0]) - 1.0
+            out[k + 1] = phi / PLACE_MAX_CUT
+            base_speed = self._placed_shot(env, slot, self._place_for(env, slot, _clip(out[k]), _clip(out[k + 1])))[1]
+        else:
+            for k, slot in enumerate(cands.slots):
+                err = abs(wrap_angle(float(angle) - slot.shot.angle)) if slot.shot is not None else math.inf
+                if err < best:
+                    k_best, best = k, err
+            slot = cands.slots[k_best]
+            base_speed = slot.shot.speed if slot.shot is not None else FALLBACK_SPEED
+        out[0] = (k_best + 0.5) / self.n_slots
+        out[1] = self._power(speed, base_speed)
+        return np.clip(out, -1.0, 1.0).astype(np.float32)
+
+
+ACTION_TYPES = {"absolute": AbsoluteAim, "relative": RelativeAim, "ghost": GhostAim, "candidates": CandidateShots}
 
 
 def action_factory(config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
@@ -256,5 +428,6 @@ def action_factory(config: "EnvConfig", placement: bool = False, declarations: t
     return ACTION_TYPES[config.action_type](config, placement, declarations, n_pockets)
 
 
-__all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "ACTION_TYPES", "action_factory",
+__all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "CandidateShots", "ACTION_TYPES",
+           "action_factory", "PLACE_BACK", "PLACE_MAX_CUT", "FALLBACK_SPEED",
            "square_to_disc", "disc_to_square"]

@@ -43,8 +43,9 @@ SCENES_DIR = Path(__file__).resolve().parent / "scenes"
 
 PLACEMENTS = ("random", "rack", "diamond")
 CUE_PLACEMENTS = ("random", "kitchen", "head_spot")
-ACTION_TYPES = ("absolute", "relative", "ghost")
-OBSERVATION_TYPES = ("positions", "features")
+ACTION_TYPES = ("absolute", "relative", "ghost", "candidates")
+OBSERVATION_TYPES = ("positions", "features", "candidates")
+OPENINGS = ("break", "ball_in_hand")
 TASKS = ("pot", "nine_ball", "eight_ball")
 OPPONENTS = ("geometric", "search", "random")
 FIRST_SHOOTERS = ("agent", "opponent", "random")
@@ -111,10 +112,17 @@ class EnvConfig:
     action_type: str = _doc("How a[0] aims: 'absolute' (angle = pi*a[0], 0 = +x, counter-clockwise), 'relative' "
                             "(angle = direction cue -> target ball + pi*a[0]: 0 hits it full) or 'ghost' (the "
                             "direction the target ball leaves in: ghost_max_angle*a[0] from the cue -> target "
-                            "line; the cue ball is struck at the ghost-ball position that sends it there). The "
-                            "target ball is the lowest-numbered object ball on the table.", default="absolute")
+                            "line; the cue ball is struck at the ghost-ball position that sends it there), or "
+                            "'candidates' (a[0] chooses one of the candidate shots that pocket a legal ball, easiest "
+                            "first; a[1] scales that shot's own speed; with ball in hand the placement is set "
+                            "relative to it: billiards_env.envs.actions.CandidateShots). The target ball is the "
+                            "lowest-numbered object ball on the table.", default="absolute")
     ghost_max_angle: float = _doc("action_type 'ghost': the object-ball angle (degrees, 0-90) that |a[0]| = 1 "
                                   "means.", default=90.0)
+    candidate_slots: int = _doc("action/observation type 'candidates': how many candidate shots (easiest first) "
+                                "the action chooses among and the observation describes (1-12).", default=4)
+    candidate_speed_factor: float = _doc("action_type 'candidates': a[1] = +-1 plays the chosen shot at its own "
+                                         "speed times / divided by this factor (> 1).", default=3.0)
     speed_min: float = _doc("Cue-ball speed (m/s) for a[1] = -1.", default=0.5)
     speed_max: float = _doc("Cue-ball speed (m/s) for a[1] = +1.", default=5.0)
     spin_action: bool = _doc("Add two action dims, side and top tip offsets in [-1, 1], mapped onto the disc of "
@@ -130,9 +138,11 @@ class EnvConfig:
                             default=0.0)
 
     # --- observation ------------------------------------------------------------------------------------------
-    observation_type: str = _doc("'positions' (ball positions and pocketed flags) or 'features' (those, then the "
+    observation_type: str = _doc("'positions' (ball positions and pocketed flags), 'features' (those, then the "
                                  "table seen from the target ball: the cue -> target direction and distance, and "
-                                 "per pocket the cut it asks for, its distance and how squarely it is entered).",
+                                 "per pocket the cut it asks for, its distance and how squarely it is entered) or "
+                                 "'candidates' (the positions, then the candidate shots of the 'candidates' action "
+                                 "type: pocket, cut, distances, ease, clear paths, scratch risk, speed).",
                                  default="positions")
 
     # --- task: reward and episode ---------------------------------------------------------------------------------
@@ -153,6 +163,11 @@ class EnvConfig:
                                 default="geometric")
     first_shooter: str = _doc("Games: who breaks: 'agent', 'opponent' or 'random' (drawn at every reset).",
                               default="agent")
+    opening: str = _doc("Games: how a game starts: 'break' (the first shooter breaks with the cue ball in the "
+                        "kitchen) or 'ball_in_hand' (the env breaks for nobody: a full-speed hit from the head spot "
+                        "at the nearest ball, with the shot noise; balls pocketed stay down, the 9 (8-ball: the 8) is "
+                        "respotted, and the first shooter has the cue ball in hand anywhere: run-out practice and "
+                        "the league's run-out test).", default="break")
     rules: dict = _doc("Games: options of the ruleset (billiards_env.rules NineBallOptions / EightBallOptions), "
                        "e.g. {push_out: true} or {call_eight: false}; the env defaults are the rules' own, except "
                        "push_out false.", default_factory=dict)
@@ -409,6 +424,12 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _choice(cfg, "observation_type", OBSERVATION_TYPES)
     _choice(cfg, "task", TASKS)
     _choice(cfg, "first_shooter", FIRST_SHOOTERS)
+    _choice(cfg, "opening", OPENINGS)
+    _require(cfg.opening == "break" or cfg.task in ("nine_ball", "eight_ball"), "opening",
+             "only the games (task 'nine_ball' or 'eight_ball') have an opening; leave it 'break'")
+    _require(1 <= cfg.candidate_slots <= 12, "candidate_slots", f"must be 1..12, got {cfg.candidate_slots}")
+    _require(cfg.candidate_speed_factor > 1.0, "candidate_speed_factor",
+             f"must be > 1 (a[1] = +-1 multiplies / divides the shot's speed by it), got {cfg.candidate_speed_factor}")
     _require(cfg.opponent is None or cfg.opponent in OPPONENTS, "opponent",
              f"unknown player {cfg.opponent!r}; use one of {', '.join(map(repr, OPPONENTS))} or None (play alone)")
     if cfg.task in ("nine_ball", "eight_ball"):

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, Callable, Iterator
 
 import numpy as np
 
+from billiards_env.physics.aim import aim_angle
 from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, head_string_x, spot_cue_ball,
                                           spot_object_ball)
 from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, NINE_BALL, SOLIDS, STRIPES, EightBall,
@@ -25,11 +26,11 @@ from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, NINE_BALL, SOLID
                                  ball_numbers, summarize_arrays)
 from billiards_env.rules.state import Call
 
+from .actions import AbsoluteAim, CueShot
 from .game_hud import Score, game_hud
 from .tasks import ShotOutcome, Task
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .actions import CueShot
     from .base import BilliardsEnv
 
 #: Shots one turn of the opponent may take before the env stops it (a run-out of 15 balls needs 16).
@@ -97,11 +98,14 @@ class GameTask(Task):
         self._shot: Any = None
         self._viewer: int | None = None  # see seen_by()
         self._rack_slots: np.ndarray | None = None
+        self._exact_type: Any = None  # see _acting_type()
 
     # --- configuration -------------------------------------------------------------------------------------------
     def set_opponent(self, policy: Any) -> None:
         """The opponent's policy: a player (``act(env, obs)``), an SB3-style model (``predict``), a callable
-        ``obs -> action``, or None (play alone)."""
+        ``obs -> action``, or None (play alone). Models and callables act in the env's action type; a player acts
+        in it too unless it is one that cannot express every shot (``candidates``): then the player's actions are
+        read in the absolute type with the same dims (:meth:`_acting_type`)."""
         self.opponent = policy
 
     # --- episode ---------------------------------------------------------------------------------------------
@@ -123,10 +127,12 @@ class GameTask(Task):
             first = {"agent": self.agent, "opponent": 1 - self.agent}.get(self.config.first_shooter)
             if first is None:
                 first = int(rng.integers(2))
+            if first != self.agent and self.opponent is None and self.auto_opponent:
+                first = self.agent  # alone: the agent breaks
             self.state = self.rules.initial_state(first_shooter=first)
+            if self.config.opening == "ball_in_hand":
+                self._open_with_ball_in_hand(env, first)
             if first == self.agent or not self.auto_opponent or self.opponent is None:
-                if first != self.agent and self.opponent is None and self.auto_opponent:
-                    self.state = self.rules.initial_state(first_shooter=self.agent)  # alone: the agent breaks
                 return self._info(env, None, 0)
             n = self._opponent_turn(env)
             if not self.state.game_over:
@@ -135,6 +141,26 @@ class GameTask(Task):
             self.score.new_game()
             env.balls.vel.fill(0.0)
         raise RuntimeError("the opponent won every game before the agent's first shot")  # pragma: no cover
+
+    def _open_with_ball_in_hand(self, env: "BilliardsEnv", first: int) -> None:
+        """The ``ball_in_hand`` opening: a break played by the env (full speed from where the cue ball stands, the
+        head spot, at the nearest legal ball, with the env's shot noise), the game's last ball (9-ball: the 9,
+        8-ball: the 8) respotted if it dropped, the others left down, and ``first`` to shoot with the cue ball in
+        hand anywhere on an open table."""
+        b = env.balls
+        rows = [self.row_of[n] for n in self.rules.legal_targets(self.state)]
+        cue = b.pos[0]
+        target = min(rows, key=lambda j: float(np.hypot(*(b.pos[j] - cue))))
+        env.play_shot(CueShot(aim_angle(cue, b.pos[target]), float(env.config.speed_max)))
+        env.last_shot, env.last_tip = None, (0.0, 0.0)  # nobody's shot: not drawn
+        last = self.row_of[9 if self.spec.name == NINE_BALL else 8]
+        r = env.config.ball_radius
+        if not b.on_table[last]:
+            spot_object_ball(b.pos, b.on_table, r, env.table, last)
+        if not b.on_table[0]:
+            spot_cue_ball(b.pos, b.on_table, r, env.table)
+        self.state = GameState(self.spec.name, tuple(n for n in self._numbers_on(env) if n), shooter=first,
+                               ball_in_hand=ANYWHERE, groups=None, break_shot=False)
 
     def _numbers_on(self, env: "BilliardsEnv") -> tuple[int, ...]:
         on = env.balls.on_table
@@ -175,6 +201,9 @@ class GameTask(Task):
     def target_ball(self, env: "BilliardsEnv") -> int | None:
         rows = self.legal_rows()
         return min(rows) if rows else None
+
+    def is_break(self, env: "BilliardsEnv") -> bool:
+        return bool(self.state.break_shot and not self.state.game_over)
 
     def ball_in_hand_area(self, env: "BilliardsEnv") -> tuple[float, float, float, float] | None:
         bih = self.state.ball_in_hand
@@ -297,13 +326,34 @@ class GameTask(Task):
             r += c.pot_reward * len(counted)
         return r
 
+    def _acting_type(self, env: "BilliardsEnv") -> Any:
+        """The action type the opponent acts in: the env's, except that a player (``act``: it aims shots of its own
+        and turns them into actions with ``action_from_shot``) facing an agent whose type cannot express every shot
+        (``candidates``) acts through the absolute type with the same dims, so it plays the shots it chose."""
+        at = env.action_type
+        if at.exact_inverse or not hasattr(self.opponent, "act"):
+            return at
+        if self._exact_type is None:
+            self._exact_type = AbsoluteAim(env.config, at.placement, at.declarations, at.n_pockets)
+        return self._exact_type
+
     def _opponent_turn(self, env: "BilliardsEnv") -> int:
         """Let the opponent shoot until the agent's turn or the end of the game; the number of shots."""
         policy = as_policy(self.opponent)
+        acting = self._acting_type(env)
         n = 0
         while not self.state.game_over and self.state.shooter != self.agent and n < MAX_TURN_SHOTS:
             obs = env.observation_type.observe(env)
-            shot = env.action_type.shot(env, policy(env, obs))
+            if acting is env.action_type:
+                action = policy(env, obs)
+            else:
+                saved = env.action_type, env.action_space
+                env.action_type, env.action_space = acting, acting.space
+                try:
+                    action = policy(env, obs)
+                finally:
+                    env.action_type, env.action_space = saved
+            shot = acting.shot(env, action)
             if shot.place is not None:
                 env.balls.pos[0] = shot.place
             self.before_shot(env, shot)

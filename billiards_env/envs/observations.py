@@ -9,6 +9,9 @@
   the cosine between the target -> pocket direction and the pocket's mouth axis (how squarely it is entered),
   sorted by the size of the cut so that the straightest pocket is always first (the pockets are a set; sorting
   gives one canonical order). Zeros when no target is left. Values in ``[-1, 1]``.
+- :class:`CandidateFeatures` (``"candidates"``): the positions, then the candidate (ball, pocket) shots that the
+  ``candidates`` action type chooses among (:mod:`billiards_env.envs.candidates`), a fixed number of slots of 12
+  values each (pocket, cut, distances, ease, clear paths, scratch risk, speed), best first.
 
 A task may append features of its own (a game's turn, ball in hand, group...): :meth:`Task.features`.
 """
@@ -26,6 +29,7 @@ from ._kernels import observation
 
 if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
+    from .config import EnvConfig
 
 
 class ObservationType:
@@ -33,7 +37,9 @@ class ObservationType:
 
     name = "positions"
 
-    def __init__(self, env: "BilliardsEnv") -> None:
+    def __init__(self, env: "BilliardsEnv", config: "EnvConfig | None" = None) -> None:
+        """``config``: the settings of the type (default ``env.config``): a policy trained on another config of the
+        same game observes this env as it was trained to."""
         n = env.n_balls
         self._sx = 1.0 / env.table.length
         self._sy = 1.0 / env.table.width
@@ -69,11 +75,11 @@ class ShotFeatures(ObservationType):
 
     name = "features"
 
-    def __init__(self, env: "BilliardsEnv") -> None:
+    def __init__(self, env: "BilliardsEnv", config: "EnvConfig | None" = None) -> None:
         self.n_pockets = int(env.table.n_pockets)
         self.n_extra = 3 + 3 * self.n_pockets
         self._axes = pocket_mouth_axes(env.table)
-        super().__init__(env)
+        super().__init__(env, config)
 
     def _extra_low(self, env: "BilliardsEnv") -> np.ndarray:
         return -np.ones(self.n_extra, np.float32)
@@ -109,7 +115,77 @@ class ShotFeatures(ObservationType):
         return np.concatenate(parts)
 
 
-OBSERVATION_TYPES = {"positions": Positions, "features": ShotFeatures}
+#: Values per slot of the ``candidates`` observation.
+SLOT_FEATURES = 12
+#: Tolerance (rad of cue angle) that reads 1 in the ``candidates`` observation (an easy shot).
+EASY_TOLERANCE = 0.02
+
+
+class CandidateFeatures(ObservationType):
+    """Positions, then the candidate shots of :mod:`billiards_env.envs.candidates` (what the ``candidates`` action
+    type chooses among), ``candidate_slots`` slots of 12 values each, best first:
+
+    ``0`` the slot holds a shot (else the slot's values are all 0), ``1`` the ball's number / 15, ``2-3`` the
+    pocket's x / length and y / width, ``4`` the cut angle, signed (positive: the ball leaves to the left of the
+    cue's line) / 90 deg, ``5`` the cue ball's distance to the ghost ball / length, ``6`` the ball's distance to the
+    pocket / length, ``7`` the shot's ease (its cue-angle tolerance / 0.02 rad, at most 1; with ball in hand the
+    window's half-width / (pi / 8)), ``8`` the paths are clear, ``9`` the speed needed is within range, ``10`` the
+    cue ball risks following into a pocket, ``11`` the shot's speed / speed_max. With the cue ball in hand the
+    cue-dependent values (4, 5, 9-11) are 0 and ``8`` is the ball's path only. Values in ``[-1, 1]``."""
+
+    name = "candidates"
+
+    def __init__(self, env: "BilliardsEnv", config: "EnvConfig | None" = None) -> None:
+        c = config if config is not None else env.config
+        self.n_slots = int(c.candidate_slots)
+        self.speed_range = (float(c.speed_min), float(c.speed_max))
+        self.n_extra = SLOT_FEATURES * self.n_slots
+        super().__init__(env, config)
+
+    def _extra_low(self, env: "BilliardsEnv") -> np.ndarray:
+        return -np.ones(self.n_extra, np.float32)
+
+    def _extra_high(self, env: "BilliardsEnv") -> np.ndarray:
+        return np.ones(self.n_extra, np.float32)
+
+    def features(self, env: "BilliardsEnv") -> np.ndarray:
+        """The slots' values (``12 * candidate_slots``)."""
+        from .candidates import candidate_slots
+
+        out = np.zeros((self.n_slots, SLOT_FEATURES), np.float32)
+        cands = candidate_slots(env, self.n_slots, self.speed_range)
+        t = env.table
+        px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
+        numbers = env.ball_numbers
+        for k, s in enumerate(cands.slots):
+            row = out[k]
+            row[0] = 1.0
+            row[1] = numbers[s.target] / 15.0
+            row[2], row[3] = px[s.pocket], py[s.pocket]
+            row[6] = min(s.d_obj / t.length, 1.0)
+            shot = s.shot
+            if shot is None:
+                row[7] = min(s.half / (math.pi / 8.0), 1.0)
+                row[8] = 1.0 if s.clear_obj else 0.0
+                continue
+            row[4] = wrap_angle(s.obj_angle - shot.angle) / (math.pi / 2.0)
+            row[5] = min(shot.d_cue / t.length, 1.0)
+            row[7] = min(shot.tolerance / EASY_TOLERANCE, 1.0)
+            row[8] = 1.0 if shot.clear else 0.0
+            row[9] = 1.0 if shot.reachable else 0.0
+            row[10] = 1.0 if shot.scratch_risk else 0.0
+            row[11] = shot.speed / self.speed_range[1]
+        return np.clip(out.reshape(-1), -1.0, 1.0)
+
+    def observe(self, env: "BilliardsEnv") -> np.ndarray:
+        b = env.balls
+        parts = [observation(b.pos, b.on_table, self._sx, self._sy), self.features(env)]
+        if self.n_task:
+            parts.append(env.task.features(env))
+        return np.concatenate(parts)
+
+
+OBSERVATION_TYPES = {"positions": Positions, "features": ShotFeatures, "candidates": CandidateFeatures}
 
 
 def observation_factory(env: "BilliardsEnv") -> ObservationType:
@@ -117,4 +193,5 @@ def observation_factory(env: "BilliardsEnv") -> ObservationType:
     return OBSERVATION_TYPES[env.config.observation_type](env)
 
 
-__all__ = ["ObservationType", "Positions", "ShotFeatures", "OBSERVATION_TYPES", "observation_factory"]
+__all__ = ["ObservationType", "Positions", "ShotFeatures", "CandidateFeatures", "OBSERVATION_TYPES",
+           "observation_factory", "SLOT_FEATURES"]

@@ -74,6 +74,10 @@ class Task:
                 return i
         return None
 
+    def is_break(self, env: "BilliardsEnv") -> bool:
+        """Whether the shot to play is a game's opening break (the ``candidates`` action type plays it apart)."""
+        return False
+
     def ball_in_hand_area(self, env: "BilliardsEnv") -> tuple[float, float, float, float] | None:
         """The rectangle ``(x0, x1, y0, y1)`` where the shooter may place the cue ball now, or None (no ball in
         hand)."""

@@ -42,6 +42,7 @@ from billiards_env.physics.codes import STATUS_NAMES
 from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES
 from billiards_env.registration import ENVS, vector_entry_point
 
+from ._pot_fast import compiled_action
 from ._seeding import np_random
 from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP,
                               I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
@@ -107,7 +108,7 @@ class BilliardsVectorEnv(VectorEnv):
         self.spec = None
         self.closed = False
         #: Native array path (the pot task on the exact solver); otherwise the sub-envs run one by one.
-        self.native = c.task == "pot" and c.solver.name == "exact"
+        self.native = c.task == "pot" and c.solver.name == "exact" and compiled_action(c)
         if self.native:
             self._setup_native(t)
         else:

@@ -30,6 +30,9 @@ class ShotContext:
     speed_noise: float = 0.0
     game: Any = None
     place_area: tuple[float, float, float, float] | None = None
+    tip_noise: float = 0.0
+    #: Whether the shooter sets tip offsets (the spin model and an action with the side/top dims).
+    tip_offsets: bool = False
 
 
 def shot_context(env: Any) -> ShotContext:
@@ -47,14 +50,20 @@ def shot_context(env: Any) -> ShotContext:
     area = task.ball_in_hand_area(u) if task is not None else None
     return ShotContext(balls, u.table, u.physics, u.simulator, cue, targets,
                        (float(cfg.speed_min), float(cfg.speed_max)),
-                       float(getattr(cfg, "angle_noise", 0.0)), float(getattr(cfg, "speed_noise", 0.0)), game, area)
+                       float(getattr(cfg, "angle_noise", 0.0)), float(getattr(cfg, "speed_noise", 0.0)), game, area,
+                       float(getattr(cfg, "tip_noise", 0.0)),
+                       u.physics.friction == "spin" and bool(getattr(getattr(u, "action_type", None), "spin", False)))
 
 
 def to_action(env: Any, angle: float, speed: float, place: tuple[float, float] | None = None,
-              pocket: int | None = None) -> np.ndarray:
+              pocket: int | None = None, side: float = 0.0, top: float = 0.0) -> np.ndarray:
     """The env's action for a shot ``(angle, speed)`` (in its action type; from ``place`` with ball in hand,
-    calling ``pocket`` for the 8), inside its action space."""
-    a = np.asarray(env.unwrapped.action_from_shot(angle, speed, place=place, pocket=pocket), dtype=np.float32)
+    calling ``pocket`` for the 8; tip offsets ``side``, ``top`` when the action has spin dims, else dropped),
+    inside its action space."""
+    u = env.unwrapped
+    spin = getattr(getattr(u, "action_type", None), "spin", False)
+    tip = {"side": side, "top": top} if spin else {}
+    a = np.asarray(u.action_from_shot(angle, speed, place=place, pocket=pocket, **tip), dtype=np.float32)
     return np.clip(a, env.action_space.low, env.action_space.high)
 
 

@@ -1,50 +1,119 @@
-"""The search player: simulate candidate shots with the exact solver and play the best (:func:`search_shot`)."""
+"""The search player: simulate candidate shots with the exact solver, value each by what the rules call plus the
+position it leaves (the ease of the next shot), averaged under the shot noise, and play the best (:func:`search_shot`).
+
+Position play, as pool programs do it (CueCard, PickPocket): a shot is worth more than its immediate result.
+Keeping the table with the cue ball where the next ball is an easy pot is worth more than keeping it with no shot
+left, and a miss that leaves the opponent nothing is worth more than one that leaves him a straight-in. So every
+candidate (the ghost-ball shots at several speeds and, under the spin model, with stun, draw, follow and left or
+right english; plus a sweep of directions for kicks and safeties) is simulated in one batch
+(:func:`billiards_env.physics.batch.run_shots`), judged by the rules, and its final layout scored by
+:func:`next_shot_ease`: the probability of potting the best next shot under the shot noise (its cue-angle tolerance
+against the noise's spread). The best few are then re-simulated under the env's shot noise (angle, speed and tip
+offsets) and ranked by their mean value: robust shots, not lucky ones. With the cue ball in hand the search runs
+from the few best places for the next shot and keeps the best.
+"""
 from __future__ import annotations
 
 import contextlib
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Sequence
 
 import numpy as np
 
-from billiards_env.physics import Balls
+from billiards_env.physics.aim import direction_vector, ghost_ball_position, pocket_window
 from billiards_env.physics.batch import BatchResult, run_shots
 from billiards_env.rules import ShotInfo, summarize_arrays
 
 from .context import ShotContext, shot_context, to_action
-from .geometric import break_shot, choose_placement
-from .shots import direct_hit, ghost_ball_shots, position_score
+from .geometric import break_shot
+from .shots import MAX_CUT, direct_hit, ghost_ball_shots
+
+#: Tip offsets ``(side, top)`` (fractions of R) tried with every ghost-ball shot under the spin model: stun, draw,
+#: follow, left and right english.
+SPIN_VARIANTS: tuple[tuple[float, float], ...] = ((0.0, 0.0), (0.0, -0.35), (0.0, 0.35), (-0.3, 0.0), (0.3, 0.0))
+
+_ERF = np.frompyfunc(math.erf, 1, 1)
+#: Grid (m) of the object-ball positions whose pocket windows :func:`next_shot_ease` caches: a window is the same
+#: to well within the noise for balls less than a millimetre apart.
+WINDOW_GRID = 5e-4
+
+#: Rules values of a candidate in a game (before position): won, lost, a foul, the turn kept (+ per ball).
+WIN_VALUE = 10.0
+FOUL_VALUE = -3.0
+KEEP_VALUE = 1.0
+BALL_VALUE = 0.1
 
 
 @dataclass
 class Outcome:
+    """A candidate shot and what the search made of it."""
+
     angle: float
     speed: float
     pots: int
     scratch: bool
     hit: bool
-    value: float  #: pots - 3 * scratch - 0.5 * (no ball hit); in a game the rules' verdict (_game_value)
-    robust: float = math.nan  #: mean value under perturbations
-    position: float = 0.0  #: next-shot ease from the final layout
+    value: float  #: the outcome's value: in a game the rules' verdict (:func:`_judge`), else pots - 3 scratch - ...
+    robust: float = math.nan  #: mean total (value + position term) over the unperturbed and the noisy shots
+    position: float = 0.0  #: pot probability of the next shot (the opponent's after a miss) from the final layout
+    side: float = 0.0
+    top: float = 0.0
     source: str = ""
+    total: float = math.nan  #: value + the position term, unperturbed
 
 
-def _simulate(ctx: ShotContext, angles: Any, speeds: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray,
-                                                                   np.ndarray, BatchResult]:
+@dataclass
+class SearchSettings:
+    n_geometric: int = 6  #: ghost-ball candidates refined
+    angle_offsets: tuple[float, ...] = (0.0, 0.0015, -0.0015, 0.004, -0.004, 0.01, -0.01)
+    speed_factors: tuple[float, ...] = (0.6, 1.0, 1.6, 2.5, 4.0)  #: times the ghost-ball speed
+    spins: tuple[tuple[float, float], ...] = SPIN_VARIANTS  #: tip offsets tried under the spin model
+    sweep_angles: int = 72  #: coarse sweep over all directions...
+    sweep_speeds: tuple[float, ...] = (0.25, 0.6, 1.0)  #: ...at these fractions of the speed range
+    top_k: int = 6  #: best candidates re-simulated under noise
+    robust_samples: int = 10
+    robust_angle: float = 0.002  #: perturbation (rad) when the env has no angle noise
+    robust_speed: float = 0.05  #: relative perturbation when the env has no speed noise
+    robust_tip: float = 0.02  #: tip perturbation (fraction of R) under the spin model when the env has no tip noise
+    position_weight: float = 2.0  #: value of a sure next shot (pot probability 1) on top of keeping the turn (1)
+    safety_weight: float = 1.0  #: cost of leaving the opponent a sure shot after a miss
+    ease_noise: float = 0.002  #: angle spread (rad) the next shot's pot probability assumes without angle noise
+    placements: int = 3  #: ball in hand: places searched from
+
+
+# --- simulation and judgement ---------------------------------------------------------------------------------
+
+def _simulate(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = None, tops: Any = None
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, BatchResult]:
     """Play candidate shots, all in one batch (:func:`~billiards_env.physics.batch.run_shots`; each row is the
     single ``Simulator.run`` of its shot): ``(pots, scratch, hit, value, batch result)`` per candidate. Without a
-    game the value is :func:`_value`; in a game it is the rules' verdict (:func:`_game_value`)."""
+    game the value is :func:`_value`; in a game it is the rules' verdict (:func:`_judge`)."""
+    return _simulate_judged(ctx, angles, speeds, sides, tops)[:5]
+
+
+def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = None, tops: Any = None
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, BatchResult, np.ndarray,
+                                list[list[int]]]:
+    """:func:`_simulate`, plus per candidate who shoots next (1 the shooter, 0 the opponent from where the cue ball
+    lies, -1 nobody or ball in hand) and the rows of the balls that player may hit first."""
     game = ctx.game is not None
-    res = run_shots(ctx.simulator, ctx.balls, angles, speeds, ball=ctx.cue, validate=False, events=game)
+    spin = ctx.physics.friction == "spin"
+    res = run_shots(ctx.simulator, ctx.balls, angles, speeds, ball=ctx.cue, validate=False, events=game,
+                    side=sides if spin else None, top=tops if spin else None)
     targets = np.asarray(ctx.targets, dtype=np.int64)
     pots = (res.pocket[:, targets] >= 0).sum(axis=1)
     scratch = res.pocket[:, ctx.cue] >= 0
     hit = res.first_contact >= 0
+    n = len(res.time)
     if not game:
-        return pots, scratch, hit, _value(pots, scratch, hit), res
-    values = np.array([_game_value(ctx, res.events.row(k), res.pocket[k]) for k in range(len(res.time))])
-    return pots, scratch, hit, values, res
+        nxt = np.where(scratch, -1, 1)
+        left = [[j for j in ctx.targets if res.on_table[k, j]] for k in range(n)]
+        nxt = np.where([bool(t) for t in left], nxt, -1)
+        return pots, scratch, hit, _value(pots, scratch, hit), res, nxt, left
+    judged = [_judge(ctx, res.events.row(k), res.pocket[k]) for k in range(n)]
+    values = np.array([j[0] for j in judged])
+    return pots, scratch, hit, values, res, np.array([j[1] for j in judged]), [j[2] for j in judged]
 
 
 def _value(pots: Any, scratch: Any, hit: Any) -> Any:
@@ -52,103 +121,277 @@ def _value(pots: Any, scratch: Any, hit: Any) -> Any:
     return pots - 3.0 * scratch - np.where(hit, 0.0, 0.5)
 
 
-def _game_value(ctx: ShotContext, events: Any, pocket: np.ndarray) -> float:
-    """A candidate's value under the game's rules (from its event log and pockets): +10 for a won game, -10 for a
-    lost one, -3 for a foul, +1 for keeping the turn plus 0.1 per ball that counts."""
+def _judge(ctx: ShotContext, events: Any, pocket: np.ndarray) -> tuple[float, int, list[int]]:
+    """A candidate under the game's rules (from its event log and pockets): its value (+10 won, -10 lost, -3 a
+    foul, +1 for keeping the turn plus 0.1 per ball that counts, 0 for a legal miss), who shoots next (1: the
+    shooter again, 0: the opponent without ball in hand, -1: nobody or ball in hand) and the rows of the balls that
+    player may hit first."""
     game = ctx.game
     summary = summarize_arrays(np.stack([events.kind, events.ball, events.other], axis=1), pocket, game.numbers)
     eight = pocket[game.row_of[8]] if game.needs_called_pocket() and 8 in game.row_of else None
-    call = game.rules.call(game.state, summary, ShotInfo(called_pocket=None if eight is None or eight < 0
-                                                         else int(eight)))
+    state = game.state
+    call = game.rules.call(state, summary, ShotInfo(called_pocket=None if eight is None or eight < 0
+                                                    else int(eight)))
     if call.game_over:
-        return 10.0 if call.winner == call.shooter else -10.0
+        return (WIN_VALUE if call.winner == call.shooter else -WIN_VALUE), -1, []
     if call.foul:
-        return -3.0
-    return (0.0 if call.turn_over else 1.0) + 0.1 * len(set(call.pocketed) - set(call.respot))
+        return FOUL_VALUE, -1, []
+    nxt = game.rules.next_state(state, call)
+    rows = [game.row_of[n] for n in game.rules.legal_targets(nxt)]
+    if call.turn_over:
+        return 0.0, 0, rows
+    return KEEP_VALUE + BALL_VALUE * len(set(call.pocketed) - set(call.respot)), 1, rows
 
 
-@dataclass
-class SearchSettings:
-    n_geometric: int = 8  #: ghost-ball candidates refined
-    angle_offsets: tuple[float, ...] = (0.0, 0.0015, -0.0015, 0.004, -0.004, 0.01, -0.01)
-    speed_factors: tuple[float, ...] = (1.0, 0.6, 1.6, 2.5)
-    sweep_angles: int = 72  #: coarse sweep over all directions...
-    sweep_speeds: tuple[float, ...] = (0.25, 0.6, 1.0)  #: ...at these fractions of the speed range
-    top_k: int = 6  #: best candidates checked for robustness and position
-    robust_samples: int = 8
-    robust_angle: float = 0.002  #: perturbation (rad) when the env has no angle noise
-    robust_speed: float = 0.05  #: relative perturbation when the env has no speed noise
-    position_weight: float = 0.5  #: weight of next-shot ease (scaled to [0, 1]) against robustness
+def _game_value(ctx: ShotContext, events: Any, pocket: np.ndarray) -> float:
+    """The rules' value of a candidate (see :func:`_judge`)."""
+    return _judge(ctx, events, pocket)[0]
 
 
-def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
-                rng: np.random.Generator | None = None) -> tuple[float, float, Outcome]:
-    """Simulate candidate shots with the exact solver (in batches: one compiled call for all candidates, one for
-    the perturbed shots) and pick the best outcome.
+# --- position: the ease of the next shot -------------------------------------------------------------------------
 
-    Candidates: every ghost-ball shot (best ``n_geometric``) at a few angle offsets and speed factors, plus a
-    coarse sweep of directions and speeds (for kicks and banks when nothing is makeable). Ranking: the
-    outcome value (pots, no scratch, a ball hit), then for the ``top_k`` best the mean value under angle/speed
-    perturbations (the env's shot noise, or small defaults) plus a bonus for an easy next shot.
-    """
-    st = settings or SearchSettings()
-    rng = rng or np.random.default_rng(0)
+def next_shot_ease(table: Any, radius: np.ndarray, pos: np.ndarray, on: np.ndarray, cue: int,
+                   targets: Sequence[Sequence[int]], sigma: float, max_cut: float = MAX_CUT,
+                   windows: dict | None = None) -> np.ndarray:
+    """For ``N`` layouts (``pos`` (N, B, 2), ``on`` (N, B)), the probability of potting the easiest ghost-ball shot
+    from the cue ball at one of the layout's ``targets[k]`` (rows), when the cue angle errs with spread ``sigma``
+    (rad): ``erf(tolerance / (sqrt(2) sigma))``, the tolerance being the geometric player's (the pocket window seen
+    from the ball, scaled by ``(r_c + r_o) cos(cut) / (d_cue + r_c + r_o)``, divided by 10 when the cue ball's or the
+    ball's path is blocked; cuts beyond ``max_cut`` and ghost balls off the table do not count). Vectorised over the
+    layouts. Pocket windows are computed once per target position, to ``WINDOW_GRID`` (``windows``: a cache that
+    may be shared between calls on one table)."""
+    n = len(pos)
+    best = np.zeros(n)
+    if n == 0:
+        return best
+    windows = {} if windows is None else windows
+    rc = float(radius[cue])
+    groups: dict[tuple[int, bytes], list[int]] = {}
+    for k in range(n):
+        for j in targets[k]:
+            if on[k, j] and on[k, cue]:
+                groups.setdefault((int(j), pos[k, j].tobytes()), []).append(k)
+    q = WINDOW_GRID
+    cos_max = math.cos(max_cut)
+    lo = np.array([rc, rc])
+    hi = np.array([table.length - rc, table.width - rc])
+    for (j, key), rows in groups.items():
+        rows_a = np.asarray(rows)
+        o = pos[rows[0], j]
+        rj = float(radius[j])
+        contact = rc + rj
+        cell = (rj, round(float(o[0]) / q), round(float(o[1]) / q))
+        wins = windows.get(cell)
+        if wins is None:
+            wins = [(p, w) for p in range(table.n_pockets) if (w := pocket_window(o, rj, table, p)) is not None]
+            windows[cell] = wins
+        c = pos[rows_a, cue]  # (n, 2)
+        others = on[rows_a].copy()
+        others[:, cue] = False
+        others[:, j] = False
+        balls = pos[rows_a]  # (n, B, 2)
+        for p, (obj_angle, half, d_obj) in wins:
+            u = direction_vector(obj_angle)
+            g = ghost_ball_position(o, obj_angle, contact)
+            if not (np.all(g >= lo) and np.all(g <= hi)):
+                continue
+            v = g - c
+            d = np.hypot(v[:, 0], v[:, 1])
+            cos_cut = (v @ u) / np.maximum(d, 1e-12)
+            ok = cos_cut >= cos_max
+            if not ok.any():
+                continue
+            tol = half * contact * cos_cut / (d + contact)
+            blocked = _segments_blocked(c, np.broadcast_to(g, c.shape), balls, others, rc + radius) | \
+                _segments_blocked(np.broadcast_to(o, c.shape), np.broadcast_to(o + u * d_obj, c.shape), balls,
+                                  others, rj + radius)
+            tol = np.where(blocked, tol / 10.0, tol)
+            tol = np.where(ok, tol, 0.0)
+            best[rows_a] = np.maximum(best[rows_a], tol)
+    return _ERF(best / (math.sqrt(2.0) * max(sigma, 1e-9))).astype(float)
+
+
+def _segments_blocked(a: np.ndarray, b: np.ndarray, q: np.ndarray, mask: np.ndarray, clearance: np.ndarray
+                      ) -> np.ndarray:
+    """Per row: does a ball of ``q`` (n, B, 2) selected by ``mask`` (n, B) come closer than ``clearance`` (B,) to the
+    segment ``a -> b`` (n, 2)?"""
+    ab = b - a
+    L2 = np.maximum((ab * ab).sum(axis=1), 1e-24)
+    aq = q - a[:, None, :]
+    t = np.clip((aq * ab[:, None, :]).sum(axis=2) / L2[:, None], 0.0, 1.0)
+    closest = a[:, None, :] + t[:, :, None] * ab[:, None, :]
+    dq = q - closest
+    d2 = (dq * dq).sum(axis=2)
+    return (mask & (d2 < clearance[None, :] ** 2)).any(axis=1)
+
+
+# --- the search -------------------------------------------------------------------------------------------------
+
+def _candidates(ctx: ShotContext, st: SearchSettings) -> list[tuple[float, float, float, float, str]]:
+    """``(angle, speed, side, top, source)`` of every candidate: each ghost-ball shot at the angle offsets (stun, its
+    own speed), at the speed factors with every tip variant (when the shooter sets tip offsets: the spin model and an
+    action with spin dims; else stun only), then the sweep."""
     lo, hi = ctx.speed_range
-    cands: list[tuple[float, float, str]] = []
+    spins = st.spins if ctx.tip_offsets else ((0.0, 0.0),)
+    out: list[tuple[float, float, float, float, str]] = []
     shots = ghost_ball_shots(ctx.balls, ctx.table, ctx.physics, ctx.cue, ctx.targets, ctx.speed_range,
                              math.radians(85.0))
     for s in shots[: st.n_geometric]:
+        src = f"ghost:{s.target}->{s.pocket}"
         for da in st.angle_offsets:
-            for f in st.speed_factors:
-                cands.append((s.angle + da, min(max(s.speed * f, lo), hi), f"ghost:{s.target}->{s.pocket}"))
+            out.append((s.angle + da, min(max(s.speed, lo), hi), 0.0, 0.0, src))
+        for f in st.speed_factors:
+            for side, top in spins:
+                if f == 1.0 and side == 0.0 and top == 0.0:
+                    continue  # already in (offset 0)
+                out.append((s.angle, min(max(s.speed * f, lo), hi), side, top, src))
     base = direct_hit(ctx.balls, ctx.cue, ctx.targets)[0]
     for k in range(st.sweep_angles):
         a = base + 2.0 * math.pi * k / st.sweep_angles
         for f in st.sweep_speeds:
-            cands.append((a, lo + f * (hi - lo), "sweep"))
-    # Every candidate in one batch; the ranking is a stable sort on the value, as a list sort would be.
-    pots, scratch, hit, values, res = _simulate(ctx, [c[0] for c in cands], [c[1] for c in cands])
-    order = np.argsort(-values, kind="stable")
-    best_value = values[order[0]]
-    top = [int(k) for k in order[: max(st.top_k * 4, st.top_k)] if values[k] >= best_value - 1e-9]
-    # Spread the shortlist over distinct shots (not seven offsets of one).
+            out.append((a, lo + f * (hi - lo), 0.0, 0.0, "sweep"))
+    return out
+
+
+def _positions(ctx: ShotContext, st: SearchSettings, res: BatchResult, values: np.ndarray, nxt: np.ndarray,
+               targets: list[list[int]], rows: np.ndarray, windows: dict) -> tuple[np.ndarray, np.ndarray]:
+    """Position term and pot probability of the next shot (the shooter's when he keeps the turn, the opponent's
+    after a legal miss, 0 otherwise) for batch rows ``rows`` (see :func:`search_shot`)."""
+    term = np.zeros(len(values))
+    ease = np.zeros(len(values))
+    rows = np.asarray(rows, dtype=np.int64)
+    rows = rows[nxt[rows] >= 0]
+    if len(rows) == 0:
+        return term, ease
+    sigma = max(ctx.angle_noise, st.ease_noise)
+    e = next_shot_ease(ctx.table, ctx.balls.radius, res.pos[rows], res.on_table[rows], ctx.cue,
+                       [targets[k] for k in rows], sigma, windows=windows)
+    ease[rows] = e
+    term[rows] = np.where(nxt[rows] == 1, st.position_weight, -st.safety_weight) * e
+    return term, ease
+
+
+def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
+                rng: np.random.Generator | None = None, windows: dict | None = None) -> tuple[float, float, Outcome]:
+    """Simulate candidate shots with the exact solver (in batches: one compiled call for all candidates, one for
+    the noisy re-runs of the best) and pick the best.
+
+    Candidates (:func:`_candidates`): the ghost-ball shots at angle offsets, speed factors and, under the spin model,
+    tip offsets (stun, draw, follow, english), plus a sweep of directions and speeds (kicks and safeties). Each
+    candidate's total is its value (in a game the rules' verdict: win, loss, foul, turn kept or lost) plus a
+    position term from its final layout: ``position_weight`` times the pot probability of the next shot when the
+    turn is kept (:func:`next_shot_ease`), minus ``safety_weight`` times the opponent's when it is lost without a
+    foul. The ``top_k`` best totals are re-simulated ``robust_samples`` times under the shot noise (the env's, or the
+    small ``robust_*`` defaults), and the shot with the best mean total (the unperturbed run counted as one sample)
+    is played. Returns ``(angle, speed, outcome)``; the outcome holds the tip offsets. ``windows``: a pocket-window
+    cache for :func:`next_shot_ease` (one per table, kept by the player across its decisions).
+    """
+    st = settings or SearchSettings()
+    rng = rng or np.random.default_rng(0)
+    lo, hi = ctx.speed_range
+    spin = ctx.physics.friction == "spin"
+    cands = _candidates(ctx, st)
+    c_arr = np.array([c[:4] for c in cands], dtype=float)
+    pots, scratch, hit, values, res, nxt, nxt_targets = _simulate_judged(ctx, c_arr[:, 0], c_arr[:, 1],
+                                                                         c_arr[:, 2], c_arr[:, 3])
+    windows = {} if windows is None else windows
+    # Position terms move a total by less than the gap between outcome classes (win 10 > kept 1-1.9 + 2 >
+    # missed 0 - 1 > foul -3): only the best class's candidates need them.
+    near = np.flatnonzero(values >= values.max() - 0.95)
+    term, ease = _positions(ctx, st, res, values, nxt, nxt_targets, near, windows)
+    totals = values + term
+    order = np.argsort(-totals, kind="stable")
     shortlist: list[Outcome] = []
-    rows: list[int] = []
-    for k in top:
-        angle, speed, src = cands[k]
-        if all(abs(angle - q.angle) > 1e-3 or abs(speed - q.speed) > 0.05 for q in shortlist):
+    for k in order:
+        angle, speed, side, top, src = cands[k]
+        if all(abs(angle - q.angle) > 1e-3 or abs(speed - q.speed) > 0.05 or side != q.side or top != q.top
+               for q in shortlist):
             shortlist.append(Outcome(angle, speed, int(pots[k]), bool(scratch[k]), bool(hit[k]), float(values[k]),
-                                     source=src))
-            rows.append(k)
+                                     position=float(ease[k]), side=side, top=top, source=src,
+                                     total=float(totals[k])))
         if len(shortlist) >= st.top_k:
             break
     sa = ctx.angle_noise if ctx.angle_noise > 0 else st.robust_angle
     ss = ctx.speed_noise if ctx.speed_noise > 0 else st.robust_speed
-    remaining = len(ctx.targets)
-    # Robustness: the perturbed shots of the whole shortlist in one batch (drawn in the order of a loop).
-    noisy_a: list[float] = []
-    noisy_v: list[float] = []
+    stn = (ctx.tip_noise if ctx.tip_noise > 0 else st.robust_tip) if spin else 0.0
+    # Robustness: the noisy re-runs of the whole shortlist in one batch (drawn in the order of a loop).
+    noisy = []
     for o in shortlist:
         for _ in range(st.robust_samples):
-            noisy_a.append(o.angle + rng.normal(0.0, sa))
-            noisy_v.append(min(max(float(o.speed * (1.0 + rng.normal(0.0, ss))), lo), hi))
-    noisy_values = _simulate(ctx, noisy_a, noisy_v)[3] if noisy_a else np.zeros(0)
-    b = ctx.balls
-    for q, (o, k) in enumerate(zip(shortlist, rows)):
-        o.robust = float(np.mean(noisy_values[q * st.robust_samples:(q + 1) * st.robust_samples]))
-        if remaining - o.pots > 0 and not o.scratch:
-            final = Balls(b.ids, res.pos[k].copy(), res.vel[k].copy(), b.radius.copy(), b.mass.copy(),
-                          res.on_table[k].copy())  # the candidate's own final layout (simulated above)
-            left = [j for j in ctx.targets if final.on_table[j]]
-            sc = position_score(final, ctx.table, ctx.physics, ctx.cue, left, ctx.speed_range)
-            o.position = min(sc / 0.01, 1.0)  # ~0.01 rad of cue tolerance is an easy shot
-    shortlist.sort(key=lambda o: -(o.value + o.robust + st.position_weight * o.position))
-    best = shortlist[0]
+            a = o.angle + rng.normal(0.0, sa)
+            v = min(max(float(o.speed * (1.0 + rng.normal(0.0, ss))), lo), hi)
+            sd, tp = o.side, o.top
+            if stn > 0.0:
+                sd, tp = _tip_inside(sd + rng.normal(0.0, stn), tp + rng.normal(0.0, stn))
+            noisy.append((a, v, sd, tp))
+    if noisy:
+        n_arr = np.array(noisy, dtype=float)
+        _, _, _, n_values, n_res, n_nxt, n_targets = _simulate_judged(ctx, n_arr[:, 0], n_arr[:, 1], n_arr[:, 2],
+                                                                      n_arr[:, 3])
+        n_term, _ = _positions(ctx, st, n_res, n_values, n_nxt, n_targets, np.arange(len(noisy)), windows)
+        n_totals = n_values + n_term
+        for q, o in enumerate(shortlist):
+            block = n_totals[q * st.robust_samples:(q + 1) * st.robust_samples]
+            o.robust = float((o.total + block.sum()) / (1 + len(block)))
+    else:
+        for o in shortlist:
+            o.robust = o.total
+    best = max(shortlist, key=lambda o: o.robust)  # the first of equals (a stable choice)
     return best.angle, best.speed, best
 
 
+def _tip_inside(side: float, top: float, limit: float = 0.5 * (1.0 - 1e-12)) -> tuple[float, float]:
+    """A tip offset moved onto the miscue limit if beyond it (as the env keeps noisy tips legal)."""
+    r = math.hypot(side, top)
+    if r > limit:
+        return side * limit / r, top * limit / r
+    return side, top
+
+
+# --- ball in hand ------------------------------------------------------------------------------------------------
+
+def placement_candidates(env: Any, ctx: ShotContext, n: int, backs: tuple[float, ...] = (0.25, 0.5),
+                         cuts: tuple[float, ...] = (0.0, math.radians(25.0), -math.radians(25.0)),
+                         sigma: float = 0.002) -> list[tuple[float, float]]:
+    """Ball in hand: up to ``n`` legal places (at least a ball apart) that leave the easiest shot, best first. The
+    places tried: ``backs`` metres behind the ghost ball of every legal ball and pocket, straight in and at the
+    ``cuts`` (for position after the pot), moved to the nearest legal point; each scored by :func:`next_shot_ease`."""
+    u = env.unwrapped
+    b = ctx.balls
+    r = float(b.radius[ctx.cue])
+    x0, x1, y0, y1 = ctx.place_area
+    places: list[tuple[float, float]] = []
+    for j in ctx.targets:
+        obj = b.pos[j]
+        for p in range(ctx.table.n_pockets):
+            win = pocket_window(obj, float(b.radius[j]), ctx.table, p)
+            if win is None:
+                continue
+            ghost = ghost_ball_position(obj, win[0], r + float(b.radius[j]))
+            for back in backs:
+                for cut in cuts:
+                    x, y = ghost - back * direction_vector(win[0] + cut)
+                    places.append(u.legal_cue_position(min(max(x, x0), x1), min(max(y, y0), y1)))
+    if not places:
+        return [u.legal_cue_position(0.5 * (x0 + x1), 0.5 * (y0 + y1))]
+    pos = np.repeat(b.pos[None], len(places), axis=0)
+    pos[:, ctx.cue] = places
+    on = np.repeat(b.on_table[None], len(places), axis=0)
+    on[:, ctx.cue] = True
+    ease = next_shot_ease(ctx.table, b.radius, pos, on, ctx.cue, [ctx.targets] * len(places), sigma)
+    out: list[tuple[float, float]] = []
+    for k in np.argsort(-ease, kind="stable"):
+        p = places[k]
+        if all(math.hypot(p[0] - q[0], p[1] - q[1]) > 2.0 * r for q in out):
+            out.append(p)
+        if len(out) >= n:
+            break
+    return out
+
+
 class SearchPlayer:
-    """Simulates candidate shots with the env's exact solver and plays the best (see :func:`search_shot`)."""
+    """Simulates candidate shots with the env's exact solver and plays the best for the position it leaves (see
+    :func:`search_shot`)."""
 
     name = "search"
 
@@ -156,34 +399,53 @@ class SearchPlayer:
         self.settings = settings or SearchSettings()
         self.rng = np.random.default_rng(seed)
         self.last: Outcome | None = None
+        self._windows: dict = {}
+        self._table: Any = None
 
     def reset(self, seed: int | None = None) -> None:
         if seed is not None:
             self.rng = np.random.default_rng(seed)
+        self._windows = {}
 
     def act(self, env: Any, obs: Any) -> np.ndarray:
-        """In a game it plays by the rules (candidates valued by the rules' call), breaks at full power and
-        places a ball in hand where the geometric player would (:func:`.geometric.choose_placement`)."""
+        """In a game it plays by the rules (candidates valued by the rules' call and the position they leave),
+        breaks at full power, and with the cue ball in hand searches from the best few places
+        (:func:`placement_candidates`) and plays the best shot of all."""
         ctx = shot_context(env)
         u = env.unwrapped
         if ctx.game is not None and ctx.game.state.break_shot:
             place, angle, speed = break_shot(ctx)
+            self.last = None
             return to_action(env, angle, speed, place=place)
-        place = choose_placement(env, ctx) if ctx.place_area is not None else None
+        if ctx.table is not self._table or len(self._windows) > 50_000:
+            self._table, self._windows = ctx.table, {}
+        places: list[Any] = [None]
+        if ctx.place_area is not None:
+            sigma = max(ctx.angle_noise, self.settings.ease_noise)
+            places = placement_candidates(env, ctx, max(self.settings.placements, 1), sigma=sigma)
+        best: tuple[Any, float, float, Outcome] | None = None
+        for place in places:
+            with u.cue_moved_to(place) if place is not None else contextlib.nullcontext():
+                angle, speed, out = search_shot(ctx, self.settings, self.rng, self._windows)
+            if best is None or out.robust > best[3].robust:
+                best = (place, angle, speed, out)
+        assert best is not None
+        place, angle, speed, self.last = best
         with u.cue_moved_to(place) if place is not None else contextlib.nullcontext():
-            angle, speed, self.last = search_shot(ctx, self.settings, self.rng)
-            pocket = self._called_pocket(ctx, angle, speed)
-        return to_action(env, angle, speed, place=place, pocket=pocket)
+            pocket = self._called_pocket(ctx, angle, speed, self.last)
+        return to_action(env, angle, speed, place=place, pocket=pocket, side=self.last.side, top=self.last.top)
 
     @staticmethod
-    def _called_pocket(ctx: ShotContext, angle: float, speed: float) -> int | None:
+    def _called_pocket(ctx: ShotContext, angle: float, speed: float, out: Outcome) -> int | None:
         """On the 8: the pocket the chosen shot sends it into (None if it does not)."""
         if ctx.game is None or not ctx.game.needs_called_pocket():
             return None
-        res = ctx.simulator.run(ctx.balls.strike(ctx.cue, angle, speed), validate=False)
+        spin = ctx.physics.friction == "spin"
+        shot = ctx.balls.strike(ctx.cue, angle, speed, **({"side": out.side, "top": out.top} if spin else {}))
+        res = ctx.simulator.run(shot, validate=False)
         k = int(res.pocket[ctx.game.row_of[8]])
         return k if k >= 0 else None
 
 
-
-__all__ = ["Outcome", "SearchSettings", "search_shot", "SearchPlayer"]
+__all__ = ["Outcome", "SearchSettings", "search_shot", "SearchPlayer", "next_shot_ease", "placement_candidates",
+           "SPIN_VARIANTS"]

@@ -7,7 +7,8 @@ os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 
 import pytest  # noqa: E402
 
-from agents.league import PairResult, fit_elo, main, play_pair, load_player  # noqa: E402
+from agents.league import (PairResult, fit_elo, league_env_kwargs, load_player, main, play_pair,  # noqa: E402
+                           player_stats, run_outs)
 
 
 def pair(a, b, wa, wb, unfinished=0):
@@ -49,3 +50,31 @@ def test_cli_writes_the_report(tmp_path):
     md = (tmp_path / "league.md").read_text()
     assert "| random | geometric |" in md and "| player | Elo |" in md
     assert main(["--players", "random"]) == 2
+
+
+def test_run_outs_from_ball_in_hand_count_turns_that_win():
+    res = run_outs("nine_ball", load_player("geometric"), 3, seed=11, env_kwargs={})
+    assert res.racks == 3 and 0 <= res.run_outs <= 3 and res.balls >= res.run_outs  # a win pockets the 9 at least
+    again = run_outs("nine_ball", load_player("geometric"), 3, seed=11, env_kwargs={})
+    assert (again.run_outs, again.balls) == (res.run_outs, res.balls)  # the same layouts and play
+    rnd = run_outs("nine_ball", load_player("random"), 3, seed=11, env_kwargs={})
+    assert rnd.run_outs == 0 and res.ms_per_decision > 0
+
+
+def test_player_stats_count_breaks_and_decision_times():
+    p = PairResult("a", "b", 5, 3, 2, 0, 2, 0.0, {}, (2.0, 4.0), (2, 0))
+    st = player_stats([p])
+    assert (st["a"]["breaks"], st["b"]["breaks"]) == (3, 2)  # seats alternate, a breaks games 0, 2, 4
+    assert (st["a"]["break_and_runs"], st["a"]["wins"], st["b"]["ms"]) == (2, 3, 4.0)
+
+
+def test_league_settings_noise_and_physics():
+    from agents.games import FASTFIZ_NOISE
+
+    kw = league_env_kwargs([("geometric", None)], spin=True, noise="fastfiz")
+    assert kw["friction"] == "spin" and kw["spin_action"] and kw["tip_noise"] == FASTFIZ_NOISE["tip_noise"]
+    kw = league_env_kwargs([("geometric", None)], spin=False, noise="fastfiz")
+    assert "tip_noise" not in kw and kw["angle_noise"] == pytest.approx(0.0021817, rel=1e-4)
+    assert league_env_kwargs([], spin=False, noise="0.005") == {"angle_noise": 0.005, "speed_noise": 0.015}
+    with pytest.raises(ValueError, match="noise"):
+        league_env_kwargs([], spin=False, noise="loud")

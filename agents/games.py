@@ -1,0 +1,140 @@
+"""Players for the games (9-ball, 8-ball) from trained policies, and the shot-noise settings of the league.
+
+A trained policy acts in the action type and observes in the observation type of the env it was trained on (for the
+9-ball agent of ``agents.main --game nine-ball``: the ``candidates`` types with the spin model). In a league every
+player meets every other on one two-player env; :class:`TrainedPlayer` lets a policy play there as it was trained:
+it builds its own observation and action types (from its run's env kwargs) on the env it plays, observes through
+them, and turns its action into the shot it means, which it hands over with ``action_from_shot`` (so the league env
+uses an exact action type: the absolute one, with the spin dims under the spin model). The physics must match.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from typing import Any, Callable
+
+import numpy as np
+
+#: Single-agent env id of each game (what a trained game policy was trained on).
+GAME_ENV_IDS = {"nine_ball": "Billiards9Ball-v0", "eight_ball": "Billiards8Ball-v0"}
+
+#: Shot noise like the FastFiz/PoolFiz tournaments' (Computational Pool, 2005-2008): cue angle phi 0.125 deg,
+#: speed 0.075 m/s (relative here: 0.075 / 2 m/s, a typical shot), tip offsets a, b 0.5 mm (of R = 28.575 mm).
+FASTFIZ_NOISE = {"angle_noise": math.radians(0.125), "speed_noise": 0.075 / 2.0, "tip_noise": 0.5 / 28.575}
+
+
+def noise_kwargs(noise: str | float, spin: bool) -> dict[str, float]:
+    """Env kwargs of a league noise setting: ``"fastfiz"`` (:data:`FASTFIZ_NOISE`; the tip noise only under the
+    spin model), ``0`` (none), or an angle spread in rad (the speed's, relative, 3x it: the league's older setting)."""
+    if isinstance(noise, str) and noise.lower() == "fastfiz":
+        kw = dict(FASTFIZ_NOISE)
+        if not spin:
+            del kw["tip_noise"]
+        return kw
+    try:
+        x = float(noise)
+    except (TypeError, ValueError):
+        x = math.nan
+    if not math.isfinite(x) or x < 0:
+        raise ValueError(f"noise: expected 'fastfiz' or an angle spread >= 0 (rad), got {noise!r}")
+    return {"angle_noise": x, "speed_noise": 3.0 * x} if x > 0 else {}
+
+
+def game_config(env_id: str, env_kwargs: dict[str, Any]) -> Any:
+    """The :class:`~billiards_env.envs.config.EnvConfig` of ``gym.make(env_id, **env_kwargs)`` (without making it)."""
+    from billiards_env.envs import ENV_CLASSES
+    from billiards_env.envs.config import load_config
+
+    return load_config(ENV_CLASSES[env_id].scene, None, **env_kwargs)
+
+
+class TrainedPlayer:
+    """A trained policy ``predict(obs) -> action`` as a player of a game env (see the module docstring).
+
+    ``env_kwargs``: the kwargs of the env the policy was trained on (``env_id``): its action type, observation type,
+    candidate slots, speed range and physics. ``act(env, obs)`` ignores ``obs`` (the env's, in the env's types) and
+    observes the table itself in the policy's types; it returns ``env.action_from_shot`` of the policy's shot.
+    """
+
+    def __init__(self, name: str, predict: Callable[[np.ndarray], np.ndarray], env_kwargs: dict[str, Any],
+                 env_id: str = "Billiards9Ball-v0") -> None:
+        self.name = name
+        self.predict = predict
+        self.env_id = env_id
+        self.env_kwargs = dict(env_kwargs)
+        self.config = game_config(env_id, self.env_kwargs)
+        self._env: Any = None
+        self._obs_type: Any = None
+        self._action_type: Any = None
+
+    @property
+    def physics(self) -> Any:
+        return self.config.physics
+
+    def reset(self, seed: int | None = None) -> None:
+        """Deterministic policies keep no state."""
+
+    def _types(self, u: Any) -> None:
+        if self._env is u:
+            return
+        from billiards_env.envs.actions import action_factory
+        from billiards_env.envs.observations import OBSERVATION_TYPES
+
+        if u.physics != self.config.physics:
+            raise ValueError(f"{self.name}: trained with physics {self.config.physics}, asked to play with "
+                             f"{u.physics}; give the league env the same physics (python -m agents.league --spin, "
+                             "or the run's physics keys)")
+        if self.config.spin_action and not u.action_type.spin:
+            raise ValueError(f"{self.name}: its actions set tip offsets; the env it plays needs spin_action=True")
+        at = u.action_type
+        self._action_type = action_factory(self.config, at.placement, at.declarations, at.n_pockets)
+        self._obs_type = OBSERVATION_TYPES[self.config.observation_type](u, self.config)
+        if self._obs_type.space.shape != self._expected_shape():
+            raise ValueError(f"{self.name}: observation of shape {self._obs_type.space.shape} on this env, trained "
+                             f"on {self._expected_shape()}; is it the same game?")
+        self._env = u
+
+    def _expected_shape(self) -> tuple[int, ...]:
+        if not hasattr(self, "_shape"):
+            import gymnasium as gym
+
+            import billiards_env  # noqa: F401
+
+            env = gym.make(self.env_id, **{**self.env_kwargs, "opponent": None})
+            self._shape = env.observation_space.shape
+            env.close()
+        return self._shape
+
+    def act(self, env: Any, obs: Any) -> np.ndarray:
+        u = env.unwrapped
+        self._types(u)
+        if not u.action_type.exact_inverse:
+            raise ValueError(f"{self.name}: the env's action type ({u.action_type.name}) cannot express every shot; "
+                             "play trained policies on an env with an exact type (the league uses 'absolute')")
+        o = self._obs_type.observe(u)
+        shot = self._action_type.shot(u, self.predict(o))
+        return u.action_from_shot(shot.angle, shot.speed, shot.side, shot.top, shot.place, shot.pocket, shot.push)
+
+
+def trained_player(path: str, game: str = "nine_ball") -> TrainedPlayer:
+    """A trained SB3 run folder / model zip, or an RLlib checkpoint / run folder (needs the ``rllib`` extra), as a
+    :class:`TrainedPlayer` of ``game`` (its run's env kwargs; deterministic actions)."""
+    from .evaluate import model_player
+
+    spec = model_player(path)
+    want = GAME_ENV_IDS[game]
+    if spec.env_id != want:
+        raise ValueError(f"{path}: trained on {spec.env_id}, not {want}; a {game} league plays {want} policies")
+    return TrainedPlayer(spec.label, lambda o: spec.act(None, o), spec.env_kwargs, spec.env_id)
+
+
+def physics_kwargs(config: Any) -> dict[str, Any]:
+    """The env kwargs that give another env ``config``'s physics (and the spin dims under the spin model)."""
+    kw: dict[str, Any] = {"physics": dataclasses.asdict(config.physics)}
+    if config.physics.friction == "spin":
+        kw["spin_action"] = True
+    return kw
+
+
+__all__ = ["TrainedPlayer", "trained_player", "noise_kwargs", "FASTFIZ_NOISE", "GAME_ENV_IDS", "game_config",
+           "physics_kwargs"]

@@ -1,0 +1,199 @@
+"""The 'candidates' action and observation types (choose one of the (ball, pocket) shots, play it for position)
+and the games' 'ball_in_hand' opening (run-out practice)."""
+from __future__ import annotations
+
+import math
+import os
+
+os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+
+import gymnasium as gym  # noqa: E402
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import billiards_env  # noqa: E402,F401
+from billiards_env.envs.actions import PLACE_BACK, PLACE_MAX_CUT
+from billiards_env.envs.candidates import candidate_slots
+from billiards_env.envs.config import ConfigError
+from billiards_env.envs.observations import SLOT_FEATURES
+from billiards_env.physics.aim import aim_angle, direction_vector
+from billiards_env.physics.layout import head_string_x
+from billiards_env.players import make_player, shot_context
+from billiards_env.players.geometric import geometric_shot
+
+CAND = {"action_type": "candidates", "observation_type": "candidates"}
+
+
+def after_break(seed: int = 0, **kw):
+    env = gym.make("Billiards9Ball-v0", opening="ball_in_hand", opponent=None, **{**CAND, **kw})
+    env.reset(seed=seed)
+    return env
+
+
+def test_ball_in_hand_opening_breaks_for_nobody_and_gives_ball_in_hand_anywhere():
+    env = after_break(3)
+    u = env.unwrapped
+    s = u.task.state
+    assert s.ball_in_hand == "anywhere" and not s.break_shot and s.shooter == 0 and not s.game_over
+    assert u.balls.on_table[9] and u.balls.on_table[0]  # the 9 respotted if it dropped; the cue ball back
+    moved = np.hypot(*(u.balls.pos[1:] - gym.make("Billiards9Ball-v0").unwrapped.balls.pos[1:]).T)
+    on = u.balls.on_table[1:]
+    rack = gym.make("Billiards9Ball-v0", opponent=None)
+    rack.reset(seed=3)
+    assert np.any(np.hypot(*(u.balls.pos[1:] - rack.unwrapped.balls.pos[1:]).T)[on] > 0.05)  # the rack broke
+    assert u.last_shot is None and moved.shape == (9,)
+    again = after_break(3)
+    assert np.array_equal(again.unwrapped.balls.pos, u.balls.pos)  # seeded
+    assert np.array_equal(again.unwrapped.balls.on_table, u.balls.on_table)
+    # The two-player env: player_0 (first_shooter 'agent') has ball in hand; 'opponent' gives it to player_1.
+    from billiards_env.multi import nine_ball_v0
+
+    aec = nine_ball_v0.env(opening="ball_in_hand", first_shooter="opponent")
+    aec.reset(seed=3)
+    assert aec.agent_selection == "player_1" and aec.unwrapped.game_state.ball_in_hand == "anywhere"
+
+
+def test_opening_is_for_games_only():
+    with pytest.raises(ConfigError, match="opening"):
+        gym.make("BilliardsOneBall-v0", opening="ball_in_hand")
+    with pytest.raises(ConfigError, match="candidate_slots"):
+        gym.make("Billiards9Ball-v0", candidate_slots=0)
+    with pytest.raises(ConfigError, match="candidate_speed_factor"):
+        gym.make("Billiards9Ball-v0", candidate_speed_factor=1.0)
+
+
+def test_neutral_action_plays_the_geometric_players_shot():
+    env = gym.make("Billiards9Ball-v0", opponent=None, **CAND)
+    for seed in range(6):
+        env.reset(seed=seed)
+        env.step(env.unwrapped.action_from_shot(0.0, 8.0, place=(0.5, 0.64)))  # break
+        u = env.unwrapped
+        if u.task.state.ball_in_hand or u.task.state.game_over:
+            continue
+        angle, speed, cand = geometric_shot(shot_context(env))
+        shot = u.shot_from_action(np.zeros(env.action_space.shape))
+        if cand is None:
+            continue
+        assert (shot.angle, shot.speed) == (angle, speed)
+        # a[1] scales the shot's speed by candidate_speed_factor ** a[1] (clipped to the speed range)
+        a = np.zeros(env.action_space.shape)
+        a[1] = 0.5
+        assert u.shot_from_action(a).speed == pytest.approx(min(speed * math.sqrt(3.0), 8.0))
+        return
+    pytest.fail("no table after the break with a candidate shot")
+
+
+def test_slots_are_chosen_by_the_aim_dim_and_round_trip():
+    env = after_break(1)
+    u = env.unwrapped
+    u.task.state = type(u.task.state)("nine_ball", u.task.state.on_table, shooter=0, ball_in_hand=False,
+                                      break_shot=False)  # play from where it lies
+    cands = candidate_slots(u, 4)
+    assert not cands.in_hand and 1 <= len(cands.slots) <= 4
+    for k, slot in enumerate(cands.slots):
+        a = np.zeros(env.action_space.shape)
+        a[0] = (k + 0.5) / 4 * (-1 if k % 2 else 1)  # |a| picks the slot; the sign does not matter
+        shot = u.shot_from_action(a)
+        assert shot.angle == slot.shot.angle and shot.speed == slot.shot.speed
+        back = u.action_from_shot(slot.shot.angle, slot.shot.speed * 2.0)
+        again = u.shot_from_action(back)
+        assert again.angle == slot.shot.angle and again.speed == pytest.approx(slot.shot.speed * 2.0)
+    a = np.zeros(env.action_space.shape)
+    a[0] = 1.0  # past the end of a short list: its last slot
+    assert u.shot_from_action(a).angle == cands.slots[-1].shot.angle
+
+
+def test_ball_in_hand_places_the_cue_ball_behind_the_chosen_ghost_ball():
+    env = after_break(2)
+    u = env.unwrapped
+    cands = candidate_slots(u, 4)
+    assert cands.in_hand and cands.slots
+    slot = cands.slots[0]
+    ghost = slot.ghost(2 * u.config.ball_radius, u.balls.pos)
+    for px, py in ((0.0, 0.0), (-1.0, 0.5), (0.6, -0.3)):
+        a = np.zeros(env.action_space.shape)
+        a[2], a[3] = px, py
+        shot = u.shot_from_action(a)
+        back = PLACE_BACK[0] + (px + 1) / 2 * (PLACE_BACK[1] - PLACE_BACK[0])
+        want = ghost - back * direction_vector(slot.obj_angle + py * PLACE_MAX_CUT)
+        want = u.legal_cue_position(*want)
+        assert shot.place == pytest.approx(want)
+        assert shot.angle == pytest.approx(aim_angle(np.asarray(shot.place), ghost), abs=1e-9)
+    # The window ranking: widest first among clear paths.
+    halves = [s.half for s in cands.slots if s.clear_obj]
+    assert halves == sorted(halves, reverse=True)
+
+
+def test_the_break_is_a_full_hit_and_neutral_is_the_geometric_break():
+    env = gym.make("Billiards9Ball-v0", opponent=None, **CAND)
+    env.reset(seed=0)
+    u = env.unwrapped
+    shot = u.shot_from_action(np.zeros(env.action_space.shape))
+    from billiards_env.players.geometric import break_shot
+
+    place, angle, speed = break_shot(shot_context(env))
+    assert shot.place == pytest.approx(place) and shot.angle == pytest.approx(angle) and shot.speed == speed
+    a = np.zeros(env.action_space.shape)
+    a[1], a[2], a[3] = -1.0, -1.0, 0.5
+    shot = u.shot_from_action(a)
+    assert shot.speed == pytest.approx(u.config.speed_max / 3.0) and shot.place[0] < head_string_x(u.table) - 0.3
+    assert shot.angle == pytest.approx(aim_angle(np.asarray(shot.place), u.balls.pos[1]))
+    back = u.shot_from_action(u.action_from_shot(shot.angle, shot.speed, place=shot.place))
+    assert back.place == pytest.approx(shot.place) and back.speed == pytest.approx(shot.speed)
+
+
+def test_observation_describes_the_slots():
+    env = after_break(4, candidate_slots=3)
+    u = env.unwrapped
+    obs = u.observe()
+    assert env.observation_space.shape == (30 + 3 * SLOT_FEATURES + 11,) and env.observation_space.contains(obs)
+    slots = obs[30:30 + 3 * SLOT_FEATURES].reshape(3, SLOT_FEATURES)
+    cands = candidate_slots(u, 3)
+    assert slots[:, 0].tolist() == [1.0 if k < len(cands.slots) else 0.0 for k in range(3)]
+    s0 = cands.slots[0]
+    assert slots[0, 1] == pytest.approx(s0.target / 15) and slots[0, 2] == pytest.approx(
+        u.table.pocket_xy[s0.pocket, 0] / u.table.length)
+    assert slots[0, 4] == 0.0 and slots[0, 11] == 0.0  # in hand: no cue-dependent values
+
+
+def test_a_player_opponent_plays_its_own_shots_against_a_candidates_agent():
+    class Spy:
+        name = "spy"
+
+        def __init__(self):
+            self.inner = make_player("geometric")
+            self.asked = []
+
+        def reset(self, seed=None):
+            self.inner.reset(seed)
+
+        def act(self, env, obs):
+            a = self.inner.act(env, obs)
+            self.asked.append(env.unwrapped.shot_from_action(a))
+            return a
+
+    env = gym.make("Billiards9Ball-v0", opponent=None, first_shooter="opponent", **CAND)
+    spy = Spy()
+    env.unwrapped.set_opponent(spy)
+    env.reset(seed=5)
+    assert spy.asked  # it broke
+    played = env.unwrapped.last_shot
+    assert played is not None and played[2] == pytest.approx(spy.asked[-1].angle)
+    assert played[3] == pytest.approx(spy.asked[-1].speed)
+
+
+def test_candidates_on_the_pot_task_take_the_python_path():
+    env = gym.make("BilliardsThreeBalls-v0", **CAND)
+    obs, _ = env.reset(seed=0)
+    assert env.unwrapped._pot_fast is None and env.observation_space.contains(obs)
+    total = 0.0
+    for _ in range(5):
+        obs, r, term, trunc, info = env.step(np.zeros(2))
+        total += r
+        if term or trunc:
+            break
+    assert total >= 1.0  # the easiest shots pot on an open table
+    vec = gym.make_vec("BilliardsThreeBalls-v0", num_envs=2, **CAND)
+    assert not vec.native
+    vec.reset(seed=0)
+    vec.step(np.zeros((2, 2)))
