@@ -163,7 +163,7 @@ class RLlibPolicy:
         """Restore the module ``module_id`` (default: the only one, else ``shared``, else ``player_0``)."""
         from ray.rllib.core.rl_module.rl_module import RLModule
 
-        ckpt = Path(checkpoint)
+        ckpt = Path(checkpoint).resolve()  # RLlib reads checkpoints through pyarrow: an absolute path, not a URI
         config = checkpoint_config(ckpt)
         for key in ("_env_to_module_connector", "_module_to_env_connector"):
             if config.get(key) is not None:

@@ -80,7 +80,7 @@ def test_ppo_on_env_runners_checkpoints_resumes_and_evaluates(local_ray, tmp_pat
     assert [r["iteration"] for r in json.loads((run / "progress.json").read_text())["iterations"]] == [1, 2, 3]
 
     # The checkpoint in the project's evaluation, beside a baseline, on the run's own env.
-    players = build_players([str(run), "random"], None, None)
+    players = build_players([os.path.relpath(run), "random"], None, None)  # a relative path, as typed
     assert players[0].env_id == "BilliardsOneBall-v0" and players[0].env_kwargs == AGENT_KWARGS
     report = evaluate(players, 20, 100_000, tmp_path / "eval", gif_episodes=0, quiet=True)
     rl, rnd = report["results"]
