@@ -3,10 +3,12 @@
     .venv-rllib/bin/python -m benchmarks.rllib_throughput                 # ~3 min on 2 cores
     .venv-rllib/bin/python -m benchmarks.rllib_throughput --runners 0 1 2 4 --envs-per-runner 16 --repeats 7
     .venv-rllib/bin/python -m benchmarks.rllib_throughput --env Billiards9Ball-v0 --modes sync
+    .venv-rllib/bin/python -m benchmarks.rllib_throughput --address auto --runners 0 8 16 32   # a Ray cluster
 
 Needs the rllib extra (``bash scripts/setup.sh --rllib``). For each number of env runners (0 = the driver samples
 itself) and each vectorization mode, the script builds PPO with the agent design of
-``configs/train/rllib_one_ball_ppo.yaml`` on a local Ray with this machine's CPUs and measures two figures, each
+``configs/train/rllib_one_ball_ppo.yaml`` on a local Ray with this machine's CPUs (or the cluster of
+``--address``) and measures two figures, each
 the median over ``--repeats`` timed repeats after one warm-up:
 
 - **sampling**: every env runner samples ``--steps`` env steps at once (``EnvRunner.sample``, exploring, in
@@ -35,7 +37,7 @@ REPO = Path(__file__).resolve().parents[1]
 CONFIG = REPO / "configs" / "train" / "rllib_one_ball_ppo.yaml"
 
 
-def build(env_id: str, runners: int, envs: int, mode: str, batch: int) -> Any:
+def build(env_id: str, runners: int, envs: int, mode: str, batch: int, local: bool = True) -> Any:
     """PPO with the committed config's env options and network, ``runners`` env runners x ``envs`` envs."""
     base = load_rllib_config(CONFIG)
     kwargs = base.settings.env_kwargs if env_id == base.env_id else {}
@@ -44,7 +46,7 @@ def build(env_id: str, runners: int, envs: int, mode: str, batch: int) -> Any:
                         "gym_env_vectorize_mode": mode},
         "training": {"train_batch_size_per_learner": batch, "minibatch_size": min(512, batch)},
     })
-    return build_algorithm(cfg, local=True)
+    return build_algorithm(cfg, local=local)
 
 
 def sample_once(algo: Any, steps: int) -> float:
@@ -70,8 +72,9 @@ def train_once(algo: Any) -> float:
     return float(result["env_runners"]["num_env_steps_sampled"]) / seconds
 
 
-def measure(env_id: str, runners: int, envs: int, mode: str, steps: int, batch: int, repeats: int) -> dict[str, Any]:
-    algo = build(env_id, runners, envs, mode, batch)
+def measure(env_id: str, runners: int, envs: int, mode: str, steps: int, batch: int, repeats: int,
+            local: bool = True) -> dict[str, Any]:
+    algo = build(env_id, runners, envs, mode, batch, local)
     try:
         sample_once(algo, steps)  # warm-up (first episodes, numba in the runners)
         sampling = [sample_once(algo, steps) for _ in range(repeats)]
@@ -107,18 +110,20 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--steps", type=int, default=2048, help="env steps each runner samples per sampling repeat")
     p.add_argument("--batch", type=int, default=4096, help="train_batch_size_per_learner of the training figure")
     p.add_argument("--repeats", type=int, default=5)
+    p.add_argument("--address", help="Ray cluster to measure (auto, ray://head:10001); default a local Ray")
     p.add_argument("--out", help="write the figures as JSON here")
     args = p.parse_args(argv)
     info = machine_info()
     import torch
 
     torch.set_num_threads(1)  # the driver's learner on one thread, as agents.rllib runs it (billiards.torch_threads)
-    started = init_ray(None, quiet=True)
+    started = init_ray(args.address, quiet=True)
     rows = []
     try:
         for mode in args.modes:
             for n in args.runners:
-                row = measure(args.env, n, args.envs_per_runner, mode, args.steps, args.batch, args.repeats)
+                row = measure(args.env, n, args.envs_per_runner, mode, args.steps, args.batch, args.repeats,
+                              local=not args.address)
                 rows.append(row)
                 print(f"{n} env runners x {args.envs_per_runner} envs ({mode}): sampling "
                       f"{fmt_rate(row['sampling_steps_per_s'])} steps/s, training "
