@@ -60,8 +60,8 @@ def init_ray(address: str | None = None, quiet: bool = False) -> bool:
     }
     if address:
         ray.init(address=address, **kwargs)
-    else:
-        ray.init(num_cpus=os.cpu_count() or 1, **kwargs)
+    else:  # "local": a new instance even where `ray start` left a cluster (which plain ray.init() would join)
+        ray.init(address="local", num_cpus=os.cpu_count() or 1, **kwargs)
     return True
 
 
