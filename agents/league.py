@@ -202,7 +202,8 @@ def fit_elo(names: Sequence[str], pairs: Sequence[PairResult], anchor: str | Non
 def markdown(game: str, pairs: Sequence[PairResult], elo: dict[str, float], info: dict[str, Any],
              runs: Sequence[RunOutResult] = ()) -> str:
     lines = [f"# League: {game.replace('_', '-')}", "",
-             f"{info['games']} games per pair on seeded racks (seed {info['seed']}), seats swapped every game; "
+             f"{info['games']} games per pair{info.get('fewer', '')} on seeded racks (seed {info['seed']}), seats "
+             "swapped every game; "
              f"{info['setting']}. Command: `{info['command']}`. {info['machine']}", "",
              "| player A | player B | A wins | B wins | unfinished | A win rate [95% CI] | break-and-run | time |",
              "|---|---|---|---|---|---|---|---|"]
@@ -290,16 +291,20 @@ def setting_text(kw: dict[str, Any]) -> str:
 
 def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: str | float, out: Path | None,
                env_kwargs: dict[str, Any] | None = None, quiet: bool = False, spin: bool = False,
-               runouts: int = 0, runout_seed: int = 50_000, command: str | None = None) -> dict[str, Any]:
-    """Every pair of ``specs`` plays ``n_games``; each player's run-outs from ball in hand on ``runouts`` racks;
-    returns (and writes under ``out``) the report."""
+               runouts: int = 0, runout_seed: int = 50_000, command: str | None = None,
+               pair_games: dict[str, int] | None = None) -> dict[str, Any]:
+    """Every pair of ``specs`` plays ``n_games`` (a pair with a player named in ``pair_games`` at most that many:
+    slow players); each player's run-outs from ball in hand on ``runouts`` racks; returns (and writes under
+    ``out``) the report."""
     say = (lambda *a: None) if quiet else (lambda *a: print(*a, flush=True))
     players = [load_player(s, seed, game) for s in specs]
     kw = league_env_kwargs(players, spin, noise, env_kwargs)
     say(setting_text(kw))
     pairs = []
+    limits = pair_games or {}
     for a, b in itertools.combinations(players, 2):
-        p = play_pair(game, a, b, n_games, seed, kw)
+        n = min([n_games] + [limits[x[0]] for x in (a, b) if x[0] in limits])
+        p = play_pair(game, a, b, n, seed, kw)
         lo, hi = wilson_interval(p.wins_a, p.games)
         say(f"{p.a} vs {p.b}: {p.wins_a}-{p.wins_b} ({p.unfinished} unfinished), {p.a} wins "
             f"{100 * p.rate_a:.0f}% [{100 * lo:.0f}, {100 * hi:.0f}], {p.seconds:.0f} s")
@@ -318,7 +323,9 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
     if command is None:
         command = "python -m agents.league " + " ".join(sys.argv[1:]) if "league" in sys.argv[0] \
             else f"agents.league.run_league({game!r}, {list(specs)!r}, {n_games}, {seed}, {noise!r})"
-    info = {"game": game, "games": n_games, "seed": seed, "noise": noise, "spin": spin, "env_kwargs": kw,
+    fewer = "".join(f" ({v} for the pairs of {k})" for k, v in limits.items() if v < n_games and k in names)
+    info = {"game": game, "games": n_games, "fewer": fewer, "seed": seed, "noise": noise, "spin": spin,
+            "env_kwargs": kw,
             "setting": setting_text(kw), "runouts": runouts, "runout_seed": runout_seed, "command": command,
             "machine": machine_markdown(machine_info())}
     report = {"info": info, "pairs": [asdict(p) for p in pairs], "elo": elo,
@@ -341,6 +348,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--players", nargs="+", default=["random", "geometric", "search"],
                    help="baseline names or trained model paths")
     p.add_argument("--games", type=int, default=40, help="games per pair")
+    p.add_argument("--search-games", type=int, default=None, help="games of the pairs with the search player "
+                   "(default: --games)")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--noise", default="0", help="'fastfiz' (tournament noise) or an angle spread (rad; the speed's "
                    "is 3x it, relative); default 0: none")
@@ -358,7 +367,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     try:
         run_league(args.game, args.players, args.games, args.seed, args.noise, args.out, spin=args.spin,
-                   runouts=args.runouts, runout_seed=args.runout_seed)
+                   runouts=args.runouts, runout_seed=args.runout_seed,
+                   pair_games={"search": args.search_games} if args.search_games else None)
     except (ValueError, FileNotFoundError) as exc:
         print(f"league: error: {exc}", file=sys.stderr)
         return 2

@@ -4,6 +4,7 @@
     python -m agents.main --seconds 300 --episodes 500
     python -m agents.main --model runs/main/one_ball_sac-20250101-120000   # skip training, evaluate a run
     python -m agents.main --three-balls         # also train and evaluate the three-ball scene afterwards
+    python -m agents.main --game nine-ball      # the 9-ball job instead: agents/nine_ball.py
 
 Steps: (1) ``agents.train`` with ``configs/train/one_ball_sac.yaml`` under a wall-clock budget (``--seconds``,
 default 780 s of training), run folder ``runs/main/one_ball_sac-<timestamp>/``; (2) ``agents.evaluate`` of the
@@ -64,11 +65,21 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--three-balls-seconds", type=float, default=None)
     p.add_argument("--three-balls-episodes", type=int, default=300)
     p.add_argument("--no-progress", action="store_true")
+    p.add_argument("--game", choices=("one-ball", "nine-ball"), default="one-ball",
+                   help="nine-ball: the 9-ball job instead (agents/nine_ball.py: curriculum training, league, report "
+                        "in runs/main/nine_ball/)")
+    from .nine_ball import add_arguments
+
+    add_arguments(p)
     return p
 
 
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if args.game == "nine-ball":
+        from .nine_ball import main as nine_ball_main
+
+        return nine_ball_main(args)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()

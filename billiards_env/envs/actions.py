@@ -265,9 +265,10 @@ FALLBACK_SPEED = 2.0
 class CandidateShots(ActionType):
     """Choose one of the candidate shots (:mod:`billiards_env.envs.candidates`) and play it for position.
 
-    - ``aim`` picks slot ``k = min(floor(|a| * candidate_slots), candidate_slots - 1)`` of the candidate list (the
-      easiest shot first, so values near 0 play the geometric player's choice); a slot past the end of a short list
-      is its last one.
+    - ``aim`` picks slot ``k = min(floor(|a| * candidate_slots), candidate_slots - 1)``: the pots are the first
+      ``candidate_slots - 1`` (the easiest first, so values near 0 play the geometric player's choice; a slot past
+      the end of a short list is its last one), the last slot is the kick (a one-rail kick at a legal ball, when
+      the cue ball is where it lies and a kick exists; else the easiest pot).
     - ``power``: the candidate's own speed (the ghost-ball speed that gets the ball to the pocket, as the geometric
       player computes it) times ``candidate_speed_factor ** a``: softer below 0, firmer above.
     - ``side``, ``top``: as every type.
@@ -306,6 +307,10 @@ class CandidateShots(ActionType):
 
     def _slot(self, a: float, n: int) -> int:
         return min(int(abs(a) * self.n_slots), self.n_slots - 1, n - 1)
+
+    def _kicks(self, a: float) -> bool:
+        """Whether aim value ``a`` picks the kick slot (the last of several)."""
+        return self.n_slots > 1 and int(abs(a) * self.n_slots) >= self.n_slots - 1
 
     def _speed(self, base: float, a: float) -> float:
         lo, hi = self.speed_range
@@ -357,11 +362,13 @@ class CandidateShots(ActionType):
                 angle = self._direct(env, cands.targets)
             speed = self.speed_range[1] * math.exp(min(a[1], 0.0) * self.log_factor)
             return base._replace(angle=angle, speed=max(speed, self.speed_range[0]), place=place)
+        if cands.kick is not None and self._kicks(a[0]):
+            return base._replace(angle=cands.kick.shot.angle, speed=self._speed(cands.kick.shot.speed, a[1]))
         if not cands.slots:
             with env.cue_moved_to(base.place) if base.place is not None else contextlib.nullcontext():
                 angle = self._direct(env, cands.targets)
             return base._replace(angle=angle, speed=self._speed(FALLBACK_SPEED, a[1]))
-        slot = cands.slots[self._slot(a[0], len(cands.slots))]
+        slot = cands.slots[0 if self._kicks(a[0]) else self._slot(a[0], len(cands.slots))]
         if "pocket" in self._declare_at:  # the 8's called pocket: the chosen shot's
             base = base._replace(pocket=slot.pocket)
         if cands.in_hand:
@@ -386,7 +393,7 @@ class CandidateShots(ActionType):
                 out[k + 1] = 2.0 * (float(place[1]) - y0) / max(y1 - y0, 1e-12) - 1.0
             out[1] = min(self._power(speed, self.speed_range[1]), 0.0)
             return np.clip(out, -1.0, 1.0).astype(np.float32)
-        if not cands.slots:
+        if not cands.slots and cands.kick is None:
             out[1] = self._power(speed, FALLBACK_SPEED)
             return np.clip(out, -1.0, 1.0).astype(np.float32)
         b = env.balls
@@ -407,12 +414,15 @@ class CandidateShots(ActionType):
             out[k + 1] = phi / PLACE_MAX_CUT
             base_speed = self._placed_shot(env, slot, self._place_for(env, slot, _clip(out[k]), _clip(out[k + 1])))[1]
         else:
-            for k, slot in enumerate(cands.slots):
+            options = list(cands.slots) + ([cands.kick] if cands.kick is not None else [])
+            for k, slot in enumerate(options):
                 err = abs(wrap_angle(float(angle) - slot.shot.angle)) if slot.shot is not None else math.inf
                 if err < best:
                     k_best, best = k, err
-            slot = cands.slots[k_best]
+            slot = options[k_best]
             base_speed = slot.shot.speed if slot.shot is not None else FALLBACK_SPEED
+            if slot is cands.kick:
+                k_best = self.n_slots - 1
         out[0] = (k_best + 0.5) / self.n_slots
         out[1] = self._power(speed, base_speed)
         return np.clip(out, -1.0, 1.0).astype(np.float32)

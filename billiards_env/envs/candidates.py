@@ -13,6 +13,14 @@ for the env's table now, ranked as the geometric player ranks them, and keeps th
   action's to choose (see :class:`billiards_env.envs.actions.CandidateShots`);
 - the break: no slots (the break is a full hit on the nearest legal ball).
 
+The last of the ``n`` slots is kept for a *kick* (the cue ball where it lies), offered when no pot has clear
+paths: a one-rail kick at a legal ball (a foul gives the opponent the cue ball in hand; a legal contact does not).
+The kick aims at the cushion point from which the ball, reflected with the cushion's restitution, runs into the
+legal ball full; kicks whose paths are blocked, or that would pass a pocket's mouth, are dropped, the others are
+simulated at a fan of aims around that one (:data:`KICK_FAN`, one batch:
+:func:`billiards_env.physics.batch.run_shots`) and kept if some aim hits that ball first without a scratch (the
+middle of those is played); the shortest is the slot. The other ``n - 1`` slots are the pots.
+
 A slot is a :class:`Slot`; the list is cached on the env per table state (positions, the legal balls, ball in hand),
 so the action type and the observation type of one step compute it once.
 """
@@ -24,7 +32,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from billiards_env.physics.aim import direction_vector, ghost_ball_position, pocket_window, segment_blocked
+from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_position, pocket_window,
+                                       segment_blocked)
 from billiards_env.players.shots import MAX_CUT, ShotCandidate, ghost_ball_shots
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -32,6 +41,15 @@ if TYPE_CHECKING:  # pragma: no cover
 
 #: The cut limit of the fallback list when no shot has a cut <= MAX_CUT (as the geometric player).
 FALLBACK_CUT = math.radians(88.0)
+#: The least angle spread (rad) :func:`next_shot_ease` assumes (a shot's chance without noise is 1 or 0).
+EASE_SPREAD = 0.002
+#: A kick's speed: the launch speed that would still roll at ``KICK_ARRIVAL`` m/s over the path's length, times
+#: ``KICK_MARGIN`` for the energy the cushion takes (the ``power`` dim scales it as any slot's).
+KICK_ARRIVAL = 0.8
+KICK_MARGIN = 1.15
+#: Aim offsets (rad) simulated around each kick's reflected aim (the cushion's friction and the balls' spin bend the
+#: bounce); the kick plays the middle of those that hit the ball first.
+KICK_FAN = (0.0, -0.008, 0.008, -0.02, 0.02, -0.04, 0.04, -0.07, 0.07)
 
 
 @dataclass(frozen=True)
@@ -56,13 +74,15 @@ class Slot:
 
 @dataclass(frozen=True)
 class Slots:
-    """The candidate list of one table state: ``slots`` (best first, at most ``n``), whether the cue ball is in hand
-    (``in_hand``), whether the shot is a break (``break_shot``), and the legal balls (rows, ``targets``)."""
+    """The candidate list of one table state: the pots ``slots`` (best first, at most ``n - 1``), the ``kick``,
+    whether the cue ball is in hand (``in_hand``), whether the shot is a break (``break_shot``), and the legal balls
+    (rows, ``targets``)."""
 
     slots: tuple[Slot, ...]
     in_hand: bool
     break_shot: bool
     targets: tuple[int, ...]
+    kick: Slot | None = None  #: the kick slot (the last of ``n``), if there is a kick
 
 
 def legal_rows(env: "BilliardsEnv") -> list[int]:
@@ -87,15 +107,32 @@ def candidate_slots(env: "BilliardsEnv", n: int, speed_range: tuple[float, float
     cached = getattr(env, "_candidate_cache", None)
     if cached is not None and cached[0] == key:
         return cached[1]
+    kick: Slot | None = None
     if brk:
         slots: tuple[Slot, ...] = ()
     elif area is not None:
-        slots = tuple(_in_hand_slots(env, targets)[:n])
+        slots = tuple(_in_hand_slots(env, targets)[:max(n - 1, 1)])
     else:
-        slots = tuple(_shot_slots(env, targets, speed_range)[:n])
-    out = Slots(slots, area is not None, brk, targets)
+        slots = tuple(_shot_slots(env, targets, speed_range)[:max(n - 1, 1)])
+        if n > 1 and not any(s.shot.clear for s in slots):
+            kicks = _kick_slots(env, targets, speed_range)
+            kick = kicks[0] if kicks else None
+    out = Slots(slots, area is not None, brk, targets, kick)
     env._candidate_cache = (key, out)
     return out
+
+
+def next_shot_ease(env: "BilliardsEnv") -> float:
+    """The chance of potting the easiest shot on the table now from where the cue ball lies: the best pot slot's
+    score (the geometric player's tolerance, penalised for blocked paths, speeds out of range, scratch risk) through
+    :func:`~billiards_env.players.shots.pot_probability` with the env's angle noise (at least
+    :data:`EASE_SPREAD`). 0 when no pot exists. The ``position_reward`` shaping of the games."""
+    from billiards_env.players.shots import pot_probability
+
+    c = env.config
+    slots = candidate_slots(env, c.candidate_slots).slots
+    best = max((s.shot.score for s in slots if s.shot is not None), default=0.0)
+    return pot_probability(best, max(c.angle_noise, EASE_SPREAD))
 
 
 def _shot_slots(env: "BilliardsEnv", targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
@@ -125,6 +162,77 @@ def _in_hand_slots(env: "BilliardsEnv", targets: tuple[int, ...]) -> list[Slot]:
     return [s for _, s in out]
 
 
+def kick_points(cue: np.ndarray, target: np.ndarray, table: Any, radius: float, restitution: float
+                ) -> list[tuple[int, np.ndarray]]:
+    """``(cushion, point)`` for each one-rail kick from ``cue`` to ``target`` (ball centres): the point on the line
+    the cue ball's centre touches a cushion on (0 left, 1 right, 2 bottom, 3 top) from which the path, its normal
+    component scaled by ``restitution`` at the bounce, runs into ``target``. A point outside that cushion's span is
+    not returned."""
+    out: list[tuple[int, np.ndarray]] = []
+    cx, cy = float(cue[0]), float(cue[1])
+    tx, ty = float(target[0]), float(target[1])
+    e = restitution
+    lines = ((0, radius), (1, table.length - radius), (2, radius), (3, table.width - radius))
+    for k, w in lines:
+        if k < 2:  # vertical cushion x = w: (tx - w)(py - cy) = -e (w - cx)(ty - py)
+            den = (tx - w) - e * (w - cx)
+            if abs(den) < 1e-12 or (w - cx) * (w - tx) <= 0.0:
+                continue
+            p = np.array([w, ((tx - w) * cy - e * (w - cx) * ty) / den])
+            if not (radius < p[1] < table.width - radius):
+                continue
+        else:
+            den = (ty - w) - e * (w - cy)
+            if abs(den) < 1e-12 or (w - cy) * (w - ty) <= 0.0:
+                continue
+            p = np.array([((ty - w) * cx - e * (w - cy) * tx) / den, w])
+            if not (radius < p[0] < table.length - radius):
+                continue
+        out.append((k, p))
+    return out
+
+
+def _kick_slots(env: "BilliardsEnv", targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
+    """Kicks at the legal balls (see the module docstring), shortest first."""
+    from billiards_env.physics.batch import run_shots
+    from billiards_env.physics.motion import launch_speed
+
+    b = env.balls
+    t = env.table
+    rc = float(b.radius[0])
+    cue = b.pos[0]
+    cands: list[tuple[float, int, float, float]] = []  # (length, target, angle, speed)
+    for j in targets:
+        others = [k for k in range(len(b.ids)) if b.on_table[k] and k not in (0, j)]
+        opos, orad = b.pos[others], b.radius[others] + rc
+        for _, p in kick_points(cue, b.pos[j], t, rc, t.cushion_restitution):
+            if np.any(np.hypot(*(t.pocket_xy - p).T) < t.pocket_radius + 2.0 * rc):
+                continue  # the bounce would pass a pocket's mouth
+            if segment_blocked(cue, p, opos, orad) or segment_blocked(p, b.pos[j], opos, orad):
+                continue
+            d = float(np.hypot(*(p - cue))) + float(np.hypot(*(b.pos[j] - p)))
+            v = KICK_MARGIN * launch_speed(d, KICK_ARRIVAL, *env.physics.path_args)
+            cands.append((d, j, aim_angle(cue, p), min(max(v, rng[0]), rng[1])))
+    if not cands:
+        return []
+    cands.sort()
+    fan = np.asarray(KICK_FAN)
+    angles = np.concatenate([c[2] + fan for c in cands])
+    speeds = np.repeat([c[3] for c in cands], len(fan))
+    res = run_shots(env.simulator, b, angles, speeds, validate=False)
+    hits = (res.first_contact.reshape(len(cands), len(fan)) == np.array([c[1] for c in cands])[:, None]) & \
+        (res.pocket[:, 0] < 0).reshape(len(cands), len(fan))
+    out = []
+    for k, (d, j, angle, speed) in enumerate(cands):
+        ok = np.flatnonzero(hits[k][np.argsort(fan)])
+        if len(ok) == 0:
+            continue
+        a = float(angle + np.sort(fan)[ok[len(ok) // 2]])  # the middle of the aims that hit it
+        shot = ShotCandidate(j, -1, a, speed, speed, math.nan, 0.0, d, 0.0, 0.0, 0.0, True, True, False, 0.0)
+        out.append(Slot(j, -1, math.nan, 0.0, 0.0, True, shot))
+    return out
+
+
 def _path_clear(b: Any, j: int, obj_angle: float, d_obj: float) -> bool:
     """Whether ball ``j`` rolls ``d_obj`` along ``obj_angle`` without touching another object ball."""
     others = [k for k in range(len(b.ids)) if b.on_table[k] and k not in (0, j)]
@@ -135,4 +243,5 @@ def _path_clear(b: Any, j: int, obj_angle: float, d_obj: float) -> bool:
                                b.radius[others] + float(b.radius[j]))
 
 
-__all__ = ["Slot", "Slots", "candidate_slots", "legal_rows", "FALLBACK_CUT"]
+__all__ = ["Slot", "Slots", "candidate_slots", "legal_rows", "kick_points", "next_shot_ease", "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL",
+           "KICK_MARGIN", "KICK_FAN"]

@@ -174,6 +174,10 @@ class EnvConfig:
     win_reward: float = _doc("Games: reward when the agent wins the game.", default=1.0)
     loss_penalty: float = _doc("Games: subtracted when the agent loses the game.", default=1.0)
     foul_penalty: float = _doc("Games (shaping): subtracted for each foul of the agent; 0 = off.", default=0.0)
+    position_reward: float = _doc("Games (shaping): after a legal shot that keeps the turn, this times the chance "
+                                  "of potting the easiest next shot (its ghost-ball tolerance against the angle "
+                                  "noise, at least 0.002 rad: billiards_env.envs.candidates.next_shot_ease): "
+                                  "position play; 0 = off.", default=0.0)
 
     # --- rendering --------------------------------------------------------------------------------------------
     render_width: int = _doc("Width (px) of rendered frames; the height follows the table's aspect.", default=800)
@@ -447,7 +451,7 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
         _require(not cfg.rules, "rules", "only the games (task 'nine_ball' or 'eight_ball') have rules")
     for key in ("cushion_margin", "pocket_margin", "ball_gap", "rack_gap", "angle_noise", "speed_noise", "tip_noise",
                 "pot_reward", "scratch_penalty", "miss_penalty", "step_penalty", "win_reward", "loss_penalty",
-                "foul_penalty"):
+                "foul_penalty", "position_reward"):
         v = getattr(cfg, key)
         _require(v >= 0, key, f"must be >= 0, got {v}" + (
             " (penalties are magnitudes: a positive value is subtracted from the reward)" if "penalty" in key else ""))

@@ -8,7 +8,9 @@ opponent's reply. With ``opponent=None`` the agent plays alone and the episode e
 (run-out practice). In two-player mode (:mod:`billiards_env.multi`) nobody plays automatically.
 
 Reward (the agent's): ``+win_reward`` for a won game, ``-loss_penalty`` for a lost one; shaping (off by default):
-``+pot_reward`` per ball the agent pockets on a legal shot that counts for it, ``-foul_penalty`` per foul.
+``+pot_reward`` per ball the agent pockets on a legal shot that counts for it, ``-foul_penalty`` per foul, and
+``+position_reward`` times the chance of potting the next shot after a shot that keeps the turn (position play:
+:func:`billiards_env.envs.candidates.next_shot_ease`).
 """
 from __future__ import annotations
 
@@ -99,6 +101,7 @@ class GameTask(Task):
         self._viewer: int | None = None  # see seen_by()
         self._rack_slots: np.ndarray | None = None
         self._exact_type: Any = None  # see _acting_type()
+        self._ease = 0.0  # the next shot's ease after the last call (position_reward)
 
     # --- configuration -------------------------------------------------------------------------------------------
     def set_opponent(self, policy: Any) -> None:
@@ -282,6 +285,12 @@ class GameTask(Task):
         self.last_call = call
         self.score.record(call)
         self._shot = None
+        self._ease = 0.0
+        if self.config.position_reward and not call.game_over and not call.turn_over and \
+                (call.shooter == self.agent or not self.auto_opponent):
+            from .candidates import next_shot_ease
+
+            self._ease = next_shot_ease(env)
         return call
 
     def on_shot(self, env: "BilliardsEnv", outcome: ShotOutcome) -> tuple[float, bool, bool, dict[str, Any]]:
@@ -324,6 +333,8 @@ class GameTask(Task):
         elif c.pot_reward:
             counted = [n for n in call.pocketed if n not in call.respot]
             r += c.pot_reward * len(counted)
+        if c.position_reward and call is self.last_call:
+            r += c.position_reward * self._ease
         return r
 
     def _acting_type(self, env: "BilliardsEnv") -> Any:

@@ -126,7 +126,7 @@ class CandidateFeatures(ObservationType):
     type chooses among), ``candidate_slots`` slots of 12 values each, best first:
 
     ``0`` the slot holds a shot (else the slot's values are all 0), ``1`` the ball's number / 15, ``2-3`` the
-    pocket's x / length and y / width, ``4`` the cut angle, signed (positive: the ball leaves to the left of the
+    pocket's x / length and y / width (-1, -1 for the kick, the last slot; its ``5`` is the path's length), ``4`` the cut angle, signed (positive: the ball leaves to the left of the
     cue's line) / 90 deg, ``5`` the cue ball's distance to the ghost ball / length, ``6`` the ball's distance to the
     pocket / length, ``7`` the shot's ease (its cue-angle tolerance / 0.02 rad, at most 1; with ball in hand the
     window's half-width / (pi / 8)), ``8`` the paths are clear, ``9`` the speed needed is within range, ``10`` the
@@ -157,6 +157,15 @@ class CandidateFeatures(ObservationType):
         t = env.table
         px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
         numbers = env.ball_numbers
+        if cands.kick is not None:
+            s = cands.kick
+            row = out[self.n_slots - 1]
+            row[0] = 1.0
+            row[1] = numbers[s.target] / 15.0
+            row[2] = row[3] = -1.0  # no pocket
+            row[5] = min(s.shot.d_cue / t.length, 1.0)
+            row[8] = row[9] = 1.0
+            row[11] = s.shot.speed / self.speed_range[1]
         for k, s in enumerate(cands.slots):
             row = out[k]
             row[0] = 1.0

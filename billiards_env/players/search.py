@@ -27,13 +27,12 @@ from billiards_env.rules import ShotInfo, summarize_arrays
 
 from .context import ShotContext, shot_context, to_action
 from .geometric import break_shot
-from .shots import MAX_CUT, direct_hit, ghost_ball_shots
+from .shots import MAX_CUT, direct_hit, ghost_ball_shots, pot_probability
 
 #: Tip offsets ``(side, top)`` (fractions of R) tried with every ghost-ball shot under the spin model: stun, draw,
 #: follow, left and right english.
 SPIN_VARIANTS: tuple[tuple[float, float], ...] = ((0.0, 0.0), (0.0, -0.35), (0.0, 0.35), (-0.3, 0.0), (0.3, 0.0))
 
-_ERF = np.frompyfunc(math.erf, 1, 1)
 #: Grid (m) of the object-ball positions whose pocket windows :func:`next_shot_ease` caches: a window is the same
 #: to well within the noise for balls less than a millimetre apart.
 WINDOW_GRID = 5e-4
@@ -111,7 +110,17 @@ def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = No
         left = [[j for j in ctx.targets if res.on_table[k, j]] for k in range(n)]
         nxt = np.where([bool(t) for t in left], nxt, -1)
         return pots, scratch, hit, _value(pots, scratch, hit), res, nxt, left
-    judged = [_judge(ctx, res.events.row(k), res.pocket[k]) for k in range(n)]
+    ev = res.events
+    table = np.stack([ev.kind, ev.ball, ev.other], axis=1)
+    memo: dict[tuple[bytes, bytes], tuple[float, int, list[int]]] = {}
+    judged = []
+    for k in range(n):
+        rows = table[int(ev.offsets[k]):int(ev.offsets[k + 1])]
+        key = (rows.tobytes(), res.pocket[k].tobytes())  # the rules read only these: equal logs, equal calls
+        j = memo.get(key)
+        if j is None:
+            j = memo[key] = _judge_arrays(ctx, rows, res.pocket[k])
+        judged.append(j)
     values = np.array([j[0] for j in judged])
     return pots, scratch, hit, values, res, np.array([j[1] for j in judged]), [j[2] for j in judged]
 
@@ -126,8 +135,13 @@ def _judge(ctx: ShotContext, events: Any, pocket: np.ndarray) -> tuple[float, in
     foul, +1 for keeping the turn plus 0.1 per ball that counts, 0 for a legal miss), who shoots next (1: the
     shooter again, 0: the opponent without ball in hand, -1: nobody or ball in hand) and the rows of the balls that
     player may hit first."""
+    return _judge_arrays(ctx, np.stack([events.kind, events.ball, events.other], axis=1), pocket)
+
+
+def _judge_arrays(ctx: ShotContext, events: np.ndarray, pocket: np.ndarray) -> tuple[float, int, list[int]]:
+    """:func:`_judge` from the ``(M, 3)`` event array (kind, ball, other)."""
     game = ctx.game
-    summary = summarize_arrays(np.stack([events.kind, events.ball, events.other], axis=1), pocket, game.numbers)
+    summary = summarize_arrays(events, pocket, game.numbers)
     eight = pocket[game.row_of[8]] if game.needs_called_pocket() and 8 in game.row_of else None
     state = game.state
     call = game.rules.call(state, summary, ShotInfo(called_pocket=None if eight is None or eight < 0
@@ -155,7 +169,7 @@ def next_shot_ease(table: Any, radius: np.ndarray, pos: np.ndarray, on: np.ndarr
                    windows: dict | None = None) -> np.ndarray:
     """For ``N`` layouts (``pos`` (N, B, 2), ``on`` (N, B)), the probability of potting the easiest ghost-ball shot
     from the cue ball at one of the layout's ``targets[k]`` (rows), when the cue angle errs with spread ``sigma``
-    (rad): ``erf(tolerance / (sqrt(2) sigma))``, the tolerance being the geometric player's (the pocket window seen
+    (rad): :func:`~.shots.pot_probability` of its tolerance, the tolerance being the geometric player's (the pocket window seen
     from the ball, scaled by ``(r_c + r_o) cos(cut) / (d_cue + r_c + r_o)``, divided by 10 when the cue ball's or the
     ball's path is blocked; cuts beyond ``max_cut`` and ghost balls off the table do not count). Vectorised over the
     layouts. Pocket windows are computed once per target position, to ``WINDOW_GRID`` (``windows``: a cache that
@@ -208,7 +222,7 @@ def next_shot_ease(table: Any, radius: np.ndarray, pos: np.ndarray, on: np.ndarr
             tol = np.where(blocked, tol / 10.0, tol)
             tol = np.where(ok, tol, 0.0)
             best[rows_a] = np.maximum(best[rows_a], tol)
-    return _ERF(best / (math.sqrt(2.0) * max(sigma, 1e-9))).astype(float)
+    return np.array([pot_probability(t, sigma) for t in best.tolist()])
 
 
 def _segments_blocked(a: np.ndarray, b: np.ndarray, q: np.ndarray, mask: np.ndarray, clearance: np.ndarray

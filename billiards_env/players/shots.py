@@ -171,6 +171,12 @@ def direct_hit(balls: Balls, cue: int = 0, targets: list[int] | None = None) -> 
     return float(aim_angle(balls.pos[cue], balls.pos[j])), j
 
 
+def pot_probability(tolerance: float, sigma: float) -> float:
+    """The chance that a shot with cue-angle ``tolerance`` (rad, see :func:`ghost_ball_shots`) pots when the cue
+    angle errs by a normal spread ``sigma``: ``erf(tolerance / (sqrt(2) sigma))``."""
+    return math.erf(max(tolerance, 0.0) / (math.sqrt(2.0) * max(sigma, 1e-12)))
+
+
 def position_score(balls: Balls, table: Table, physics: Physics, cue: int = 0,
                    targets: list[int] | None = None, speed_range: tuple[float, float] = (0.05, 6.0)) -> float:
     """How good the next shot is from this layout: the best ghost-ball shot's score (0 if none)."""

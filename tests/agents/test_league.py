@@ -78,3 +78,39 @@ def test_league_settings_noise_and_physics():
     assert league_env_kwargs([], spin=False, noise="0.005") == {"angle_noise": 0.005, "speed_noise": 0.015}
     with pytest.raises(ValueError, match="noise"):
         league_env_kwargs([], spin=False, noise="loud")
+
+
+def test_a_trained_player_acts_in_its_own_types_on_the_league_env():
+    """A policy trained on the candidates types plays the league's absolute-type env: the shot it means there is
+    the shot its own env would play for the same action."""
+    import gymnasium as gym
+    import numpy as np
+
+    from agents.games import TrainedPlayer
+    from billiards_env.multi import nine_ball_v0
+
+    kw = {"action_type": "candidates", "observation_type": "candidates", "friction": "spin", "spin_action": True}
+    seen = []
+
+    def predict(obs):
+        seen.append(obs)
+        a = np.zeros(6, np.float32)
+        a[1], a[2], a[3] = 0.3, 0.2, -0.4
+        return a
+
+    player = TrainedPlayer("t", predict, kw)
+    league = nine_ball_v0.env(friction="spin", spin_action=True, opening="ball_in_hand")
+    league.reset(seed=4)
+    game = league.unwrapped.game_env
+    action = player.act(game, None)
+    own = gym.make("Billiards9Ball-v0", opponent=None, opening="ball_in_hand", **kw)
+    obs, _ = own.reset(seed=4)
+    assert np.array_equal(seen[0], obs)  # it observes the league's table as its own env would
+    want = own.unwrapped.shot_from_action(predict(obs))
+    got = game.shot_from_action(action)
+    assert got.place == pytest.approx(want.place) and got.angle == pytest.approx(want.angle, abs=1e-6)
+    assert (got.speed, got.side, got.top) == pytest.approx((want.speed, want.side, want.top), abs=1e-5)
+    rolling = nine_ball_v0.env()
+    rolling.reset(seed=4)
+    with pytest.raises(ValueError, match="physics"):
+        player.act(rolling.unwrapped.game_env, None)

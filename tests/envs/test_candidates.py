@@ -89,7 +89,7 @@ def test_slots_are_chosen_by_the_aim_dim_and_round_trip():
     u.task.state = type(u.task.state)("nine_ball", u.task.state.on_table, shooter=0, ball_in_hand=False,
                                       break_shot=False)  # play from where it lies
     cands = candidate_slots(u, 4)
-    assert not cands.in_hand and 1 <= len(cands.slots) <= 4
+    assert not cands.in_hand and 1 <= len(cands.slots) <= 3  # the last of the 4 slots is the kick's
     for k, slot in enumerate(cands.slots):
         a = np.zeros(env.action_space.shape)
         a[0] = (k + 0.5) / 4 * (-1 if k % 2 else 1)  # |a| picks the slot; the sign does not matter
@@ -99,8 +99,33 @@ def test_slots_are_chosen_by_the_aim_dim_and_round_trip():
         again = u.shot_from_action(back)
         assert again.angle == slot.shot.angle and again.speed == pytest.approx(slot.shot.speed * 2.0)
     a = np.zeros(env.action_space.shape)
-    a[0] = 1.0  # past the end of a short list: its last slot
-    assert u.shot_from_action(a).angle == cands.slots[-1].shot.angle
+    a[0] = 0.7  # past the end of a short list: its last slot
+    assert u.shot_from_action(a).angle == cands.slots[min(2, len(cands.slots) - 1)].shot.angle
+    a[0] = 1.0  # the kick slot: the kick if there is one, else the easiest pot
+    want = cands.kick.shot.angle if cands.kick is not None else cands.slots[0].shot.angle
+    assert u.shot_from_action(a).angle == want
+
+
+def test_a_blocked_ball_is_kicked_at_off_a_cushion():
+    env = gym.make("Billiards9Ball-v0", opponent=None, friction="spin", spin_action=True, **CAND)
+    pos = np.array([[0.5, 0.35], [1.5, 0.35], [1.0, 0.35]] + [[0.3 + 0.1 * k, 1.2] for k in range(7)])
+    off = np.array([False, False, False] + [True] * 7)
+    env.reset(seed=0, options={"positions": pos, "pocketed": off})
+    u = env.unwrapped
+    cands = candidate_slots(u, 4)
+    assert cands.kick is not None and cands.kick.target == 1 and cands.kick.pocket == -1
+    assert all(not s.shot.clear for s in cands.slots)  # every pot goes through the 2
+    obs = u.observe()
+    kick_row = obs[30 + 3 * SLOT_FEATURES:30 + 4 * SLOT_FEATURES]
+    assert kick_row[0] == 1.0 and kick_row[2] == kick_row[3] == -1.0
+    a = np.zeros(env.action_space.shape)
+    a[0] = -1.0
+    _, _, _, _, info = env.step(a)
+    assert info["first_contact"] == "1" and info["foul_reason"] != "wrong ball first"
+    # A pot instead hits the 2 first.
+    env.reset(seed=0, options={"positions": pos, "pocketed": off})
+    _, _, _, _, info = env.step(np.zeros(env.action_space.shape))
+    assert info["first_contact"] == "2" and info["foul_reason"] == "wrong ball first"
 
 
 def test_ball_in_hand_places_the_cue_ball_behind_the_chosen_ghost_ball():
@@ -197,3 +222,30 @@ def test_candidates_on_the_pot_task_take_the_python_path():
     assert not vec.native
     vec.reset(seed=0)
     vec.step(np.zeros((2, 2)))
+
+
+def test_position_reward_pays_for_the_next_shot_after_a_kept_turn():
+    from billiards_env.envs.candidates import next_shot_ease
+
+    kw = dict(opponent=None, opening="ball_in_hand", pot_reward=1.0, foul_penalty=0.5, **CAND)
+    plain = gym.make("Billiards9Ball-v0", **kw)
+    shaped = gym.make("Billiards9Ball-v0", position_reward=2.0, **kw)
+    seen = set()
+    for seed in range(12):
+        plain.reset(seed=seed)
+        shaped.reset(seed=seed)
+        for _ in range(4):
+            a = np.zeros(plain.action_space.shape)
+            _, r0, t0, _, info = plain.step(a)
+            _, r1, t1, _, _ = shaped.step(a)
+            kept = not info["turn_over"] and not t0
+            if kept:
+                ease = next_shot_ease(shaped.unwrapped)
+                assert 0.0 <= ease <= 1.0 and r1 == pytest.approx(r0 + 2.0 * ease)
+                seen.add("kept")
+            else:
+                assert r1 == r0  # a miss, a foul or the end: no position term
+                seen.add("lost")
+            if t0:
+                break
+    assert seen == {"kept", "lost"}
