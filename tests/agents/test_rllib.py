@@ -29,6 +29,7 @@ from agents.rllib.train import train  # noqa: E402
 AGENT_KWARGS = {"action_type": "ghost", "observation_type": "features", "speed_max": 1.8}
 SMALL_PPO = {"train_batch_size_per_learner": 256, "minibatch_size": 64, "num_epochs": 2, "lr": 1e-3}
 SMALL_NET = {"model_config": {"fcnet_hiddens": [32, 32]}}
+CONFIGS = sorted((Path(__file__).resolve().parents[2] / "configs" / "train").glob("rllib_*.yaml"))
 
 
 @pytest.fixture(scope="module")
@@ -138,3 +139,15 @@ def test_more_env_runners_than_cpus_is_refused_not_left_waiting(local_ray):
     cfg = load_rllib_config({"rllib": {"env_runners": {"num_env_runners": cpus + 1}}, "billiards": {"iterations": 1}})
     with pytest.raises(RLlibConfigError, match="reserve"):
         build_algorithm(cfg, local=True)
+
+
+@pytest.mark.parametrize("path", CONFIGS, ids=[p.name for p in CONFIGS])
+def test_committed_configs_are_valid_algorithm_configs(local_ray, path):
+    from agents.rllib.algorithm import algorithm_config
+
+    cfg = load_rllib_config(path)
+    config = algorithm_config(cfg)  # every section's keys are arguments of its AlgorithmConfig method
+    config.validate()  # RLlib's own checks (batch sizes, vectorize mode, multi-agent policies)
+    assert config.env_config == ({**cfg.settings.env_kwargs, "threads": 1}
+                                 if cfg.vectorize_mode == "vector_entry_point" else cfg.settings.env_kwargs)
+    assert config.is_multi_agent == bool(cfg.settings.self_play)
