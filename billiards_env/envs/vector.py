@@ -283,6 +283,8 @@ class BilliardsVectorEnv(VectorEnv):
         return self.template.render()
 
     def close_extras(self, **kwargs: Any) -> None:
+        if not hasattr(self, "native"):  # construction failed before the sub-envs existed
+            return
         if self.native:
             self.template.close()
         else:
