@@ -258,7 +258,8 @@ def _pct(x: float) -> str:
 
 def markdown_report(results: list[PlayerResult], env_id: str, env_kwargs: dict[str, Any], seed: int,
                     single_shot: bool, extra: dict[str, Any] | None = None) -> str:
-    rate = "pocket rate" if single_shot else "clear rate"
+    game = env_id in ("Billiards9Ball-v0", "Billiards8Ball-v0")
+    rate = "win rate" if game else ("pocket rate" if single_shot else "clear rate")
     lines = [f"# Evaluation on {env_id}", "",
              f"{results[0].episodes if results else 0} episodes per player, seeds {seed}..{seed + (results[0].episodes if results else 1) - 1} "
              f"(the same tables for every player); env kwargs: `{json.dumps(env_kwargs)}`.", "",
@@ -272,8 +273,10 @@ def markdown_report(results: list[PlayerResult], env_id: str, env_kwargs: dict[s
                      f"{_pct(r.pocketed_any / r.episodes if r.episodes else 0)} | {spc} | "
                      f"{r.scratches_per_episode:.3f} | {r.pots_per_shot:.3f} | {r.mean_return:.3f} | "
                      f"{r.ms_per_shot:.2f} |")
-    lines += ["", f"*{rate}*: " + ("object ball pocketed and cue ball not (one shot)." if single_shot else
-                                   "every object ball pocketed within the shot limit, no scratch on the last shot."),
+    meaning = ("games won against the env's opponent (or run-outs without one)." if game else
+               "object ball pocketed and cue ball not (one shot)." if single_shot else
+               "every object ball pocketed within the shot limit, no scratch on the last shot.")
+    lines += ["", f"*{rate}*: " + meaning,
               "CI: Wilson score interval. *pocketed (any)*: episodes with at least one object ball pocketed."]
     if extra:
         for title, body in extra.items():
