@@ -202,7 +202,7 @@ class EnvConfig:
             rows.append(f"{f.name:<18} {_type_name(f):<8} {_default_text(f):<14} {f.metadata['doc']}")
             if f.name in SECTIONS:
                 for k, v in _section_dict(f.name, _default(f)).items():
-                    rows.append(f"  {f.name}.{k:<{max(1, 14 - len(f.name))}} {'':<8} {v!r:<14}")
+                    rows.append(f"{'  ' + f.name + '.' + k:<27} {v!r}")
         return "\n".join(rows)
 
     def to_dict(self) -> dict[str, Any]:
