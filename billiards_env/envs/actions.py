@@ -35,9 +35,9 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 from gymnasium import spaces
+from numba import njit
 
-from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_position, ray_circle_entry,
-                                       wrap_angle)
+from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_aim, ray_circle_entry, wrap_angle)
 
 if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
@@ -63,9 +63,57 @@ def _clip(v: float) -> float:
     return -1.0 if v < -1.0 else (1.0 if v > 1.0 else v)
 
 
-def square_to_disc(x: float, y: float) -> tuple[float, float]:
+# --- the arithmetic of a shot, compiled once: the single env calls it, and so does the native vector env ------------
+#: Codes of the aim components computed by :func:`aim_to_angle`.
+AIM_ABSOLUTE, AIM_RELATIVE, AIM_GHOST = 0, 1, 2
+
+
+@njit(cache=True)
+def aim_to_angle(code: int, a: float, cx: float, cy: float, tx: float, ty: float, has_target: bool,
+                 contact: float, max_ghost: float) -> float:
+    """The cue direction of aim component ``a`` for the cue ball at ``(cx, cy)`` and the target ball at
+    ``(tx, ty)`` (``contact``: the two radii summed): absolute ``pi a``; relative ``pi a`` from the direction to the
+    target; ghost: the ghost-ball aim that sends the target ``a * max_ghost`` (rad) off the cue -> target line.
+    Without a target: relative counts from 0, ghost aims at 0."""
+    if code == AIM_ABSOLUTE:
+        return math.pi * a
+    if code == AIM_RELATIVE:
+        return math.pi * a + (math.atan2(ty - cy, tx - cx) if has_target else 0.0)
+    if not has_target:
+        return 0.0
+    return ghost_ball_aim(cx, cy, tx, ty, math.atan2(ty - cy, tx - cx) + a * max_ghost, contact)
+
+
+@njit(cache=True)
+def power_to_speed(a: float, speed_lo: float, speed_span: float) -> float:
+    """The cue speed of power component ``a`` (in [-1, 1]): linear over ``[speed_lo, speed_lo + speed_span]``."""
+    return speed_lo + 0.5 * (a + 1.0) * speed_span
+
+
+@njit(cache=True)
+def square_to_disc(x: float, y: float) -> tuple:
     """The elliptical grid mapping of the square ``[-1, 1]^2`` onto the unit disc."""
     return x * math.sqrt(1.0 - 0.5 * y * y), y * math.sqrt(1.0 - 0.5 * x * x)
+
+
+@njit(cache=True)
+def noisy_shot(angle: float, speed: float, side: float, top: float, n_angle: float, n_speed: float,
+               n_side: float, n_top: float, use_angle: bool, use_speed: bool, use_tip: bool) -> tuple:
+    """The shot as played: the angle noise added, the speed scaled by ``1 + n_speed`` (never below 0), the tip
+    noise added and the tip kept inside the miscue limit (0.5 R, less a hair). The noise values are drawn by the
+    caller from its generator, in this order, only for the noises in use."""
+    if use_angle:
+        angle += n_angle
+    if use_speed:
+        speed *= max(0.0, 1.0 + n_speed)
+    if use_tip:
+        side += n_side
+        top += n_top
+        r = math.hypot(side, top)
+        if r > 0.5 * (1.0 - 1e-12):  # keep it a legal tip position (no miscue)
+            side = side * 0.5 * (1.0 - 1e-12) / r
+            top = top * 0.5 * (1.0 - 1e-12) / r
+    return angle, speed, side, top
 
 
 def disc_to_square(u: float, v: float) -> tuple[float, float]:
@@ -105,9 +153,19 @@ class ActionType:
         self.space = spaces.Box(-1.0, 1.0, shape=(self.n,), dtype=np.float32)
 
     # --- the aim component (a subclass's part) ----------------------------------------------------------------
+    #: The :func:`aim_to_angle` code of this aim type.
+    code = AIM_ABSOLUTE
+    max_angle = 0.0
+
     def angle(self, env: "BilliardsEnv", a: float) -> float:
-        """Cue direction (rad) of aim component ``a`` (in [-1, 1])."""
-        return math.pi * a
+        """Cue direction (rad) of aim component ``a`` (in [-1, 1]): :func:`aim_to_angle`."""
+        b = env.balls
+        t = env.target_ball() if self.code != AIM_ABSOLUTE else None
+        if t is None:
+            return aim_to_angle(self.code, a, float(b.pos[0, 0]), float(b.pos[0, 1]), 0.0, 0.0, False, 0.0,
+                                self.max_angle)
+        return aim_to_angle(self.code, a, float(b.pos[0, 0]), float(b.pos[0, 1]), float(b.pos[t, 0]),
+                            float(b.pos[t, 1]), True, float(b.radius[0] + b.radius[t]), self.max_angle)
 
     def aim(self, env: "BilliardsEnv", angle: float) -> float:
         """Aim component of cue direction ``angle`` (inverse of :meth:`angle`)."""
@@ -138,7 +196,7 @@ class ActionType:
     def shot(self, env: "BilliardsEnv", action: Any) -> CueShot:
         """The shot an action means now (no noise). Placement is read only when the shooter has ball in hand."""
         a = self.parse(action)
-        speed = self.speed_lo + 0.5 * (a[1] + 1.0) * self.speed_span
+        speed = power_to_speed(a[1], self.speed_lo, self.speed_span)
         side = top = 0.0
         if self.spin:
             u, v = square_to_disc(a[self._spin_at], a[self._spin_at + 1])
@@ -204,8 +262,7 @@ class RelativeAim(ActionType):
         p = env.balls.pos
         return aim_angle(p[0], p[t])
 
-    def angle(self, env: "BilliardsEnv", a: float) -> float:
-        return math.pi * a + self._base(env)
+    code = AIM_RELATIVE
 
     def aim(self, env: "BilliardsEnv", angle: float) -> float:
         return wrap_angle(float(angle) - self._base(env)) / math.pi
@@ -218,21 +275,12 @@ class GhostAim(ActionType):
     checked."""
 
     name = "ghost"
+    code = AIM_GHOST
 
     def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
                  n_pockets: int = 6) -> None:
         super().__init__(config, placement, declarations, n_pockets)
         self.max_angle = math.radians(config.ghost_max_angle)
-
-    def angle(self, env: "BilliardsEnv", a: float) -> float:
-        t = env.target_ball()
-        if t is None:
-            return 0.0
-        b = env.balls
-        cue, obj = b.pos[0], b.pos[t]
-        theta = aim_angle(cue, obj) + a * self.max_angle
-        ghost = ghost_ball_position(obj, theta, float(b.radius[0] + b.radius[t]))
-        return aim_angle(cue, ghost)
 
     def aim(self, env: "BilliardsEnv", angle: float) -> float:
         """The object-ball direction a cue direction sends the target in (the line of centres at first contact),
@@ -268,7 +316,8 @@ class CandidateShots(ActionType):
     - ``aim`` picks slot ``k = min(floor(|a| * candidate_slots), candidate_slots - 1)``: the pots are the first
       ``candidate_slots - 1`` (the easiest first, so values near 0 play the geometric player's choice; a slot past
       the end of a short list is its last one), the last slot is the kick (a one-rail kick at a legal ball, when
-      the cue ball is where it lies and a kick exists; else the easiest pot).
+      the cue ball is where it lies and a kick exists, played at the speed and without the tip offsets it was
+      verified with: ``power``, ``side`` and ``top`` are ignored; else the easiest pot).
     - ``power``: the candidate's own speed (the ghost-ball speed that gets the ball to the pocket, as the geometric
       player computes it) times ``candidate_speed_factor ** a``: softer below 0, firmer above.
     - ``side``, ``top``: as every type.
@@ -362,8 +411,8 @@ class CandidateShots(ActionType):
                 angle = self._direct(env, cands.targets)
             speed = self.speed_range[1] * math.exp(min(a[1], 0.0) * self.log_factor)
             return base._replace(angle=angle, speed=max(speed, self.speed_range[0]), place=place)
-        if cands.kick is not None and self._kicks(a[0]):
-            return base._replace(angle=cands.kick.shot.angle, speed=self._speed(cands.kick.shot.speed, a[1]))
+        if cands.kick is not None and self._kicks(a[0]):  # as verified: its speed, no tip offsets
+            return base._replace(angle=cands.kick.shot.angle, speed=cands.kick.shot.speed, side=0.0, top=0.0)
         if not cands.slots:
             with env.cue_moved_to(base.place) if base.place is not None else contextlib.nullcontext():
                 angle = self._direct(env, cands.targets)
@@ -440,4 +489,5 @@ def action_factory(config: "EnvConfig", placement: bool = False, declarations: t
 
 __all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "CandidateShots", "ACTION_TYPES",
            "action_factory", "PLACE_BACK", "PLACE_MAX_CUT", "FALLBACK_SPEED",
-           "square_to_disc", "disc_to_square"]
+           "square_to_disc", "disc_to_square", "aim_to_angle", "power_to_speed", "noisy_shot", "AIM_ABSOLUTE",
+           "AIM_RELATIVE", "AIM_GHOST"]

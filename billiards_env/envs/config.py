@@ -45,7 +45,7 @@ PLACEMENTS = ("random", "rack", "diamond")
 CUE_PLACEMENTS = ("random", "kitchen", "head_spot")
 ACTION_TYPES = ("absolute", "relative", "ghost", "candidates")
 OBSERVATION_TYPES = ("positions", "features", "candidates")
-OPENINGS = ("break", "ball_in_hand")
+OPENINGS = ("break", "ball_in_hand", "either")
 TASKS = ("pot", "nine_ball", "eight_ball")
 OPPONENTS = ("geometric", "search", "random")
 FIRST_SHOOTERS = ("agent", "opponent", "random")
@@ -167,7 +167,8 @@ class EnvConfig:
                         "kitchen) or 'ball_in_hand' (the env breaks for nobody: a full-speed hit from the head spot "
                         "at the nearest ball, with the shot noise; balls pocketed stay down, the 9 (8-ball: the 8) is "
                         "respotted, and the first shooter has the cue ball in hand anywhere: run-out practice and "
-                        "the league's run-out test).", default="break")
+                        "the league's run-out test), or 'either' (one of the two, drawn at every reset from "
+                        "np_random: practice of the break and of the run-out).", default="break")
     rules: dict = _doc("Games: options of the ruleset (billiards_env.rules NineBallOptions / EightBallOptions), "
                        "e.g. {push_out: true} or {call_eight: false}; the env defaults are the rules' own, except "
                        "push_out false.", default_factory=dict)

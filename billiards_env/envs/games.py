@@ -133,7 +133,10 @@ class GameTask(Task):
             if first != self.agent and self.opponent is None and self.auto_opponent:
                 first = self.agent  # alone: the agent breaks
             self.state = self.rules.initial_state(first_shooter=first)
-            if self.config.opening == "ball_in_hand":
+            opening = self.config.opening
+            if opening == "either":
+                opening = "ball_in_hand" if rng.integers(2) else "break"
+            if opening == "ball_in_hand":
                 self._open_with_ball_in_hand(env, first)
             if first == self.agent or not self.auto_opponent or self.opponent is None:
                 return self._info(env, None, 0)

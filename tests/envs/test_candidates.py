@@ -53,6 +53,19 @@ def test_ball_in_hand_opening_breaks_for_nobody_and_gives_ball_in_hand_anywhere(
     assert aec.agent_selection == "player_1" and aec.unwrapped.game_state.ball_in_hand == "anywhere"
 
 
+def test_either_opening_draws_the_break_or_ball_in_hand():
+    env = gym.make("Billiards9Ball-v0", opening="either", opponent=None)
+    kinds = []
+    for seed in range(12):
+        env.reset(seed=seed)
+        s = env.unwrapped.task.state
+        kinds.append("break" if s.break_shot else s.ball_in_hand)
+        again = gym.make("Billiards9Ball-v0", opening="either", opponent=None)
+        again.reset(seed=seed)
+        assert again.unwrapped.task.state == s  # drawn from the seeded np_random
+    assert set(kinds) == {"break", "anywhere"}
+
+
 def test_opening_is_for_games_only():
     with pytest.raises(ConfigError, match="opening"):
         gym.make("BilliardsOneBall-v0", opening="ball_in_hand")
@@ -120,6 +133,9 @@ def test_a_blocked_ball_is_kicked_at_off_a_cushion():
     assert kick_row[0] == 1.0 and kick_row[2] == kick_row[3] == -1.0
     a = np.zeros(env.action_space.shape)
     a[0] = -1.0
+    a[1], a[2], a[3] = 0.8, 0.9, -0.9  # the kick is played as verified: power and tip ignored
+    shot = u.shot_from_action(a)
+    assert (shot.angle, shot.speed, shot.side, shot.top) == (cands.kick.shot.angle, cands.kick.shot.speed, 0.0, 0.0)
     _, _, _, _, info = env.step(a)
     assert info["first_contact"] == "1" and info["foul_reason"] != "wrong ball first"
     # A pot instead hits the 2 first.
