@@ -6,8 +6,8 @@ test ``tests/envs/test_vector_env.py`` checks it):
 
 - :func:`place_tables` runs :func:`billiards_env.physics.layout.place_random_rows` (the single env's placement)
   per table;
-- :func:`prepare_shots` is ``ActionType.shot`` (absolute, relative and ghost aim; power; tip offsets) followed
-  by ``BilliardsEnv.play_shot``'s noise and strike;
+- :func:`prepare_shots` maps the actions with the single env's compiled shot arithmetic (:mod:`.actions`:
+  ``aim_to_angle``, ``power_to_speed``, ``square_to_disc``, ``noisy_shot``) and strikes;
 - :func:`finish_shots` is the rest of ``play_shot`` and ``PotTask.on_shot`` (re-spotting a pocketed cue ball
   with :func:`~billiards_env.physics.layout.spot_cue_row`, the single env's code), and :func:`observe_positions`
   the positions observation;
@@ -31,10 +31,9 @@ from billiards_env.physics.layout import place_random_rows, spot_cue_row
 from billiards_env.physics.spin_collide import strike_spin
 
 from ._kernels import observation
+from .actions import (AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, aim_to_angle, noisy_shot, power_to_speed,
+                      square_to_disc)
 
-AIM_ABSOLUTE = 0
-AIM_RELATIVE = 1
-AIM_GHOST = 2
 #: ``place_tables`` status: every table placed.
 PLACED = -1
 
@@ -143,44 +142,24 @@ def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
     aim type's angle, the power's speed, the tip offsets, then the shot noise (``noise[k]``, drawn beforehand:
     :func:`draw_noise`). Writes the shot as played and the cue ball's start into ``fout[k]``."""
     a0 = act[k, 0]
-    speed = cfg[C_SPEED_LO] + 0.5 * (act[k, 1] + 1.0) * cfg[C_SPEED_SPAN]
+    speed = power_to_speed(act[k, 1], cfg[C_SPEED_LO], cfg[C_SPEED_SPAN])
     side = 0.0
     top = 0.0
     if icfg[I_SPIN_ACTION]:
-        x = act[k, 2]
-        y = act[k, 3]
-        side = cfg[C_MAX_TIP] * (x * math.sqrt(1.0 - 0.5 * y * y))
-        top = cfg[C_MAX_TIP] * (y * math.sqrt(1.0 - 0.5 * x * x))
+        u, v = square_to_disc(act[k, 2], act[k, 3])
+        side = cfg[C_MAX_TIP] * u
+        top = cfg[C_MAX_TIP] * v
     p = pos[k]
     aim = icfg[I_AIM]
-    if aim == AIM_ABSOLUTE:
-        angle = math.pi * a0
+    t = _target(on[k]) if aim != AIM_ABSOLUTE else -1
+    if t >= 0:
+        angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], p[t, 0], p[t, 1], True, radius[0] + radius[t],
+                             cfg[C_MAX_GHOST])
     else:
-        t = _target(on[k])
-        if aim == AIM_RELATIVE:
-            base = 0.0
-            if t >= 0:
-                base = math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0])
-            angle = math.pi * a0 + base
-        elif t < 0:
-            angle = 0.0
-        else:
-            theta = math.atan2(p[t, 1] - p[0, 1], p[t, 0] - p[0, 0]) + a0 * cfg[C_MAX_GHOST]
-            contact = radius[0] + radius[t]
-            gx = p[t, 0] - contact * math.cos(theta)
-            gy = p[t, 1] - contact * math.sin(theta)
-            angle = math.atan2(gy - p[0, 1], gx - p[0, 0])
-    if cfg[C_ANGLE_NOISE] > 0.0:
-        angle += noise[k, 0]
-    if cfg[C_SPEED_NOISE] > 0.0:
-        speed *= max(0.0, 1.0 + noise[k, 1])
-    if cfg[C_TIP_NOISE] > 0.0:
-        side += noise[k, 2]
-        top += noise[k, 3]
-        r = math.hypot(side, top)
-        if r > 0.5 * (1.0 - 1e-12):  # keep it a legal tip position (no miscue)
-            side = side * 0.5 * (1.0 - 1e-12) / r
-            top = top * 0.5 * (1.0 - 1e-12) / r
+        angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], 0.0, 0.0, False, 0.0, cfg[C_MAX_GHOST])
+    angle, speed, side, top = noisy_shot(angle, speed, side, top, noise[k, 0], noise[k, 1], noise[k, 2],
+                                         noise[k, 3], cfg[C_ANGLE_NOISE] > 0.0, cfg[C_SPEED_NOISE] > 0.0,
+                                         cfg[C_TIP_NOISE] > 0.0)
     fout[k, F_START_X] = p[0, 0]
     fout[k, F_START_Y] = p[0, 1]
     vel[k, 0, 0] = speed * math.cos(angle)

@@ -32,7 +32,7 @@ from billiards_env.physics.spin_collide import strike_spin
 
 from ._pot_fast import pot_fast_step
 from ._seeding import np_random
-from .actions import CueShot, action_factory
+from .actions import CueShot, action_factory, noisy_shot
 from .config import ConfigError, EnvConfig, load_config
 from .observations import observation_factory
 from .tasks import ShotOutcome, task_factory
@@ -190,19 +190,14 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     def play_shot(self, shot: CueShot) -> tuple[ShotOutcome, Any, CueShot]:
         """Add the shot noise, strike the cue ball and simulate until every ball is at rest (the live balls are
         updated in place). Returns the outcome, the trajectory (when recording) and the shot as played."""
-        angle, speed, side, top = shot.angle, shot.speed, shot.side, shot.top
         rng = self.np_random
         c = self.config
-        if c.angle_noise > 0.0:
-            angle += float(rng.normal(0.0, c.angle_noise))
-        if c.speed_noise > 0.0:
-            speed *= max(0.0, 1.0 + float(rng.normal(0.0, c.speed_noise)))
-        if c.tip_noise > 0.0:
-            side += float(rng.normal(0.0, c.tip_noise))
-            top += float(rng.normal(0.0, c.tip_noise))
-            r = math.hypot(side, top)
-            if r > 0.5 * (1.0 - 1e-12):  # keep it a legal tip position (no miscue)
-                side, top = side * 0.5 * (1.0 - 1e-12) / r, top * 0.5 * (1.0 - 1e-12) / r
+        n_angle = float(rng.normal(0.0, c.angle_noise)) if c.angle_noise > 0.0 else 0.0
+        n_speed = float(rng.normal(0.0, c.speed_noise)) if c.speed_noise > 0.0 else 0.0
+        n_side = float(rng.normal(0.0, c.tip_noise)) if c.tip_noise > 0.0 else 0.0
+        n_top = float(rng.normal(0.0, c.tip_noise)) if c.tip_noise > 0.0 else 0.0
+        angle, speed, side, top = noisy_shot(shot.angle, shot.speed, shot.side, shot.top, n_angle, n_speed, n_side,
+                                             n_top, c.angle_noise > 0.0, c.speed_noise > 0.0, c.tip_noise > 0.0)
         b = self.balls
         x0, y0 = float(b.pos[0, 0]), float(b.pos[0, 1])
         b.vel[0, 0] = speed * math.cos(angle)

@@ -143,10 +143,25 @@ def angular_radius(radius: float, distance: float) -> float:
 
 # --- ghost ball, cut -------------------------------------------------------------------------------------------
 
+@njit(cache=True)
+def ghost_point(ox: float, oy: float, direction: float, contact: float) -> tuple:
+    """The ghost-ball position ``(gx, gy)``: where the cue ball's centre must be when it touches the object ball at
+    ``(ox, oy)`` to send it off in ``direction`` (rad): ``contact`` (the sum of the two radii) behind it."""
+    return ox - contact * math.cos(direction), oy - contact * math.sin(direction)
+
+
+@njit(cache=True)
+def ghost_ball_aim(cx: float, cy: float, ox: float, oy: float, direction: float, contact: float) -> float:
+    """The cue direction (rad) from ``(cx, cy)`` that sends the object ball at ``(ox, oy)`` off in ``direction``:
+    towards its ghost-ball position (:func:`ghost_point`)."""
+    gx, gy = ghost_point(ox, oy, direction, contact)
+    return math.atan2(gy - cy, gx - cx)
+
+
 def ghost_ball_position(obj: Vec2, direction: float, contact: float) -> np.ndarray:
-    """Where the cue ball's centre must be when it touches the object ball at ``obj`` to send it off in
-    ``direction`` (rad): ``contact`` (the sum of the two radii) behind it, on the line of centres."""
-    return np.asarray(obj, dtype=float) - contact * direction_vector(direction)
+    """:func:`ghost_point` as an array: where the cue ball's centre must be when it touches the object ball at
+    ``obj`` to send it off in ``direction`` (rad)."""
+    return np.array(ghost_point(float(obj[0]), float(obj[1]), float(direction), float(contact)))
 
 
 def cut_cosine(aim_direction: Vec2, object_direction: Vec2) -> float:
