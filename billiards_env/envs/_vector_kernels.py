@@ -33,6 +33,7 @@ from billiards_env.physics.spin_collide import strike_spin
 from ._kernels import observation
 from .actions import (AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, aim_to_angle, noisy_shot, power_to_speed,
                       square_to_disc)
+from .tasks import pot_score
 
 #: ``place_tables`` status: every table placed.
 PLACED = -1
@@ -207,16 +208,13 @@ def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iou
         if on[k, i]:
             cleared = False
             break
-    r = cfg[C_POT_REWARD] * n_potted - cfg[C_STEP_PENALTY]
-    if sc:
-        r -= cfg[C_SCRATCH_PENALTY]
-    if first[k] < 0:
-        r -= cfg[C_MISS_PENALTY]
-    term = cleared or icfg[I_SINGLE_SHOT] != 0
+    r, term, trunc, success = pot_score(n_potted, sc, first[k] < 0, cleared, shots[k], cfg[C_POT_REWARD],
+                                        cfg[C_STEP_PENALTY], cfg[C_SCRATCH_PENALTY], cfg[C_MISS_PENALTY],
+                                        icfg[I_SINGLE_SHOT] != 0, icfg[I_MAX_SHOTS])
     fout[k, F_REWARD] = r
     iout[k, O_TERMINATED] = term
-    iout[k, O_TRUNCATED] = (not term) and shots[k] >= icfg[I_MAX_SHOTS]
-    iout[k, O_SUCCESS] = cleared and not sc
+    iout[k, O_TRUNCATED] = trunc
+    iout[k, O_SUCCESS] = success
     iout[k, O_SCRATCH] = sc
     iout[k, O_POCKETED] = mask
     return ok

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from numba import njit
 
 from billiards_env.physics.codes import EV_COLLISION
 from billiards_env.physics.layout import spot_cue_ball
@@ -103,6 +104,22 @@ class Task:
         return None
 
 
+@njit(cache=True)
+def pot_score(n_potted: int, scratch: bool, missed: bool, cleared: bool, shots: int, pot_reward: float,
+              step_penalty: float, scratch_penalty: float, miss_penalty: float, single_shot: bool,
+              max_shots: int) -> tuple:
+    """The pot task's score of a shot: ``(reward, terminated, truncated, success)`` (see :class:`PotTask`).
+    Compiled once: the single env calls it, and so does the native vector env."""
+    reward = pot_reward * n_potted - step_penalty
+    if scratch:
+        reward -= scratch_penalty
+    if missed:
+        reward -= miss_penalty
+    terminated = cleared or single_shot
+    truncated = (not terminated) and shots >= max_shots
+    return reward, terminated, truncated, cleared and not scratch
+
+
 class PotTask(Task):
     """Pocket the object balls: ``+pot_reward`` per object ball pocketed, ``-scratch_penalty`` for a pocketed cue
     ball (re-spotted on the head spot or the nearest free point of the head string), ``-miss_penalty`` when the
@@ -118,15 +135,10 @@ class PotTask(Task):
         if outcome.scratch:
             spot_cue_ball(b.pos, b.on_table, c.ball_radius, env.table)
         n_potted = len(outcome.pocketed) - (1 if outcome.scratch else 0)
-        cleared = not b.on_table[1:].any()
-        reward = c.pot_reward * n_potted - c.step_penalty
-        if outcome.scratch:
-            reward -= c.scratch_penalty
-        if outcome.first_contact < 0:
-            reward -= c.miss_penalty
-        terminated = bool(cleared or c.single_shot)
-        truncated = bool(not terminated and env.shots >= c.max_shots)
-        return float(reward), terminated, truncated, {"is_success": bool(cleared and not outcome.scratch)}
+        reward, terminated, truncated, success = pot_score(
+            n_potted, outcome.scratch, outcome.first_contact < 0, not b.on_table[1:].any(), env.shots, c.pot_reward,
+            c.step_penalty, c.scratch_penalty, c.miss_penalty, c.single_shot, c.max_shots)
+        return float(reward), bool(terminated), bool(truncated), {"is_success": bool(success)}
 
 
 def task_factory(env: "BilliardsEnv") -> Task:
@@ -138,4 +150,4 @@ def task_factory(env: "BilliardsEnv") -> Task:
     return {"nine_ball": NineBallTask, "eight_ball": EightBallTask}[env.config.task](env)
 
 
-__all__ = ["ShotOutcome", "first_contact", "Task", "PotTask", "task_factory"]
+__all__ = ["ShotOutcome", "first_contact", "Task", "PotTask", "pot_score", "task_factory"]
