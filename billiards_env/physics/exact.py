@@ -22,19 +22,17 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLIN
                     STATUS_TIME_CAP)
 from .collide import CONTACT_TIME, JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
+from .kernel_logs import append_event, internal, reserve_states
 from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
 from .roots import first_entry
 
-#: Compile options of the kernel's internal helpers: called only from compiled code, so they need no Python entry
-#: wrappers (which would be compiled, optimised and cached for each of them: a good part of a cold compile).
-_internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 #: Typed (non-literal) integer initial values: a literal -1 or 0 passed on to a compiled helper would make numba
 #: compile a second specialisation of it for the literal.
 _NONE = np.int64(-1)
 _ZERO = np.int64(0)
 
 
-@_internal
+@internal
 def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
     """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state."""
     vx = v0[i, 0]
@@ -54,7 +52,7 @@ def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
     return x, y, ux * sp, uy * sp
 
 
-@_internal
+@internal
 def _advance(i, t, t0, p0, v0, tstop, law, a, k):
     """Move ball ``i``'s reference state to time ``t``."""
     x, y, vx, vy = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
@@ -65,7 +63,7 @@ def _advance(i, t, t0, p0, v0, tstop, law, a, k):
     t0[i] = t
 
 
-@_internal
+@internal
 def _set_stop_time(i, t0, v0, tstop, law, a, k, v_min):
     s = math.hypot(v0[i, 0], v0[i, 1])
     if s <= v_min or s == 0.0:
@@ -76,7 +74,7 @@ def _set_stop_time(i, t0, v0, tstop, law, a, k, v_min):
         tstop[i] = t0[i] + time_to_stop(s, law, a, k, v_min)
 
 
-@_internal
+@internal
 def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     """Next stop, cushion or pocket event of ball ``i``: ``(time, kind, other)``."""
     vx = v0[i, 0]
@@ -122,7 +120,7 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     return t_stop, EV_STOP, -1
 
 
-@_internal
+@internal
 def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (stop, cushion, pocket), since that event recomputes the pair anyway."""
@@ -134,7 +132,7 @@ def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
     return _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
 
 
-@_internal
+@internal
 def _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm):
     """:func:`_predict_pair` from both balls' states at ``t`` (``i < j``), so that a ball's state is computed once
     for all its pairs."""
@@ -203,7 +201,7 @@ def _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
     return t + min(drag_time_for_phi(phi, k), window)
 
 
-@_internal
+@internal
 def _count_burst(i, t, t_hit, burst):
     """Record a collision of ball ``i`` at ``t``; True if it follows its previous one within ``CONTACT_TIME``."""
     clustered = t - t_hit[i] <= CONTACT_TIME
@@ -212,7 +210,7 @@ def _count_burst(i, t, t_hit, burst):
     return clustered
 
 
-@_internal
+@internal
 def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved):
     """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
@@ -270,26 +268,7 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     return count
 
 
-@_internal
-def _grow(arr):
-    """``arr`` (1-D) copied into an array twice as long."""
-    out = np.empty(arr.shape[0] * 2, arr.dtype)
-    for r in range(arr.shape[0]):
-        out[r] = arr[r]
-    return out
-
-
-@_internal
-def _grow_rows(arr):
-    """``arr`` (2-D) copied into an array with twice the rows."""
-    out = np.empty((arr.shape[0] * 2, arr.shape[1]), arr.dtype)
-    for r in range(arr.shape[0]):
-        for c in range(arr.shape[1]):
-            out[r, c] = arr[r, c]
-    return out
-
-
-@_internal
+@internal
 def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table):
     sc_t[n_sc] = t
     sc_ball[n_sc] = i
@@ -470,24 +449,13 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params
             v0[bi, 1] = 0.0
             tstop[bi] = t
 
-        if n_events >= ev_t.shape[0]:
-            ev_t = _grow(ev_t)
-            ev_int = _grow_rows(ev_int)
-            ev_speed = _grow(ev_speed)
-        ev_t[n_events] = t
-        ev_int[n_events, 0] = kind
-        ev_int[n_events, 1] = bi
-        ev_int[n_events, 2] = bj
-        ev_speed[n_events] = speed
+        ev_t, ev_int, ev_speed = append_event(ev_t, ev_int, ev_speed, n_events, t, kind, bi, bj, speed)
         n_events += 1
 
         for q in range(n_inv):
             i = involved[q]
             if record:
-                if n_sc >= sc_t.shape[0]:
-                    sc_t = _grow(sc_t)
-                    sc_ball = _grow(sc_ball)
-                    sc_state = _grow_rows(sc_state)
+                sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
                 _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table)
                 n_sc += 1
             if not on_table[i]:

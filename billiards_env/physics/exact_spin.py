@@ -22,17 +22,15 @@ from numba import njit
 from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP, MS_POCKETED,
                     MS_ROLLING, MS_SLIDING, MS_SPINNING, MS_STATIONARY, STATUS_EVENT_CAP, STATUS_REST,
                     STATUS_TIME_CAP)
-from .collide import CONTACT_TIME, JAM_EVENTS
-from .exact import _count_burst, _grow, _grow_rows
+from .collide import JAM_EVENTS
+from .exact import _count_burst
 from .kernel_io import KernelResult
+from .kernel_logs import append_event, internal, reserve_states
 from .roots import first_entry, quadratic_roots_in
 from .spin_collide import (is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
                            settle_on_cushion, wall_normal)
 from .spin_motion import advance, classify, piece_of, reach, roll_on, slide_end, spin_decay_rate, transition
 
-#: Compile options of the kernel's internal helpers (called only from compiled code: no Python entry wrappers to
-#: compile and cache), as in :mod:`.exact`.
-_internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 #: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
 #: numba compile a second specialisation of it.
 _ROW0 = np.int64(0)
@@ -47,7 +45,7 @@ _TRANSITION = 100
 N_STATE_COLS = 9
 
 
-@_internal
+@internal
 def _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin):
     """Start ball ``i`` on the ``state`` piece from its stored state (made exact by :func:`piece_of`)."""
     c = piece_of(state, bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ], r, f_slide, f_roll, f_spin)
@@ -64,7 +62,7 @@ def _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin):
     st[i] = state
 
 
-@_internal
+@internal
 def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
     """Start ball ``i`` on the piece its stored state calls for (a ball found rolling, its slip round-off, is
     put on rolling by :func:`.spin_motion.roll_on`)."""
@@ -74,7 +72,7 @@ def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
     _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin)
 
 
-@_internal
+@internal
 def _state_at(bs, i, t):
     """``(x, y, vx, vy, wx, wy, wz)`` of ball ``i`` at time ``t`` (not past its piece's end)."""
     tau = min(t, bs[i, TEND]) - bs[i, T0]
@@ -84,7 +82,7 @@ def _state_at(bs, i, t):
                    bs[i, AY], bs[i, DWX], bs[i, DWY], bs[i, ALPHA])
 
 
-@_internal
+@internal
 def _move_to(bs, i, t):
     """Move ball ``i``'s reference state to time ``t`` (on the same piece)."""
     x, y, vx, vy, wx, wy, wz = _state_at(bs, i, t)
@@ -98,7 +96,7 @@ def _move_to(bs, i, t):
     bs[i, T0] = t
 
 
-@_internal
+@internal
 def _wall_time(c2, c1, c0, window, tol):
     """First time in ``[0, window]`` at which the wall distance ``c2 t^2 + c1 t + c0`` (positive on the table)
     reaches 0 from above; ``inf`` if none. A ball touching the wall (``c0 <= 0``) counts at once if it moves
@@ -115,7 +113,7 @@ def _wall_time(c2, c1, c0, window, tol):
     return r1 if n > 0 else math.inf
 
 
-@_internal
+@internal
 def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time):
     """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
     t0 = bs[i, T0]
@@ -177,7 +175,7 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     return t_end, _TRANSITION, -1
 
 
-@_internal
+@internal
 def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (which recomputes the pair anyway)."""
@@ -210,7 +208,7 @@ def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
     return t + tau
 
 
-@_internal
+@internal
 def _slow_run(i, j, slow, slow_with, slow_runs):
     """Count a collision of ``i`` and ``j`` towards their run of slow re-contacts (closing slower than the speed
     floor, one after another with no faster one between); returns the run's length (0 after a fast one).
@@ -232,7 +230,7 @@ def _slow_run(i, j, slow, slow_with, slow_runs):
     return min(slow_runs[i], slow_runs[j])
 
 
-@_internal
+@internal
 def _copy_motion(bs, st, src, dst, radius, f_slide, f_roll, f_spin):
     """Give ball ``dst``, which has the velocity and surface velocity ``R (wx, wy)`` of ``src``, the piece of
     ``src`` (acceleration and end), so a merged pair or cluster moves as one: its gaps stay exactly as they
@@ -253,7 +251,7 @@ def _copy_motion(bs, st, src, dst, radius, f_slide, f_roll, f_spin):
     st[dst] = st[src]
 
 
-@_internal
+@internal
 def _touching_wall(x, y, r, length, width, wall):
     if wall == 0:
         return x <= r
@@ -264,7 +262,7 @@ def _touching_wall(x, y, r, length, width, wall):
     return y >= width - r
 
 
-@_internal
+@internal
 def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin, involved):
     """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
@@ -341,7 +339,7 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
     return count
 
 
-@_internal
+@internal
 def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, bs, st, on_table):
     sc_t[n_sc] = t
     sc_ball[n_sc] = i
@@ -589,24 +587,13 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
             kind = EV_ROLL if nxt == MS_ROLLING else (EV_SPIN if nxt == MS_SPINNING else EV_STOP)
             bj = -1
 
-        if n_events >= ev_t.shape[0]:
-            ev_t = _grow(ev_t)
-            ev_int = _grow_rows(ev_int)
-            ev_speed = _grow(ev_speed)
-        ev_t[n_events] = t
-        ev_int[n_events, 0] = kind
-        ev_int[n_events, 1] = bi
-        ev_int[n_events, 2] = bj
-        ev_speed[n_events] = speed
+        ev_t, ev_int, ev_speed = append_event(ev_t, ev_int, ev_speed, n_events, t, kind, bi, bj, speed)
         n_events += 1
 
         for q in range(n_inv):
             i = involved[q]
             if record:
-                if n_sc >= sc_t.shape[0]:
-                    sc_t = _grow(sc_t)
-                    sc_ball = _grow(sc_ball)
-                    sc_state = _grow_rows(sc_state)
+                sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
                 _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, bs, st, on_table)
                 n_sc += 1
             if on_table[i]:

@@ -1,7 +1,6 @@
 """The Python entry point to both solvers: ``Simulator(table, physics, ...).run(balls)`` or ``simulate(...)``."""
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np

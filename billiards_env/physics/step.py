@@ -23,7 +23,7 @@ from numba import njit
 
 from .collide import resolve_ball_ball, resolve_cushion
 from .codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, ROLLING, STATUS_REST, STATUS_TIME_CAP
-from .exact import _grow, _grow_rows
+from .kernel_logs import keep_on_table, reserve_events, reserve_states
 from .kernel_io import KernelResult
 
 CONTACT_MODES = ("lecture", "rewind")
@@ -46,10 +46,7 @@ def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on, only):
     for i in range(n):
         if only >= 0 and i != only:
             continue
-        if n_sc >= sc_t.shape[0]:
-            sc_t = _grow(sc_t)
-            sc_ball = _grow(sc_ball)
-            sc_state = _grow_rows(sc_state)
+        sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
         sc_t[n_sc] = t
         sc_ball[n_sc] = i
         sc_state[n_sc, 0] = pos[i, 0]
@@ -125,10 +122,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
         # Reserve room for this step's events (at most a stop, 4 cushions and a pocket per ball, one per pair)
         # and snapshots, so the loops below never reallocate.
         need = n_ev + 6 * n + n * (n - 1) // 2 + 1
-        while ev_t.shape[0] < need:
-            ev_t = _grow(ev_t)
-            ev_int = _grow_rows(ev_int)
-            ev_speed = _grow(ev_speed)
+        ev_t, ev_int, ev_speed = reserve_events(ev_t, ev_int, ev_speed, need)
 
         # 1. friction and minimum speed; 2. position update.
         for i in range(n):
@@ -241,11 +235,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
-        for i in range(n):
-            if on_table[i]:
-                r = radius[i]
-                pos[i, 0] = min(max(pos[i, 0], r), length - r)
-                pos[i, 1] = min(max(pos[i, 1], r), width - r)
+        keep_on_table(pos, on_table, radius, length, width)
 
         # 5. pockets.
         for i in range(n):

@@ -25,7 +25,7 @@ from numba import njit
 
 from .codes import (EV_COLLISION, EV_CUSHION, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP, MS_POCKETED, MS_ROLLING,
                     MS_SLIDING, MS_SPINNING, MS_STATIONARY, STATUS_REST, STATUS_TIME_CAP)
-from .exact import _grow, _grow_rows
+from .kernel_logs import internal, keep_on_table, reserve_events, reserve_states
 from .exact_spin import N_STATE_COLS
 from .kernel_io import KernelResult
 from .spin_collide import (acceleration, is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
@@ -34,20 +34,15 @@ from .spin_motion import classify, roll_on, slip, spin_decay_rate, wz_after
 from .step import _put_event
 
 
-#: Internal helpers: no Python entry wrappers (see :mod:`.exact_spin`).
-_internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 
 
-@_internal
+@internal
 def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on, code, only):
     n = pos.shape[0]
     for i in range(n):
         if only >= 0 and i != only:
             continue
-        if n_sc >= sc_t.shape[0]:
-            sc_t = _grow(sc_t)
-            sc_ball = _grow(sc_ball)
-            sc_state = _grow_rows(sc_state)
+        sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
         sc_t[n_sc] = t
         sc_ball[n_sc] = i
         sc_state[n_sc, 0] = pos[i, 0]
@@ -63,7 +58,7 @@ def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on, code, only):
     return n_sc, sc_t, sc_ball, sc_state
 
 
-@_internal
+@internal
 def _friction_step(vel, ang, i, r, dt, f_slide, f_roll, alpha):
     """Step 1 for ball ``i``: returns its motion state after the step."""
     vx = vel[i, 0]
@@ -182,10 +177,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
         t = step * dt
         # Room for this step's events: a transition, 4 cushions and a pocket per ball, one per pair.
         need = n_ev + 6 * n + n * (n - 1) // 2 + 1
-        while ev_t.shape[0] < need:
-            ev_t = _grow(ev_t)
-            ev_int = _grow_rows(ev_int)
-            ev_speed = _grow(ev_speed)
+        ev_t, ev_int, ev_speed = reserve_events(ev_t, ev_int, ev_speed, need)
 
         # 1. friction; 2. position update.
         for i in range(n):
@@ -295,11 +287,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
-        for i in range(n):
-            if on_table[i]:
-                r = radius[i]
-                pos[i, 0] = min(max(pos[i, 0], r), length - r)
-                pos[i, 1] = min(max(pos[i, 1], r), width - r)
+        keep_on_table(pos, on_table, radius, length, width)
 
         # 5. pockets.
         for i in range(n):
