@@ -22,7 +22,7 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLIN
                     STATUS_TIME_CAP)
 from .collide import CONTACT_TIME, JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
-from .kernel_logs import append_event, internal, reserve_states
+from .kernel_logs import append_event, internal, pocket_holding, reserve_states
 from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
 from .roots import first_entry
 
@@ -81,11 +81,9 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     vy = v0[i, 1]
     s = math.hypot(vx, vy)
     if s == 0.0:  # at rest: only a ball placed inside a capture circle has an event (pocketed at once)
-        for p in range(pocket_r.shape[0]):
-            dx = p0[i, 0] - pocket_xy[p, 0]
-            dy = p0[i, 1] - pocket_xy[p, 1]
-            if dx * dx + dy * dy <= pocket_r[p] * pocket_r[p]:
-                return t0[i], EV_POCKET, p
+        p = pocket_holding(p0[i, 0], p0[i, 1], pocket_xy, pocket_r)
+        if p >= 0:
+            return t0[i], EV_POCKET, p
         return math.inf, -1, -1
     law = prm.law
     a = prm.decel

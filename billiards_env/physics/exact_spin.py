@@ -25,7 +25,7 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPI
 from .collide import JAM_EVENTS
 from .exact import _count_burst
 from .kernel_io import KernelResult
-from .kernel_logs import append_event, internal, reserve_states
+from .kernel_logs import append_event, internal, pocket_holding, reserve_states
 from .roots import first_entry, quadratic_roots_in
 from .spin_collide import (is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
                            settle_on_cushion, wall_normal)
@@ -122,11 +122,9 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     y = bs[i, Y]
     if st[i] == MS_STATIONARY or st[i] == MS_SPINNING:
         # Not moving: only a ball placed inside a capture circle has a pocket event (at once).
-        for q in range(pocket_r.shape[0]):
-            dx = x - pocket_xy[q, 0]
-            dy = y - pocket_xy[q, 1]
-            if dx * dx + dy * dy <= pocket_r[q] * pocket_r[q]:
-                return t0, EV_POCKET, q
+        q = pocket_holding(x, y, pocket_xy, pocket_r)
+        if q >= 0:
+            return t0, EV_POCKET, q
         if st[i] == MS_SPINNING:
             return t_end, _TRANSITION, -1
         return math.inf, -1, -1

@@ -23,7 +23,7 @@ from numba import njit
 
 from .collide import resolve_ball_ball, resolve_cushion
 from .codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, ROLLING, STATUS_REST, STATUS_TIME_CAP
-from .kernel_logs import keep_on_table, reserve_events, reserve_states
+from .kernel_logs import keep_on_table, pocket_holding, reserve_events, reserve_states
 from .kernel_io import KernelResult
 
 CONTACT_MODES = ("lecture", "rewind")
@@ -241,22 +241,19 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
         for i in range(n):
             if not on_table[i]:
                 continue
-            for p in range(pocket_r.shape[0]):
-                dx = pos[i, 0] - pocket_xy[p, 0]
-                dy = pos[i, 1] - pocket_xy[p, 1]
-                if dx * dx + dy * dy <= pocket_r[p] * pocket_r[p]:
-                    speed = math.hypot(vel[i, 0], vel[i, 1])
-                    on_table[i] = False
-                    vel[i, 0] = 0.0
-                    vel[i, 1] = 0.0
-                    pocket_of[i] = p
-                    pocket_time[i] = t
-                    _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, p, speed)
-                    n_ev += 1
-                    if record:
-                        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel,
-                                                                  on_table, i)
-                    break
+            p = pocket_holding(pos[i, 0], pos[i, 1], pocket_xy, pocket_r)
+            if p >= 0:
+                speed = math.hypot(vel[i, 0], vel[i, 1])
+                on_table[i] = False
+                vel[i, 0] = 0.0
+                vel[i, 1] = 0.0
+                pocket_of[i] = p
+                pocket_time[i] = t
+                _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, p, speed)
+                n_ev += 1
+                if record:
+                    n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on_table,
+                                                              i)
 
         if record and t >= next_record - 1e-12:
             n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on_table, -1)

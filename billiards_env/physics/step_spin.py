@@ -25,7 +25,7 @@ from numba import njit
 
 from .codes import (EV_COLLISION, EV_CUSHION, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP, MS_POCKETED, MS_ROLLING,
                     MS_SLIDING, MS_SPINNING, MS_STATIONARY, STATUS_REST, STATUS_TIME_CAP)
-from .kernel_logs import internal, keep_on_table, reserve_events, reserve_states
+from .kernel_logs import internal, keep_on_table, pocket_holding, reserve_events, reserve_states
 from .exact_spin import N_STATE_COLS
 from .kernel_io import KernelResult
 from .spin_collide import (acceleration, is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
@@ -293,26 +293,23 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
         for i in range(n):
             if not on_table[i]:
                 continue
-            for q in range(pocket_r.shape[0]):
-                dx = pos[i, 0] - pocket_xy[q, 0]
-                dy = pos[i, 1] - pocket_xy[q, 1]
-                if dx * dx + dy * dy <= pocket_r[q] * pocket_r[q]:
-                    speed = math.hypot(vel[i, 0], vel[i, 1])
-                    on_table[i] = False
-                    vel[i, 0] = 0.0
-                    vel[i, 1] = 0.0
-                    ang[i, 0] = 0.0
-                    ang[i, 1] = 0.0
-                    ang[i, 2] = 0.0
-                    code[i] = MS_POCKETED
-                    pocket_of[i] = q
-                    pocket_time[i] = t
-                    _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, q, speed)
-                    n_ev += 1
-                    if record:
-                        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang,
-                                                                  on_table, code, i)
-                    break
+            q = pocket_holding(pos[i, 0], pos[i, 1], pocket_xy, pocket_r)
+            if q >= 0:
+                speed = math.hypot(vel[i, 0], vel[i, 1])
+                on_table[i] = False
+                vel[i, 0] = 0.0
+                vel[i, 1] = 0.0
+                ang[i, 0] = 0.0
+                ang[i, 1] = 0.0
+                ang[i, 2] = 0.0
+                code[i] = MS_POCKETED
+                pocket_of[i] = q
+                pocket_time[i] = t
+                _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, q, speed)
+                n_ev += 1
+                if record:
+                    n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang,
+                                                              on_table, code, i)
 
         if record and t >= next_record - 1e-12:
             n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table,
