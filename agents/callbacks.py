@@ -1,5 +1,6 @@
-"""Training callbacks: fixed-seed evaluation with success rates, checkpoints with the replay buffer, a wall-clock
-budget and a clock that records steps/s and the time each evaluation figure was reached."""
+"""Training callbacks: fixed-seed evaluation with success rates, checkpoints with the replay buffer, a time budget
+(wall or CPU seconds) that schedules follow, and a clock that records steps/s and the time each evaluation figure
+was reached."""
 from __future__ import annotations
 
 import json
@@ -35,9 +36,10 @@ class SeededEvalCallback(EvalCallback):
     def _on_step(self) -> bool:
         if self.eval_freq > 0 and self.n_calls % self.eval_freq == 0:
             self.eval_env.seed(self.eval_seed)
-            t0 = time.perf_counter()
+            now = self.clock.now if self.clock is not None else time.perf_counter
+            t0 = now()
             cont = super()._on_step()
-            eval_time = time.perf_counter() - t0
+            eval_time = now() - t0
             if self.clock is not None:
                 self.clock.exclude(eval_time)
             success = float(np.mean(self._is_success_buffer)) if self._is_success_buffer else float("nan")
@@ -63,36 +65,66 @@ class SeededEvalCallback(EvalCallback):
         return True
 
 
+def _schedules(model: Any) -> list[Any]:
+    """The :class:`agents.config.Schedule` objects of a model (learning rate, PPO's clip ranges)."""
+    from .config import Schedule
+
+    found = []
+    for attr in ("lr_schedule", "clip_range", "clip_range_vf"):
+        obj = getattr(model, attr, None)
+        obj = getattr(obj, "value_schedule", obj)  # SB3 wraps schedules in FloatSchedule
+        if isinstance(obj, Schedule):
+            found.append(obj)
+    return found
+
+
 class TrainingClock(BaseCallback):
-    """Measures wall time and steps/s (evaluation time reported apart), stops at a wall-clock budget, and
-    writes ``progress.json`` in the run folder (milestones: first time each success level was reached)."""
+    """Measures time and steps/s (evaluation time reported apart), stops at a time budget, and writes
+    ``progress.json`` in the run folder (milestones: first time each success level was reached).
+
+    ``clock``: ``"wall"`` (elapsed seconds) or ``"cpu"`` (this process's CPU seconds, for runs compared on a
+    shared machine). With a budget, the model's :class:`agents.config.Schedule` schedules (``lin_``/``cos_``
+    learning rates, clip ranges) follow the clock: they reach their final value when the budget is spent."""
 
     MILESTONES = (0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95)
 
     def __init__(self, run_dir: Path, max_seconds: float = 0.0, offset_seconds: float = 0.0,
-                 offset_steps: int = 0, verbose: int = 0):
+                 offset_steps: int = 0, verbose: int = 0, clock: str = "wall"):
         super().__init__(verbose)
+        if clock not in ("wall", "cpu"):
+            raise ValueError(f"clock: unknown {clock!r}; use 'wall' or 'cpu'")
         self.run_dir = Path(run_dir)
         self.max_seconds = float(max_seconds)
-        self.offset_seconds = float(offset_seconds)  # wall time of earlier sessions (resume)
+        self.clock = clock
+        self.now = time.perf_counter if clock == "wall" else time.process_time
+        self.offset_seconds = float(offset_seconds)  # time of earlier sessions (resume)
         self.offset_steps = int(offset_steps)
-        self.t_start = time.perf_counter()
+        self.t_start = self.now()
         self.excluded = 0.0
         self.evals: list[dict[str, float]] = []
         self.milestones: dict[str, dict[str, float]] = {}
         self.stopped_by_budget = False
         self._start_steps = 0
+        self._schedules: list[Any] = []
 
     def _on_training_start(self) -> None:
-        self.t_start = time.perf_counter()
+        self.t_start = self.now()
         self._start_steps = int(self.model.num_timesteps)
+        self._schedules = _schedules(self.model)
+        self._set_schedules()
+
+    def _set_schedules(self) -> None:
+        if self.max_seconds > 0 and self._schedules:
+            remaining = min(max(1.0 - self.elapsed() / self.max_seconds, 0.0), 1.0)
+            for sched in self._schedules:
+                sched.clock_remaining = remaining
 
     def elapsed(self) -> float:
-        """Wall seconds since the run started (all sessions)."""
-        return self.offset_seconds + time.perf_counter() - self.t_start
+        """Seconds (of the budget's clock) since the run started (all sessions)."""
+        return self.offset_seconds + self.now() - self.t_start
 
     def session_seconds(self) -> float:
-        return time.perf_counter() - self.t_start
+        return self.now() - self.t_start
 
     def train_seconds(self) -> float:
         """Wall seconds of this session minus evaluations."""
@@ -120,6 +152,7 @@ class TrainingClock(BaseCallback):
             "session_seconds": self.session_seconds(),
             "eval_seconds": self.excluded,
             "train_steps_per_second": self.steps_per_second() if self.model is not None else 0.0,
+            "clock": self.clock,
             "stopped_by_budget": self.stopped_by_budget,
             "evaluations": self.evals,
             "milestones": self.milestones,
@@ -129,10 +162,11 @@ class TrainingClock(BaseCallback):
         _atomic_write_text(self.run_dir / "progress.json", json.dumps(self.summary(), indent=2))
 
     def _on_step(self) -> bool:
+        self._set_schedules()
         if self.max_seconds > 0 and self.elapsed() >= self.max_seconds:
             self.stopped_by_budget = True
             if self.verbose:
-                print(f"wall-clock budget of {self.max_seconds:.0f} s reached at {self.num_timesteps} steps",
+                print(f"{self.clock} budget of {self.max_seconds:.0f} s reached at {self.num_timesteps} steps",
                       flush=True)
             return False
         return True
@@ -169,7 +203,8 @@ class RunCheckpoint(BaseCallback):
         return True
 
     def save_now(self, tag: str | None = None) -> Path:
-        t0 = time.perf_counter()
+        now = self.clock.now if self.clock is not None else time.perf_counter
+        t0 = now()
         self.dir.mkdir(parents=True, exist_ok=True)
         steps = int(self.model.num_timesteps)
         name = f"model_{steps}_steps" if tag is None else f"model_{tag}"
@@ -193,7 +228,7 @@ class RunCheckpoint(BaseCallback):
         self._last_step = steps
         self._last_time = time.perf_counter()
         if self.clock is not None:
-            self.clock.exclude(time.perf_counter() - t0)
+            self.clock.exclude(now() - t0)
         if self.verbose:
             print(f"checkpoint: {model_path} ({steps} steps)", flush=True)
         return model_path

@@ -8,7 +8,7 @@ A config file is a YAML mapping. The entry named after the env id is in the RL Z
       n_timesteps: !!float 1e6
       policy: MlpPolicy
       n_envs: 8
-      learning_rate: !!float 1e-3        # or "lin_1e-3" for a linear schedule
+      learning_rate: !!float 1e-3        # or "lin_1e-3" / "cos_3e-3_1e-5": schedules (see Schedule)
       batch_size: 256
       policy_kwargs: "dict(net_arch=[128, 128])"
       env_kwargs: {action_type: ghost, observation_type: features}   # RL Zoo >= 2.7 reads this
@@ -27,7 +27,8 @@ A config file is a YAML mapping. The entry named after the env id is in the RL Z
 
 Zoo keys understood here: ``n_timesteps``, ``policy``, ``n_envs``, ``env_kwargs``, ``env_wrapper`` (a dotted
 name, a list of them, or ``{name: kwargs}`` items), ``normalize`` (bool, dict or "dict(...)" string),
-``policy_kwargs`` (dict or "dict(...)" string), ``learning_rate`` / ``clip_range`` (number or ``lin_<x>``),
+``policy_kwargs`` (dict or "dict(...)" string), ``learning_rate`` / ``clip_range`` (number, ``lin_<x>[_<final>]`` or
+``cos_<x>[_<final>]``: :class:`Schedule`, which follows the wall-clock budget too),
 ``train_freq`` (int or list), ``noise_type`` / ``noise_std`` (action noise), ``monitor_kwargs``,
 ``frame_stack`` (not supported: an error). Everything else goes to the algorithm's constructor.
 """
@@ -35,6 +36,7 @@ from __future__ import annotations
 
 import copy
 import importlib
+import math
 from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any, Callable, Mapping
@@ -44,6 +46,7 @@ import yaml
 SECTION = "billiards"
 ALGOS = ("sac", "td3", "ppo", "a2c", "ddpg")
 OFF_POLICY = ("sac", "td3", "ddpg")
+BUDGET_CLOCKS = ("wall", "cpu")
 #: Zoo keys consumed by the training script (never passed to the algorithm).
 ZOO_META_KEYS = ("n_timesteps", "policy", "n_envs", "env_kwargs", "env_wrapper", "normalize", "monitor_kwargs",
                  "noise_type", "noise_std", "frame_stack", "callback", "vec_env_wrapper")
@@ -63,6 +66,9 @@ class TrainSettings:
     name: str | None = None  #: run folder prefix (default: derived from the config file name)
     run_root: str = "runs"  #: where run folders are created
     max_seconds: float = 0.0  #: wall-clock budget for training (0 = until n_timesteps)
+    #: What max_seconds counts: "wall" (elapsed time) or "cpu" (this process's CPU time: comparable runs on a
+    #: machine shared with other jobs; equal to wall time on an idle one with torch and numba on one thread).
+    budget_clock: str = "wall"
     eval_freq: int = 20_000  #: env steps (all envs together) between evaluations; 0 = no evaluation
     n_eval_episodes: int = 500
     n_eval_envs: int = 10  #: parallel eval envs (batched predictions)
@@ -86,6 +92,9 @@ class TrainSettings:
         if unknown:
             raise TrainConfigError(f"{source}: unknown key(s) {unknown} in '{SECTION}:'; allowed: {sorted(known)}")
         s = cls(**data)
+        if s.budget_clock not in BUDGET_CLOCKS:
+            raise TrainConfigError(f"{source}: {SECTION}.budget_clock: unknown {s.budget_clock!r}; use one of "
+                                   f"{BUDGET_CLOCKS}")
         if s.algo not in ALGOS:
             raise TrainConfigError(f"{source}: {SECTION}.algo: unknown algorithm {s.algo!r}; use one of {ALGOS}")
         return s
@@ -220,11 +229,46 @@ def wrapper_factory(spec: Any) -> Callable[[Any], Any] | None:
     return wrap
 
 
-def linear_schedule(initial: float) -> Callable[[float], float]:
-    def schedule(progress_remaining: float) -> float:
-        return progress_remaining * initial
+#: Schedule shapes of ``<shape>_<initial>[_<final>]`` values (``lin_3e-3``, ``cos_3e-3_1e-5``).
+SCHEDULES = ("lin", "cos")
 
-    return schedule
+
+class Schedule:
+    """A learning-rate (or clip-range) schedule from ``initial`` to ``final`` over the run: ``lin`` (straight line)
+    or ``cos`` (half a cosine: flat at both ends). SB3 calls it with the progress remaining (1 -> 0, by steps);
+    :class:`agents.callbacks.TrainingClock` also sets :attr:`clock_remaining` (1 -> 0 over a wall-clock budget),
+    and the schedule follows whichever is further along, so it reaches ``final`` when the budget runs out."""
+
+    def __init__(self, shape: str, initial: float, final: float = 0.0) -> None:
+        if shape not in SCHEDULES:
+            raise TrainConfigError(f"schedule: unknown shape {shape!r}; use one of {SCHEDULES}")
+        self.shape, self.initial, self.final = shape, float(initial), float(final)
+        self.clock_remaining = 1.0  #: set by the training clock (1 at the start, 0 when the budget is spent)
+
+    def __call__(self, progress_remaining: float) -> float:
+        q = min(max(min(float(progress_remaining), self.clock_remaining), 0.0), 1.0)
+        w = q if self.shape == "lin" else 0.5 * (1.0 - math.cos(math.pi * q))
+        return self.final + (self.initial - self.final) * w
+
+    def __repr__(self) -> str:
+        return f"Schedule({self.shape!r}, {self.initial}, {self.final})"
+
+
+def linear_schedule(initial: float) -> Callable[[float], float]:
+    """``lin_<initial>``: from ``initial`` down to 0 (RL Zoo's linear schedule)."""
+    return Schedule("lin", initial)
+
+
+def parse_schedule(key: str, value: str) -> Schedule:
+    """A ``<shape>_<initial>[_<final>]`` string (``lin_1e-3``, ``cos_3e-3_1e-5``) as a :class:`Schedule`."""
+    shape, *numbers = value.split("_")
+    try:
+        if shape not in SCHEDULES or len(numbers) not in (1, 2):
+            raise ValueError
+        return Schedule(shape, *(float(x) for x in numbers))
+    except ValueError:
+        raise TrainConfigError(f"{key}: unknown schedule {value!r}; use a number, 'lin_<initial>[_<final>]' or "
+                               "'cos_<initial>[_<final>]' (e.g. 'cos_3e-3_1e-5')") from None
 
 
 @dataclass
@@ -275,10 +319,7 @@ def parse_hyperparams(cfg: TrainConfig) -> AlgoSetup:
     for key in ("learning_rate", "clip_range", "clip_range_vf"):
         v = h.get(key)
         if isinstance(v, str):
-            kind, _, value = v.partition("_")
-            if kind != "lin":
-                raise TrainConfigError(f"{key}: unknown schedule {v!r}; use a number or 'lin_<initial>'")
-            h[key] = linear_schedule(float(value))
+            h[key] = parse_schedule(key, v)
         elif isinstance(v, (int, float)) and not isinstance(v, bool):
             h[key] = float(v)
     for key in ("policy_kwargs", "replay_buffer_kwargs"):
@@ -294,4 +335,5 @@ def parse_hyperparams(cfg: TrainConfig) -> AlgoSetup:
 
 
 __all__ = ["SECTION", "ALGOS", "OFF_POLICY", "TrainConfigError", "TrainSettings", "TrainConfig",
-           "load_train_config", "parse_hyperparams", "wrapper_factory", "resolve_class", "AlgoSetup"]
+           "load_train_config", "parse_hyperparams", "wrapper_factory", "resolve_class", "AlgoSetup", "Schedule",
+           "SCHEDULES", "linear_schedule", "parse_schedule"]

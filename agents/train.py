@@ -257,7 +257,8 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
             raise TrainConfigError(f"{cfg.source}: {s.algo.upper()} does not accept these hyperparameters "
                                    f"({exc}); check the '{cfg.env_id}:' entry") from None
 
-    clock = TrainingClock(run_dir, s.max_seconds, offset_seconds, offset_steps, verbose=1 if not quiet else 0)
+    clock = TrainingClock(run_dir, s.max_seconds, offset_seconds, offset_steps, verbose=1 if not quiet else 0,
+                          clock=s.budget_clock)
     ckpt = RunCheckpoint(run_dir, s.checkpoint_freq, s.checkpoint_seconds, s.keep_checkpoints,
                          s.save_replay_buffer, clock, verbose=0)
     callbacks: list[Any] = [clock, ckpt]
