@@ -17,7 +17,7 @@ from __future__ import annotations
 import contextlib
 import math
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
@@ -106,9 +106,10 @@ def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = No
     hit = res.first_contact >= 0
     n = len(res.time)
     if not game:
-        nxt = np.where(scratch, -1, 1)
+        # Without rules the shooter plays on only after a pot without a scratch: a miss earns no position (it
+        # must never outrank a pot), and a cleared table has no next shot.
         left = [[j for j in ctx.targets if res.on_table[k, j]] for k in range(n)]
-        nxt = np.where([bool(t) for t in left], nxt, -1)
+        nxt = np.where((pots > 0) & ~scratch & np.array([bool(t) for t in left]), 1, -1)
         return pots, scratch, hit, _value(pots, scratch, hit), res, nxt, left
     ev = res.events
     table = np.stack([ev.kind, ev.ball, ev.other], axis=1)
@@ -286,7 +287,10 @@ def _positions(ctx: ShotContext, st: SearchSettings, res: BatchResult, values: n
 
 
 def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
-                rng: np.random.Generator | None = None, windows: dict | None = None) -> tuple[float, float, Outcome]:
+                rng: np.random.Generator | None = None, windows: dict | None = None,
+                playable: Callable[[list[tuple[float, float, float, float, str]]],
+                                   list[tuple[float, float, float, float, str]]] | None = None
+                ) -> tuple[float, float, Outcome]:
     """Simulate candidate shots with the exact solver (in batches: one compiled call for all candidates, one for
     the noisy re-runs of the best) and pick the best.
 
@@ -297,14 +301,19 @@ def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
     turn is kept (:func:`next_shot_ease`), minus ``safety_weight`` times the opponent's when it is lost without a
     foul. The ``top_k`` best totals are re-simulated ``robust_samples`` times under the shot noise (the env's, or the
     small ``robust_*`` defaults), and the shot with the best mean total (the unperturbed run counted as one sample)
-    is played. Returns ``(angle, speed, outcome)``; the outcome holds the tip offsets. ``windows``: a pocket-window
-    cache for :func:`next_shot_ease` (one per table, kept by the player across its decisions).
+    is played; in an env without shot noise the unperturbed total comes first and the mean only breaks ties.
+    Returns ``(angle, speed, outcome)``; the outcome holds the tip offsets. ``windows``: a pocket-window cache for
+    :func:`next_shot_ease` (one per table, kept by the player across its decisions). ``playable``: maps
+    the candidates to the shots an action type can express (see :func:`playable_shots`), so the search values what
+    will be played.
     """
     st = settings or SearchSettings()
     rng = rng or np.random.default_rng(0)
     lo, hi = ctx.speed_range
     spin = ctx.physics.friction == "spin"
     cands = _candidates(ctx, st)
+    if playable is not None:
+        cands = playable(cands)
     c_arr = np.array([c[:4] for c in cands], dtype=float)
     pots, scratch, hit, values, res, nxt, nxt_targets = _simulate_judged(ctx, c_arr[:, 0], c_arr[:, 1],
                                                                          c_arr[:, 2], c_arr[:, 3])
@@ -344,9 +353,13 @@ def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
                                                                       n_arr[:, 3])
         n_term, _ = _positions(ctx, st, n_res, n_values, n_nxt, n_targets, np.arange(len(noisy)), windows)
         n_totals = n_values + n_term
+        # Without shot noise in the env the unperturbed outcome is what happens: the noisy runs only break ties
+        # (towards shots with margin); with noise, every run is a sample of what may happen.
+        exact = ctx.angle_noise == 0.0 and ctx.speed_noise == 0.0 and (not spin or ctx.tip_noise == 0.0)
         for q, o in enumerate(shortlist):
             block = n_totals[q * st.robust_samples:(q + 1) * st.robust_samples]
-            o.robust = float((o.total + block.sum()) / (1 + len(block)))
+            mean = float((o.total + block.sum()) / (1 + len(block)))
+            o.robust = o.total + 0.5 * mean if exact else mean
     else:
         for o in shortlist:
             o.robust = o.total
@@ -403,6 +416,28 @@ def placement_candidates(env: Any, ctx: ShotContext, n: int, backs: tuple[float,
     return out
 
 
+def playable_shots(env: Any, place: tuple[float, float] | None = None
+                   ) -> Callable[[list[tuple[float, float, float, float, str]]],
+                                 list[tuple[float, float, float, float, str]]] | None:
+    """For an env whose action type cannot express every cue direction (``ghost`` aim: only direct hits, within
+    ``ghost_max_angle``), the map of candidates ``(angle, speed, side, top, source)`` to the shots their nearest
+    actions play (through the env's action, float32 as an agent's); None when every shot is its own action
+    (``absolute`` and ``relative`` aim)."""
+    u = env.unwrapped
+    kind = getattr(u, "action_type", None)
+    if kind is None or kind.name in ("absolute", "relative"):
+        return None
+
+    def play(cands: list[tuple[float, float, float, float, str]]) -> list[tuple[float, float, float, float, str]]:
+        out = []
+        for angle, speed, side, top, src in cands:
+            s = u.shot_from_action(to_action(env, angle, speed, place=place, side=side, top=top))
+            out.append((s.angle, s.speed, s.side, s.top, src))
+        return out
+
+    return play
+
+
 class SearchPlayer:
     """Simulates candidate shots with the env's exact solver and plays the best for the position it leaves (see
     :func:`search_shot`)."""
@@ -440,7 +475,8 @@ class SearchPlayer:
         best: tuple[Any, float, float, Outcome] | None = None
         for place in places:
             with u.cue_moved_to(place) if place is not None else contextlib.nullcontext():
-                angle, speed, out = search_shot(ctx, self.settings, self.rng, self._windows)
+                angle, speed, out = search_shot(ctx, self.settings, self.rng, self._windows,
+                                                playable_shots(env, place))
             if best is None or out.robust > best[3].robust:
                 best = (place, angle, speed, out)
         assert best is not None
@@ -461,5 +497,5 @@ class SearchPlayer:
         return k if k >= 0 else None
 
 
-__all__ = ["Outcome", "SearchSettings", "search_shot", "SearchPlayer", "next_shot_ease", "placement_candidates",
-           "SPIN_VARIANTS"]
+__all__ = ["Outcome", "SearchSettings", "search_shot", "SearchPlayer", "playable_shots", "next_shot_ease",
+           "placement_candidates", "SPIN_VARIANTS"]

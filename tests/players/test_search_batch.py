@@ -44,3 +44,47 @@ def test_search_is_deterministic_and_plays_a_pot():
     assert a1[:2] == a2[:2] and a1[2].value == a2[2].value
     _, _, _, info = env.step(env.unwrapped.action_from_shot(a1[0], a1[1]))[1:]
     assert info["pocketed"] == ("1",)
+
+
+def test_without_rules_a_miss_earns_no_position_and_never_outranks_a_pot():
+    """One ball, no noise: on every table where the geometric player pots, the search's chosen shot pots unperturbed
+    (its total counts the pot, not the ease of a next shot after a miss)."""
+    from billiards_env.players import make_player
+
+    env = gym.make("BilliardsOneBall-v0", speed_max=1.8)
+    search, geometric = make_player("search"), make_player("geometric")
+    checked = 0
+    for seed in range(40):
+        env.reset(seed=seed)
+        geo_pots = env.step(geometric.act(env, None))[4]["is_success"]
+        env.reset(seed=seed)
+        info = env.step(search.act(env, None))[4]
+        if geo_pots:
+            checked += 1
+            assert search.last.pots == 1 and search.last.total >= 1.0, seed
+            assert info["is_success"], seed
+    assert checked >= 30
+
+
+def test_search_values_the_shots_a_ghost_action_can_play():
+    """With ghost aim (only direct hits within ghost_max_angle), every candidate is mapped to the shot of its
+    nearest action, so the shot searched is the shot played (to float32 precision)."""
+    from billiards_env.players import make_player
+    from billiards_env.players.search import playable_shots
+
+    env = gym.make("BilliardsOneBall-v0", action_type="ghost", speed_max=1.8)
+    assert playable_shots(gym.make("BilliardsOneBall-v0")) is None  # absolute aim: every shot is an action
+    player = make_player("search")
+    for seed in range(6):
+        env.reset(seed=seed)
+        action = player.act(env, None)
+        played = env.unwrapped.shot_from_action(action)
+        assert played.angle == pytest.approx(player.last.angle, abs=1e-5)
+        assert played.speed == pytest.approx(player.last.speed, rel=1e-5)
+        play = playable_shots(env)
+        # A kick (cue line missing the object ball) cannot be expressed: it comes back as a direct hit.
+        u = env.unwrapped
+        cue, obj = u.balls.pos[0], u.balls.pos[1]
+        away = math.atan2(cue[1] - obj[1], cue[0] - obj[0])
+        (angle, speed, *_), = play([(away, 1.0, 0.0, 0.0, "kick")])
+        assert abs(math.remainder(angle - away, 2 * math.pi)) > 1.0
