@@ -13,48 +13,6 @@ from .spin_motion import sample_states as _sample_spin_states
 
 
 @njit(cache=True)
-def _sample(sc_t, sc_ball, sc_state, n_balls, times, law, a, k, v_min, interpolate):
-    n_t = times.shape[0]
-    pos = np.empty((n_t, n_balls, 2))
-    on = np.zeros((n_t, n_balls), np.bool_)
-    last = np.full(n_balls, -1, np.int64)
-    nxt = np.full(n_balls, -1, np.int64)
-    e = 0
-    for q in range(n_t):
-        tq = times[q]
-        while e < sc_t.shape[0] and sc_t[e] <= tq:
-            last[sc_ball[e]] = e
-            e += 1
-        for b in range(n_balls):
-            r = last[b]
-            if r < 0:
-                pos[q, b, 0] = np.nan
-                pos[q, b, 1] = np.nan
-                continue
-            x = sc_state[r, 0]
-            y = sc_state[r, 1]
-            vx = sc_state[r, 2]
-            vy = sc_state[r, 3]
-            on[q, b] = sc_state[r, 4] > 0.5
-            dt = tq - sc_t[r]
-            if interpolate:
-                # Snapshot log (step solver): linear interpolation to the ball's next snapshot.
-                m = nxt[b] if nxt[b] > r else r + 1
-                while m < sc_t.shape[0] and sc_ball[m] != b:
-                    m += 1
-                nxt[b] = m
-                if m < sc_t.shape[0] and sc_t[m] > sc_t[r] and on[q, b]:
-                    w = dt / (sc_t[m] - sc_t[r])
-                    x += w * (sc_state[m, 0] - x)
-                    y += w * (sc_state[m, 1] - y)
-            else:
-                x, y, _, _ = advance(x, y, vx, vy, dt, law, a, k, v_min)
-            pos[q, b, 0] = x
-            pos[q, b, 1] = y
-    return pos, on
-
-
-@njit(cache=True)
 def _sample_full(sc_t, sc_ball, sc_state, n_balls, times, law, a, k, v_min, interpolate):
     """Full states ``x y vx vy wx wy wz`` (T, N, 7), on-table flags and motion-state codes from a log of the
     rolling or drag law (exact: closed form; the spins are 0 and a moving ball counts as rolling) or from a
@@ -136,12 +94,8 @@ class Trajectory:
 
     def sample(self, times: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Positions ``(T, N, 2)`` and on-table flags ``(T, N)`` at ascending ``times`` (s)."""
-        t = self._times(times, "sample")
-        if self.law == SPIN and not self.interpolate:
-            states, on, _ = self.sample_states(t)
-            return np.ascontiguousarray(states[:, :, :2]), on
-        return _sample(self.times, self.ball, self.state, self.n_balls, t, self.law, self.deceleration,
-                       self.drag_k, self.min_speed, self.interpolate)
+        states, on, _ = self.sample_states(self._times(times, "sample"))
+        return np.ascontiguousarray(states[:, :, :2]), on
 
     def sample_states(self, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Full states at ascending ``times`` (s): ``(T, N, 7)`` columns ``x, y, vx, vy, wx, wy, wz`` (angular
