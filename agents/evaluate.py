@@ -312,6 +312,15 @@ def _monitor_success(run_dir: Path) -> tuple[np.ndarray, np.ndarray] | None:
     return steps[w - 1:], roll
 
 
+def _clock_name(run_dir: Path, meta: dict[str, Any] | None = None) -> str:
+    """What a run's ``wall_seconds`` count: ``wall`` or ``CPU`` (its ``billiards.budget_clock``)."""
+    clock = (meta or {}).get("clock")
+    prog = Path(run_dir) / "progress.json"
+    if clock is None and prog.exists():
+        clock = json.loads(prog.read_text()).get("clock")
+    return "CPU" if clock == "cpu" else "wall"
+
+
 def learning_curve(run_dir: Path, path: Path, baselines: dict[str, float] | None = None,
                    title: str | None = None) -> Path | None:
     """Plot success rate against env steps (and wall time on a top axis) for a training run."""
@@ -349,7 +358,7 @@ def learning_curve(run_dir: Path, path: Path, baselines: dict[str, float] | None
     if wall is not None and len(wall[0]) > 1:
         sec = ax.secondary_xaxis("top", functions=(lambda x: np.interp(x, wall[0], wall[1]),
                                                    lambda s: np.interp(s, wall[1], wall[0])))
-        sec.set_xlabel("wall-clock seconds (incl. evaluation)")
+        sec.set_xlabel(f"{_clock_name(run_dir)} seconds (incl. evaluation)")
     ax.set_title(title or run_dir.name, fontsize=10)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -403,11 +412,13 @@ def evaluate(players: list[PlayerSpec], episodes: int, seed: int, out_dir: Path 
         if spec.run_dir is not None and (spec.run_dir / "run.json").exists():
             meta = json.loads((spec.run_dir / "run.json").read_text())
             ms = meta.get("milestones") or {}
+            clock = _clock_name(spec.run_dir, meta)
             txt = (f"`{spec.run_dir}`: {meta.get('algo', '?').upper()}, {meta.get('timesteps', '?')} env steps in "
-                   f"{meta.get('wall_seconds', 0):.0f} s wall ({meta.get('train_steps_per_second', 0):.0f} env "
+                   f"{meta.get('wall_seconds', 0):.0f} s {clock} ({meta.get('train_steps_per_second', 0):.0f} env "
                    f"steps/s excluding evaluation), model `{spec.model_path}`.")
             if ms:
-                txt += "\n\nFirst evaluation reaching each success level:\n\n| level | env steps | wall s |\n|---|---|---|\n"
+                txt += ("\n\nFirst evaluation reaching each success level:\n\n"
+                        f"| level | env steps | {clock} s |\n|---|---|---|\n")
                 txt += "\n".join(f"| {k} | {v['timesteps']} | {v['wall_seconds']:.0f} |" for k, v in sorted(ms.items()))
             extra[f"Training: {spec.label}"] = txt
             report.setdefault("training", {})[spec.label] = {k: meta.get(k) for k in (

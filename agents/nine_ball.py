@@ -35,7 +35,8 @@ from .train import REPO_ROOT
 
 PRACTICE_CONFIG = REPO_ROOT / "configs" / "train" / "nine_ball_sac.yaml"
 MATCH_CONFIG = REPO_ROOT / "configs" / "train" / "nine_ball_sac_vs_geometric.yaml"
-#: Training budget (wall seconds, both phases) of the default job.
+#: Training budget of the default job: CPU seconds of the training process, both phases (the configs' budget_clock;
+#: wall seconds on an idle machine, where torch and numba run on one thread).
 DEFAULT_SECONDS = 1800.0
 BASELINES = ("random", "geometric", "search")
 SETTINGS = (("no_noise", "0"), ("fastfiz", "fastfiz"))
@@ -229,9 +230,9 @@ def markdown(report: dict[str, Any], leagues: dict[str, dict[str, Any]], trained
     if tr:
         ph = tr["phases"]
         lines += [f"Training (SB3 SAC, candidates action/observation types, spin model, FastFiz-like noise): run-out "
-                  f"practice {ph['practice']['timesteps']} shots in {ph['practice']['wall_seconds']:.0f} s, then "
+                  f"practice {ph['practice']['timesteps']} shots in {ph['practice']['wall_seconds']:.0f} CPU s, then "
                   f"games against the geometric player up to {ph['vs_geometric']['timesteps']} shots, "
-                  f"{ph['vs_geometric']['wall_seconds']:.0f} s in all.", ""]
+                  f"{ph['vs_geometric']['wall_seconds']:.0f} CPU s in all.", ""]
     lines += ["## Targets", "", "| target | figure (win rate against geometric [95% Wilson interval]) | verdict |",
               "|---|---|---|", *target_lines(leagues, trained), ""]
     n = report["neutral"]

@@ -337,6 +337,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
         "finished": time.strftime("%Y-%m-%dT%H:%M:%S"),
         "timesteps": int(model.num_timesteps),
         "wall_seconds": summary["wall_seconds"],
+        "clock": summary["clock"],  # what wall_seconds counts: "wall" or "cpu" (billiards.budget_clock)
         "train_steps_per_second": summary["train_steps_per_second"],
         "eval_seconds": summary["eval_seconds"],
         "stopped_by_budget": summary["stopped_by_budget"],
