@@ -419,22 +419,27 @@ def placement_candidates(env: Any, ctx: ShotContext, n: int, backs: tuple[float,
 def playable_shots(env: Any, place: tuple[float, float] | None = None
                    ) -> Callable[[list[tuple[float, float, float, float, str]]],
                                  list[tuple[float, float, float, float, str]]] | None:
-    """For an env whose action type cannot express every cue direction (``ghost`` aim: only direct hits, within
-    ``ghost_max_angle``), the map of candidates ``(angle, speed, side, top, source)`` to the shots their nearest
-    actions play (through the env's action, float32 as an agent's); None when every shot is its own action
-    (``absolute`` and ``relative`` aim)."""
+    """The map of candidates ``(angle, speed, side, top, source)`` to the shots their actions play: through the
+    env's action type and back, float32 as every action is. The search then values exactly what the env will
+    play: a break or a hard shot through a cluster is chaotic (a 1e-8 rad change of the cue angle, the float32
+    rounding of an action, can drop the 8), and an action type may not express every direction (``ghost`` aim:
+    only direct hits, within ``ghost_max_angle``). None for an env without action types."""
     u = env.unwrapped
-    kind = getattr(u, "action_type", None)
-    if kind is None or kind.name in ("absolute", "relative"):
+    if getattr(u, "action_type", None) is None:
         return None
 
     def play(cands: list[tuple[float, float, float, float, str]]) -> list[tuple[float, float, float, float, str]]:
         out = []
         for angle, speed, side, top, src in cands:
-            s = u.shot_from_action(to_action(env, angle, speed, place=place, side=side, top=top))
+            action = to_action(env, angle, speed, place=place, side=side, top=top)
+            s = u.shot_from_action(action)
             out.append((s.angle, s.speed, s.side, s.top, src))
+            play.actions[(s.angle, s.speed, s.side, s.top)] = action
         return out
 
+    #: The action of every shot returned (a round trip is not always exact: near a full hit the ghost aim's
+    #: float32 resolution is finer than its inverse), so the player plays the very action it searched.
+    play.actions = {}  # type: ignore[attr-defined]
     return play
 
 
@@ -474,16 +479,21 @@ class SearchPlayer:
             places = placement_candidates(env, ctx, max(self.settings.placements, 1), sigma=sigma)
         best: tuple[Any, float, float, Outcome] | None = None
         for place in places:
+            play = playable_shots(env, place)
             with u.cue_moved_to(place) if place is not None else contextlib.nullcontext():
-                angle, speed, out = search_shot(ctx, self.settings, self.rng, self._windows,
-                                                playable_shots(env, place))
+                angle, speed, out = search_shot(ctx, self.settings, self.rng, self._windows, play)
             if best is None or out.robust > best[3].robust:
-                best = (place, angle, speed, out)
+                best = (place, angle, speed, out, play)
         assert best is not None
-        place, angle, speed, self.last = best
+        place, angle, speed, self.last, play = best
         with u.cue_moved_to(place) if place is not None else contextlib.nullcontext():
             pocket = self._called_pocket(ctx, angle, speed, self.last)
-        return to_action(env, angle, speed, place=place, pocket=pocket, side=self.last.side, top=self.last.top)
+        action = to_action(env, angle, speed, place=place, pocket=pocket, side=self.last.side, top=self.last.top)
+        searched = None if play is None else play.actions.get((angle, speed, self.last.side, self.last.top))
+        if searched is not None:  # the shot dims of the very action searched (the call and place stay)
+            shot_dims = 4 if getattr(u.action_type, "spin", False) else 2
+            action[:shot_dims] = searched[:shot_dims]
+        return action
 
     @staticmethod
     def _called_pocket(ctx: ShotContext, angle: float, speed: float, out: Outcome) -> int | None:
