@@ -422,7 +422,7 @@ def evaluate(players: list[PlayerSpec], episodes: int, seed: int, out_dir: Path 
                 txt += "\n".join(f"| {k} | {v['timesteps']} | {v['wall_seconds']:.0f} |" for k, v in sorted(ms.items()))
             extra[f"Training: {spec.label}"] = txt
             report.setdefault("training", {})[spec.label] = {k: meta.get(k) for k in (
-                "algo", "timesteps", "wall_seconds", "train_steps_per_second", "milestones", "best_eval",
+                "algo", "timesteps", "wall_seconds", "clock", "train_steps_per_second", "milestones", "best_eval",
                 "env_kwargs", "env_wrapper", "config_source")}
     if out_dir is not None:
         out_dir = Path(out_dir)

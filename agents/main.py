@@ -6,10 +6,11 @@
     python -m agents.main --three-balls         # also train and evaluate the three-ball scene afterwards
     python -m agents.main --game nine-ball      # the 9-ball job instead: agents/nine_ball.py
 
-Steps: (1) ``agents.train`` with ``configs/train/one_ball_sac.yaml`` under a wall-clock budget (``--seconds``,
-default 780 s of training), run folder ``runs/main/one_ball_sac-<timestamp>/``; (2) ``agents.evaluate`` of the
-trained agent (its best evaluation checkpoint), the ``search``, ``geometric`` and ``random`` baselines on the
-same ``--episodes`` tables (fixed seeds); (3) the table on stdout and the files in ``runs/main/``:
+Steps: (1) ``agents.train`` with ``configs/train/one_ball_sac.yaml`` under a time budget (``--seconds``,
+default 780 CPU seconds of training, the config's ``budget_clock``), run folder
+``runs/main/one_ball_sac-<timestamp>/``; (2) ``agents.evaluate`` of the trained agent (its best evaluation
+checkpoint), the ``search``, ``geometric`` and ``random`` baselines on the same ``--episodes`` tables (fixed
+seeds); (3) the table on stdout and the files in ``runs/main/``:
 ``report.md``, ``report.json``, ``learning_curve.png``, ``episodes.gif`` (``runs/main/three_balls/`` likewise).
 """
 from __future__ import annotations
@@ -54,7 +55,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="python -m agents.main", description=__doc__.split("\n\n")[0])
     p.add_argument("--config", default=str(DEFAULT_CONFIG), help="training config of the one-ball agent")
     p.add_argument("--seconds", type=float, default=None,
-                   help="training wall-clock budget (default: the config's max_seconds)")
+                   help="training time budget, in the config's budget_clock (default: the config's max_seconds)")
     p.add_argument("--episodes", type=int, default=1000, help="evaluation episodes per player")
     p.add_argument("--seed", type=int, default=100_000, help="evaluation episode k uses reset(seed=seed + k)")
     p.add_argument("--out", default=str(REPO_ROOT / "runs" / "main"), help="report folder (and run root)")
@@ -101,7 +102,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             lo, hi = r["success_ci"]
             print(f"  {r['label']:<48} {100 * r['success_rate']:5.1f}%  [{100 * lo:.1f}, {100 * hi:.1f}]")
         if tr:
-            print(f"  training: {tr.get('timesteps')} env steps, {tr.get('wall_seconds', 0):.0f} s wall, "
+            clock = "CPU" if tr.get("clock") == "cpu" else "wall"
+            print(f"  training: {tr.get('timesteps')} env steps, {tr.get('wall_seconds', 0):.0f} s {clock}, "
                   f"{tr.get('train_steps_per_second', 0):.0f} env steps/s")
         for k, v in rep["files"].items():
             print(f"  {k}: {v}")
