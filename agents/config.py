@@ -37,10 +37,12 @@ from __future__ import annotations
 import copy
 import importlib
 import math
+import sys
 from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any, Callable, Mapping
 
+import cloudpickle
 import yaml
 
 SECTION = "billiards"
@@ -252,6 +254,11 @@ class Schedule:
 
     def __repr__(self) -> str:
         return f"Schedule({self.shape!r}, {self.initial}, {self.final})"
+
+
+# A model saved by SB3 pickles its learning-rate schedule. Pickled by value (cloudpickle, as SB3 saves), a
+# :class:`Schedule` loads where this training code is not importable: ``SAC.load(path)`` in any script.
+cloudpickle.register_pickle_by_value(sys.modules[__name__])
 
 
 def linear_schedule(initial: float) -> Callable[[float], float]:

@@ -80,3 +80,28 @@ def test_the_cpu_clock_counts_this_process_only():
     assert tc.now is time.process_time
     with pytest.raises(ValueError, match="clock"):
         TrainingClock(".", clock="gpu")
+
+
+def test_a_model_trained_with_a_schedule_loads_without_the_training_code(tmp_path):
+    """SB3 pickles the schedule into the model; it is pickled by value, so ``SAC.load`` works in a process where
+    ``agents`` cannot be imported (a user's script anywhere)."""
+    import os
+    import subprocess
+    import sys
+
+    import gymnasium as gym
+    from stable_baselines3 import SAC
+
+    import billiards_env  # noqa: F401
+
+    model = SAC("MlpPolicy", gym.make("BilliardsOneBall-v0"), learning_rate=parse_schedule("learning_rate",
+                                                                                            "cos_3e-3_1e-5"))
+    path = tmp_path / "model.zip"
+    model.save(path)
+    code = ("import sys; from stable_baselines3 import SAC; m = SAC.load(sys.argv[1]); "
+            "assert 'agents' not in sys.modules; print(m.lr_schedule(1.0))")
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    out = subprocess.run([sys.executable, "-c", code, str(path)], cwd=tmp_path, env=env, capture_output=True,
+                         text=True, timeout=120)
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert float(out.stdout.strip()) == pytest.approx(3e-3)
