@@ -13,9 +13,10 @@ Steps:
    the spin model with the FastFiz-like shot noise, in the ``candidates`` action and observation types.
 2. The neutral policy (action 0: the geometric player's own choice in that action type) on the same evaluation
    episodes, for the learning curve's reference lines.
-3. The league (:mod:`agents.league`) of random, geometric, search and the trained agent (its final model), under the
-   spin model, without noise and with the FastFiz-like noise: head-to-head win rates with Wilson intervals, Elo,
-   break-and-run and run-out-from-ball-in-hand rates, decision times.
+3. The league (:mod:`agents.league`) of random, geometric, search and the trained agent (its best evaluation
+   checkpoint: :func:`_league_model`), under the spin model, without noise and with the FastFiz-like noise:
+   head-to-head win rates with Wilson intervals, Elo, break-and-run and run-out-from-ball-in-hand rates, decision
+   times.
 4. Files in ``<out>`` (default ``runs/main/nine_ball``): ``report.md`` / ``report.json`` (the targets, each with its
    figure), ``league_no_noise.md/json``, ``league_fastfiz.md/json``, ``learning_curve.png`` and ``game.gif`` (the
    trained agent playing a rack against the geometric player, with the game panel).
@@ -179,6 +180,16 @@ def target_lines(leagues: dict[str, dict[str, Any]], trained: str) -> list[str]:
     return lines
 
 
+def _league_model(run_dir: Path) -> Path:
+    """The model a run plays the league with: its best evaluation checkpoint (EvalCallback's, on the evaluation
+    games against the geometric player: seeds apart from the league's racks), as the one-ball job plays; else the
+    final model; else the folder itself (an RLlib run)."""
+    for name in ("best_model.zip", "final_model.zip"):
+        if (run_dir / name).exists():
+            return run_dir / name
+    return run_dir
+
+
 def run(out: Path, seconds: float, practice_fraction: float, games: int, search_games: int, runouts: int,
         seed: int, model: str | None, gif_seed: int, progress: bool, command: str) -> dict[str, Any]:
     from .league import run_league
@@ -189,12 +200,12 @@ def run(out: Path, seconds: float, practice_fraction: float, games: int, search_
     if model is None:
         train_info = train_curriculum(out, seconds, practice_fraction, progress)
         run_dir = Path(train_info["run_dir"])
-        model = str(run_dir / "final_model.zip")
+        model = str(_league_model(run_dir))
     else:
         p = Path(model)
         run_dir = p if p.is_dir() else p.parent
         if p.is_dir():
-            model = str(p / "final_model.zip") if (p / "final_model.zip").exists() else str(p)
+            model = str(_league_model(p))
     t_train = time.perf_counter() - t0
     print("neutral policy on the evaluation episodes...", flush=True)
     neutral = {"practice": neutral_baseline(PRACTICE_CONFIG, 100),
