@@ -50,18 +50,28 @@ class ObservationType:
                                 np.concatenate([high, self._extra_high(env), t_high]).astype(np.float32),
                                 dtype=np.float32)
 
+    #: Values of the type's own features (:meth:`features`), after the positions; each in ``[-1, 1]``.
+    n_extra = 0
+
     def _extra_low(self, env: "BilliardsEnv") -> np.ndarray:
-        return np.zeros(0, np.float32)
+        return -np.ones(self.n_extra, np.float32)
 
     def _extra_high(self, env: "BilliardsEnv") -> np.ndarray:
+        return np.ones(self.n_extra, np.float32)
+
+    def features(self, env: "BilliardsEnv") -> np.ndarray:
+        """The type's own features (``n_extra`` values): none here."""
         return np.zeros(0, np.float32)
 
     def observe(self, env: "BilliardsEnv") -> np.ndarray:
+        """Positions and pocketed flags, the type's features, the task's features."""
         b = env.balls
-        obs = observation(b.pos, b.on_table, self._sx, self._sy)
+        parts = [observation(b.pos, b.on_table, self._sx, self._sy)]
+        if self.n_extra:
+            parts.append(self.features(env))
         if self.n_task:
-            obs = np.concatenate([obs, env.task.features(env)])
-        return obs
+            parts.append(env.task.features(env))
+        return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
 
 class Positions(ObservationType):
@@ -80,12 +90,6 @@ class ShotFeatures(ObservationType):
         self.n_extra = 3 + 3 * self.n_pockets
         self._axes = pocket_mouth_axes(env.table)
         super().__init__(env, config)
-
-    def _extra_low(self, env: "BilliardsEnv") -> np.ndarray:
-        return -np.ones(self.n_extra, np.float32)
-
-    def _extra_high(self, env: "BilliardsEnv") -> np.ndarray:
-        return np.ones(self.n_extra, np.float32)
 
     def features(self, env: "BilliardsEnv") -> np.ndarray:
         """The target-centred features (``3 + 3 * n_pockets`` values)."""
@@ -106,13 +110,6 @@ class ShotFeatures(ObservationType):
         out[4::3] = np.minimum(np.maximum(dist[order], 1e-12) * scale, 1.0)
         out[5::3] = square[order]
         return out
-
-    def observe(self, env: "BilliardsEnv") -> np.ndarray:
-        b = env.balls
-        parts = [observation(b.pos, b.on_table, self._sx, self._sy), self.features(env)]
-        if self.n_task:
-            parts.append(env.task.features(env))
-        return np.concatenate(parts)
 
 
 #: Values per slot of the ``candidates`` observation.
@@ -141,12 +138,6 @@ class CandidateFeatures(ObservationType):
         self.speed_range = (float(c.speed_min), float(c.speed_max))
         self.n_extra = SLOT_FEATURES * self.n_slots
         super().__init__(env, config)
-
-    def _extra_low(self, env: "BilliardsEnv") -> np.ndarray:
-        return -np.ones(self.n_extra, np.float32)
-
-    def _extra_high(self, env: "BilliardsEnv") -> np.ndarray:
-        return np.ones(self.n_extra, np.float32)
 
     def features(self, env: "BilliardsEnv") -> np.ndarray:
         """The slots' values (``12 * candidate_slots``)."""
@@ -185,13 +176,6 @@ class CandidateFeatures(ObservationType):
             row[10] = 1.0 if shot.scratch_risk else 0.0
             row[11] = shot.speed / self.speed_range[1]
         return np.clip(out.reshape(-1), -1.0, 1.0)
-
-    def observe(self, env: "BilliardsEnv") -> np.ndarray:
-        b = env.balls
-        parts = [observation(b.pos, b.on_table, self._sx, self._sy), self.features(env)]
-        if self.n_task:
-            parts.append(env.task.features(env))
-        return np.concatenate(parts)
 
 
 OBSERVATION_TYPES = {"positions": Positions, "features": ShotFeatures, "candidates": CandidateFeatures}
