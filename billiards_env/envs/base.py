@@ -291,12 +291,14 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
 
     def legal_cue_position(self, x: float, y: float) -> tuple[float, float]:
         """Where a ball-in-hand cue ball asked for at ``(x, y)`` goes: the nearest legal point of the task's
-        placement area not overlapping another ball (:func:`~billiards_env.physics.layout.nearest_free_point`)."""
+        placement area not overlapping another ball nor inside a pocket's capture circle (where it would drop at
+        once) (:func:`~billiards_env.physics.layout.nearest_free_point`)."""
         area = self.task.ball_in_hand_area(self)
         if area is None:
             area = self._table_area()
-        b = self.balls
-        return nearest_free_point(x, y, b.pos, b.on_table, b.radius, 0, area)
+        b, t = self.balls, self.table
+        return nearest_free_point(x, y, b.pos, b.on_table, b.radius, 0, area,
+                                  holes=np.column_stack([t.pocket_xy, t.pocket_radius]))
 
     @contextlib.contextmanager
     def cue_moved_to(self, place: tuple[float, float]) -> Iterator[None]:

@@ -248,10 +248,12 @@ def spot_object_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table
 
 
 def nearest_free_point(x: float, y: float, pos: np.ndarray, on_table: np.ndarray, radius: np.ndarray | float,
-                       row: int, area: tuple[float, float, float, float], clearance: float = 1e-6
-                       ) -> tuple[float, float]:
+                       row: int, area: tuple[float, float, float, float], clearance: float = 1e-6,
+                       holes: np.ndarray | None = None) -> tuple[float, float]:
     """The legal point nearest to ``(x, y)`` for ball ``row``: inside ``area = (x0, x1, y0, y1)`` (its centre's
-    allowed rectangle) and at least ``r_row + r_other + clearance`` from every other ball on the table.
+    allowed rectangle), at least ``r_row + r_other + clearance`` from every other ball on the table, and (with
+    ``holes``, rows ``(x, y, r)``: the pockets' capture circles) at least ``r + clearance`` from each hole's centre,
+    so that a ball placed there does not drop at once.
 
     Ball in hand: an agent outputs any point, and an illegal one (off the area, overlapping a ball) moves here.
     Exact for the rectangle minus the union of the forbidden discs: the nearest point is the clipped point
@@ -265,6 +267,8 @@ def nearest_free_point(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
     rad = np.broadcast_to(np.asarray(radius, dtype=float), (len(pos),))
     discs = [(float(pos[k, 0]), float(pos[k, 1]), float(rad[row] + rad[k] + clearance))
              for k in range(len(pos)) if on_table[k] and k != row]
+    if holes is not None:
+        discs += [(float(hx), float(hy), float(hr) + clearance) for hx, hy, hr in np.asarray(holes, dtype=float)]
 
     def legal(px: float, py: float) -> bool:
         if not (x0 <= px <= x1 and y0 <= py <= y1):

@@ -92,9 +92,16 @@ def test_ball_in_hand_placement_moves_to_the_nearest_legal_point():
     d = math.dist(shot.place, (1.5, 0.6))
     assert d >= 2 * R and d == pytest.approx(2 * R, abs=1e-5)  # just off the ball, on the side asked for
     assert shot.place[0] > 1.5
-    # A point off the table moves inside the allowed area.
+    # A point off the table moves inside the allowed area, to its corner (L - R, R); that lies inside the corner
+    # pocket's capture circle, so on to the nearest point just outside the circle (radially out from the pocket).
     shot = u.shot_from_action(u.action_from_shot(0.0, 1.0, place=(5.0, -1.0)))
-    assert shot.place == pytest.approx((L - R, R))
+    x, y = shot.place
+    corner = int(np.argmin(np.hypot(u.table.pocket_xy[:, 0] - L, u.table.pocket_xy[:, 1])))
+    gap = math.dist((x, y), u.table.pocket_xy[corner]) - u.table.pocket_radius[corner]
+    assert 0.0 < gap < 1e-5
+    px, py = u.table.pocket_xy[corner]
+    assert math.atan2(y - py, x - px) == pytest.approx(math.atan2(R - py, L - R - px), abs=1e-9)
+    assert R <= y and x <= L - R
 
 
 def test_break_ball_in_hand_is_behind_the_head_string():
@@ -174,3 +181,22 @@ def test_players_follow_the_rules(game, player):
                 break
     assert placed >= 1  # every game starts with ball in hand in the kitchen
     assert wrong == 0
+
+
+def test_ball_in_hand_never_places_the_cue_ball_where_it_drops_at_once():
+    """A placement inside a pocket's capture circle (a corner of the kitchen) moves to the nearest point outside it
+    (a random policy's placement once scratched at t = 0), still inside the area and off the other balls."""
+    env = gym.make("Billiards9Ball-v0")
+    env.reset(seed=3)
+    u = env.unwrapped
+    t = u.table
+    x0, x1, y0, y1 = u.task.ball_in_hand_area(u)
+    for px, py in ((0.0, 0.0), (0.0, W), (x0, y0 + 1e-3)):
+        x, y = u.legal_cue_position(px, py)
+        assert x0 <= x <= x1 and y0 <= y <= y1
+        gaps = np.hypot(t.pocket_xy[:, 0] - x, t.pocket_xy[:, 1] - y) - t.pocket_radius
+        assert gaps.min() > 0.0
+        assert np.hypot(x - px, y - py) < 0.1  # moved just out of the circle, not far away
+    action = u.action_from_shot(0.0, 2.0, place=(0.0, 0.0))
+    info = env.step(action)[4]
+    assert info["sim_time"] > 0.0 and info["n_events"] >= 1  # the shot is played, not a drop at t = 0
