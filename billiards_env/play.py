@@ -104,9 +104,7 @@ class PlayApp:
                 task.auto_opponent = False  # nobody plays inside step: the players take turns at the window
                 task.player_names = ("player 1", "player 2")
             else:
-                from billiards_env.envs.game_hud import player_names
-
-                task.player_names = ("you", player_names(task)[1])
+                task.player_names = ("you", task.names()[1])
         self.renderer = self.core.renderer
         self.fps = self.core.config.render_fps
         self.realtime = realtime
@@ -190,11 +188,11 @@ class PlayApp:
 
     def in_hand(self) -> bool:
         """The shooter has the cue ball in hand (games)."""
-        return not self.done and self.core.task.ball_in_hand_area(self.core) is not None
+        return not self.done and self.core.state.view.place_area is not None
 
     def needs_pocket(self) -> bool:
         """The shooter is on the 8 and must call its pocket (8-ball)."""
-        return not self.done and self.is_game and self.core.task.needs_called_pocket()
+        return not self.done and self.is_game and self.core.state.view.call_pocket
 
     def cue_xy(self) -> tuple[float, float]:
         if self.place is not None:
@@ -244,7 +242,7 @@ class PlayApp:
         return out
 
     def _game_status(self, info: dict[str, Any]) -> str:
-        hud = self.core.task.hud(self.core)
+        hud = self.core.task.hud()
         names = hud["players"]
         out = f"shot {self.shots}: {info['speed']:.2f} m/s"
         if self.opponent_shots and info.get("opponent_shots"):

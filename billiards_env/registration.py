@@ -1,19 +1,23 @@
 """The registered environment ids: the one list every other module reads (Gymnasium registration, tests,
 benchmarks, warm-up, players).
 
-``ENVS`` maps each id to its entry point (``module:Class``); ``register_envs()`` registers them with Gymnasium
-(``import billiards_env`` calls it). This module imports nothing heavy, so reading the list costs nothing.
+``ENVS`` maps each id to its entry point (``module:Class``): the scenes without rules, then every game of the game
+registry (:data:`billiards_env.games.GAMES`, which lists each game once). ``register_envs()`` registers them with
+Gymnasium (``import billiards_env`` calls it). This module and the game registry import nothing heavy, so reading the
+list costs nothing.
 """
 from __future__ import annotations
 
-#: Registered id -> entry point of its environment class.
-ENVS: dict[str, str] = {
+from .games.registry import GAMES
+
+#: The scenes without rules: registered id -> entry point of its environment class.
+SCENES: dict[str, str] = {
     "BilliardsOneBall-v0": "billiards_env.envs.one_ball:OneBallEnv",
     "BilliardsThreeBalls-v0": "billiards_env.envs.three_balls:ThreeBallsEnv",
     "BilliardsRack-v0": "billiards_env.envs.rack:RackEnv",
-    "Billiards9Ball-v0": "billiards_env.envs.nine_ball:NineBallEnv",
-    "Billiards8Ball-v0": "billiards_env.envs.eight_ball:EightBallEnv",
 }
+#: Registered id -> entry point of its environment class (the scenes, then the games).
+ENVS: dict[str, str] = {**SCENES, **{g.env_id: g.env_class for g in GAMES.values()}}
 #: Every registered id, in registration order.
 ENV_IDS: tuple[str, ...] = tuple(ENVS)
 
@@ -37,4 +41,4 @@ def register_envs() -> None:
             register(id=env_id, entry_point=entry_point, vector_entry_point=vector_entry_point(env_id))
 
 
-__all__ = ["ENVS", "ENV_IDS", "register_envs", "vector_entry_point"]
+__all__ = ["ENVS", "SCENES", "ENV_IDS", "register_envs", "vector_entry_point"]

@@ -15,10 +15,13 @@ import numpy as np
 from billiards_env.physics.batch import new_outputs
 from billiards_env.physics.codes import STATUS_NAMES
 
+from billiards_env.shot_path import CueShot
+
 from ._vector_kernels import (F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP, I_POSITIONS_OBS,
                               O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, pack_config, pot_step,
                               pot_step_spin)
 from .config import ConfigError, EnvConfig
+from .info import shot_info
 
 if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
@@ -30,7 +33,7 @@ class PotFastStep:
     """The compiled step of one pot env (see the module docstring); :func:`pot_fast_step` makes it."""
 
     def __init__(self, env: "BilliardsEnv") -> None:
-        self.cfg, self.icfg = pack_config(env)
+        self.cfg, self.icfg = pack_config(env.config, env.action_type, env.observation_type)
         nb = env.n_balls
         self.out = new_outputs(1, nb)
         self.fout = np.zeros((1, 7))
@@ -45,6 +48,7 @@ class PotFastStep:
         self.noise = np.zeros((1, 4))
         self.names: dict[int, tuple[str, ...]] = {}
         self.first_ids = env.ball_ids + (None,)  # index -1 -> None
+        self.tip = env.action_type.spin
 
     def step(self, env: "BilliardsEnv", action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
         """``env.step(action)`` for a pot env (the caller has checked that a step is allowed)."""
@@ -79,22 +83,13 @@ class PotFastStep:
         if pocketed is None:
             ids = env.ball_ids
             pocketed = self.names[mask] = tuple(ids[r] for r in range(len(ids)) if mask >> r & 1)
-        info = {
-            "is_success": i[O_SUCCESS] != 0,
-            "pocketed": pocketed,
-            "scratch": i[O_SCRATCH] != 0,
-            "first_contact": self.first_ids[int(out[5][0])],
-            "n_events": int(out[2][0]),
-            "sim_time": float(out[1][0]),
-            "status": STATUS_NAMES[int(out[0][0])],
-            "shots": env.shots,
-            "angle": f[F_ANGLE],
-            "speed": f[F_SPEED],
-        }
-        if env.action_type.spin:
-            info["side"], info["top"] = f[F_SIDE], f[F_TOP]
+        info = {"is_success": i[O_SUCCESS] != 0}
+        info.update(shot_info(pocketed, i[O_SCRATCH] != 0, self.first_ids[int(out[5][0])], int(out[2][0]),
+                              float(out[1][0]), STATUS_NAMES[int(out[0][0])], env.shots,
+                              CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP]), self.tip))
         env._needs_reset = terminated or truncated
-        obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env)
+        env.state.changed()
+        obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env.state)
         return obs, f[F_REWARD], terminated, truncated, info
 
 

@@ -7,8 +7,9 @@ test ``tests/envs/test_vector_env.py`` checks it):
 - :func:`place_tables` runs :func:`billiards_env.physics.layout.place_random_rows` (the single env's placement)
   per table;
 - :func:`prepare_shots` maps the actions with the single env's compiled shot arithmetic (:mod:`.actions`:
-  ``aim_to_angle``, ``power_to_speed``, ``square_to_disc``, ``noisy_shot``) and strikes;
-- :func:`finish_shots` is the rest of ``play_shot`` and ``PotTask.on_shot`` (re-spotting a pocketed cue ball
+  ``aim_to_angle``, ``power_to_speed``, ``square_to_disc``; :func:`billiards_env.shot_path.noisy_shot`) and
+  strikes;
+- :func:`finish_shots` is the rest of :func:`~billiards_env.shot_path.play_shot` and ``PotTask.on_shot`` (re-spotting a pocketed cue ball
   with :func:`~billiards_env.physics.layout.spot_cue_row`, the single env's code), and :func:`observe_positions`
   the positions observation;
 - :func:`pot_step` (:func:`pot_step_spin`) does all of a step's shots in one serial call: strike, physics, score,
@@ -20,6 +21,7 @@ state, with numpy's algorithms), in the single env's order.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numba import njit
@@ -31,8 +33,9 @@ from billiards_env.physics.layout import place_random_rows, spot_cue_row
 from billiards_env.physics.spin_collide import strike_spin
 
 from ._kernels import observation
-from .actions import (AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, aim_to_angle, noisy_shot, power_to_speed,
-                      square_to_disc)
+from billiards_env.shot_path import noisy_shot
+
+from .actions import AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, aim_to_angle, power_to_speed, square_to_disc
 from .tasks import pot_score
 
 #: ``place_tables`` status: every table placed.
@@ -82,13 +85,13 @@ F_REWARD, F_ANGLE, F_SPEED, F_SIDE, F_TOP, F_START_X, F_START_Y = range(7)
 O_TERMINATED, O_TRUNCATED, O_SUCCESS, O_SCRATCH, O_POCKETED = range(5)
 
 
-def pack_config(env) -> tuple[np.ndarray, np.ndarray]:
-    """The constants a pot env's shot needs, as ``(cfg float64, icfg int64)`` (see the ``C_*`` / ``I_*`` indices)."""
+def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The constants a pot env's shot needs, as ``(cfg float64, icfg int64)`` (see the ``C_*`` / ``I_*`` indices),
+    from its config ``c``, its action type ``a`` and its observation type."""
     from billiards_env.physics.layout import head_spot
 
-    c = env.config
-    a = env.action_type
-    hx, hy = head_spot(env.table)
+    table = c.table
+    hx, hy = head_spot(table)
     cfg = np.zeros(17)
     cfg[C_SPEED_LO] = a.speed_lo
     cfg[C_SPEED_SPAN] = a.speed_span
@@ -100,20 +103,20 @@ def pack_config(env) -> tuple[np.ndarray, np.ndarray]:
     cfg[C_BALL_RADIUS] = c.ball_radius
     cfg[C_HEAD_X] = hx
     cfg[C_HEAD_Y] = hy
-    cfg[C_WIDTH] = env.table.width
+    cfg[C_WIDTH] = table.width
     cfg[C_POT_REWARD] = c.pot_reward
     cfg[C_SCRATCH_PENALTY] = c.scratch_penalty
     cfg[C_MISS_PENALTY] = c.miss_penalty
     cfg[C_STEP_PENALTY] = c.step_penalty
-    cfg[C_SX] = 1.0 / env.table.length
-    cfg[C_SY] = 1.0 / env.table.width
+    cfg[C_SX] = 1.0 / table.length
+    cfg[C_SY] = 1.0 / table.width
     icfg = np.zeros(6, np.int64)
     icfg[I_AIM] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
     icfg[I_SPIN_ACTION] = int(a.spin)
-    icfg[I_SPIN_MODEL] = int(env.physics.friction == "spin")
+    icfg[I_SPIN_MODEL] = int(c.physics.friction == "spin")
     icfg[I_SINGLE_SHOT] = int(c.single_shot)
     icfg[I_MAX_SHOTS] = int(c.max_shots)
-    icfg[I_POSITIONS_OBS] = int(env.observation_type.name == "positions" and env.observation_type.n_task == 0)
+    icfg[I_POSITIONS_OBS] = int(observation_type.name == "positions" and observation_type.n_game == 0)
     return cfg, icfg
 
 

@@ -29,34 +29,20 @@ raise ``ValueError``. Any array holding the right number of values is accepted (
 """
 from __future__ import annotations
 
-import contextlib
 import math
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from gymnasium import spaces
 from numba import njit
 
 from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_aim, ray_circle_entry, wrap_angle)
+from billiards_env.shot_path import CueShot, noisy_shot
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .base import BilliardsEnv
+    from billiards_env.table_state import TableState
+
     from .config import EnvConfig
-
-
-class CueShot(NamedTuple):
-    """One shot as played (before noise): cue direction ``angle`` (rad, 0 = +x, counter-clockwise), ``speed``
-    (m/s), tip offsets ``side`` and ``top`` (fractions of R), and the cue ball's placement ``place`` (x, y) when
-    the shooter has ball in hand (else None); ``pocket`` and ``push``: a game's declarations (see the module
-    docstring)."""
-
-    angle: float
-    speed: float
-    side: float = 0.0
-    top: float = 0.0
-    place: tuple[float, float] | None = None
-    pocket: int | None = None  #: the pocket called for the 8 (8-ball)
-    push: bool = False  #: declare a push-out (9-ball)
 
 
 def _clip(v: float) -> float:
@@ -94,26 +80,6 @@ def power_to_speed(a: float, speed_lo: float, speed_span: float) -> float:
 def square_to_disc(x: float, y: float) -> tuple:
     """The elliptical grid mapping of the square ``[-1, 1]^2`` onto the unit disc."""
     return x * math.sqrt(1.0 - 0.5 * y * y), y * math.sqrt(1.0 - 0.5 * x * x)
-
-
-@njit(cache=True)
-def noisy_shot(angle: float, speed: float, side: float, top: float, n_angle: float, n_speed: float,
-               n_side: float, n_top: float, use_angle: bool, use_speed: bool, use_tip: bool) -> tuple:
-    """The shot as played: the angle noise added, the speed scaled by ``1 + n_speed`` (never below 0), the tip
-    noise added and the tip kept inside the miscue limit (0.5 R, less a hair). The noise values are drawn by the
-    caller from its generator, in this order, only for the noises in use."""
-    if use_angle:
-        angle += n_angle
-    if use_speed:
-        speed *= max(0.0, 1.0 + n_speed)
-    if use_tip:
-        side += n_side
-        top += n_top
-        r = math.hypot(side, top)
-        if r > 0.5 * (1.0 - 1e-12):  # keep it a legal tip position (no miscue)
-            side = side * 0.5 * (1.0 - 1e-12) / r
-            top = top * 0.5 * (1.0 - 1e-12) / r
-    return angle, speed, side, top
 
 
 def disc_to_square(u: float, v: float) -> tuple[float, float]:
@@ -157,17 +123,17 @@ class ActionType:
     code = AIM_ABSOLUTE
     max_angle = 0.0
 
-    def angle(self, env: "BilliardsEnv", a: float) -> float:
+    def angle(self, state: "TableState", a: float) -> float:
         """Cue direction (rad) of aim component ``a`` (in [-1, 1]): :func:`aim_to_angle`."""
-        b = env.balls
-        t = env.target_ball() if self.code != AIM_ABSOLUTE else None
+        b = state.balls
+        t = state.view.target if self.code != AIM_ABSOLUTE else None
         if t is None:
             return aim_to_angle(self.code, a, float(b.pos[0, 0]), float(b.pos[0, 1]), 0.0, 0.0, False, 0.0,
                                 self.max_angle)
         return aim_to_angle(self.code, a, float(b.pos[0, 0]), float(b.pos[0, 1]), float(b.pos[t, 0]),
                             float(b.pos[t, 1]), True, float(b.radius[0] + b.radius[t]), self.max_angle)
 
-    def aim(self, env: "BilliardsEnv", angle: float) -> float:
+    def aim(self, state: "TableState", angle: float) -> float:
         """Aim component of cue direction ``angle`` (inverse of :meth:`angle`)."""
         return wrap_angle(float(angle)) / math.pi
 
@@ -193,7 +159,7 @@ class ActionType:
             + (["place_x", "place_y"] if self.placement else []) + list(self.declarations)
         return ", ".join(names)
 
-    def shot(self, env: "BilliardsEnv", action: Any) -> CueShot:
+    def shot(self, state: "TableState", action: Any) -> CueShot:
         """The shot an action means now (no noise). Placement is read only when the shooter has ball in hand."""
         a = self.parse(action)
         speed = power_to_speed(a[1], self.speed_lo, self.speed_span)
@@ -205,17 +171,17 @@ class ActionType:
         if "pocket" in self._declare_at:
             pocket = min(int(0.5 * (a[self._declare_at["pocket"]] + 1.0) * self.n_pockets), self.n_pockets - 1)
         push = "push" in self._declare_at and a[self._declare_at["push"]] > 0.0
-        area = env.task.ball_in_hand_area(env) if self.placement else None
+        area = state.view.place_area if self.placement else None
         if area is None:
-            return CueShot(self.angle(env, a[0]), speed, side, top, None, pocket, push)
+            return CueShot(self.angle(state, a[0]), speed, side, top, None, pocket, push)
         x0, x1, y0, y1 = area
         k = self._place_at
-        place = env.legal_cue_position(x0 + 0.5 * (a[k] + 1.0) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1.0) * (y1 - y0))
-        with env.cue_moved_to(place):  # the aim is relative to where the cue ball will be
-            angle = self.angle(env, a[0])
+        place = state.legal_cue_position(x0 + 0.5 * (a[k] + 1.0) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1.0) * (y1 - y0))
+        with state.cue_moved_to(place):  # the aim is relative to where the cue ball will be
+            angle = self.angle(state, a[0])
         return CueShot(angle, speed, side, top, place, pocket, push)
 
-    def action(self, env: "BilliardsEnv", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
+    def action(self, state: "TableState", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
                place: tuple[float, float] | None = None, pocket: int | None = None,
                push: bool = False) -> np.ndarray:
         """The action of a shot (inverse of :meth:`shot`); speeds outside the range clip, extra dims not given
@@ -224,15 +190,15 @@ class ActionType:
             if not math.isfinite(float(v)):
                 raise ValueError(f"action_from_shot: {name} must be finite, got {v!r}")
         out = np.zeros(self.n, dtype=np.float64)
-        area = env.task.ball_in_hand_area(env) if (self.placement and place is not None) else None
+        area = state.view.place_area if (self.placement and place is not None) else None
         if area is not None:
             x0, x1, y0, y1 = area
             out[self._place_at] = 2.0 * (float(place[0]) - x0) / max(x1 - x0, 1e-12) - 1.0
             out[self._place_at + 1] = 2.0 * (float(place[1]) - y0) / max(y1 - y0, 1e-12) - 1.0
-            with env.cue_moved_to(env.legal_cue_position(float(place[0]), float(place[1]))):
-                out[0] = self.aim(env, angle)
+            with state.cue_moved_to(state.legal_cue_position(float(place[0]), float(place[1]))):
+                out[0] = self.aim(state, angle)
         else:
-            out[0] = self.aim(env, angle)
+            out[0] = self.aim(state, angle)
         out[1] = 2.0 * (float(speed) - self.speed_lo) / self.speed_span - 1.0
         if self.spin:
             out[self._spin_at], out[self._spin_at + 1] = disc_to_square(side / self.max_tip, top / self.max_tip)
@@ -255,17 +221,17 @@ class RelativeAim(ActionType):
 
     name = "relative"
 
-    def _base(self, env: "BilliardsEnv") -> float:
-        t = env.target_ball()
+    def _base(self, state: "TableState") -> float:
+        t = state.view.target
         if t is None:
             return 0.0
-        p = env.balls.pos
+        p = state.balls.pos
         return aim_angle(p[0], p[t])
 
     code = AIM_RELATIVE
 
-    def aim(self, env: "BilliardsEnv", angle: float) -> float:
-        return wrap_angle(float(angle) - self._base(env)) / math.pi
+    def aim(self, state: "TableState", angle: float) -> float:
+        return wrap_angle(float(angle) - self._base(state)) / math.pi
 
 
 class GhostAim(ActionType):
@@ -282,13 +248,13 @@ class GhostAim(ActionType):
         super().__init__(config, placement, declarations, n_pockets)
         self.max_angle = math.radians(config.ghost_max_angle)
 
-    def aim(self, env: "BilliardsEnv", angle: float) -> float:
+    def aim(self, state: "TableState", angle: float) -> float:
         """The object-ball direction a cue direction sends the target in (the line of centres at first contact),
         relative to the cue -> target line; a cue line that misses the target maps to the nearer end (+-1)."""
-        t = env.target_ball()
+        t = state.view.target
         if t is None:
             return 0.0
-        b = env.balls
+        b = state.balls
         cue, obj = b.pos[0], b.pos[t]
         reach = float(b.radius[0] + b.radius[t])
         base = aim_angle(cue, obj)
@@ -348,11 +314,11 @@ class CandidateShots(ActionType):
         self.log_factor = math.log(float(config.candidate_speed_factor))
         self.speed_range = (self.speed_lo, self.speed_lo + self.speed_span)
 
-    def slots(self, env: "BilliardsEnv") -> Any:
+    def slots(self, state: "TableState") -> Any:
         """The candidate list of the table now (:func:`billiards_env.envs.candidates.candidate_slots`)."""
         from .candidates import candidate_slots
 
-        return candidate_slots(env, self.n_slots, self.speed_range)
+        return candidate_slots(state, self.n_slots, self.speed_range)
 
     def _slot(self, a: float, n: int) -> int:
         return min(int(abs(a) * self.n_slots), self.n_slots - 1, n - 1)
@@ -368,13 +334,13 @@ class CandidateShots(ActionType):
     def _power(self, speed: float, base: float) -> float:
         return math.log(max(float(speed), 1e-9) / max(base, 1e-9)) / self.log_factor
 
-    def _placed_shot(self, env: "BilliardsEnv", slot: Any, place: tuple[float, float]) -> tuple[float, float]:
+    def _placed_shot(self, state: "TableState", slot: Any, place: tuple[float, float]) -> tuple[float, float]:
         """Aim and base speed of ``slot`` from the cue ball placed at ``place``."""
         from billiards_env.players.shots import ghost_ball_shots
 
-        b = env.balls
-        with env.cue_moved_to(place):
-            shots = ghost_ball_shots(b, env.table, env.physics, 0, [slot.target], self.speed_range,
+        b = state.balls
+        with state.cue_moved_to(place):
+            shots = ghost_ball_shots(b, state.table, state.physics, 0, [slot.target], self.speed_range,
                                      math.radians(89.0))
             ghost = slot.ghost(float(b.radius[0] + b.radius[slot.target]), b.pos)
             angle = aim_angle(b.pos[0], ghost)
@@ -383,58 +349,58 @@ class CandidateShots(ActionType):
                 return s.angle, s.speed
         return angle, FALLBACK_SPEED
 
-    def _place_for(self, env: "BilliardsEnv", slot: Any, px: float, py: float) -> tuple[float, float]:
-        b = env.balls
+    def _place_for(self, state: "TableState", slot: Any, px: float, py: float) -> tuple[float, float]:
+        b = state.balls
         ghost = slot.ghost(float(b.radius[0] + b.radius[slot.target]), b.pos)
         back = PLACE_BACK[0] + 0.5 * (px + 1.0) * (PLACE_BACK[1] - PLACE_BACK[0])
         x, y = ghost - back * direction_vector(slot.obj_angle + py * PLACE_MAX_CUT)
-        x0, x1, y0, y1 = env.task.ball_in_hand_area(env)
-        return env.legal_cue_position(min(max(x, x0), x1), min(max(y, y0), y1))
+        x0, x1, y0, y1 = state.view.place_area
+        return state.legal_cue_position(min(max(x, x0), x1), min(max(y, y0), y1))
 
-    def _direct(self, env: "BilliardsEnv", targets: Any) -> float:
+    def _direct(self, state: "TableState", targets: Any) -> float:
         from billiards_env.players.shots import direct_hit
 
-        return direct_hit(env.balls, 0, list(targets))[0]
+        return direct_hit(state.balls, 0, list(targets))[0]
 
-    def shot(self, env: "BilliardsEnv", action: Any) -> CueShot:
-        base = super().shot(env, action)  # side, top, declarations and the plain placement
+    def shot(self, state: "TableState", action: Any) -> CueShot:
+        base = super().shot(state, action)  # side, top, declarations and the plain placement
         a = self.parse(action)
-        cands = self.slots(env)
+        cands = self.slots(state)
         if cands.break_shot:
             place = base.place
-            area = env.task.ball_in_hand_area(env) if self.placement else None
+            area = state.view.place_area if self.placement else None
             if area is not None:
                 x0, x1, y0, y1 = area
                 k = self._place_at
-                place = env.legal_cue_position(x1 - abs(a[k]) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1.0) * (y1 - y0))
-            with env.cue_moved_to(place) if place is not None else contextlib.nullcontext():
-                angle = self._direct(env, cands.targets)
+                place = state.legal_cue_position(x1 - abs(a[k]) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1.0) * (y1 - y0))
+            with state.cue_moved_to(place):
+                angle = self._direct(state, cands.targets)
             speed = self.speed_range[1] * math.exp(min(a[1], 0.0) * self.log_factor)
             return base._replace(angle=angle, speed=max(speed, self.speed_range[0]), place=place)
         if cands.kick is not None and self._kicks(a[0]):  # as verified: its speed, no tip offsets
             return base._replace(angle=cands.kick.shot.angle, speed=cands.kick.shot.speed, side=0.0, top=0.0)
         if not cands.slots:
-            with env.cue_moved_to(base.place) if base.place is not None else contextlib.nullcontext():
-                angle = self._direct(env, cands.targets)
+            with state.cue_moved_to(base.place):
+                angle = self._direct(state, cands.targets)
             return base._replace(angle=angle, speed=self._speed(FALLBACK_SPEED, a[1]))
         slot = cands.slots[0 if self._kicks(a[0]) else self._slot(a[0], len(cands.slots))]
         if "pocket" in self._declare_at:  # the 8's called pocket: the chosen shot's
             base = base._replace(pocket=slot.pocket)
         if cands.in_hand:
             k = self._place_at
-            place = self._place_for(env, slot, a[k], a[k + 1])
-            angle, speed = self._placed_shot(env, slot, place)
+            place = self._place_for(state, slot, a[k], a[k + 1])
+            angle, speed = self._placed_shot(state, slot, place)
             return base._replace(angle=angle, speed=self._speed(speed, a[1]), place=place)
         return base._replace(angle=slot.shot.angle, speed=self._speed(slot.shot.speed, a[1]))
 
-    def action(self, env: "BilliardsEnv", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
+    def action(self, state: "TableState", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
                place: tuple[float, float] | None = None, pocket: int | None = None,
                push: bool = False) -> np.ndarray:
-        out = np.asarray(super().action(env, angle, speed, side, top, place, pocket, push), dtype=np.float64)
-        cands = self.slots(env)
+        out = np.asarray(super().action(state, angle, speed, side, top, place, pocket, push), dtype=np.float64)
+        cands = self.slots(state)
         out[0] = 0.0
         if cands.break_shot:
-            area = env.task.ball_in_hand_area(env) if (self.placement and place is not None) else None
+            area = state.view.place_area if (self.placement and place is not None) else None
             if area is not None:
                 x0, x1, y0, y1 = area
                 k = self._place_at
@@ -445,10 +411,10 @@ class CandidateShots(ActionType):
         if not cands.slots and cands.kick is None:
             out[1] = self._power(speed, FALLBACK_SPEED)
             return np.clip(out, -1.0, 1.0).astype(np.float32)
-        b = env.balls
+        b = state.balls
         k_best, best = 0, math.inf
         if cands.in_hand and place is not None:
-            where = env.legal_cue_position(float(place[0]), float(place[1]))
+            where = state.legal_cue_position(float(place[0]), float(place[1]))
             for k, slot in enumerate(cands.slots):
                 g = slot.ghost(float(b.radius[0] + b.radius[slot.target]), b.pos)
                 err = abs(wrap_angle(float(angle) - aim_angle(where, g)))
@@ -461,7 +427,7 @@ class CandidateShots(ActionType):
             k = self._place_at
             out[k] = 2.0 * (back - PLACE_BACK[0]) / (PLACE_BACK[1] - PLACE_BACK[0]) - 1.0
             out[k + 1] = phi / PLACE_MAX_CUT
-            base_speed = self._placed_shot(env, slot, self._place_for(env, slot, _clip(out[k]), _clip(out[k + 1])))[1]
+            base_speed = self._placed_shot(state, slot, self._place_for(state, slot, _clip(out[k]), _clip(out[k + 1])))[1]
         else:
             options = list(cands.slots) + ([cands.kick] if cands.kick is not None else [])
             for k, slot in enumerate(options):

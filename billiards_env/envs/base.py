@@ -1,22 +1,24 @@
-"""The billiards environment: a simulator, an action type, an observation type and a task, joined.
+"""The billiards environment: a table state, an action type, an observation type and a task, joined.
 
 Each registered id is a small subclass that names its packaged scene (``scene``) and documents itself (see
-:mod:`.one_ball`, :mod:`.three_balls`, :mod:`.rack`, :mod:`.games`). The parts (as in HighwayEnv and panda-gym):
+:mod:`.one_ball`, :mod:`.three_balls`, :mod:`.rack`, :mod:`.nine_ball`, :mod:`.eight_ball`). The parts (as in
+HighwayEnv and panda-gym) read the :class:`~billiards_env.table_state.TableState`, never the env:
 
-- physics (:mod:`billiards_env.physics`: table, balls, simulator) knows nothing of Gymnasium;
+- the table state (:mod:`billiards_env.table_state`): the balls as arrays, the table, the physics and solver, the
+  shot settings, and who is to shoot and what they may do (the task's view, computed once per shot);
 - :mod:`.actions`: the action type turns an action vector into a cue shot (``action_type`` key);
-- :mod:`.observations`: the observation type turns the table into an observation (``observation_type`` key);
-- :mod:`.tasks`: the task scores a shot: reward, termination, success, its part of ``info`` (``task`` key);
+- :mod:`.observations`: the observation type turns the table state into an observation (``observation_type``);
+- :mod:`.tasks` / :mod:`.games`: the task scores a shot: reward, termination, success, its part of ``info``;
+- every shot goes through the one shot path, :func:`billiards_env.shot_path.play_shot`;
 - drawing is delegated to :mod:`billiards_env.render`, imported only when a render mode is set.
 
-Speed: ``step`` runs the compiled exact solver on the live ball arrays in place (no validation, no copies, no
-result objects), the same kernel ``Simulator.run`` calls; the placements that ``reset`` draws are valid by
-construction, and scenes given through ``reset(options=...)`` are validated there.
+Speed: with the pot task on the exact solver ``step`` is one compiled call on the live arrays (the native vector
+env's step on one table, :mod:`._pot_fast`); the placements that ``reset`` draws are valid by construction, and
+scenes given through ``reset(options=...)`` are validated there.
 """
 from __future__ import annotations
 
 import contextlib
-import math
 from typing import Any, Callable, ClassVar, Iterator, Sequence
 
 import gymnasium as gym
@@ -25,17 +27,20 @@ import numpy as np
 from billiards_env.physics.balls import Balls, validate_balls
 from billiards_env.physics.errors import SceneError
 from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_positions, foot_spot, head_spot,
-                                          head_string_x, nearest_free_point, place_random, rack_rows,
-                                          triangle_positions)
+                                          head_string_x, place_random, rack_rows, triangle_positions)
+from billiards_env.physics.model import Physics
 from billiards_env.physics.simulate import Simulator
-from billiards_env.physics.spin_collide import strike_spin
+from billiards_env.physics.table import Table
+from billiards_env.shot_path import CueShot, PlayedShot, play_shot
+from billiards_env.table_state import ShotSettings, TableState
 
 from ._pot_fast import pot_fast_step
 from ._seeding import np_random
-from .actions import CueShot, action_factory, noisy_shot
+from .actions import AbsoluteAim, ActionType, action_factory
 from .config import ConfigError, EnvConfig, load_config
+from .info import shot_info
 from .observations import observation_factory
-from .tasks import ShotOutcome, task_factory
+from .tasks import Driver, task_factory
 
 RENDER_MODES = ["human", "rgb_array", "rgb_array_list"]
 
@@ -47,9 +52,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     mapping or an :class:`~billiards_env.envs.config.EnvConfig` layered over the class's packaged scene, and
     ``overrides`` are config keys (see :mod:`billiards_env.envs.config`).
 
-    Live state for players and tools: ``balls`` (a :class:`~billiards_env.physics.Balls`, updated IN PLACE by
-    every shot: ``copy()`` it to keep a snapshot), ``table``, ``physics``, ``simulator`` (to try shots:
-    ``simulator.run(balls.strike(0, angle, speed), validate=False)``), ``config``, ``task``, ``action_type``,
+    Live state for players and tools: ``state`` (the :class:`~billiards_env.table_state.TableState` every part
+    reads: ``state.balls``, updated IN PLACE by every shot (``copy()`` it to keep a snapshot), ``state.view``: who is
+    to shoot and what they may do), and as shortcuts ``balls``, ``table``, ``physics``, ``simulator`` (to try shots:
+    ``simulator.run(balls.strike(0, angle, speed), validate=False)``); ``config``, ``task``, ``action_type``,
     ``observation_type``, ``shots`` (shots taken in this episode), ``last_shot`` (``(x, y, angle, speed)`` of the
     last shot or None).
     """
@@ -68,40 +74,39 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.render_mode = render_mode
         self.metadata = {**type(self).metadata, "render_fps": c.render_fps}
 
-        self.table = c.table
-        self.physics = c.physics
-        self.simulator = Simulator(self.table, self.physics, solver=c.solver.name, dt=c.solver.dt,
-                                   contact=c.solver.contact, max_time=c.max_time, max_events=c.max_events)
-
         n = c.n_object_balls + 1
-        self.n_balls = n
-        self.ball_ids: tuple[str, ...] = ("cue",) + tuple(str(k) for k in range(1, n))
-        #: Ball number of each row for drawing (0 = cue ball).
-        self.ball_numbers: tuple[int, ...] = tuple(range(n))
-        # Live state: one Balls object whose arrays the kernel updates in place.
-        self.balls = Balls.from_positions(np.zeros((n, 2)), ids=self.ball_ids, radius=c.ball_radius,
-                                          mass=c.ball_mass)
+        ids = ("cue",) + tuple(str(k) for k in range(1, n))
+        balls = Balls.from_positions(np.zeros((n, 2)), ids=ids, radius=c.ball_radius, mass=c.ball_mass)
+        simulator = Simulator(c.table, c.physics, solver=c.solver.name, dt=c.solver.dt, contact=c.solver.contact,
+                              max_time=c.max_time, max_events=c.max_events)
+        spin = c.physics.friction == "spin"
+        settings = ShotSettings(float(c.speed_min), float(c.speed_max), float(c.angle_noise), float(c.speed_noise),
+                                float(c.tip_noise), spin and bool(c.spin_action), float(c.max_tip_offset))
+        #: The table state every part reads (see the class docstring).
+        self.state = TableState(balls, c.table, c.physics, simulator, tuple(range(n)), settings)
         self.shots = 0
         self.last_shot: tuple[float, float, float, float] | None = None
         #: Tip offsets ``(side, top)`` of the last shot (fractions of R; spin model).
         self.last_tip: tuple[float, float] = (0.0, 0.0)
         self._needs_reset = True
 
-        self.task = task_factory(self)
-        self.action_type = action_factory(c, self.task.has_ball_in_hand, self.task.declarations,
-                                          self.table.n_pockets)
-        self.observation_type = observation_factory(self)
+        self.task = task_factory(c, self.state)
+        self.action_type: ActionType = action_factory(c, self.task.has_ball_in_hand, self.task.declarations,
+                                                      c.table.n_pockets)
+        self.observation_type = observation_factory(c, c.table, n, self.task.n_features)
         self.action_space = self.action_type.space
         self.observation_space = self.observation_type.space
+        self._driver = Driver(self._play, self._opponent_shot)
+        self._exact_type: ActionType | None = None  # see _acting_type()
 
-        # Fast path: Simulator.run_in_place on the live arrays (exact solver, no copies, no result objects).
-        self._fast = c.solver.name == "exact"
-        self._spin = self.physics.friction == "spin"
-        # Fastest (the pot task on the exact solver): the whole shot in one compiled call (envs/_pot_fast.py).
+        #: Whether steps may take the compiled fast path (tests switch it off to compare with the Python path).
+        self._fast = True
+        self._spin = spin
+        # The pot task on the exact solver: the whole step in one compiled call (envs/_pot_fast.py).
         self._pot_fast = pot_fast_step(self)
-        self._pockets = [(float(px), float(py)) for px, py in self.table.pocket_xy]
 
         # Fixed part of the starting layout (rack and/or head-spot cue), checked once here.
+        self._pockets = [(float(px), float(py)) for px, py in self.table.pocket_xy]
         self._fixed_rows, self._fixed_xy = self._fixed_layout()
         self._fixed_points = [(float(x), float(y)) for x, y in self._fixed_xy]
         self._random_rows = [i for i in range(n) if i not in self._fixed_rows]
@@ -117,13 +122,45 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._shot_view: dict[str, Any] = {}  # what to draw with the shot just played (recording modes)
         self._orientations: np.ndarray | None = None  # the balls' orientations (spin model, animations)
 
+    # --- the table state's parts, as shortcuts -------------------------------------------------------------------
+    @property
+    def balls(self) -> Balls:
+        """The live balls (``state.balls``; updated in place by every shot)."""
+        return self.state.balls
+
+    @property
+    def table(self) -> Table:
+        return self.state.table
+
+    @property
+    def physics(self) -> Physics:
+        return self.state.physics
+
+    @property
+    def simulator(self) -> Simulator:
+        return self.state.simulator
+
+    @property
+    def n_balls(self) -> int:
+        return self.state.n_balls
+
+    @property
+    def ball_ids(self) -> tuple[str, ...]:
+        return self.state.ids
+
+    @property
+    def ball_numbers(self) -> tuple[int, ...]:
+        """Ball number of each row for drawing (0 = cue ball)."""
+        return self.state.numbers
+
     # ======================================================================================================
     # Gymnasium API
     # ======================================================================================================
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None
               ) -> tuple[np.ndarray, dict[str, Any]]:
         """Start an episode. ``options`` may set the scene: ``{"positions": (N,2) metres}`` (rows: cue, 1..n)
-        with an optional ``"pocketed": (N,) bool`` (object balls already off the table); it is validated."""
+        with an optional ``"pocketed": (N,) bool`` (object balls already off the table); it is validated. The
+        games also read ``ball_in_hand``, ``groups`` and ``break_shot`` with ``positions``."""
         if seed is not None:  # what gymnasium.Env.reset(seed=seed) does, with the same generator, faster
             self._np_random, self._np_random_seed = np_random(seed)
         b = self.balls
@@ -139,12 +176,13 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.last_tip = (0.0, 0.0)
         self._orientations = None
         self._needs_reset = False
-        info = self.task.reset(self, options)
+        self.state.changed()
+        info = self.task.reset(self.state, self.np_random, options, self._driver)
         if self.render_mode == "rgb_array_list":
             self._frames = [self._draw_state()]
         elif self.render_mode == "human":
             self._show(None)
-        return self.observation_type.observe(self), info
+        return self.observation_type.observe(self.state), info
 
     def step(self, action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
         """Strike the cue ball with ``action``, simulate until every ball is at rest, score the shot.
@@ -157,92 +195,69 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             raise gym.error.ResetNeeded("call reset() before step(): the table has no balls yet")
         if self._pot_fast is not None and self._fast and not self._record:
             return self._pot_fast.step(self, action)
-        shot = self.action_type.shot(self, action)
-        if shot.place is not None:
-            self.balls.pos[0] = shot.place
-        self.task.before_shot(self, shot)
-        outcome, trajectory, played = self.play_shot(shot)
+        shot = self.action_type.shot(self.state, action)
+        self.task.before_shot(shot)
+        self._animations = []
+        played = self._play(shot, "agent")
         view = self._shot_view
         self.shots += 1
-        self._animations = []
-        reward, terminated, truncated, info = self.task.on_shot(self, outcome)
-        info.update({
-            "pocketed": tuple(self.ball_ids[i] for i in outcome.pocketed),
-            "scratch": outcome.scratch,
-            "first_contact": self.ball_ids[outcome.first_contact] if outcome.first_contact >= 0 else None,
-            "n_events": outcome.n_events,
-            "sim_time": outcome.sim_time,
-            "status": outcome.status,
-            "shots": self.shots,
-            "angle": played.angle,
-            "speed": played.speed,
-        })
-        if self.action_type.spin:
-            info["side"], info["top"] = played.side, played.top
+        reward, terminated, truncated, info = self.task.on_shot(self.state, played, self.shots, self._driver)
+        o = played.outcome
+        ids = self.ball_ids
+        info.update(shot_info(tuple(ids[i] for i in o.pocketed), o.scratch,
+                              ids[o.first_contact] if o.first_contact >= 0 else None, o.n_events, o.sim_time,
+                              o.status, self.shots, played.shot, self.action_type.spin))
         if self._record:
             later = self._animations
-            self._animate(trajectory, view, final=not later)
+            self._animate(played.trajectory, view, final=not later)
             for k, (traj, seen) in enumerate(later):  # the opponent's reply in a game
                 self._animate(traj, seen, final=k == len(later) - 1)
         self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
-        return self.observation_type.observe(self), reward, terminated, truncated, info
+        return self.observation_type.observe(self.state), reward, terminated, truncated, info
 
-    def play_shot(self, shot: CueShot) -> tuple[ShotOutcome, Any, CueShot]:
-        """Add the shot noise, strike the cue ball and simulate until every ball is at rest (the live balls are
-        updated in place). Returns the outcome, the trajectory (when recording) and the shot as played."""
-        rng = self.np_random
-        c = self.config
-        n_angle = float(rng.normal(0.0, c.angle_noise)) if c.angle_noise > 0.0 else 0.0
-        n_speed = float(rng.normal(0.0, c.speed_noise)) if c.speed_noise > 0.0 else 0.0
-        n_side = float(rng.normal(0.0, c.tip_noise)) if c.tip_noise > 0.0 else 0.0
-        n_top = float(rng.normal(0.0, c.tip_noise)) if c.tip_noise > 0.0 else 0.0
-        angle, speed, side, top = noisy_shot(shot.angle, shot.speed, shot.side, shot.top, n_angle, n_speed, n_side,
-                                             n_top, c.angle_noise > 0.0, c.speed_noise > 0.0, c.tip_noise > 0.0)
-        b = self.balls
-        x0, y0 = float(b.pos[0, 0]), float(b.pos[0, 1])
-        b.vel[0, 0] = speed * math.cos(angle)
-        b.vel[0, 1] = speed * math.sin(angle)
-        if self._spin:
-            b.ang[0] = strike_spin(angle, speed, side, top, float(b.radius[0]))[2:]
-        self.last_shot = (x0, y0, angle, speed)
-        self.last_tip = (side, top)
+    def _play(self, shot: CueShot, by: str = "agent") -> PlayedShot:
+        """Play ``shot`` through the shot path with the env's noise (``np_random``) and recording; ``by``:
+        ``"agent"``, ``"opponent"`` (animated after the agent's shot) or ``"table"`` (nobody's shot: not drawn)."""
+        played = play_shot(self.state, shot, self.np_random, record=self._record)
+        if by == "table":
+            self.last_shot, self.last_tip = None, (0.0, 0.0)
+            return played
+        p = played.shot
+        self.last_shot = (played.start[0], played.start[1], p.angle, p.speed)
+        self.last_tip = (p.side, p.top)
         if self._record:  # drawn with this shot's animation: its cue and tip, a game's HUD before the call
             self._shot_view = self.render_data(orientations=False)
+            if by == "opponent" and played.trajectory is not None:
+                self._animations.append((played.trajectory, self._shot_view))
+        return played
 
-        trajectory = None
-        if self._fast and not self._record:
-            status, sim_time, n_events, pocket_of, ev_int = self.simulator.run_in_place(b)
-        else:
-            res = self.simulator.run(b, record=self._record, validate=False)
-            fb = res.balls
-            b.pos[...] = fb.pos
-            b.on_table[...] = fb.on_table
-            status, sim_time, n_events, pocket_of = res.status, res.time, res.n_events, res.pocket
-            ev = res.events
-            ev_int = np.stack([ev.kind, ev.ball, ev.other], axis=1) if len(ev) else np.zeros((0, 3), np.int64)
-            trajectory = res.trajectory
-        b.vel.fill(0.0)  # at rest (a capped shot is stopped where it is)
-        if self._spin:
-            b.ang.fill(0.0)
-        outcome = ShotOutcome.from_arrays(status, sim_time, n_events, pocket_of, ev_int)
-        return outcome, trajectory, CueShot(angle, speed, side, top, shot.place)
+    def _acting_type(self) -> ActionType:
+        """The action type a player acts in as the opponent: the env's, or, when the env's cannot express every shot
+        (``candidates``), the absolute type with the same dims (so the player plays the shots it chose)."""
+        at = self.action_type
+        if at.exact_inverse:
+            return at
+        if self._exact_type is None:
+            self._exact_type = AbsoluteAim(self.config, at.placement, at.declarations, at.n_pockets)
+        return self._exact_type
+
+    def _opponent_shot(self) -> CueShot:
+        """The opponent policy's shot on the table now (see :meth:`GameTask.opponent_action`)."""
+        obs = self.observation_type.observe(self.state)
+        action, codec = self.task.opponent_action(self.state, obs, self.action_type, self._acting_type(), self)
+        return codec.shot(self.state, action)
 
     def observe(self, player: int | None = None) -> np.ndarray:
         """The observation of the table now (what ``reset`` and ``step`` return). ``player`` (games: 0 or 1): the
         game features take that player's point of view (own group, own fouls, whose turn) instead of the shooter's;
         the two-player env (:mod:`billiards_env.multi`) observes each agent so."""
-        if player is None:
-            return self.observation_type.observe(self)
-        seen_by = getattr(self.task, "seen_by", None)
-        if seen_by is None:
-            raise ValueError(f"observe(player={player!r}): task {self.task.name!r} has no players; call observe()")
-        with seen_by(player):
-            return self.observation_type.observe(self)
-
-    def queue_animation(self, trajectory: Any) -> None:
-        """Animate a shot the task played within this step (an opponent's), after the agent's (recording modes)."""
-        if self._record and trajectory is not None:
-            self._animations.append((trajectory, self._shot_view))
+        if player is not None:
+            if self.state.game is None:
+                raise ValueError(f"observe(player={player!r}): task {self.task.name!r} has no players; call "
+                                 "observe()")
+            if player not in (0, 1):
+                raise ValueError(f"player: must be 0 or 1, got {player!r}")
+        return self.observation_type.observe(self.state, player)
 
     def render(self) -> np.ndarray | list[np.ndarray] | None:
         """``rgb_array``: the table now, ``(H, W, 3) uint8`` (the last shot's cue line drawn).
@@ -271,9 +286,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     # Actions
     # ======================================================================================================
     def shot_from_action(self, action: Any) -> CueShot:
-        """The shot an action means now (no noise): a :class:`~billiards_env.envs.actions.CueShot` ``(angle rad,
-        speed m/s, side, top, place)``. NaN/inf raise ValueError; finite values outside [-1, 1] are clipped."""
-        return self.action_type.shot(self, action)
+        """The shot an action means now (no noise): a :class:`~billiards_env.shot_path.CueShot` ``(angle rad,
+        speed m/s, side, top, place, pocket, push)``. NaN/inf raise ValueError; finite values outside [-1, 1] are
+        clipped."""
+        return self.action_type.shot(self.state, action)
 
     def action_from_shot(self, angle: float, speed: float, side: float = 0.0, top: float = 0.0,
                          place: tuple[float, float] | None = None, pocket: int | None = None,
@@ -282,40 +298,20 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand), calling ``pocket`` for the 8 or
         declaring ``push`` (games), in the active action type (inverse of :meth:`shot_from_action`). Speeds
         outside [speed_min, speed_max] clip; dims not given are neutral."""
-        return self.action_type.action(self, angle, speed, side, top, place, pocket, push)
+        return self.action_type.action(self.state, angle, speed, side, top, place, pocket, push)
 
     def target_ball(self) -> int | None:
-        """Row of the ball to hit first (the relative and ghost aim's target): the task's choice (the lowest-
-        numbered object ball on the table, or the legal ball of a game), or None."""
-        return self.task.target_ball(self)
+        """Row of the ball to hit first (the relative and ghost aim's target): the lowest-numbered object ball on
+        the table, or the legal ball of a game, or None (``state.view.target``)."""
+        return self.state.view.target
 
     def legal_cue_position(self, x: float, y: float) -> tuple[float, float]:
-        """Where a ball-in-hand cue ball asked for at ``(x, y)`` goes: the nearest legal point of the task's
-        placement area not overlapping another ball nor inside a pocket's capture circle (where it would drop at
-        once) (:func:`~billiards_env.physics.layout.nearest_free_point`)."""
-        area = self.task.ball_in_hand_area(self)
-        if area is None:
-            area = self._table_area()
-        b, t = self.balls, self.table
-        return nearest_free_point(x, y, b.pos, b.on_table, b.radius, 0, area,
-                                  holes=np.column_stack([t.pocket_xy, t.pocket_radius]))
+        """Where a ball-in-hand cue ball asked for at ``(x, y)`` goes (:meth:`TableState.legal_cue_position`)."""
+        return self.state.legal_cue_position(x, y)
 
-    @contextlib.contextmanager
-    def cue_moved_to(self, place: tuple[float, float]) -> Iterator[None]:
-        """Temporarily put the cue ball at ``place`` (on the table), e.g. to aim from a ball-in-hand position."""
-        b = self.balls
-        saved, on = b.pos[0].copy(), bool(b.on_table[0])
-        b.pos[0] = place
-        b.on_table[0] = True
-        try:
-            yield
-        finally:
-            b.pos[0] = saved
-            b.on_table[0] = on
-
-    def _table_area(self) -> tuple[float, float, float, float]:
-        r = self.config.ball_radius
-        return r, self.table.length - r, r, self.table.width - r
+    def cue_moved_to(self, place: tuple[float, float]) -> Any:
+        """Temporarily put the cue ball at ``place`` (:meth:`TableState.cue_moved_to`)."""
+        return self.state.cue_moved_to(place)
 
     # ======================================================================================================
     # Placement
@@ -348,7 +344,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         biggest = float(self.table.pocket_radius.max()) if self.table.n_pockets else 0.0
         if c.placement == "random" and c.pocket_margin <= biggest:
             raise ConfigError(f"pocket_margin: {c.pocket_margin} m would let a ball start inside a pocket's "
-                             f"capture radius; use more than {biggest}")
+                              f"capture radius; use more than {biggest}")
         trial = self.balls.copy()
         self._place(np.random.default_rng(0), trial.pos)
         try:
@@ -379,8 +375,11 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                 f"{self.env_id}: could not place the balls at random; lower n_object_balls, pocket_margin, "
                 "ball_gap or cushion_margin") from None
 
-    def _set_positions(self, options: dict[str, Any]) -> None:
-        b = self.balls
+    def _set_positions(self, options: dict[str, Any], balls: Balls | None = None,
+                       rng: np.random.Generator | None = None) -> None:
+        """Set up ``balls`` (default: the env's) from reset ``options`` (checked), placing at random from ``rng``
+        (default: ``np_random``) when no positions are given."""
+        b = self.balls if balls is None else balls
         unknown = sorted(set(options) - {"positions", "pocketed"} - set(self.task.option_keys))
         if unknown:
             extra = "".join(f", {k!r}" for k in self.task.option_keys)
@@ -393,7 +392,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                                  f"{', '.join(self.ball_ids)}), got {p.shape}")
             b.pos[...] = p
         else:
-            self._place(self.np_random, b.pos)
+            self._place(self.np_random if rng is None else rng, b.pos)
         if "pocketed" in options:
             off = np.asarray(options["pocketed"], dtype=bool).reshape(-1)
             if off.shape != (self.n_balls,) or off[0]:
@@ -416,7 +415,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             from billiards_env.render import TableRenderer
 
             self._renderer = TableRenderer(self.table, self.config.ball_radius, width_px=self.config.render_width,
-                                           hud=self.task.hud(self) is not None)
+                                           hud=self.task.hud() is not None)
         return self._renderer
 
     def _cue_overlay(self) -> tuple[float, float, float] | None:
@@ -433,7 +432,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             data["tip"] = self.last_tip
             if orientations:
                 data["orientations"] = self._orientations_now()
-        hud = self.task.hud(self)
+        hud = self.task.hud()
         if hud is not None:
             data["hud"] = hud
         return data

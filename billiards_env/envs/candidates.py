@@ -21,8 +21,8 @@ simulated at a fan of aims around that one (:data:`KICK_FAN`, one batch:
 :func:`billiards_env.physics.batch.run_shots`) and kept if some aim hits that ball first without a scratch (the
 middle of those is played); the shortest is the slot. The other ``n - 1`` slots are the pots.
 
-A slot is a :class:`Slot`; the list is cached on the env per table state (positions, the legal balls, ball in hand),
-so the action type and the observation type of one step compute it once.
+A slot is a :class:`Slot`; the list is computed once per shot (kept in the table state's view memo), so the action
+type and the observation type of one step share it.
 """
 from __future__ import annotations
 
@@ -37,7 +37,7 @@ from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_p
 from billiards_env.players.shots import MAX_CUT, ShotCandidate, ghost_ball_shots
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .base import BilliardsEnv
+    from billiards_env.table_state import TableState
 
 #: The cut limit of the fallback list when no shot has a cut <= MAX_CUT (as the geometric player).
 FALLBACK_CUT = math.radians(88.0)
@@ -85,74 +85,65 @@ class Slots:
     kick: Slot | None = None  #: the kick slot (the last of ``n``), if there is a kick
 
 
-def legal_rows(env: "BilliardsEnv") -> list[int]:
-    """Rows of the balls the shooter may hit first, on the table: a game's legal balls, else every object ball."""
-    task = env.task
-    on = env.balls.on_table
-    rows = task.legal_rows() if hasattr(task, "legal_rows") else range(1, env.n_balls)
-    return [int(i) for i in rows if on[i] and i != 0]
-
-
-def candidate_slots(env: "BilliardsEnv", n: int, speed_range: tuple[float, float] | None = None) -> Slots:
-    """The best ``n`` candidate shots for the env's table now (see the module docstring), their speeds within
-    ``speed_range`` (default the env's ``speed_min``, ``speed_max``); cached per state."""
-    b = env.balls
+def candidate_slots(state: "TableState", n: int, speed_range: tuple[float, float] | None = None) -> Slots:
+    """The best ``n`` candidate shots for the table now (see the module docstring), their speeds within
+    ``speed_range`` (default the state's speed range); computed once per shot (kept in ``state.view.memo``)."""
+    b = state.balls
     if speed_range is None:
-        speed_range = (float(env.config.speed_min), float(env.config.speed_max))
-    task = env.task
-    targets = tuple(legal_rows(env))
-    area = task.ball_in_hand_area(env)
-    brk = bool(task.is_break(env))
-    key = (b.pos.tobytes(), b.on_table.tobytes(), targets, area, brk, n, speed_range)
-    cached = getattr(env, "_candidate_cache", None)
-    if cached is not None and cached[0] == key:
-        return cached[1]
+        speed_range = state.settings.speed_range
+    view = state.view
+    targets = view.targets
+    area = view.place_area
+    brk = view.break_shot
+    key = ("candidates", b.pos.tobytes(), b.on_table.tobytes(), n, speed_range)
+    cached = view.memo.get(key)
+    if cached is not None:
+        return cached
     kick: Slot | None = None
     if brk:
         slots: tuple[Slot, ...] = ()
     elif area is not None:
-        slots = tuple(_in_hand_slots(env, targets)[:max(n - 1, 1)])
+        slots = tuple(_in_hand_slots(state, targets)[:max(n - 1, 1)])
     else:
-        slots = tuple(_shot_slots(env, targets, speed_range)[:max(n - 1, 1)])
+        slots = tuple(_shot_slots(state, targets, speed_range)[:max(n - 1, 1)])
         if n > 1 and not any(s.shot.clear for s in slots):
-            kicks = _kick_slots(env, targets, speed_range)
+            kicks = _kick_slots(state, targets, speed_range)
             kick = kicks[0] if kicks else None
     out = Slots(slots, area is not None, brk, targets, kick)
-    env._candidate_cache = (key, out)
+    view.memo[key] = out
     return out
 
 
-def next_shot_ease(env: "BilliardsEnv") -> float:
-    """The chance of potting the easiest shot on the table now from where the cue ball lies: the best pot slot's
-    score (the geometric player's tolerance, penalised for blocked paths, speeds out of range, scratch risk) through
-    :func:`~billiards_env.players.shots.pot_probability` with the env's angle noise (at least
+def next_shot_ease(state: "TableState", n: int) -> float:
+    """The chance of potting the easiest shot on the table now from where the cue ball lies: the best of the ``n``
+    candidate slots' scores (the geometric player's tolerance, penalised for blocked paths, speeds out of range,
+    scratch risk) through :func:`~billiards_env.players.shots.pot_probability` with the angle noise (at least
     :data:`EASE_SPREAD`). 0 when no pot exists. The ``position_reward`` shaping of the games."""
     from billiards_env.players.shots import pot_probability
 
-    c = env.config
-    slots = candidate_slots(env, c.candidate_slots).slots
+    slots = candidate_slots(state, n).slots
     best = max((s.shot.score for s in slots if s.shot is not None), default=0.0)
-    return pot_probability(best, max(c.angle_noise, EASE_SPREAD))
+    return pot_probability(best, max(state.settings.angle_noise, EASE_SPREAD))
 
 
-def _shot_slots(env: "BilliardsEnv", targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
-    b = env.balls
+def _shot_slots(state: "TableState", targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
+    b = state.balls
     shots: list[ShotCandidate] = []
     for cut in (MAX_CUT, FALLBACK_CUT):
-        shots = ghost_ball_shots(b, env.table, env.physics, 0, list(targets), rng, cut)
+        shots = ghost_ball_shots(b, state.table, state.physics, 0, list(targets), rng, cut)
         if shots:
             break
     return [Slot(s.target, s.pocket, s.obj_angle, s.window, s.d_obj,
                  _path_clear(b, s.target, s.obj_angle, s.d_obj), s) for s in shots]
 
 
-def _in_hand_slots(env: "BilliardsEnv", targets: tuple[int, ...]) -> list[Slot]:
-    b = env.balls
+def _in_hand_slots(state: "TableState", targets: tuple[int, ...]) -> list[Slot]:
+    b = state.balls
     out: list[tuple[float, Slot]] = []
     for j in targets:
         r = float(b.radius[j])
-        for p in range(env.table.n_pockets):
-            win = pocket_window(b.pos[j], r, env.table, p)
+        for p in range(state.table.n_pockets):
+            win = pocket_window(b.pos[j], r, state.table, p)
             if win is None:
                 continue
             obj_angle, half, d_obj = win
@@ -192,13 +183,13 @@ def kick_points(cue: np.ndarray, target: np.ndarray, table: Any, radius: float, 
     return out
 
 
-def _kick_slots(env: "BilliardsEnv", targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
+def _kick_slots(state: "TableState", targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
     """Kicks at the legal balls (see the module docstring), shortest first."""
     from billiards_env.physics.batch import run_shots
     from billiards_env.physics.motion import launch_speed
 
-    b = env.balls
-    t = env.table
+    b = state.balls
+    t = state.table
     rc = float(b.radius[0])
     cue = b.pos[0]
     cands: list[tuple[float, int, float, float]] = []  # (length, target, angle, speed)
@@ -211,7 +202,7 @@ def _kick_slots(env: "BilliardsEnv", targets: tuple[int, ...], rng: tuple[float,
             if segment_blocked(cue, p, opos, orad) or segment_blocked(p, b.pos[j], opos, orad):
                 continue
             d = float(np.hypot(*(p - cue))) + float(np.hypot(*(b.pos[j] - p)))
-            v = KICK_MARGIN * launch_speed(d, KICK_ARRIVAL, *env.physics.path_args)
+            v = KICK_MARGIN * launch_speed(d, KICK_ARRIVAL, *state.physics.path_args)
             cands.append((d, j, aim_angle(cue, p), min(max(v, rng[0]), rng[1])))
     if not cands:
         return []
@@ -219,7 +210,7 @@ def _kick_slots(env: "BilliardsEnv", targets: tuple[int, ...], rng: tuple[float,
     fan = np.asarray(KICK_FAN)
     angles = np.concatenate([c[2] + fan for c in cands])
     speeds = np.repeat([c[3] for c in cands], len(fan))
-    res = run_shots(env.simulator, b, angles, speeds, validate=False)
+    res = run_shots(state.simulator, b, angles, speeds, validate=False)
     hits = (res.first_contact.reshape(len(cands), len(fan)) == np.array([c[1] for c in cands])[:, None]) & \
         (res.pocket[:, 0] < 0).reshape(len(cands), len(fan))
     out = []
@@ -243,5 +234,5 @@ def _path_clear(b: Any, j: int, obj_angle: float, d_obj: float) -> bool:
                                b.radius[others] + float(b.radius[j]))
 
 
-__all__ = ["Slot", "Slots", "candidate_slots", "legal_rows", "kick_points", "next_shot_ease", "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL",
+__all__ = ["Slot", "Slots", "candidate_slots", "kick_points", "next_shot_ease", "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL",
            "KICK_MARGIN", "KICK_FAN"]

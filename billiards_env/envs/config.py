@@ -30,6 +30,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
+from billiards_env.games import GAMES, game_spec
 from billiards_env.physics.balls import BALL_MASS, BALL_RADIUS
 from billiards_env.physics.errors import SceneError
 from billiards_env.physics.layout import rack_fits
@@ -46,7 +47,8 @@ CUE_PLACEMENTS = ("random", "kitchen", "head_spot")
 ACTION_TYPES = ("absolute", "relative", "ghost", "candidates")
 OBSERVATION_TYPES = ("positions", "features", "candidates")
 OPENINGS = ("break", "ball_in_hand", "either")
-TASKS = ("pot", "nine_ball", "eight_ball")
+#: ``pot`` (the scenes without rules) and every registered game (:data:`billiards_env.games.GAMES`).
+TASKS = ("pot",) + tuple(GAMES)
 OPPONENTS = ("geometric", "search", "random")
 FIRST_SHOOTERS = ("agent", "opponent", "random")
 MAX_OBJECT_BALLS = 15
@@ -147,7 +149,7 @@ class EnvConfig:
 
     # --- task: reward and episode ---------------------------------------------------------------------------------
     task: str = _doc("What the episode asks: 'pot' (pocket the object balls; success when the table is cleared), "
-                     "'nine_ball' or 'eight_ball' (a game under its rules against an opponent).", default="pot")
+                     f"or a game under its rules against an opponent: {', '.join(map(repr, GAMES))}.", default="pot")
     pot_reward: float = _doc("Reward per object ball pocketed.", default=1.0)
     scratch_penalty: float = _doc("Subtracted when the cue ball is pocketed (then re-spotted).", default=1.0)
     miss_penalty: float = _doc("Subtracted when the cue ball touches no ball.", default=0.0)
@@ -430,26 +432,26 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _choice(cfg, "task", TASKS)
     _choice(cfg, "first_shooter", FIRST_SHOOTERS)
     _choice(cfg, "opening", OPENINGS)
-    _require(cfg.opening == "break" or cfg.task in ("nine_ball", "eight_ball"), "opening",
-             "only the games (task 'nine_ball' or 'eight_ball') have an opening; leave it 'break'")
+    game = cfg.task in GAMES
+    _require(cfg.opening == "break" or game, "opening",
+             f"only the games (task {' or '.join(map(repr, GAMES))}) have an opening; leave it 'break'")
     _require(1 <= cfg.candidate_slots <= 12, "candidate_slots", f"must be 1..12, got {cfg.candidate_slots}")
     _require(cfg.candidate_speed_factor > 1.0, "candidate_speed_factor",
              f"must be > 1 (a[1] = +-1 multiplies / divides the shot's speed by it), got {cfg.candidate_speed_factor}")
     _require(cfg.opponent is None or cfg.opponent in OPPONENTS, "opponent",
              f"unknown player {cfg.opponent!r}; use one of {', '.join(map(repr, OPPONENTS))} or None (play alone)")
-    if cfg.task in ("nine_ball", "eight_ball"):
+    if game:
         from billiards_env.rules import RulesError
-        from billiards_env.envs.games import game_spec
 
         spec = game_spec(cfg.task)
-        _require(cfg.n_object_balls == spec.n_balls, "n_object_balls",
-                 f"{cfg.task} is played with {spec.n_balls} object balls, got {cfg.n_object_balls}")
+        _require(cfg.n_object_balls == spec.n_object_balls, "n_object_balls",
+                 f"{cfg.task} is played with {spec.n_object_balls} object balls, got {cfg.n_object_balls}")
         try:
-            spec.options(cfg.rules)
+            spec.logic.options(cfg.rules)
         except (RulesError, TypeError) as exc:
             raise ConfigError(f"rules: {exc}") from None
     else:
-        _require(not cfg.rules, "rules", "only the games (task 'nine_ball' or 'eight_ball') have rules")
+        _require(not cfg.rules, "rules", f"only the games (task {' or '.join(map(repr, GAMES))}) have rules")
     for key in ("cushion_margin", "pocket_margin", "ball_gap", "rack_gap", "angle_noise", "speed_noise", "tip_noise",
                 "pot_reward", "scratch_penalty", "miss_penalty", "step_penalty", "win_reward", "loss_penalty",
                 "foul_penalty", "position_reward"):

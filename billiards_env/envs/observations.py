@@ -13,7 +13,10 @@
   ``candidates`` action type chooses among (:mod:`billiards_env.envs.candidates`), a fixed number of slots of 12
   values each (pocket, cut, distances, ease, clear paths, scratch risk, speed), best first.
 
-A task may append features of its own (a game's turn, ball in hand, group...): :meth:`Task.features`.
+A game appends its features (the turn, ball in hand, group...: :attr:`GameLogic.features
+<billiards_env.games.logic.GameLogic>`), seen by the shooter or by the player asked for (the two-player env).
+Every type reads a :class:`~billiards_env.table_state.TableState`, never the env: the single env, the native vector
+env (one state per table) and a trained player observe through the same code.
 """
 from __future__ import annotations
 
@@ -28,49 +31,47 @@ from billiards_env.physics.aim import pocket_bearings, pocket_mouth_axes, wrap_a
 from ._kernels import observation
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .base import BilliardsEnv
+    from billiards_env.physics.table import Table
+    from billiards_env.table_state import TableState
+
     from .config import EnvConfig
 
 
 class ObservationType:
-    """Builds the observation space and the observation of an env's current state."""
+    """Builds the observation space, and the observation of a table state.
+
+    ``ObservationType(config, table, n_balls, n_game_features=0)``: ``config`` sets the type's own settings (a policy
+    trained on another config of the same game observes as it was trained to), ``n_game_features`` the game's
+    features appended last (values in [0, 1])."""
 
     name = "positions"
 
-    def __init__(self, env: "BilliardsEnv", config: "EnvConfig | None" = None) -> None:
-        """``config``: the settings of the type (default ``env.config``): a policy trained on another config of the
-        same game observes this env as it was trained to."""
-        n = env.n_balls
-        self._sx = 1.0 / env.table.length
-        self._sy = 1.0 / env.table.width
-        low, high = np.zeros(3 * n, np.float32), np.ones(3 * n, np.float32)
-        t_low, t_high = env.task.feature_bounds(env)
-        self.n_task = len(t_low)
-        self.space = spaces.Box(np.concatenate([low, self._extra_low(env), t_low]).astype(np.float32),
-                                np.concatenate([high, self._extra_high(env), t_high]).astype(np.float32),
-                                dtype=np.float32)
+    def __init__(self, config: "EnvConfig", table: "Table", n_balls: int, n_game_features: int = 0) -> None:
+        n = int(n_balls)
+        self._sx = 1.0 / table.length
+        self._sy = 1.0 / table.width
+        self.n_game = int(n_game_features)
+        low = np.concatenate([np.zeros(3 * n, np.float32), -np.ones(self.n_extra, np.float32),
+                              np.zeros(self.n_game, np.float32)])
+        high = np.ones(3 * n + self.n_extra + self.n_game, np.float32)
+        self.space = spaces.Box(low, high, dtype=np.float32)
 
     #: Values of the type's own features (:meth:`features`), after the positions; each in ``[-1, 1]``.
     n_extra = 0
 
-    def _extra_low(self, env: "BilliardsEnv") -> np.ndarray:
-        return -np.ones(self.n_extra, np.float32)
-
-    def _extra_high(self, env: "BilliardsEnv") -> np.ndarray:
-        return np.ones(self.n_extra, np.float32)
-
-    def features(self, env: "BilliardsEnv") -> np.ndarray:
+    def features(self, state: "TableState") -> np.ndarray:
         """The type's own features (``n_extra`` values): none here."""
         return np.zeros(0, np.float32)
 
-    def observe(self, env: "BilliardsEnv") -> np.ndarray:
-        """Positions and pocketed flags, the type's features, the task's features."""
-        b = env.balls
+    def observe(self, state: "TableState", player: int | None = None) -> np.ndarray:
+        """Positions and pocketed flags, the type's features, the game's features (seen by ``player``: default the
+        shooter)."""
+        b = state.balls
         parts = [observation(b.pos, b.on_table, self._sx, self._sy)]
         if self.n_extra:
-            parts.append(self.features(env))
-        if self.n_task:
-            parts.append(env.task.features(env))
+            parts.append(self.features(state))
+        if self.n_game:
+            parts.append(state.game.features(player))
         return parts[0] if len(parts) == 1 else np.concatenate(parts)
 
 
@@ -85,25 +86,25 @@ class ShotFeatures(ObservationType):
 
     name = "features"
 
-    def __init__(self, env: "BilliardsEnv", config: "EnvConfig | None" = None) -> None:
-        self.n_pockets = int(env.table.n_pockets)
+    def __init__(self, config: "EnvConfig", table: "Table", n_balls: int, n_game_features: int = 0) -> None:
+        self.n_pockets = int(table.n_pockets)
         self.n_extra = 3 + 3 * self.n_pockets
-        self._axes = pocket_mouth_axes(env.table)
-        super().__init__(env, config)
+        self._axes = pocket_mouth_axes(table)
+        super().__init__(config, table, n_balls, n_game_features)
 
-    def features(self, env: "BilliardsEnv") -> np.ndarray:
+    def features(self, state: "TableState") -> np.ndarray:
         """The target-centred features (``3 + 3 * n_pockets`` values)."""
         out = np.zeros(self.n_extra, np.float32)
-        t = env.target_ball()
+        t = state.view.target
         if t is None:
             return out
-        b = env.balls
-        scale = 1.0 / env.table.length
+        b = state.balls
+        scale = 1.0 / state.table.length
         v = b.pos[t] - b.pos[0]
         d = float(np.hypot(*v))
         out[0:2] = v / max(d, 1e-12)
         out[2] = min(d * scale, 1.0)
-        bearing, dist, square = pocket_bearings(b.pos[t], env.table, self._axes)
+        bearing, dist, square = pocket_bearings(b.pos[t], state.table, self._axes)
         rel = wrap_angle(bearing - math.atan2(v[1], v[0]))
         order = np.argsort(np.abs(rel), kind="stable")
         out[3::3] = rel[order] / math.pi
@@ -132,22 +133,21 @@ class CandidateFeatures(ObservationType):
 
     name = "candidates"
 
-    def __init__(self, env: "BilliardsEnv", config: "EnvConfig | None" = None) -> None:
-        c = config if config is not None else env.config
-        self.n_slots = int(c.candidate_slots)
-        self.speed_range = (float(c.speed_min), float(c.speed_max))
+    def __init__(self, config: "EnvConfig", table: "Table", n_balls: int, n_game_features: int = 0) -> None:
+        self.n_slots = int(config.candidate_slots)
+        self.speed_range = (float(config.speed_min), float(config.speed_max))
         self.n_extra = SLOT_FEATURES * self.n_slots
-        super().__init__(env, config)
+        super().__init__(config, table, n_balls, n_game_features)
 
-    def features(self, env: "BilliardsEnv") -> np.ndarray:
+    def features(self, state: "TableState") -> np.ndarray:
         """The slots' values (``12 * candidate_slots``)."""
         from .candidates import candidate_slots
 
         out = np.zeros((self.n_slots, SLOT_FEATURES), np.float32)
-        cands = candidate_slots(env, self.n_slots, self.speed_range)
-        t = env.table
+        cands = candidate_slots(state, self.n_slots, self.speed_range)
+        t = state.table
         px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
-        numbers = env.ball_numbers
+        numbers = state.numbers
         if cands.kick is not None:
             s = cands.kick
             row = out[self.n_slots - 1]
@@ -181,9 +181,10 @@ class CandidateFeatures(ObservationType):
 OBSERVATION_TYPES = {"positions": Positions, "features": ShotFeatures, "candidates": CandidateFeatures}
 
 
-def observation_factory(env: "BilliardsEnv") -> ObservationType:
-    """The observation type named by ``env.config.observation_type``."""
-    return OBSERVATION_TYPES[env.config.observation_type](env)
+def observation_factory(config: "EnvConfig", table: "Table", n_balls: int, n_game_features: int = 0
+                        ) -> ObservationType:
+    """The observation type named by ``config.observation_type``."""
+    return OBSERVATION_TYPES[config.observation_type](config, table, n_balls, n_game_features)
 
 
 __all__ = ["ObservationType", "Positions", "ShotFeatures", "CandidateFeatures", "OBSERVATION_TYPES",

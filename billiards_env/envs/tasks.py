@@ -1,52 +1,42 @@
-"""Tasks: what an episode asks of the agent — reward, termination, success and the task's part of ``info``
-(panda-gym's Task; the env joins a simulator, an action type, an observation type and a task).
+"""Tasks: what an episode asks of the agent: reward, termination, success and the task's part of ``info``
+(panda-gym's Task; the env joins a table state, an action type, an observation type and a task).
 
-The env simulates a shot and hands the task a :class:`ShotOutcome`; the task scores it. :class:`PotTask` is the
-three original scenes (pot one ball, three balls, a rack). Games (9-ball, 8-ball) are tasks with rules
-(:mod:`billiards_env.envs.games`).
+A task reads the :class:`~billiards_env.table_state.TableState`, never the env: the env plays a shot through the one
+shot path (:func:`billiards_env.shot_path.play_shot`) and hands the task the :class:`PlayedShot`; the task scores
+it. A task that needs more shots played within a step (a game's opponent, the ``ball_in_hand`` opening's break)
+asks the env's :class:`Driver` for them. :class:`PotTask` is the three scenes without rules (pot one ball, three
+balls, a rack); games are tasks with rules (:mod:`billiards_env.envs.games`).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Callable, NamedTuple
 
 import numpy as np
 from numba import njit
 
-from billiards_env.physics.codes import EV_COLLISION
+from billiards_env.games import game_spec
 from billiards_env.physics.layout import spot_cue_ball
+from billiards_env.physics.outcome import ShotOutcome, first_contact_row
+from billiards_env.shot_path import CueShot, PlayedShot
+from billiards_env.table_state import TableState
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .base import BilliardsEnv
+    from .config import EnvConfig
 
 
-@dataclass(frozen=True)
-class ShotOutcome:
-    """What one simulated shot did (rows index the env's balls; the cue ball is row 0)."""
+class Driver(NamedTuple):
+    """What the env lends a task for the shots it plays within a step: ``play(shot, by)`` plays a shot through the
+    env's shot path (its noise, its recording; ``by``: ``"opponent"``, animated after the agent's shot, or
+    ``"table"``, nobody's shot, not drawn) and ``opponent_shot()`` asks the opponent policy for its shot on the
+    table now."""
 
-    status: str  #: "rest", "time_cap" or "event_cap"
-    sim_time: float  #: simulated seconds
-    n_events: int
-    pocket: np.ndarray  #: (N,) pocket index of each ball pocketed by this shot, -1 otherwise
-    events: np.ndarray  #: (M, 3) int event log: kind, ball, other
-    pocketed: tuple[int, ...]  #: rows pocketed by this shot (the cue ball included)
-    scratch: bool  #: the cue ball was pocketed
-    first_contact: int  #: row of the first ball the cue ball hit, -1 if none
-
-    @classmethod
-    def from_arrays(cls, status: str, sim_time: float, n_events: int, pocket: np.ndarray,
-                    events: np.ndarray) -> "ShotOutcome":
-        pocketed = tuple(i for i, p in enumerate(pocket.tolist()) if p >= 0)
-        return cls(status, float(sim_time), int(n_events), pocket, events, pocketed, bool(pocket[0] >= 0),
-                   first_contact(events))
+    play: Callable[[CueShot, str], PlayedShot]
+    opponent_shot: Callable[[], CueShot]
 
 
 def first_contact(events: np.ndarray, ball: int = 0) -> int:
     """Row of the first ball that ``ball`` collided with in an ``(M, 3)`` event log, or -1."""
-    for kind, b, other in events.tolist():
-        if kind == EV_COLLISION and (b == ball or other == ball):
-            return other if b == ball else b
-    return -1
+    return int(first_contact_row(np.ascontiguousarray(events, dtype=np.int64).reshape(-1, 3), ball))
 
 
 class Task:
@@ -59,46 +49,27 @@ class Task:
     option_keys: tuple[str, ...] = ()
     #: Declarations the action carries (``"pocket"``: the 8's called pocket; ``"push"``: a 9-ball push-out).
     declarations: tuple[str, ...] = ()
+    #: Game features appended to every observation (values in [0, 1]).
+    n_features = 0
 
-    def __init__(self, env: "BilliardsEnv") -> None:
-        self.config = env.config
+    def __init__(self, config: "EnvConfig", state: TableState) -> None:
+        self.config = config
 
-    def reset(self, env: "BilliardsEnv", options: dict[str, Any] | None) -> dict[str, Any]:
+    def reset(self, state: TableState, rng: np.random.Generator, options: dict[str, Any] | None,
+              driver: Driver) -> dict[str, Any]:
         """Called after the balls are placed; returns extra ``info`` for ``reset``."""
         return {}
 
-    def target_ball(self, env: "BilliardsEnv") -> int | None:
-        """Row of the ball the shooter should hit first (the relative and ghost aim's target), or None."""
-        on = env.balls.on_table
-        for i in range(1, env.n_balls):
-            if on[i]:
-                return i
-        return None
+    def before_shot(self, shot: CueShot) -> None:
+        """Called with the shot about to be played (a game reads its declarations and shows it in the HUD)."""
 
-    def is_break(self, env: "BilliardsEnv") -> bool:
-        """Whether the shot to play is a game's opening break (the ``candidates`` action type plays it apart)."""
-        return False
-
-    def ball_in_hand_area(self, env: "BilliardsEnv") -> tuple[float, float, float, float] | None:
-        """The rectangle ``(x0, x1, y0, y1)`` where the shooter may place the cue ball now, or None (no ball in
-        hand)."""
-        return None
-
-    def before_shot(self, env: "BilliardsEnv", shot: Any) -> None:
-        """Called with the shot (a :class:`~.actions.CueShot`) before it is played (a game reads the declarations)."""
-
-    def feature_bounds(self, env: "BilliardsEnv") -> tuple[np.ndarray, np.ndarray]:
-        """Bounds of the task's observation features (none by default)."""
-        return np.zeros(0, np.float32), np.zeros(0, np.float32)
-
-    def features(self, env: "BilliardsEnv") -> np.ndarray:
-        return np.zeros(0, np.float32)
-
-    def on_shot(self, env: "BilliardsEnv", outcome: ShotOutcome) -> tuple[float, bool, bool, dict[str, Any]]:
-        """Score a shot: ``(reward, terminated, truncated, info)``."""
+    def on_shot(self, state: TableState, played: PlayedShot, shots: int, driver: Driver
+                ) -> tuple[float, bool, bool, dict[str, Any]]:
+        """Score a shot (``shots``: the shots of the episode so far, this one included): ``(reward, terminated,
+        truncated, info)``."""
         raise NotImplementedError
 
-    def hud(self, env: "BilliardsEnv") -> dict[str, Any] | None:
+    def hud(self) -> dict[str, Any] | None:
         """Plain data for the renderer's game panel (players, whose turn, the last call, the score:
         :mod:`billiards_env.render.hud`), or None: no panel (the frames keep their size)."""
         return None
@@ -129,25 +100,28 @@ class PotTask(Task):
 
     name = "pot"
 
-    def on_shot(self, env: "BilliardsEnv", outcome: ShotOutcome) -> tuple[float, bool, bool, dict[str, Any]]:
+    def on_shot(self, state: TableState, played: PlayedShot, shots: int, driver: Driver
+                ) -> tuple[float, bool, bool, dict[str, Any]]:
         c = self.config
-        b = env.balls
+        b = state.balls
+        outcome: ShotOutcome = played.outcome
         if outcome.scratch:
-            spot_cue_ball(b.pos, b.on_table, c.ball_radius, env.table)
+            spot_cue_ball(b.pos, b.on_table, c.ball_radius, state.table)
+            state.changed()
         n_potted = len(outcome.pocketed) - (1 if outcome.scratch else 0)
         reward, terminated, truncated, success = pot_score(
-            n_potted, outcome.scratch, outcome.first_contact < 0, not b.on_table[1:].any(), env.shots, c.pot_reward,
+            n_potted, outcome.scratch, outcome.first_contact < 0, not b.on_table[1:].any(), shots, c.pot_reward,
             c.step_penalty, c.scratch_penalty, c.miss_penalty, c.single_shot, c.max_shots)
         return float(reward), bool(terminated), bool(truncated), {"is_success": bool(success)}
 
 
-def task_factory(env: "BilliardsEnv") -> Task:
-    """The task named by ``env.config.task`` (``pot``, or a game: ``nine_ball``, ``eight_ball``)."""
-    if env.config.task == "pot":
-        return PotTask(env)
-    from .games import EightBallTask, NineBallTask
+def task_factory(config: "EnvConfig", state: TableState) -> Task:
+    """The task named by ``config.task``: ``pot``, or a registered game (:data:`billiards_env.games.GAMES`)."""
+    if config.task == "pot":
+        return PotTask(config, state)
+    from .games import GameTask
 
-    return {"nine_ball": NineBallTask, "eight_ball": EightBallTask}[env.config.task](env)
+    return GameTask(config, state, game_spec(config.task))
 
 
-__all__ = ["ShotOutcome", "first_contact", "Task", "PotTask", "pot_score", "task_factory"]
+__all__ = ["Driver", "first_contact", "Task", "PotTask", "pot_score", "task_factory"]

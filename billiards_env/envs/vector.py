@@ -41,6 +41,7 @@ from billiards_env.physics.batch import new_outputs, simulate_into, use_parallel
 from billiards_env.physics.codes import STATUS_NAMES
 from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES
 from billiards_env.registration import ENVS, vector_entry_point
+from billiards_env.table_state import TableState
 
 from ._pot_fast import compiled_action
 from ._seeding import np_random
@@ -52,22 +53,6 @@ from .base import RENDER_MODES, BilliardsEnv
 from .config import ConfigError
 
 _STATUS = np.array(STATUS_NAMES, dtype=object)
-
-
-class _TableView:
-    """Sub-env ``k`` seen as an env by the observation and task code (its balls are views of the vector's
-    arrays), for the parts that stay in Python (the ``features`` observation)."""
-
-    def __init__(self, template: BilliardsEnv, balls: Balls) -> None:
-        self.balls = balls
-        self.table = template.table
-        self.task = template.task
-        self.config = template.config
-        self.n_balls = template.n_balls
-        self.physics = template.physics
-
-    def target_ball(self) -> int | None:
-        return self.task.target_ball(self)
 
 
 class BilliardsVectorEnv(VectorEnv):
@@ -134,7 +119,7 @@ class BilliardsVectorEnv(VectorEnv):
         self._out = new_outputs(n, nb)
         self._fout = np.zeros((n, 7))  # per table: reward, the shot as played, the cue ball's start (F_*)
         self._iout = np.zeros((n, 5), np.int64)  # per table: terminated, truncated, success, scratch, pocketed (O_*)
-        self._cfg, self._icfg = pack_config(t)
+        self._cfg, self._icfg = pack_config(t.config, t.action_type, t.observation_type)
         c = t.config
         self._noisy = c.angle_noise > 0.0 or c.speed_noise > 0.0 or c.tip_noise > 0.0
         self._noise = np.zeros((n, 4))  # each table's shot noise (drawn by draw_noise when there is noise)
@@ -157,9 +142,12 @@ class BilliardsVectorEnv(VectorEnv):
         self._rngs: list[np.random.Generator | None] = [None] * n
         self._rng_seeds: list[int | None] = [None] * n
         self._gens: Any = None
-        # Views for the Python parts (features observation).
-        self._views = [_TableView(t, Balls(self.ball_ids, self.pos[k], self.vel[k], t.balls.radius, t.balls.mass,
-                                           self.on_table[k], self.ang[k])) for k in range(n)]
+        # One table state per table (views of the batch arrays) for the parts that stay in Python (the features and
+        # candidates observations, reset options).
+        s = t.state
+        self._states = [TableState(Balls(self.ball_ids, self.pos[k], self.vel[k], t.balls.radius, t.balls.mass,
+                                         self.on_table[k], self.ang[k]), s.table, s.physics, s.simulator, s.numbers,
+                                   s.settings) for k in range(n)]
 
     # ======================================================================================================
     # Gymnasium API
@@ -365,17 +353,13 @@ class BilliardsVectorEnv(VectorEnv):
 
     def _reset_with_options(self, k: int, options: dict[str, Any]) -> None:
         """A scene set by ``reset(options=...)`` for sub-env ``k``, with the single env's own checks."""
-        t = self.template
-        saved = (t.balls, t._np_random)
-        view = self._views[k].balls
-        view.vel.fill(0.0)
-        view.ang.fill(0.0)
-        view.on_table.fill(True)
-        t.balls, t._np_random = view, self._rngs[k]
-        try:
-            t._set_positions(options)
-        finally:
-            t.balls, t._np_random = saved
+        state = self._states[k]
+        b = state.balls
+        b.vel.fill(0.0)
+        b.ang.fill(0.0)
+        b.on_table.fill(True)
+        self.template._set_positions(options, b, self._rngs[k])
+        state.changed()
 
     def _observe(self, rows: np.ndarray) -> None:
         if rows.size == 0:
@@ -386,7 +370,9 @@ class BilliardsVectorEnv(VectorEnv):
         else:
             ot = self.template.observation_type
             for k in rows.tolist():
-                self._obs[k] = ot.observe(self._views[k])
+                state = self._states[k]
+                state.changed()  # the table moved on since the last observation
+                self._obs[k] = ot.observe(state)
 
     def _step_info(self, rows: np.ndarray, status, sim_time, n_events, first) -> dict[str, np.ndarray]:
         """The single env's step ``info`` of every table, as arrays (rows not in ``rows`` are filler)."""

@@ -4,11 +4,12 @@
 - ``geometric``: ghost-ball aiming at the easiest pocket (:mod:`.shots`, on :mod:`billiards_env.physics.aim`);
 - ``search``: simulates candidate shots with the exact solver and plays the best (:mod:`.search`).
 
-A player looks at the environment's true state (``env.unwrapped.balls``, ``.table``, ``.physics``, ``.simulator``,
-``.config``), chooses a shot ``(angle, speed)`` in physical units and turns it into an action with
-``env.unwrapped.action_from_shot(angle, speed)``, so the same player works with every action type. The decision
-functions (:func:`geometric_shot`, :func:`search_shot`) take plain physics objects (a :class:`ShotContext`), so
-they can be used without an environment::
+A player reads a table state (:class:`~billiards_env.table_state.TableState`: the balls, the table, the physics,
+who is to shoot and what they may do), chooses a shot ``(angle, speed)`` in physical units and turns it into an
+action of an action type (``codec.action(state, angle, speed, ...)``), so the same player works with every action
+type: ``player.act(state, obs, codec)``. Given an env, it reads ``env.unwrapped.state`` and acts in the env's own
+action type. The decision functions (:func:`geometric_shot`, :func:`search_shot`) take plain physics objects (a
+:class:`ShotContext`), so they can be used without an environment::
 
     player = make_player("search", seed=0)
     obs, info = env.reset(seed=1)
@@ -20,7 +21,7 @@ from typing import Any, Callable, Protocol
 
 import numpy as np
 
-from .context import ShotContext, shot_context, to_action
+from .context import ShotContext, player_inputs, shot_context, to_action
 from .geometric import GeometricPlayer, geometric_shot
 from .random import RandomPlayer
 from .search import Outcome, SearchPlayer, SearchSettings, search_shot
@@ -34,7 +35,7 @@ class Player(Protocol):
 
     def reset(self, seed: int | None = None) -> None: ...
 
-    def act(self, env: Any, obs: Any) -> np.ndarray: ...
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray: ...
 
 
 PLAYERS: dict[str, Callable[..., Any]] = {

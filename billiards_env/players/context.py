@@ -1,5 +1,12 @@
-"""What a player needs to know about the shot it is to play: :class:`ShotContext` (plain physics objects), and
-the turn of a shot into an env action."""
+"""What a player reads: a :class:`~billiards_env.table_state.TableState` (the table, the balls, who is to shoot and
+what they may do), seen as a :class:`ShotContext` of plain physics objects; and the turn of a chosen shot into an
+action of an action type (the ``codec``: an env's action type, whose ``action`` and ``shot`` map shots to actions
+and back).
+
+Players take the state, never the env: ``player.act(state, obs, codec)``. Given an env instead
+(``player.act(env, obs)``, the Gymnasium habit), they read ``env.unwrapped.state`` and act in
+``env.unwrapped.action_type``.
+"""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -8,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from billiards_env.physics import Balls, Physics, Simulator, Table
+from billiards_env.table_state import TableState, state_of
 
 
 @dataclass(frozen=True)
@@ -15,9 +23,10 @@ class ShotContext:
     """What a player needs to know about the current shot.
 
     ``targets``: rows of the balls the shooter may hit first (every object ball on the table, or in a game the
-    legal targets of the rules). ``game``: the env's game task in a game (its ``rules``, ``state``,
-    ``needs_called_pocket()``), else None. ``place_area``: ``(x0, x1, y0, y1)`` where the shooter may put the cue
-    ball now (ball in hand), else None."""
+    legal targets of the rules). ``game``: the game's session (its ``rules``, ``state``, ``needs_called_pocket()``,
+    ``numbers``, ``row_of``) in a game, else None. ``place_area``: ``(x0, x1, y0, y1)`` where the shooter may put
+    the cue ball now (ball in hand), else None. ``table_state``: the state it was read from (placement and aiming
+    from a place: ``legal_cue_position``, ``cue_moved_to``)."""
 
     balls: Balls
     table: Table
@@ -33,38 +42,43 @@ class ShotContext:
     tip_noise: float = 0.0
     #: Whether the shooter sets tip offsets (the spin model and an action with the side/top dims).
     tip_offsets: bool = False
+    table_state: TableState | None = None
 
 
-def shot_context(env: Any) -> ShotContext:
-    """The :class:`ShotContext` of a billiards env (wrapped or not)."""
-    u = env.unwrapped
-    balls: Balls = u.balls
-    cfg = u.config
-    cue = balls.index("cue") if "cue" in balls.ids else 0
-    task = getattr(u, "task", None)
-    game = task if hasattr(task, "rules") else None
-    if game is not None:
-        targets = [i for i in game.legal_rows() if balls.on_table[i]]
-    else:
-        targets = [i for i in range(len(balls)) if i != cue and balls.on_table[i]]
-    area = task.ball_in_hand_area(u) if task is not None else None
-    return ShotContext(balls, u.table, u.physics, u.simulator, cue, targets,
-                       (float(cfg.speed_min), float(cfg.speed_max)),
-                       float(getattr(cfg, "angle_noise", 0.0)), float(getattr(cfg, "speed_noise", 0.0)), game, area,
-                       float(getattr(cfg, "tip_noise", 0.0)),
-                       u.physics.friction == "spin" and bool(getattr(getattr(u, "action_type", None), "spin", False)))
+def shot_context(source: Any, codec: Any = None) -> ShotContext:
+    """The :class:`ShotContext` of a table state, or of an env's (``codec``: the action type the player acts in,
+    default an env's own; its spin dims say whether tip offsets are set)."""
+    state = state_of(source)
+    if codec is None:
+        codec = getattr(getattr(source, "unwrapped", source), "action_type", None)
+    s = state.settings
+    view = state.view
+    spin_dims = bool(getattr(codec, "spin", s.tip_offsets))
+    return ShotContext(state.balls, state.table, state.physics, state.simulator, 0, list(view.targets),
+                       s.speed_range, s.angle_noise, s.speed_noise, state.game, view.place_area, s.tip_noise,
+                       state.physics.friction == "spin" and spin_dims, state)
 
 
-def to_action(env: Any, angle: float, speed: float, place: tuple[float, float] | None = None,
+def player_inputs(source: Any, codec: Any = None) -> tuple[TableState, Any]:
+    """The table state and the action type (``codec``) a player acts on: ``source`` is a table state (then
+    ``codec`` is needed) or a billiards env, wrapped or not (``codec`` defaults to its action type)."""
+    state = state_of(source)
+    if codec is None:
+        codec = getattr(getattr(source, "unwrapped", source), "action_type", None)
+        if codec is None:
+            raise TypeError("player.act(state, obs, codec): give the action type to act in (an env's "
+                            "action_type) with a table state")
+    return state, codec
+
+
+def to_action(codec: Any, state: TableState, angle: float, speed: float, place: tuple[float, float] | None = None,
               pocket: int | None = None, side: float = 0.0, top: float = 0.0) -> np.ndarray:
-    """The env's action for a shot ``(angle, speed)`` (in its action type; from ``place`` with ball in hand,
+    """The action of ``codec`` (an action type) for a shot ``(angle, speed)`` (from ``place`` with ball in hand,
     calling ``pocket`` for the 8; tip offsets ``side``, ``top`` when the action has spin dims, else dropped),
-    inside its action space."""
-    u = env.unwrapped
-    spin = getattr(getattr(u, "action_type", None), "spin", False)
-    tip = {"side": side, "top": top} if spin else {}
-    a = np.asarray(u.action_from_shot(angle, speed, place=place, pocket=pocket, **tip), dtype=np.float32)
-    return np.clip(a, env.action_space.low, env.action_space.high)
+    inside its space."""
+    tip = {"side": side, "top": top} if codec.spin else {}
+    a = np.asarray(codec.action(state, angle, speed, place=place, pocket=pocket, **tip), dtype=np.float32)
+    return np.clip(a, codec.space.low, codec.space.high)
 
 
-__all__ = ["ShotContext", "shot_context", "to_action"]
+__all__ = ["ShotContext", "shot_context", "player_inputs", "to_action"]

@@ -1,7 +1,6 @@
 """The geometric player: ghost-ball aiming at the easiest pocket (:func:`billiards_env.players.shots.ghost_ball_shots`)."""
 from __future__ import annotations
 
-import contextlib
 import math
 from typing import Any
 
@@ -10,7 +9,7 @@ import numpy as np
 from billiards_env.physics.aim import aim_angle, direction_vector, ghost_ball_position, pocket_window
 from billiards_env.physics.layout import head_spot
 
-from .context import ShotContext, shot_context, to_action
+from .context import ShotContext, player_inputs, shot_context, to_action
 from .shots import MAX_CUT, ShotCandidate, direct_hit, ghost_ball_shots
 
 
@@ -41,12 +40,12 @@ def break_shot(ctx: ShotContext) -> tuple[tuple[float, float] | None, float, flo
     return place, aim_angle(cue, b.pos[target]), float(ctx.speed_range[1])
 
 
-def choose_placement(env: Any, ctx: ShotContext, max_cut: float = MAX_CUT,
+def choose_placement(ctx: ShotContext, max_cut: float = MAX_CUT,
                      backs: tuple[float, ...] = (0.25, 0.5)) -> tuple[float, float]:
     """Ball in hand: the legal cue position (in ``ctx.place_area``, off the other balls) that leaves the easiest
     ghost-ball shot. Candidates are the straight-in positions ``backs`` metres behind the ghost ball of every
     legal target and pocket (moved to the nearest legal point); each is scored by :func:`ghost_ball_shots`."""
-    u = env.unwrapped
+    u = ctx.table_state
     b = ctx.balls
     r = float(b.radius[ctx.cue])
     x0, x1, y0, y1 = ctx.place_area
@@ -84,20 +83,21 @@ class GeometricPlayer:
     def reset(self, seed: int | None = None) -> None:
         self.last = None
 
-    def act(self, env: Any, obs: Any) -> np.ndarray:
-        """In a game it follows the rules: the legal balls only, a full-power break, ball in hand placed for the
-        easiest shot (:func:`choose_placement`), and the pocket of its shot called when on the 8."""
-        ctx = shot_context(env)
-        u = env.unwrapped
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+        """The action (in ``codec``, an action type; default the env's) of the shot chosen on ``source`` (a table
+        state or an env). In a game it follows the rules: the legal balls only, a full-power break, ball in hand
+        placed for the easiest shot (:func:`choose_placement`), and the pocket of its shot called when on the 8."""
+        state, codec = player_inputs(source, codec)
+        ctx = shot_context(state, codec)
         if ctx.game is not None and ctx.game.state.break_shot:
             place, angle, speed = break_shot(ctx)
             self.last = None
-            return to_action(env, angle, speed, place=place)
-        place = choose_placement(env, ctx, self.max_cut) if ctx.place_area is not None else None
-        with u.cue_moved_to(place) if place is not None else contextlib.nullcontext():
+            return to_action(codec, state, angle, speed, place=place)
+        place = choose_placement(ctx, self.max_cut) if ctx.place_area is not None else None
+        with state.cue_moved_to(place):
             angle, speed, self.last = geometric_shot(ctx, self.max_cut)
         pocket = self.last.pocket if self.last is not None else None
-        return to_action(env, angle, speed, place=place, pocket=pocket)
+        return to_action(codec, state, angle, speed, place=place, pocket=pocket)
 
 
 

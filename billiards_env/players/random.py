@@ -1,9 +1,11 @@
-"""The random player: uniformly random actions from the env's action space (seeded)."""
+"""The random player: uniformly random actions from the action space (seeded)."""
 from __future__ import annotations
 
 from typing import Any
 
 import numpy as np
+
+from .context import player_inputs
 
 
 class RandomPlayer:
@@ -18,8 +20,10 @@ class RandomPlayer:
         if seed is not None:
             self.rng = np.random.default_rng(seed)
 
-    def act(self, env: Any, obs: Any) -> np.ndarray:
-        space = env.action_space
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+        """A uniform action of ``codec``'s space (an action type; default the env's)."""
+        _, codec = player_inputs(source, codec)
+        space = codec.space
         return self.rng.uniform(space.low, space.high).astype(space.dtype)
 
 

@@ -14,7 +14,6 @@ from the few best places for the next shot and keeps the best.
 """
 from __future__ import annotations
 
-import contextlib
 import math
 from dataclasses import dataclass
 from typing import Any, Callable, Sequence
@@ -25,7 +24,7 @@ from billiards_env.physics.aim import direction_vector, ghost_ball_position, poc
 from billiards_env.physics.batch import BatchResult, run_shots
 from billiards_env.rules import ShotInfo, summarize_arrays
 
-from .context import ShotContext, shot_context, to_action
+from .context import ShotContext, player_inputs, shot_context, to_action
 from .geometric import break_shot
 from .shots import MAX_CUT, direct_hit, ghost_ball_shots, pot_probability
 
@@ -156,11 +155,6 @@ def _judge_arrays(ctx: ShotContext, events: np.ndarray, pocket: np.ndarray) -> t
     if call.turn_over:
         return 0.0, 0, rows
     return KEEP_VALUE + BALL_VALUE * len(set(call.pocketed) - set(call.respot)), 1, rows
-
-
-def _game_value(ctx: ShotContext, events: Any, pocket: np.ndarray) -> float:
-    """The rules' value of a candidate (see :func:`_judge`)."""
-    return _judge(ctx, events, pocket)[0]
 
 
 # --- position: the ease of the next shot -------------------------------------------------------------------------
@@ -377,13 +371,13 @@ def _tip_inside(side: float, top: float, limit: float = 0.5 * (1.0 - 1e-12)) -> 
 
 # --- ball in hand ------------------------------------------------------------------------------------------------
 
-def placement_candidates(env: Any, ctx: ShotContext, n: int, backs: tuple[float, ...] = (0.25, 0.5),
+def placement_candidates(ctx: ShotContext, n: int, backs: tuple[float, ...] = (0.25, 0.5),
                          cuts: tuple[float, ...] = (0.0, math.radians(25.0), -math.radians(25.0)),
                          sigma: float = 0.002) -> list[tuple[float, float]]:
     """Ball in hand: up to ``n`` legal places (at least a ball apart) that leave the easiest shot, best first. The
     places tried: ``backs`` metres behind the ghost ball of every legal ball and pocket, straight in and at the
     ``cuts`` (for position after the pot), moved to the nearest legal point; each scored by :func:`next_shot_ease`."""
-    u = env.unwrapped
+    u = ctx.table_state
     b = ctx.balls
     r = float(b.radius[ctx.cue])
     x0, x1, y0, y1 = ctx.place_area
@@ -416,23 +410,22 @@ def placement_candidates(env: Any, ctx: ShotContext, n: int, backs: tuple[float,
     return out
 
 
-def playable_shots(env: Any, place: tuple[float, float] | None = None
+def playable_shots(state: Any, codec: Any, place: tuple[float, float] | None = None
                    ) -> Callable[[list[tuple[float, float, float, float, str]]],
                                  list[tuple[float, float, float, float, str]]] | None:
     """The map of candidates ``(angle, speed, side, top, source)`` to the shots their actions play: through the
     env's action type and back, float32 as every action is. The search then values exactly what the env will
     play: a break or a hard shot through a cluster is chaotic (a 1e-8 rad change of the cue angle, the float32
     rounding of an action, can drop the 8), and an action type may not express every direction (``ghost`` aim:
-    only direct hits, within ``ghost_max_angle``). None for an env without action types."""
-    u = env.unwrapped
-    if getattr(u, "action_type", None) is None:
+    only direct hits, within ``ghost_max_angle``). ``codec``: the action type played in (None: no round trip)."""
+    if codec is None:
         return None
 
     def play(cands: list[tuple[float, float, float, float, str]]) -> list[tuple[float, float, float, float, str]]:
         out = []
         for angle, speed, side, top, src in cands:
-            action = to_action(env, angle, speed, place=place, side=side, top=top)
-            s = u.shot_from_action(action)
+            action = to_action(codec, state, angle, speed, place=place, side=side, top=top)
+            s = codec.shot(state, action)
             out.append((s.angle, s.speed, s.side, s.top, src))
             play.actions[(s.angle, s.speed, s.side, s.top)] = action
         return out
@@ -461,37 +454,39 @@ class SearchPlayer:
             self.rng = np.random.default_rng(seed)
         self._windows = {}
 
-    def act(self, env: Any, obs: Any) -> np.ndarray:
-        """In a game it plays by the rules (candidates valued by the rules' call and the position they leave),
-        breaks at full power, and with the cue ball in hand searches from the best few places
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+        """The action (in ``codec``, an action type; default the env's) of the best shot found on ``source`` (a
+        table state or an env). In a game it plays by the rules (candidates valued by the rules' call and the
+        position they leave), breaks at full power, and with the cue ball in hand searches from the best few places
         (:func:`placement_candidates`) and plays the best shot of all."""
-        ctx = shot_context(env)
-        u = env.unwrapped
+        state, codec = player_inputs(source, codec)
+        ctx = shot_context(state, codec)
         if ctx.game is not None and ctx.game.state.break_shot:
             place, angle, speed = break_shot(ctx)
             self.last = None
-            return to_action(env, angle, speed, place=place)
+            return to_action(codec, state, angle, speed, place=place)
         if ctx.table is not self._table or len(self._windows) > 50_000:
             self._table, self._windows = ctx.table, {}
         places: list[Any] = [None]
         if ctx.place_area is not None:
             sigma = max(ctx.angle_noise, self.settings.ease_noise)
-            places = placement_candidates(env, ctx, max(self.settings.placements, 1), sigma=sigma)
+            places = placement_candidates(ctx, max(self.settings.placements, 1), sigma=sigma)
         best: tuple[Any, float, float, Outcome] | None = None
         for place in places:
-            play = playable_shots(env, place)
-            with u.cue_moved_to(place) if place is not None else contextlib.nullcontext():
+            play = playable_shots(state, codec, place)
+            with state.cue_moved_to(place):
                 angle, speed, out = search_shot(ctx, self.settings, self.rng, self._windows, play)
             if best is None or out.robust > best[3].robust:
                 best = (place, angle, speed, out, play)
         assert best is not None
         place, angle, speed, self.last, play = best
-        with u.cue_moved_to(place) if place is not None else contextlib.nullcontext():
+        with state.cue_moved_to(place):
             pocket = self._called_pocket(ctx, angle, speed, self.last)
-        action = to_action(env, angle, speed, place=place, pocket=pocket, side=self.last.side, top=self.last.top)
+        action = to_action(codec, state, angle, speed, place=place, pocket=pocket, side=self.last.side,
+                           top=self.last.top)
         searched = None if play is None else play.actions.get((angle, speed, self.last.side, self.last.top))
         if searched is not None:  # the shot dims of the very action searched (the call and place stay)
-            shot_dims = 4 if getattr(u.action_type, "spin", False) else 2
+            shot_dims = 4 if codec.spin else 2
             action[:shot_dims] = searched[:shot_dims]
         return action
 

@@ -31,7 +31,7 @@ from .nine_ball import NineBall, NineBallOptions, nine_ball_targets
 from .ruleset import Ruleset
 from .state import (ANYWHERE, EIGHT_BALL, FOULS, KITCHEN, NINE_BALL, SOLIDS, STRIPES, BallInHand, Call, GameState,
                     ShotInfo)
-from .summary import CUE, ShotSummary, ball_numbers, summarize_arrays, summarize_result
+from .summary import CUE, ShotSummary, ball_numbers, summarize_arrays, summarize_outcome, summarize_result
 
 RULESETS = {NINE_BALL: NineBall, EIGHT_BALL: EightBall}
 
@@ -53,7 +53,7 @@ def legal_targets(state: GameState) -> tuple[int, ...]:
 
 __all__ = [
     "NineBall", "NineBallOptions", "EightBall", "EightBallOptions", "Ruleset", "RulesError", "GameState",
-    "ShotInfo", "Call", "ShotSummary", "BallInHand", "summarize_arrays", "summarize_result",
+    "ShotInfo", "Call", "ShotSummary", "BallInHand", "summarize_arrays", "summarize_outcome", "summarize_result",
     "ball_numbers", "legal_targets", "nine_ball_targets", "eight_ball_targets", "group_of", "ruleset_for",
     "RULESETS", "CUE", "NINE_BALL", "EIGHT_BALL", "ANYWHERE", "KITCHEN", "SOLIDS", "STRIPES", "FOULS",
 ]

@@ -79,6 +79,11 @@ class Ruleset(ABC):
     def legal_targets(self, state: GameState) -> tuple[int, ...]:
         """The balls the shooter may contact first on the next shot, ascending."""
 
+    def needs_called_pocket(self, state: GameState) -> bool:
+        """Whether the next shot needs ``ShotInfo.called_pocket`` (8-ball: the shooter is on the 8); games without
+        called pockets: never."""
+        return False
+
     @abstractmethod
     def call(self, state: GameState, summary: ShotSummary, shot_info: ShotInfo | None = None) -> Call:
         """The call on the shot ``summary`` played from ``state`` with the declarations ``shot_info``."""

@@ -1,14 +1,15 @@
 """What a shot did, in the terms the rules of pool need: the :class:`ShotSummary` of a simulated shot.
 
 A summary is built from the solver's event log (columns ``kind``, ``ball``, ``other``) and its per-ball pocket
-array, with ``numbers`` mapping each row to a ball number (0 = the cue ball). The env's hot path calls
-:func:`summarize_arrays` on the arrays of ``Simulator.run_in_place``; :func:`summarize_result` does the same for
-a :class:`~billiards_env.physics.ShotResult`. Both work on whole arrays (no per-event objects).
+array, with ``numbers`` mapping each row to a ball number (0 = the cue ball). The env's shot path reads the log
+once into a :class:`~billiards_env.physics.outcome.ShotOutcome` and calls :func:`summarize_outcome`;
+:func:`summarize_arrays` takes the arrays of ``Simulator.run_in_place`` and :func:`summarize_result` a
+:class:`~billiards_env.physics.ShotResult`. All work on whole arrays (no per-event objects).
 
 Only collision, cushion and pocket events matter; the other kinds (stop, the spin model's roll and spin) carry no
 rule information, and a ``jam`` (a burst of contacts merged into one cluster move, see ``physics/collide.py``) only
 ever follows the collision and cushion events that started the burst, which are logged as such. The scan over the
-events is one compiled pass (:func:`scan_events`, numba, cached).
+events is one compiled pass (:func:`billiards_env.physics.outcome.scan_shot`).
 """
 from __future__ import annotations
 
@@ -16,13 +17,13 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
-from numba import njit
 
-from ..physics.codes import EV_COLLISION, EV_CUSHION, EV_POCKET
+from ..physics.outcome import scan_shot
 from .errors import RulesError
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..physics import ShotResult
+    from ..physics.outcome import ShotOutcome
 
 CUE = 0  #: the cue ball's number
 
@@ -96,53 +97,22 @@ def ball_numbers(ids: Sequence[str]) -> np.ndarray:
     return out
 
 
-@njit(cache=True)
-def scan_events(events, pocket, numbers):
-    """One compiled pass over the event log ``events`` ``(M, 3)``: kind, ball row, other) with the pocket index and
-    ball number of each row. Returns ``(first, rails, pocketed, pockets, cue_pocket)``: the number of the first ball the
-    cue ball collided with (-1: none; -2: ``numbers`` has no single 0), the numbers of the balls with a cushion
-    contact after that collision (ascending), the object balls pocketed in the order of their pocket events and
-    their pockets, and the cue ball's pocket (-1: none)."""
-    n = numbers.shape[0]
-    cue = -1
-    for r in range(n):
-        if numbers[r] == 0:
-            if cue >= 0:
-                cue = -2
-                break
-            cue = r
-    empty = np.empty(0, np.int64)
-    if cue < 0:
-        return -2, empty, empty, empty, -1
-    first = -1
-    rail = np.zeros(n, np.bool_)
-    pocketed = np.empty(n, np.int64)
-    pockets = np.empty(n, np.int64)
-    listed = np.zeros(n, np.bool_)
-    n_pot = 0
-    for k in range(events.shape[0]):
-        kd = events[k, 0]
-        b = events[k, 1]
-        if kd == EV_COLLISION:
-            o = events[k, 2]
-            if first < 0 and (b == cue or o == cue):
-                first = o if b == cue else b
-        elif kd == EV_CUSHION:
-            if first >= 0:
-                rail[b] = True
-        elif kd == EV_POCKET:
-            if b != cue and pocket[b] >= 0 and not listed[b]:
-                listed[b] = True
-                pocketed[n_pot] = numbers[b]
-                pockets[n_pot] = pocket[b]
-                n_pot += 1
-    for r in range(n):  # a ball the pocket array reports without a pocket event (not expected): last
-        if r != cue and pocket[r] >= 0 and not listed[r]:
-            pocketed[n_pot] = numbers[r]
-            pockets[n_pot] = pocket[r]
-            n_pot += 1
-    rails = np.sort(numbers[rail])
-    return (numbers[first] if first >= 0 else -1), rails, pocketed[:n_pot], pockets[:n_pot], pocket[cue]
+def _summary(numbers: np.ndarray, pocket: np.ndarray, cue: int, first: int, rail: np.ndarray,
+             order: np.ndarray) -> ShotSummary:
+    """The summary of one scan (:func:`~billiards_env.physics.outcome.scan_shot`), rows named by ``numbers``."""
+    pocketed = numbers[order]
+    return ShotSummary(None if first < 0 else int(numbers[first]), tuple(np.sort(numbers[rail]).tolist()),
+                       tuple(pocketed.tolist()), tuple(pocket[order].tolist()), bool(pocket[cue] >= 0),
+                       int(pocket[cue]))
+
+
+def summarize_outcome(outcome: "ShotOutcome", numbers: np.ndarray) -> ShotSummary:
+    """The summary of a :class:`~billiards_env.physics.outcome.ShotOutcome` (the env's shot path reads the event log
+    once, there), with ``numbers`` ``(N,)`` int64 the ball number of each row (row ``outcome.cue`` must be 0)."""
+    rail = np.zeros(len(numbers), np.bool_)
+    rail[list(outcome.rails)] = True
+    return _summary(numbers, np.asarray(outcome.pocket, dtype=np.int64), outcome.cue, outcome.first_contact, rail,
+                    np.asarray(outcome.drop_order, dtype=np.int64))
 
 
 def summarize_arrays(events: np.ndarray, pocket: np.ndarray, numbers: np.ndarray | Sequence[int]) -> ShotSummary:
@@ -157,12 +127,12 @@ def summarize_arrays(events: np.ndarray, pocket: np.ndarray, numbers: np.ndarray
     if pocket.shape != numbers.shape or numbers.ndim != 1:
         raise RulesError(f"pocket: shape {pocket.shape} but numbers has shape {numbers.shape}; give one pocket "
                          "index and one ball number per ball row")
-    first, rails, pocketed, pockets, cue_pocket = scan_events(ev, pocket, numbers)
-    if first == -2:
-        raise RulesError(f"numbers: {int(np.count_nonzero(numbers == CUE))} rows have number 0; exactly one row "
-                         "must be the cue ball")
-    return ShotSummary(None if first < 0 else int(first), tuple(rails.tolist()), tuple(pocketed.tolist()),
-                       tuple(pockets.tolist()), cue_pocket >= 0, int(cue_pocket))
+    cues = np.flatnonzero(numbers == CUE)
+    if len(cues) != 1:
+        raise RulesError(f"numbers: {len(cues)} rows have number 0; exactly one row must be the cue ball")
+    cue = int(cues[0])
+    first, rail, order, n_order = scan_shot(ev, pocket, cue)
+    return _summary(numbers, pocket, cue, int(first), rail, order[:n_order])
 
 
 def summarize_result(result: "ShotResult", numbers: np.ndarray | Sequence[int] | None = None) -> ShotSummary:
@@ -173,4 +143,4 @@ def summarize_result(result: "ShotResult", numbers: np.ndarray | Sequence[int] |
     return summarize_arrays(np.stack([ev.kind, ev.ball, ev.other], axis=1), result.pocket, nums)
 
 
-__all__ = ["CUE", "ShotSummary", "ball_numbers", "scan_events", "summarize_arrays", "summarize_result"]
+__all__ = ["CUE", "ShotSummary", "ball_numbers", "summarize_outcome", "summarize_arrays", "summarize_result"]

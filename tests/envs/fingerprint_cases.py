@@ -40,7 +40,7 @@ def canon(x: Any) -> Any:
     """A JSON-able canonical form of ``x`` with floats written exactly (``float.hex``)."""
     if isinstance(x, dict):
         return {str(k): canon(v) for k, v in sorted(x.items(), key=lambda kv: str(kv[0]))
-                if str(k) not in ADDED_INFO_KEYS}
+                if str(k).lstrip("_") not in ADDED_INFO_KEYS}
     if isinstance(x, np.ndarray):
         if x.dtype == object:
             return [canon(v) for v in x.tolist()]

@@ -101,7 +101,7 @@ def test_slots_are_chosen_by_the_aim_dim_and_round_trip():
     u = env.unwrapped
     u.task.state = type(u.task.state)("nine_ball", u.task.state.on_table, shooter=0, ball_in_hand=False,
                                       break_shot=False)  # play from where it lies
-    cands = candidate_slots(u, 4)
+    cands = candidate_slots(u.state, 4)
     assert not cands.in_hand and 1 <= len(cands.slots) <= 3  # the last of the 4 slots is the kick's
     for k, slot in enumerate(cands.slots):
         a = np.zeros(env.action_space.shape)
@@ -125,7 +125,7 @@ def test_a_blocked_ball_is_kicked_at_off_a_cushion():
     off = np.array([False, False, False] + [True] * 7)
     env.reset(seed=0, options={"positions": pos, "pocketed": off})
     u = env.unwrapped
-    cands = candidate_slots(u, 4)
+    cands = candidate_slots(u.state, 4)
     assert cands.kick is not None and cands.kick.target == 1 and cands.kick.pocket == -1
     assert all(not s.shot.clear for s in cands.slots)  # every pot goes through the 2
     obs = u.observe()
@@ -147,7 +147,7 @@ def test_a_blocked_ball_is_kicked_at_off_a_cushion():
 def test_ball_in_hand_places_the_cue_ball_behind_the_chosen_ghost_ball():
     env = after_break(2)
     u = env.unwrapped
-    cands = candidate_slots(u, 4)
+    cands = candidate_slots(u.state, 4)
     assert cands.in_hand and cands.slots
     slot = cands.slots[0]
     ghost = slot.ghost(2 * u.config.ball_radius, u.balls.pos)
@@ -189,7 +189,7 @@ def test_observation_describes_the_slots():
     obs = u.observe()
     assert env.observation_space.shape == (30 + 3 * SLOT_FEATURES + 11,) and env.observation_space.contains(obs)
     slots = obs[30:30 + 3 * SLOT_FEATURES].reshape(3, SLOT_FEATURES)
-    cands = candidate_slots(u, 3)
+    cands = candidate_slots(u.state, 3)
     assert slots[:, 0].tolist() == [1.0 if k < len(cands.slots) else 0.0 for k in range(3)]
     s0 = cands.slots[0]
     assert slots[0, 1] == pytest.approx(s0.target / 15) and slots[0, 2] == pytest.approx(
@@ -256,7 +256,7 @@ def test_position_reward_pays_for_the_next_shot_after_a_kept_turn():
             _, r1, t1, _, _ = shaped.step(a)
             kept = not info["turn_over"] and not t0
             if kept:
-                ease = next_shot_ease(shaped.unwrapped)
+                ease = next_shot_ease(shaped.unwrapped.state, shaped.unwrapped.config.candidate_slots)
                 assert 0.0 <= ease <= 1.0 and r1 == pytest.approx(r0 + 2.0 * ease)
                 seen.add("kept")
             else:

@@ -172,7 +172,7 @@ def test_ball_in_hand_drag_and_click_map_to_the_placement_dims():
     assert app.place[0] == pytest.approx(kitchen_x, abs=1e-9) and app.place[1] == pytest.approx(
         core.legal_cue_position(*app.to_table(far))[1])
     wanted = app.place
-    area = core.task.ball_in_hand_area(core)
+    area = core.state.view.place_area
     assert area == pytest.approx((r, kitchen_x, r, core.table.width - r))
     _feed(app, list(play.mouse_shot(app, 1.0)))
     assert app.shots == 1
@@ -238,7 +238,7 @@ def test_two_people_take_turns():
     pos[:, 1] = 0.9
     pos[0] = (0.5, 0.3)
     app.reset(seed=0, options={"positions": pos})
-    assert core.task.hud(core)["players"] == ("player 1", "player 2")
+    assert core.task.hud()["players"] == ("player 1", "player 2")
     cx, cy = app.ball_pixel(0)
     below = (cx, cy + 40)  # straight down into the near cushion: no contact, a foul
     _feed(app, list(play.mouse_shot(app, 0.2, target=below)))

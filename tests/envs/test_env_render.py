@@ -230,7 +230,7 @@ def test_pot_frames_are_unchanged_by_the_game_and_spin_marks(env_id):
     b = env.balls
     expected = plain.render_array(b.pos, b.on_table, env.ball_numbers, cue=env.last_shot[:3])
     np.testing.assert_array_equal(env.render(), expected)
-    assert env.task.hud(env) is None and env.renderer.hud_height_px == 0
+    assert env.task.hud() is None and env.renderer.hud_height_px == 0
 
 
 def test_game_frames_have_the_panel():
@@ -299,7 +299,7 @@ def test_a_rolling_ball_turns_between_frames_only_under_the_spin_model(friction)
 def test_game_hud_data_follows_the_game():
     env = gym.make("Billiards9Ball-v0", opponent=None).unwrapped
     env.reset(seed=0)
-    hud = env.task.hud(env)
+    hud = env.task.hud()
     assert hud["game"] == "9-ball" and hud["players"] == ("agent", "nobody") and hud["shooter"] == 0
     assert hud["ball_in_hand"] == "kitchen" and hud["kitchen_x"] == pytest.approx(L / 4)
     assert hud["targets"] == (1,) and hud["call"] is None and hud["wins"] == (0, 0)
@@ -312,7 +312,7 @@ def test_game_hud_data_follows_the_game():
     pocketed[[0, 9]] = False
     env.reset(seed=0, options={"positions": full, "pocketed": pocketed})
     info = env.step(env.action_from_shot(angle, speed))[4]
-    hud = env.task.hud(env)
+    hud = env.task.hud()
     assert info["winner"] == 0 and hud["winner"] == 0 and hud["shooter"] is None
     assert hud["call"] == "9 pocketed: agent wins" and not hud["foul"]
     assert hud["wins"] == (1, 0) and hud["pocketed"] == ((9,), ())
@@ -320,7 +320,7 @@ def test_game_hud_data_follows_the_game():
     full[0] = cue[0]
     env.reset(seed=0, options={"positions": full, "pocketed": pocketed})
     env.step(env.action_from_shot(-3 * np.pi / 4, 1.5))
-    hud = env.task.hud(env)
+    hud = env.task.hud()
     assert hud["call"] == "FOUL: scratch (agent)" and hud["foul"] and hud["wins"] == (1, 0)
     assert hud["pocketed"] == ((), ())  # a new game
 

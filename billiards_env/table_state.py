@@ -1,0 +1,172 @@
+"""The table state: the one object the parts of an env read (action types, observation types, tasks, players).
+
+A :class:`TableState` is the balls as arrays (:class:`~billiards_env.physics.Balls`, updated in place by every
+shot), the table, the physics and the solver, the shot settings (speed range, noise, tip offsets), and a
+:class:`ShotView`: who is to shoot and what they may do (the balls they may hit first, the aim types' target ball,
+where they may place the cue ball, a break, a pocket to call). The view is computed once per shot by the task
+(``view_source``) and dropped when the balls change (:meth:`TableState.changed`), so every part of one step reads
+the same facts; facts derived from it once per shot (the candidate shots) are kept in its ``memo``.
+
+Parts never see the env: the single env holds one state, the native vector env one per table (views of its batch
+arrays), the two-player env its game env's, and a player needs nothing else to choose a shot.
+No Gymnasium and no pygame here.
+"""
+from __future__ import annotations
+
+import contextlib
+from dataclasses import dataclass, field
+from typing import Any, Callable, Iterator
+
+import numpy as np
+
+from billiards_env.physics.balls import Balls
+from billiards_env.physics.layout import nearest_free_point
+from billiards_env.physics.model import Physics
+from billiards_env.physics.simulate import Simulator
+from billiards_env.physics.table import Table
+
+#: ``(x0, x1, y0, y1)``: a rectangle of cue-ball centres (ball in hand).
+Area = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True, eq=False)
+class ShotView:
+    """Who is to shoot and what they may do, for the shot to play now (rows index the balls; 0 is the cue ball).
+
+    ``targets``: rows the shooter may hit first (on the table). ``target``: the ball the relative and ghost aim and
+    the ``features`` observation take as the target (the lowest-numbered ball on the table, or a game's lowest legal
+    ball), None when there is none. ``place_area``: where the shooter may put the cue ball (ball in hand), else
+    None. ``break_shot``: the shot is a game's opening break. ``call_pocket``: the shooter must call a pocket (the
+    8). ``push_out``: a push-out may be declared. ``shooter``: the player to shoot (0 in one-player scenes).
+    ``memo``: facts derived from this view once (e.g. the candidate shots), filled by whoever computes them."""
+
+    targets: tuple[int, ...]
+    target: int | None
+    place_area: Area | None = None
+    break_shot: bool = False
+    call_pocket: bool = False
+    push_out: bool = False
+    shooter: int = 0
+    memo: dict[Any, Any] = field(default_factory=dict)
+
+
+def free_view(balls: Balls) -> ShotView:
+    """The view of a scene without rules: every object ball on the table may be hit, the lowest row is the target."""
+    on = balls.on_table
+    rows = tuple(i for i in range(1, len(on)) if on[i])
+    return ShotView(rows, rows[0] if rows else None)
+
+
+@dataclass(frozen=True)
+class ShotSettings:
+    """What a shooter may do with the cue: the speed range (m/s), the shot noise (angle rad, relative speed, tip
+    offset fraction of R; Gaussian standard deviations), whether tip offsets are set (spin model and spin dims) and
+    their largest offset (fraction of R)."""
+
+    speed_min: float
+    speed_max: float
+    angle_noise: float = 0.0
+    speed_noise: float = 0.0
+    tip_noise: float = 0.0
+    tip_offsets: bool = False
+    max_tip_offset: float = 0.5
+
+    @property
+    def speed_range(self) -> tuple[float, float]:
+        return self.speed_min, self.speed_max
+
+    @property
+    def noisy(self) -> bool:
+        return self.angle_noise > 0.0 or self.speed_noise > 0.0 or self.tip_noise > 0.0
+
+
+class TableState:
+    """One table now (see the module docstring).
+
+    ``balls`` (cue ball row 0; updated in place by every shot: ``copy()`` it to keep a snapshot), ``table``,
+    ``physics``, ``simulator`` (to try shots: ``simulator.run(balls.strike(0, angle, speed), validate=False)`` or the
+    batch API), ``numbers`` (ball number of each row, 0 the cue ball), ``settings`` (:class:`ShotSettings`),
+    ``view`` (:class:`ShotView`, computed on first read after each change by ``view_source``), ``game`` (the
+    game's session when the scene is a game, else None: its rules and rules state)."""
+
+    def __init__(self, balls: Balls, table: Table, physics: Physics, simulator: Simulator,
+                 numbers: tuple[int, ...], settings: ShotSettings,
+                 view_source: Callable[["TableState"], ShotView] | None = None) -> None:
+        self.balls = balls
+        self.table = table
+        self.physics = physics
+        self.simulator = simulator
+        self.numbers = tuple(int(n) for n in numbers)
+        self.settings = settings
+        self.view_source: Callable[[TableState], ShotView] = view_source or (lambda s: free_view(s.balls))
+        self.game: Any = None
+        self._view: ShotView | None = None
+        self._holes = np.column_stack([table.pocket_xy, table.pocket_radius]) if table.n_pockets else \
+            np.zeros((0, 3))
+
+    # --- the view ------------------------------------------------------------------------------------------------
+    @property
+    def view(self) -> ShotView:
+        """Who is to shoot and what they may do now (computed once per change of the table)."""
+        v = self._view
+        if v is None:
+            v = self._view = self.view_source(self)
+        return v
+
+    def changed(self) -> None:
+        """The balls or the game moved on (a shot, a reset, a respot): the view is computed again on next read."""
+        self._view = None
+
+    @property
+    def n_balls(self) -> int:
+        return len(self.balls)
+
+    @property
+    def ids(self) -> tuple[str, ...]:
+        return tuple(self.balls.ids)
+
+    # --- ball in hand ---------------------------------------------------------------------------------------------
+    def table_area(self) -> Area:
+        """Every legal cue-ball centre on the table (the placement area of a scene without ball in hand)."""
+        r = float(self.balls.radius[0])
+        return r, self.table.length - r, r, self.table.width - r
+
+    def legal_cue_position(self, x: float, y: float) -> tuple[float, float]:
+        """Where a ball-in-hand cue ball asked for at ``(x, y)`` goes: the nearest point of the view's placement
+        area (the table without ball in hand) not overlapping another ball nor inside a pocket's capture circle,
+        where it would drop at once (:func:`~billiards_env.physics.layout.nearest_free_point`)."""
+        area = self.view.place_area
+        if area is None:
+            area = self.table_area()
+        b = self.balls
+        return nearest_free_point(x, y, b.pos, b.on_table, b.radius, 0, area, holes=self._holes)
+
+    @contextlib.contextmanager
+    def cue_moved_to(self, place: tuple[float, float] | None) -> Iterator[None]:
+        """Within the block the cue ball stands at ``place`` (on the table), e.g. to aim from a ball-in-hand
+        position; None leaves it where it is. The view is unaffected (it does not depend on the cue ball)."""
+        if place is None:
+            yield
+            return
+        b = self.balls
+        saved, on = b.pos[0].copy(), bool(b.on_table[0])
+        b.pos[0] = place
+        b.on_table[0] = True
+        try:
+            yield
+        finally:
+            b.pos[0] = saved
+            b.on_table[0] = on
+
+
+def state_of(source: Any) -> TableState:
+    """The :class:`TableState` of ``source``: itself, or a billiards env's (wrapped or not; ``.unwrapped.state``)."""
+    if isinstance(source, TableState):
+        return source
+    state = getattr(getattr(source, "unwrapped", source), "state", None)
+    if not isinstance(state, TableState):
+        raise TypeError(f"expected a TableState or a billiards env, got {type(source).__name__}")
+    return state
+
+
+__all__ = ["TableState", "ShotView", "ShotSettings", "Area", "free_view", "state_of"]
