@@ -34,6 +34,7 @@ import numpy as np
 from billiards_env.players import BASELINES, make_player
 
 from .config import ALGOS
+from .player_spec import PlayerSpec, env_factory
 
 # --- statistics ---------------------------------------------------------------------------------------------
 
@@ -52,21 +53,6 @@ def wilson_interval(successes: int, n: int, z: float = 1.959963984540054) -> tup
 
 # --- players ------------------------------------------------------------------------------------------------
 
-@dataclass
-class PlayerSpec:
-    """A player ready to run: a label, a factory for its env and an ``(env, obs) -> action`` function."""
-
-    label: str
-    kind: str  #: "baseline" or "model"
-    make_env: Callable[..., Any]
-    act: Callable[[Any, Any], np.ndarray]
-    reset: Callable[[int], None] = lambda seed: None
-    run_dir: Path | None = None
-    model_path: Path | None = None
-    env_id: str | None = None
-    env_kwargs: dict[str, Any] = field(default_factory=dict)
-
-
 def resolve_model(path: str | Path) -> tuple[Path, Path | None]:
     """``(model_zip, run_dir)`` for a run folder or a model zip."""
     p = Path(path)
@@ -84,19 +70,6 @@ def resolve_model(path: str | Path) -> tuple[Path, Path | None]:
                 return p, d
         return p, None
     raise FileNotFoundError(f"{p}: no such model file or run folder")
-
-
-def _env_factory(env_id: str, env_kwargs: dict[str, Any], wrapper: Any = None) -> Callable[..., Any]:
-    def make(render_mode: str | None = None, **extra: Any) -> Any:
-        import gymnasium as gym
-
-        import billiards_env  # noqa: F401
-
-        kw = {**env_kwargs, **extra}
-        env = gym.make(env_id, render_mode=render_mode, **kw) if render_mode else gym.make(env_id, **kw)
-        return wrapper(env) if wrapper is not None else env
-
-    return make
 
 
 def model_player(path: str | Path, env_id: str | None = None, label: str | None = None) -> PlayerSpec:
@@ -146,13 +119,13 @@ def model_player(path: str | Path, env_id: str | None = None, label: str | None 
         return action
 
     name = label or (run_dir.name if run_dir is not None else model_zip.stem)
-    return PlayerSpec(name, "model", _env_factory(env_id, env_kwargs, wrapper), act, run_dir=run_dir,
+    return PlayerSpec(name, "model", env_factory(env_id, env_kwargs, wrapper), act, run_dir=run_dir,
                       model_path=model_zip, env_id=env_id, env_kwargs=env_kwargs)
 
 
 def baseline_player(name: str, env_id: str, env_kwargs: dict[str, Any], seed: int = 0) -> PlayerSpec:
     player = make_player(name, seed=seed)
-    return PlayerSpec(name, "baseline", _env_factory(env_id, env_kwargs), player.act, player.reset,
+    return PlayerSpec(name, "baseline", env_factory(env_id, env_kwargs), player.act, player.reset,
                       env_id=env_id, env_kwargs=env_kwargs)
 
 

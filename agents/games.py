@@ -15,8 +15,10 @@ from typing import Any, Callable
 
 import numpy as np
 
-#: Single-agent env id of each game (what a trained game policy was trained on).
-GAME_ENV_IDS = {"nine_ball": "Billiards9Ball-v0", "eight_ball": "Billiards8Ball-v0"}
+from billiards_env.games import GAMES
+
+#: Single-agent env id of each game (what a trained game policy was trained on), from the game registry.
+GAME_ENV_IDS = {g.name: g.env_id for g in GAMES.values()}
 
 #: Shot noise like the FastFiz/PoolFiz tournaments' (Computational Pool, 2005-2008): cue angle phi 0.125 deg,
 #: speed 0.075 m/s (relative here: 0.075 / 2 m/s, a typical shot), tip offsets a, b 0.5 mm (of R = 28.575 mm).
@@ -88,7 +90,8 @@ class TrainedPlayer:
             raise ValueError(f"{self.name}: its actions set tip offsets; the env it plays needs spin_action=True")
         at = u.action_type
         self._action_type = action_factory(self.config, at.placement, at.declarations, at.n_pockets)
-        self._obs_type = OBSERVATION_TYPES[self.config.observation_type](u, self.config)
+        self._obs_type = OBSERVATION_TYPES[self.config.observation_type](self.config, u.table, u.n_balls,
+                                                                         u.task.n_features)
         if self._obs_type.space.shape != self._expected_shape():
             raise ValueError(f"{self.name}: observation of shape {self._obs_type.space.shape} on this env, trained "
                              f"on {self._expected_shape()}; is it the same game?")
@@ -111,8 +114,9 @@ class TrainedPlayer:
         if not u.action_type.exact_inverse:
             raise ValueError(f"{self.name}: the env's action type ({u.action_type.name}) cannot express every shot; "
                              "play trained policies on an env with an exact type (the league uses 'absolute')")
-        o = self._obs_type.observe(u)
-        shot = self._action_type.shot(u, self.predict(o))
+        state = u.state
+        o = self._obs_type.observe(state)
+        shot = self._action_type.shot(state, self.predict(o))
         return u.action_from_shot(shot.angle, shot.speed, shot.side, shot.top, shot.place, shot.pocket, shot.push)
 
 

@@ -36,11 +36,13 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from billiards_env.games import GAMES as REGISTERED
 from billiards_env.players import BASELINES, make_player
 
 from .evaluate import wilson_interval
 
-GAMES = {"nine_ball": "nine_ball_v0", "eight_ball": "eight_ball_v0"}
+#: Each game's two-player module in billiards_env.multi, from the game registry.
+GAMES = {g.name: g.aec_module for g in REGISTERED.values()}
 
 
 @dataclass
@@ -318,7 +320,7 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
             runs.append(r)
     names = [p[0] for p in players]
     elo = fit_elo(names, pairs)
-    from benchmarks.common import machine_info, machine_markdown
+    from billiards_env.machine import machine_info, machine_markdown
 
     if command is None:
         command = "python -m agents.league " + " ".join(sys.argv[1:]) if "league" in sys.argv[0] \

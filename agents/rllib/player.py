@@ -199,8 +199,8 @@ class RLlibPolicy:
 
 def rllib_player(path: str | Path, env_id: str | None = None, label: str | None = None,
                  module_id: str | None = None) -> Any:
-    """An RLlib checkpoint or run folder as a :class:`agents.evaluate.PlayerSpec` (deterministic actions)."""
-    from ..evaluate import PlayerSpec, _env_factory
+    """An RLlib checkpoint or run folder as a :class:`agents.player_spec.PlayerSpec` (deterministic actions)."""
+    from ..player_spec import PlayerSpec, env_factory
 
     ckpt, run_dir = resolve_checkpoint(path)
     policy = RLlibPolicy.from_checkpoint(ckpt, module_id)
@@ -213,7 +213,7 @@ def rllib_player(path: str | Path, env_id: str | None = None, label: str | None 
     if env_id is None:
         raise ValueError(f"{path}: the checkpoint does not name a billiards env; give --env")
     name = label or (run_dir.name if run_dir is not None else ckpt.name)
-    return PlayerSpec(name, "model", _env_factory(env_id, env_kwargs), policy.act, run_dir=run_dir,
+    return PlayerSpec(name, "model", env_factory(env_id, env_kwargs), policy.act, run_dir=run_dir,
                       model_path=ckpt, env_id=env_id, env_kwargs=env_kwargs)
 
 

@@ -13,11 +13,12 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
+from billiards_env.games import GAMES as REGISTERED
+
 from .config import SELF_PLAY_PREFIX, RLlibConfigError
 
 #: Registered id of each game -> its two-player module in billiards_env.multi.
-GAMES = {"Billiards9Ball-v0": "billiards_env.multi.nine_ball_v0",
-         "Billiards8Ball-v0": "billiards_env.multi.eight_ball_v0"}
+GAMES = {g.env_id: f"billiards_env.multi.{g.aec_module}" for g in REGISTERED.values()}
 SHARED_MODULE = "shared"
 
 

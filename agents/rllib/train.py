@@ -206,13 +206,14 @@ class Checkpoints:
 
 def evaluate_policy(algo: Any, cfg: RLlibConfig, episodes: int, seed: int) -> tuple[Any, list[dict[str, Any]]]:
     """The project's evaluation of the algorithm's current policy (deterministic, seeds ``seed + k``)."""
-    from ..evaluate import PlayerSpec, _env_factory, run_player
+    from ..evaluate import run_player
+    from ..player_spec import PlayerSpec, env_factory
     from .player import RLlibPolicy, single_env_kwargs
 
     s = cfg.settings
     policy = RLlibPolicy.from_algorithm(algo)
     kwargs = single_env_kwargs(s.env_kwargs)
-    spec = PlayerSpec("current", "model", _env_factory(s.env_id, kwargs), policy.act, env_id=s.env_id,
+    spec = PlayerSpec("current", "model", env_factory(s.env_id, kwargs), policy.act, env_id=s.env_id,
                       env_kwargs=kwargs)
     return run_player(spec, episodes, seed)
 
