@@ -1,11 +1,16 @@
 """billiards_env: Gymnasium pool environments on an exact, fast billiards physics engine.
 
+The layers (``docs/architecture.md``): :mod:`.physics` (the engine) <- :mod:`.rules` (the rules of the games) <-
+:mod:`.games` (the game registry and sessions) <- :mod:`.table_state` and :mod:`.shot_path` (what every part reads,
+and the one way a shot is played) <- :mod:`.players` and :mod:`.envs` (Gymnasium) <- :mod:`.multi` (PettingZoo);
+:mod:`.render` draws plain data.
+
 Importing the package registers the environment ids with Gymnasium (the list: :data:`ENV_IDS`)::
 
     import gymnasium as gym
     import billiards_env  # noqa: F401
 
-    env = gym.make("BilliardsOneBall-v0")  # also BilliardsThreeBalls-v0, BilliardsRack-v0
+    env = gym.make("BilliardsOneBall-v0")  # every id: billiards_env.ENV_IDS
 """
 from .registration import ENV_IDS, register_envs
 

@@ -15,17 +15,23 @@ _PACKAGE = Path(__file__).resolve().parent
 _STAMP = _PACKAGE / "__pycache__" / "kernels.sha256"
 
 
+def kernel_sources() -> list[Path]:
+    """Every module of the package with compiled code (``njit``), and all of ``physics/``."""
+    out = set((_PACKAGE / "physics").glob("*.py"))
+    for path in _PACKAGE.rglob("*.py"):
+        if "njit" in path.read_text():
+            out.add(path)
+    return sorted(out)
+
+
 def clear_stale_cache() -> bool:
-    """Delete numba's cached machine code if a kernel source (``physics/``, the compiled ``envs/`` modules) changed
-    since it was compiled.
+    """Delete numba's cached machine code if a kernel source (:func:`kernel_sources`) changed since it was compiled.
 
     numba keys each cached function on its own file only, so a kernel that calls into another module would
     otherwise keep stale code after that module changes. Returns True if the cache was cleared.
     """
     digest = hashlib.sha256()
-    kernel_sources = sorted((_PACKAGE / "physics").glob("*.py")) + [
-        _PACKAGE / "envs" / name for name in ("_kernels.py", "_vector_kernels.py", "_seeding.py")]
-    for path in kernel_sources:
+    for path in kernel_sources():
         digest.update(path.relative_to(_PACKAGE).as_posix().encode())
         digest.update(path.read_bytes())
     want = digest.hexdigest()

@@ -1,9 +1,15 @@
 """billiards_env.envs: the Gymnasium environments (one module per scene family) and their configuration.
 
-Registered ids (``import billiards_env`` registers them): ``BilliardsOneBall-v0`` (:class:`OneBallEnv`),
-``BilliardsThreeBalls-v0`` (:class:`ThreeBallsEnv`), ``BilliardsRack-v0`` (:class:`RackEnv`). Their defaults
-are the YAML files in ``billiards_env/envs/scenes/``; every key is documented in :mod:`.config`.
+Registered ids (``import billiards_env`` registers them; the list is :data:`billiards_env.registration.ENVS`):
+``BilliardsOneBall-v0`` (:class:`OneBallEnv`), ``BilliardsThreeBalls-v0`` (:class:`ThreeBallsEnv`),
+``BilliardsRack-v0`` (:class:`RackEnv`), and one per registered game (:data:`billiards_env.games.GAMES`):
+``Billiards9Ball-v0`` (:class:`NineBallEnv`), ``Billiards8Ball-v0`` (:class:`EightBallEnv`). Their defaults are
+the YAML files in ``billiards_env/envs/scenes/``; every key is documented in :mod:`.config`.
 """
+from gymnasium.envs.registration import load_env_creator
+
+from billiards_env.registration import ENVS
+
 from .base import RENDER_MODES, BilliardsEnv
 from .config import ConfigError, EnvConfig, load_config
 from .eight_ball import EightBallEnv
@@ -13,7 +19,7 @@ from .rack import RackEnv
 from .three_balls import ThreeBallsEnv
 
 #: Registered id -> environment class (the ids are billiards_env.registration.ENV_IDS).
-ENV_CLASSES = {env_id: cls for cls in (OneBallEnv, ThreeBallsEnv, RackEnv, NineBallEnv, EightBallEnv) for env_id in (cls.env_id,)}
+ENV_CLASSES: dict[str, type[BilliardsEnv]] = {env_id: load_env_creator(entry) for env_id, entry in ENVS.items()}
 
 __all__ = ["BilliardsEnv", "OneBallEnv", "ThreeBallsEnv", "RackEnv", "EnvConfig", "ConfigError", "load_config",
            "RENDER_MODES", "ENV_CLASSES"]

@@ -22,6 +22,7 @@ from ._vector_kernels import (F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_S
                               pot_step_spin)
 from .config import ConfigError, EnvConfig
 from .info import shot_info
+from .tasks import PotTask
 
 if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
@@ -102,8 +103,6 @@ def compiled_action(config: EnvConfig) -> bool:
 def pot_fast_step(env: "BilliardsEnv") -> PotFastStep | None:
     """The fast step of ``env`` if it applies (the pot task on the exact solver), else None. The env still takes
     its Python path when recording or when ``env._fast`` is switched off."""
-    from .tasks import PotTask
-
     if type(env.task) is not PotTask or env.config.solver.name != "exact" or not compiled_action(env.config):
         return None
     return PotFastStep(env)

@@ -37,7 +37,10 @@ from gymnasium import spaces
 from numba import njit
 
 from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_aim, ray_circle_entry, wrap_angle)
+from billiards_env.players.shots import direct_hit, ghost_ball_shots
 from billiards_env.shot_path import CueShot, noisy_shot
+
+from .candidates import candidate_slots
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.table_state import TableState
@@ -316,8 +319,6 @@ class CandidateShots(ActionType):
 
     def slots(self, state: "TableState") -> Any:
         """The candidate list of the table now (:func:`billiards_env.envs.candidates.candidate_slots`)."""
-        from .candidates import candidate_slots
-
         return candidate_slots(state, self.n_slots, self.speed_range)
 
     def _slot(self, a: float, n: int) -> int:
@@ -336,8 +337,6 @@ class CandidateShots(ActionType):
 
     def _placed_shot(self, state: "TableState", slot: Any, place: tuple[float, float]) -> tuple[float, float]:
         """Aim and base speed of ``slot`` from the cue ball placed at ``place``."""
-        from billiards_env.players.shots import ghost_ball_shots
-
         b = state.balls
         with state.cue_moved_to(place):
             shots = ghost_ball_shots(b, state.table, state.physics, 0, [slot.target], self.speed_range,
@@ -358,8 +357,6 @@ class CandidateShots(ActionType):
         return state.legal_cue_position(min(max(x, x0), x1), min(max(y, y0), y1))
 
     def _direct(self, state: "TableState", targets: Any) -> float:
-        from billiards_env.players.shots import direct_hit
-
         return direct_hit(state.balls, 0, list(targets))[0]
 
     def shot(self, state: "TableState", action: Any) -> CueShot:

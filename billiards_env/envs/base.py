@@ -40,7 +40,8 @@ from .actions import AbsoluteAim, ActionType, action_factory
 from .config import ConfigError, EnvConfig, load_config
 from .info import shot_info
 from .observations import observation_factory
-from .tasks import Driver, task_factory
+from .games import task_factory
+from .tasks import Driver
 
 RENDER_MODES = ["human", "rgb_array", "rgb_array_list"]
 

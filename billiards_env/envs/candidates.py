@@ -34,7 +34,9 @@ import numpy as np
 
 from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_position, pocket_window,
                                        segment_blocked)
-from billiards_env.players.shots import MAX_CUT, ShotCandidate, ghost_ball_shots
+from billiards_env.physics.batch import run_shots
+from billiards_env.physics.motion import launch_speed
+from billiards_env.players.shots import MAX_CUT, ShotCandidate, ghost_ball_shots, pot_probability
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.table_state import TableState
@@ -119,8 +121,6 @@ def next_shot_ease(state: "TableState", n: int) -> float:
     candidate slots' scores (the geometric player's tolerance, penalised for blocked paths, speeds out of range,
     scratch risk) through :func:`~billiards_env.players.shots.pot_probability` with the angle noise (at least
     :data:`EASE_SPREAD`). 0 when no pot exists. The ``position_reward`` shaping of the games."""
-    from billiards_env.players.shots import pot_probability
-
     slots = candidate_slots(state, n).slots
     best = max((s.shot.score for s in slots if s.shot is not None), default=0.0)
     return pot_probability(best, max(state.settings.angle_noise, EASE_SPREAD))
@@ -185,9 +185,6 @@ def kick_points(cue: np.ndarray, target: np.ndarray, table: Any, radius: float, 
 
 def _kick_slots(state: "TableState", targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
     """Kicks at the legal balls (see the module docstring), shortest first."""
-    from billiards_env.physics.batch import run_shots
-    from billiards_env.physics.motion import launch_speed
-
     b = state.balls
     t = state.table
     rc = float(b.radius[0])

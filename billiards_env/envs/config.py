@@ -38,14 +38,19 @@ from billiards_env.physics.model import Physics
 from billiards_env.physics.scene import PHYSICS_FIELDS, parse_physics, parse_solver, parse_table, table_to_dict
 from billiards_env.physics.simulate import DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, SolverSettings
 from billiards_env.physics.table import Table
+from billiards_env.rules.errors import RulesError
+
+from .actions import ACTION_TYPES as _ACTION_TYPES
+from .observations import OBSERVATION_TYPES as _OBSERVATION_TYPES
 
 #: Directory of the packaged scene files (one per registered id).
 SCENES_DIR = Path(__file__).resolve().parent / "scenes"
 
 PLACEMENTS = ("random", "rack", "diamond")
 CUE_PLACEMENTS = ("random", "kitchen", "head_spot")
-ACTION_TYPES = ("absolute", "relative", "ghost", "candidates")
-OBSERVATION_TYPES = ("positions", "features", "candidates")
+#: The action and observation types' names (each type registers itself in its module's dict).
+ACTION_TYPES = tuple(_ACTION_TYPES)
+OBSERVATION_TYPES = tuple(_OBSERVATION_TYPES)
 OPENINGS = ("break", "ball_in_hand", "either")
 #: ``pot`` (the scenes without rules) and every registered game (:data:`billiards_env.games.GAMES`).
 TASKS = ("pot",) + tuple(GAMES)
@@ -441,8 +446,6 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _require(cfg.opponent is None or cfg.opponent in OPPONENTS, "opponent",
              f"unknown player {cfg.opponent!r}; use one of {', '.join(map(repr, OPPONENTS))} or None (play alone)")
     if game:
-        from billiards_env.rules import RulesError
-
         spec = game_spec(cfg.task)
         _require(cfg.n_object_balls == spec.n_object_balls, "n_object_balls",
                  f"{cfg.task} is played with {spec.n_object_balls} object balls, got {cfg.n_object_balls}")

@@ -20,16 +20,18 @@ from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
-from billiards_env.games import GameSpec
+from billiards_env.games import GameSpec, game_spec
 from billiards_env.games.hud import game_hud
 from billiards_env.games.session import GameSession
 from billiards_env.physics.aim import aim_angle
+from billiards_env.players import make_player
 from billiards_env.rules import ANYWHERE, GameState
 from billiards_env.rules.state import Call
 from billiards_env.shot_path import CueShot, PlayedShot
 from billiards_env.table_state import TableState
 
-from .tasks import Driver, Task
+from .candidates import next_shot_ease
+from .tasks import Driver, PotTask, Task
 
 if TYPE_CHECKING:  # pragma: no cover
     from .config import EnvConfig
@@ -60,8 +62,6 @@ class GameTask(Task):
         self.opponent: Any = None
         self._opponent_codec = False  # the opponent's act takes an action type (see set_opponent)
         if config.opponent is not None:
-            from billiards_env.players import make_player
-
             self.set_opponent(make_player(config.opponent, seed=0))
         #: The players' names in the HUD (None: "agent" and the opponent's name).
         self.player_names: tuple[str, str] | None = None
@@ -97,8 +97,6 @@ class GameTask(Task):
         model (``predict``), a callable ``obs -> action``, or None (play alone). A name (``"geometric"``,
         ``"search"``, ``"random"``) makes that player. Anything else raises ``TypeError`` now, not at the next step."""
         if isinstance(policy, str):
-            from billiards_env.players import make_player
-
             policy = make_player(policy, seed=0)
         if policy is not None and not (hasattr(policy, "act") or hasattr(policy, "predict") or callable(policy)):
             raise TypeError(f"opponent: expected a player (act), a model (predict), a callable obs -> action, a "
@@ -184,8 +182,6 @@ class GameTask(Task):
         self._ease = 0.0
         if self.config.position_reward and not call.game_over and not call.turn_over and \
                 (call.shooter == self.agent or not self.auto_opponent):
-            from .candidates import next_shot_ease
-
             self._ease = next_shot_ease(state, self.config.candidate_slots)
         return call
 
@@ -318,4 +314,12 @@ def as_policy(policy: Any) -> Callable[[Any, Any], np.ndarray]:
     raise TypeError(f"opponent: expected a player (act), a model (predict) or a callable, got {type(policy).__name__}")
 
 
-__all__ = ["GameTask", "MAX_TURN_SHOTS", "MAX_RERACKS", "as_policy"]
+def task_factory(config: "EnvConfig", state: TableState) -> Task:
+    """The task named by ``config.task``: ``pot`` (:class:`~.tasks.PotTask`), or a registered game
+    (:data:`billiards_env.games.GAMES`; :class:`GameTask`)."""
+    if config.task == "pot":
+        return PotTask(config, state)
+    return GameTask(config, state, game_spec(config.task))
+
+
+__all__ = ["GameTask", "MAX_TURN_SHOTS", "MAX_RERACKS", "as_policy", "task_factory"]

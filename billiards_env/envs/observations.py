@@ -29,6 +29,7 @@ from gymnasium import spaces
 from billiards_env.physics.aim import pocket_bearings, pocket_mouth_axes, wrap_angle
 
 from ._kernels import observation
+from .candidates import candidate_slots
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.physics.table import Table
@@ -141,8 +142,6 @@ class CandidateFeatures(ObservationType):
 
     def features(self, state: "TableState") -> np.ndarray:
         """The slots' values (``12 * candidate_slots``)."""
-        from .candidates import candidate_slots
-
         out = np.zeros((self.n_slots, SLOT_FEATURES), np.float32)
         cands = candidate_slots(state, self.n_slots, self.speed_range)
         t = state.table

@@ -21,7 +21,7 @@ class OneBallEnv(BilliardsEnv):
 
     | Num | Action | Min | Max | Meaning |
     |-----|--------|-----|-----|---------|
-    | 0 | aim | -1 | 1 | ``aim: absolute`` (default): angle = pi * a[0] (0 = +x, counter-clockwise). ``aim: relative``: angle = direction cue -> ball 1 + pi * a[0], so 0 hits it full |
+    | 0 | aim | -1 | 1 | ``action_type="absolute"`` (default): angle = pi * a[0] (0 = +x, counter-clockwise). ``action_type="relative"``: angle = direction cue -> ball 1 + pi * a[0], so 0 hits it full |
     | 1 | power | -1 | 1 | speed = speed_min + (a[1] + 1) / 2 * (speed_max - speed_min); default 0.5 .. 5.0 m/s |
 
     ``env.unwrapped.action_from_shot(angle, speed)`` gives the action of a shot (in the active aim mode).
@@ -72,7 +72,7 @@ class OneBallEnv(BilliardsEnv):
     ``"human"`` (a window animating every shot; it needs a display, else ``reset()`` raises
     ``HeadlessDisplayError``), ``"rgb_array"`` (the table now) or ``"rgb_array_list"``
     (every animation frame since the last render, for ``RecordVideo``). Any key of
-    :class:`billiards_env.envs.config.EnvConfig` can be overridden (``speed_max=3.0``, ``aim="relative"``,
+    :class:`billiards_env.envs.config.EnvConfig` can be overridden (``speed_max=3.0``, ``action_type="relative"``,
     ``angle_noise=0.01``, ``render_width=400``...) and ``config="scene.yaml"`` layers a YAML file over the
     defaults, which live in ``billiards_env/envs/scenes/one_ball.yaml``.
 

@@ -14,7 +14,6 @@ from typing import TYPE_CHECKING, Any, Callable, NamedTuple
 import numpy as np
 from numba import njit
 
-from billiards_env.games import game_spec
 from billiards_env.physics.layout import spot_cue_ball
 from billiards_env.physics.outcome import ShotOutcome, first_contact_row
 from billiards_env.shot_path import CueShot, PlayedShot
@@ -115,13 +114,4 @@ class PotTask(Task):
         return float(reward), bool(terminated), bool(truncated), {"is_success": bool(success)}
 
 
-def task_factory(config: "EnvConfig", state: TableState) -> Task:
-    """The task named by ``config.task``: ``pot``, or a registered game (:data:`billiards_env.games.GAMES`)."""
-    if config.task == "pot":
-        return PotTask(config, state)
-    from .games import GameTask
-
-    return GameTask(config, state, game_spec(config.task))
-
-
-__all__ = ["Driver", "first_contact", "Task", "PotTask", "pot_score", "task_factory"]
+__all__ = ["Driver", "first_contact", "Task", "PotTask", "pot_score"]

@@ -20,7 +20,7 @@ class ThreeBallsEnv(BilliardsEnv):
 
     | Num | Action | Min | Max | Meaning |
     |-----|--------|-----|-----|---------|
-    | 0 | aim | -1 | 1 | ``aim: absolute`` (default): angle = pi * a[0] (0 = +x, counter-clockwise). ``aim: relative``: angle = direction cue -> lowest-numbered object ball on the table + pi * a[0] |
+    | 0 | aim | -1 | 1 | ``action_type="absolute"`` (default): angle = pi * a[0] (0 = +x, counter-clockwise). ``action_type="relative"``: angle = direction cue -> lowest-numbered object ball on the table + pi * a[0] |
     | 1 | power | -1 | 1 | speed = speed_min + (a[1] + 1) / 2 * (speed_max - speed_min); default 0.5 .. 5.0 m/s |
 
     ``env.unwrapped.action_from_shot(angle, speed)`` gives the action of a shot (in the active aim mode).

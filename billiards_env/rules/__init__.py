@@ -45,10 +45,18 @@ def ruleset_for(game: str, options: object | None = None) -> Ruleset:
     return cls(options)  # type: ignore[abstract, arg-type]
 
 
+#: Each game's legal-target function (the balls the shooter may hit first), by the game's name.
+TARGETS = {NINE_BALL: nine_ball_targets, EIGHT_BALL: eight_ball_targets}
+
+
 def legal_targets(state: GameState) -> tuple[int, ...]:
     """The balls the shooter may hit first from ``state`` (9-ball: the lowest; 8-ball: any on the break, any but
-    the 8 on an open table, the own group, then the 8)."""
-    return nine_ball_targets(state) if state.game == NINE_BALL else eight_ball_targets(state)
+    the 8 on an open table, the own group, then the 8). An unknown game raises :class:`RulesError`."""
+    try:
+        targets = TARGETS[state.game]
+    except KeyError:
+        raise RulesError(f"state.game: unknown game {state.game!r}; use one of {', '.join(TARGETS)}") from None
+    return targets(state)
 
 
 __all__ = [
