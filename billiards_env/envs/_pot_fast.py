@@ -15,7 +15,7 @@ import numpy as np
 from billiards_env.physics.batch import new_outputs
 from billiards_env.physics.codes import STATUS_NAMES
 
-from billiards_env.shot_path import CueShot
+from billiards_env.shot_path import CueShot, draw_noise
 
 from ._vector_kernels import (F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP, I_POSITIONS_OBS,
                               O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, pack_config, pot_step,
@@ -44,8 +44,13 @@ class PotFastStep:
         self.obs = np.zeros((1,) + env.observation_space.shape, np.float32)
         self.positions = bool(self.icfg[I_POSITIONS_OBS])
         self.kernel = pot_step_spin if env._spin else pot_step
-        c = env.config
-        self.noisy = c.angle_noise > 0.0 or c.speed_noise > 0.0 or c.tip_noise > 0.0
+        self.settings = env.state.settings
+        self.noisy = self.settings.noisy
+        b = env.balls  # the live arrays (updated in place), as one-table batches
+        self.table = (b.pos[None], b.vel[None], b.ang[None], b.on_table[None])
+        sim = env.simulator
+        self.consts = (b.radius[None], b.mass[None], sim._pocket_xy, sim._pocket_r, sim._params, sim.max_events,
+                       self.cfg, self.icfg)
         self.noise = np.zeros((1, 4))
         self.names: dict[int, tuple[str, ...]] = {}
         self.first_ids = env.ball_ids + (None,)  # index -1 -> None
@@ -54,22 +59,12 @@ class PotFastStep:
     def step(self, env: "BilliardsEnv", action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
         """``env.step(action)`` for a pot env (the caller has checked that a step is allowed)."""
         self.act[0] = env.action_type.parse(action)
-        if self.noisy:  # drawn as play_shot draws it: the angle's, the speed's, the tip offsets'
-            rng, c, noise = env.np_random, env.config, self.noise
-            if c.angle_noise > 0.0:
-                noise[0, 0] = float(rng.normal(0.0, c.angle_noise))
-            if c.speed_noise > 0.0:
-                noise[0, 1] = float(rng.normal(0.0, c.speed_noise))
-            if c.tip_noise > 0.0:
-                noise[0, 2] = float(rng.normal(0.0, c.tip_noise))
-                noise[0, 3] = float(rng.normal(0.0, c.tip_noise))
-        b = env.balls
-        sim = env.simulator
+        if self.noisy:  # drawn as the shot path draws it
+            self.noise[0] = draw_noise(env.np_random, self.settings)
         self.shots[0] = env.shots
         fout, iout, out = self.fout, self.iout, self.out
-        if not self.kernel(self.act, _ACTIVE, b.pos[None], b.vel[None], b.ang[None], b.on_table[None], self.shots,
-                           b.radius[None], b.mass[None], sim._pocket_xy, sim._pocket_r, sim._params,
-                           sim.max_events, self.cfg, self.icfg, self.noise, out, fout, iout, self.obs):
+        if not self.kernel(self.act, _ACTIVE, *self.table, self.shots, *self.consts, self.noise, out, fout, iout,
+                           self.obs):
             raise ConfigError(f"{env.env_id}: could not re-spot the cue ball: the head of the table is full")
         f = fout[0].tolist()
         i = iout[0].tolist()

@@ -107,11 +107,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._pot_fast = pot_fast_step(self)
 
         # Fixed part of the starting layout (rack and/or head-spot cue), checked once here.
-        self._pockets = [(float(px), float(py)) for px, py in self.table.pocket_xy]
+        self._pockets = np.ascontiguousarray(self.table.pocket_xy, dtype=float).reshape(-1, 2)
         self._fixed_rows, self._fixed_xy = self._fixed_layout()
-        self._fixed_points = [(float(x), float(y)) for x, y in self._fixed_xy]
-        self._random_rows = [i for i in range(n) if i not in self._fixed_rows]
-        self._regions = [self._region(i) for i in self._random_rows]
+        self._random_rows = np.array([i for i in range(n) if i not in self._fixed_rows], np.int64)
+        self._regions = np.array([self._region(i) for i in self._random_rows.tolist()], dtype=float).reshape(-1, 4)
         self._check_layout()
 
         # Rendering (created lazily: pygame is imported only when something is drawn).
@@ -369,7 +368,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             pos[self._fixed_rows] = self._fixed_xy
         c = self.config
         try:
-            place_random(rng, pos, self._random_rows, self._regions, self._fixed_points, self._pockets,
+            place_random(rng, pos, self._random_rows, self._regions, self._fixed_xy, self._pockets,
                          c.pocket_margin, 2.0 * c.ball_radius + c.ball_gap)
         except SceneError:
             raise ConfigError(

@@ -101,87 +101,126 @@ def rack_fits(table: Table, n: int, radius: float, gap: float) -> bool:
 
 # --- random layouts -------------------------------------------------------------------------------------------
 @njit(cache=True)
+def place_rows(first, start, pos, rand_rows, regions, placed, n_placed, pockets, pocket_margin, min_dist, batch):
+    """Place rows ``rand_rows[start:]`` in order, each uniformly in its region ``regions[m] = (x0, x_span, y0,
+    y_span)``, from its first batch of candidates ``first[2 batch m: 2 batch (m + 1)]`` (uniform [0, 1) pairs), away
+    from the pocket centres ``pockets`` (K, 2) by ``pocket_margin`` and from the first ``n_placed`` points of
+    ``placed`` (fixed balls and rows placed so far; the array has room for every row) by ``min_dist``. Stops at the
+    first row whose batch holds no free point. Returns ``(m, n_placed)``: that row's index (``len(rand_rows)`` when
+    every row was placed) and the points placed so far."""
+    nr = rand_rows.shape[0]
+    for m in range(start, nr):
+        if not place_row(first[2 * batch * m: 2 * batch * (m + 1)], m, pos, rand_rows, regions, placed, n_placed,
+                         pockets, pocket_margin, min_dist):
+            return m, n_placed
+        n_placed += 1
+    return nr, n_placed
+
+
+@njit(cache=True)
+def place_row(u, m, pos, rand_rows, regions, placed, n_placed, pockets, pocket_margin, min_dist):
+    """Place row ``rand_rows[m]`` at the first free candidate of the batch ``u`` (pairs in [0, 1), mapped onto its
+    region; see :func:`place_rows`), appended to ``placed``; False (nothing written) if none is free."""
+    pm2 = pocket_margin * pocket_margin
+    d2 = min_dist * min_dist
+    x0 = regions[m, 0]
+    sx = regions[m, 1]
+    y0 = regions[m, 2]
+    sy = regions[m, 3]
+    for c in range(0, u.shape[0] - 1, 2):
+        x = x0 + sx * u[c]
+        y = y0 + sy * u[c + 1]
+        ok = True
+        for p in range(pockets.shape[0]):
+            dx = x - pockets[p, 0]
+            dy = y - pockets[p, 1]
+            if dx * dx + dy * dy < pm2:
+                ok = False
+                break
+        if ok:
+            for h in range(n_placed):
+                qx = placed[h, 0]
+                qy = placed[h, 1]
+                if (x - qx) * (x - qx) + (y - qy) * (y - qy) < d2:
+                    ok = False
+                    break
+        if ok:
+            row = rand_rows[m]
+            pos[row, 0] = x
+            pos[row, 1] = y
+            placed[n_placed, 0] = x
+            placed[n_placed, 1] = y
+            return True
+    return False
+
+
+@njit(cache=True)
 def place_random_rows(g, pos, rand_rows, regions, placed, n_placed, pockets, pocket_margin, min_dist, batch,
                       tries):
-    """The compiled core of :func:`place_random` (one table; the native vector env runs it per sub-env): rows
-    ``rand_rows`` in order, each uniformly in its region ``regions[m] = (x0, x_span, y0, y_span)``, away from the
-    pocket centres ``pockets`` (K, 2) by ``pocket_margin`` and from the first ``n_placed`` points of ``placed``
-    (fixed balls; the array has room for every row) by ``min_dist``. Draws from the generator ``g``: one call for
-    ``batch`` candidates per row, more only when a row rejects its whole batch. Returns -1, or the first row that
-    could not be placed in ``tries`` batches."""
+    """:func:`place_random` inside compiled code, drawing from the generator ``g`` (the native vector env runs it
+    per table): the same draws in the same order. Returns -1, or the first row that could not be placed in
+    ``tries`` batches."""
     nr = rand_rows.shape[0]
     if nr == 0:
         return -1
-    pm2 = pocket_margin * pocket_margin
-    d2 = min_dist * min_dist
     first = g.random(2 * batch * nr)
-    for m in range(nr):
-        x0 = regions[m, 0]
-        sx = regions[m, 1]
-        y0 = regions[m, 2]
-        sy = regions[m, 3]
-        u = first[2 * batch * m: 2 * batch * (m + 1)]
+    m = 0
+    while True:
+        m, n_placed = place_rows(first, m, pos, rand_rows, regions, placed, n_placed, pockets, pocket_margin,
+                                 min_dist, batch)
+        if m == nr:
+            return -1
         found = False
-        x = 0.0
-        y = 0.0
-        for attempt in range(tries):
-            if attempt:
-                u = g.random(2 * batch)
-            for c in range(0, 2 * batch, 2):
-                x = x0 + sx * u[c]
-                y = y0 + sy * u[c + 1]
-                ok = True
-                for p in range(pockets.shape[0]):
-                    dx = x - pockets[p, 0]
-                    dy = y - pockets[p, 1]
-                    if dx * dx + dy * dy < pm2:
-                        ok = False
-                        break
-                if ok:
-                    for h in range(n_placed):
-                        qx = placed[h, 0]
-                        qy = placed[h, 1]
-                        if (x - qx) * (x - qx) + (y - qy) * (y - qy) < d2:
-                            ok = False
-                            break
-                if ok:
-                    found = True
-                    break
-            if found:
+        for attempt in range(1, tries):
+            if place_row(g.random(2 * batch), m, pos, rand_rows, regions, placed, n_placed, pockets,
+                         pocket_margin, min_dist):
+                found = True
                 break
         if not found:
             return rand_rows[m]
-        row = rand_rows[m]
-        pos[row, 0] = x
-        pos[row, 1] = y
-        placed[n_placed, 0] = x
-        placed[n_placed, 1] = y
         n_placed += 1
-    return -1
+        m += 1
 
 
 def place_random(rng: np.random.Generator, pos: np.ndarray, rows: Sequence[int],
-                 regions: Sequence[tuple[float, float, float, float]], fixed_points: Sequence[tuple[float, float]],
-                 pockets: Sequence[tuple[float, float]], pocket_margin: float, min_dist: float) -> None:
+                 regions: Sequence[tuple[float, float, float, float]] | np.ndarray,
+                 fixed_points: Sequence[tuple[float, float]] | np.ndarray,
+                 pockets: Sequence[tuple[float, float]] | np.ndarray, pocket_margin: float, min_dist: float) -> None:
     """Put each ball of ``rows`` (in order) uniformly at random in its region ``(x0, x_span, y0, y_span)``,
     rejecting points within ``pocket_margin`` of a pocket centre or closer than ``min_dist`` to a ball already
     placed (``fixed_points``, then earlier rows). Writes ``pos[row]``.
 
     All draws come from ``rng``: one call for a first batch of :data:`PLACE_BATCH` candidates for every ball, more
-    only when a ball rejects its whole batch (:func:`place_random_rows`). Raises :class:`SceneError` after
+    only when a ball rejects its whole batch (the draws of :func:`place_random_rows`, here taken in Python: handing
+    a generator to compiled code costs more than the placement). Raises :class:`SceneError` after
     :data:`PLACE_TRIES` batches.
     """
     rows_a = np.asarray(rows, dtype=np.int64).reshape(-1)
-    if not len(rows_a):
+    nr = len(rows_a)
+    if not nr:
         return
-    placed = np.zeros((len(fixed_points) + len(rows_a), 2))
-    placed[:len(fixed_points)] = np.asarray(fixed_points, dtype=float).reshape(-1, 2)
-    bad = place_random_rows(rng, pos, rows_a, np.asarray(regions, dtype=float).reshape(-1, 4), placed,
-                            len(fixed_points), np.asarray(pockets, dtype=float).reshape(-1, 2), float(pocket_margin),
-                            float(min_dist), PLACE_BATCH, PLACE_TRIES)
-    if bad >= 0:
-        raise SceneError(f"could not place ball row {bad} at random after {PLACE_TRIES * PLACE_BATCH} tries; "
-                         "use fewer balls or smaller margins")
+    fixed = np.asarray(fixed_points, dtype=float).reshape(-1, 2)
+    placed = np.empty((len(fixed) + nr, 2))
+    placed[:len(fixed)] = fixed
+    reg = np.asarray(regions, dtype=float).reshape(-1, 4)
+    pk = np.asarray(pockets, dtype=float).reshape(-1, 2)
+    pocket_margin, min_dist = float(pocket_margin), float(min_dist)
+    first = rng.random(2 * PLACE_BATCH * nr)
+    m, n_placed = 0, len(fixed)
+    while True:
+        m, n_placed = place_rows(first, m, pos, rows_a, reg, placed, n_placed, pk, pocket_margin, min_dist,
+                                 PLACE_BATCH)
+        if m == nr:
+            return
+        for _ in range(1, PLACE_TRIES):
+            if place_row(rng.random(2 * PLACE_BATCH), m, pos, rows_a, reg, placed, n_placed, pk, pocket_margin,
+                         min_dist):
+                break
+        else:
+            raise SceneError(f"could not place ball row {int(rows_a[m])} at random after "
+                             f"{PLACE_TRIES * PLACE_BATCH} tries; use fewer balls or smaller margins")
+        n_placed += 1
+        m += 1
 
 
 # --- re-spotting and ball in hand ----------------------------------------------------------------------------------
@@ -323,7 +362,8 @@ def nearest_free_point(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
 
 __all__ = [
     "RACK_ORDER", "DIAMOND_ORDER", "head_string_x", "head_spot", "foot_spot", "rack_rows", "triangle_positions",
-    "diamond_positions", "rack_balls", "rack_fits", "place_random", "place_random_rows", "spot_cue_ball",
+    "diamond_positions", "rack_balls", "rack_fits", "place_random", "place_random_rows", "place_rows", "place_row",
+    "spot_cue_ball",
     "spot_cue_row", "spot_object_ball",
     "nearest_free_point",
 ]

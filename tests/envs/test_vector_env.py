@@ -195,3 +195,20 @@ def test_single_env_fast_step_equals_its_python_path(env_id, kwargs):
             assert fast.unwrapped.last_shot == slow.unwrapped.last_shot
             if out[2] or out[3]:
                 break
+
+
+COMBINATIONS = [(env_id, at, ot, spin) for env_id in IDS for at in ("absolute", "relative", "ghost", "candidates")
+                for ot in ("positions", "features", "candidates") for spin in (False, True)]
+
+
+@pytest.mark.parametrize("env_id,action_type,observation_type,spin", COMBINATIONS,
+                         ids=[f"{e}-{a}-{o}-{'spin' if s else 'plain'}" for e, a, o, s in COMBINATIONS])
+def test_every_combination_vectorises_with_the_same_results(env_id, action_type, observation_type, spin):
+    """Every id x action type x observation type x spin dims: the native vector env equals N single envs (reset and
+    a few steps, bit for bit), the candidates types included."""
+    kwargs = {"action_type": action_type, "observation_type": observation_type}
+    if env_id in GAME_IDS:
+        kwargs["opponent"] = "random"  # the types are under test; the default opponent's are test_game_ids_...
+    if spin:
+        kwargs.update(physics={"friction": "spin"}, spin_action=True)
+    _compare(env_id, AutoresetMode.NEXT_STEP, steps=3 if env_id in POT_IDS else 2, n=2, **kwargs)
