@@ -207,11 +207,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         info.update(shot_info(tuple(ids[i] for i in o.pocketed), o.scratch,
                               ids[o.first_contact] if o.first_contact >= 0 else None, o.n_events, o.sim_time,
                               o.status, self.shots, played.shot, self.action_type.spin))
-        if self._record:
-            later = self._animations
-            self._animate(played.trajectory, view, final=not later)
-            for k, (traj, seen) in enumerate(later):  # the opponent's reply in a game
-                self._animate(traj, seen, final=k == len(later) - 1)
+        if self._record:  # the agent's shot, then the opponent's reply in a game
+            self._animate_step([(played.trajectory, view)] + self._animations)
         self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
         return self.observation_type.observe(self.state), reward, terminated, truncated, info
 
@@ -296,9 +293,58 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                          push: bool = False) -> np.ndarray:
         """The action that strikes the cue ball at ``angle`` (rad, 0 = +x, CCW) and ``speed`` (m/s) with tip
         offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand), calling ``pocket`` for the 8 or
-        declaring ``push`` (games), in the active action type (inverse of :meth:`shot_from_action`). Speeds
-        outside [speed_min, speed_max] clip; dims not given are neutral."""
+        declaring ``push`` (games), in the active action type (inverse of :meth:`shot_from_action`); dims not given
+        are neutral. Arguments the env cannot play raise ``ValueError`` naming the valid range: a speed outside
+        [speed_min, speed_max], tip offsets without spin dims or beyond ``max_tip_offset``, a place without ball in
+        hand or outside its area, a pocket or a push-out the game does not declare. (A policy's actions are never
+        refused: they are clipped, see :mod:`.actions`.)"""
+        self._check_shot_arguments(float(angle), float(speed), float(side), float(top), place, pocket, push)
         return self.action_type.action(self.state, angle, speed, side, top, place, pocket, push)
+
+    def _check_shot_arguments(self, angle: float, speed: float, side: float, top: float,
+                              place: Any, pocket: Any, push: bool) -> None:
+        at = self.action_type
+        s = self.state.settings
+        for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
+            if not np.isfinite(v):
+                raise ValueError(f"action_from_shot: {name} must be a finite number, got {v!r}")
+        lo, hi = s.speed_range
+        if not lo - 1e-9 <= speed <= hi + 1e-9:
+            raise ValueError(f"action_from_shot: speed {speed} m/s is outside this env's range [{lo}, {hi}] "
+                             "(speed_min, speed_max); give a speed in it or make the env with another range")
+        if (side or top) and not at.spin:
+            raise ValueError("action_from_shot: side/top given, but this env's action has no tip-offset dims; make "
+                             "it with friction='spin' and spin_action=True, or leave them 0")
+        if at.spin and np.hypot(side, top) > s.max_tip_offset + 1e-12:
+            raise ValueError(f"action_from_shot: tip offset (side {side}, top {top}) is {np.hypot(side, top):.3g} R "
+                             f"from the centre; the largest is max_tip_offset = {s.max_tip_offset} R")
+        if place is not None:
+            try:
+                x, y = (float(v) for v in place)
+            except (TypeError, ValueError):
+                raise ValueError(f"action_from_shot: place must be two numbers (x, y) in metres, got {place!r}") \
+                    from None
+            if not (np.isfinite(x) and np.isfinite(y)):
+                raise ValueError(f"action_from_shot: place must be finite, got ({x}, {y})")
+            area = self.state.view.place_area if at.placement else None
+            if area is None:
+                raise ValueError("action_from_shot: place given, but the shooter has no ball in hand now "
+                                 "(state.view.place_area is None); leave place None")
+            x0, x1, y0, y1 = area
+            if not (x0 - 1e-9 <= x <= x1 + 1e-9 and y0 - 1e-9 <= y <= y1 + 1e-9):
+                raise ValueError(f"action_from_shot: place ({x:.4g}, {y:.4g}) is outside the ball-in-hand area "
+                                 f"x in [{x0:.4g}, {x1:.4g}], y in [{y0:.4g}, {y1:.4g}] m")
+        if pocket is not None:
+            if "pocket" not in at.declarations:
+                raise ValueError(f"action_from_shot: pocket given, but {self.task.name!r} calls no pocket (only "
+                                 "8-ball with rules call_eight); leave pocket None")
+            if isinstance(pocket, bool) or not isinstance(pocket, (int, np.integer)) or \
+                    not 0 <= int(pocket) < at.n_pockets:
+                raise ValueError(f"action_from_shot: pocket must be a pocket index 0..{at.n_pockets - 1}, got "
+                                 f"{pocket!r}")
+        if push and "push" not in at.declarations:
+            raise ValueError(f"action_from_shot: push=True, but {self.task.name!r} has no push-outs (9-ball with "
+                             "rules={'push_out': True})")
 
     def target_ball(self) -> int | None:
         """Row of the ball to hit first (the relative and ghost aim's target): the lowest-numbered object ball on
@@ -470,7 +516,22 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         times[-1] = duration
         return times
 
-    def _animate(self, trajectory: Any, view: dict[str, Any] | None = None, final: bool = True) -> None:
+    def _animate_step(self, shots: list[tuple[Any, dict[str, Any]]]) -> None:
+        """Draw the shots of one step in order (each ``(trajectory, view)``). In ``rgb_array_list`` mode a step
+        draws at most ``render_max_frames`` frames: when its shots would need more (a long reply of the opponent),
+        each shot gets a share of them in proportion to its duration, evenly spaced in time (at least its first and
+        last state)."""
+        cap = self.config.render_max_frames
+        times = [self.animation_times(t.duration) for t, _ in shots]
+        if self.render_mode == "rgb_array_list" and cap and sum(len(t) for t in times) > cap:
+            total = sum(float(t.duration) for t, _ in shots) or 1.0
+            times = [np.linspace(0.0, float(t.duration), max(2, int(cap * float(t.duration) / total)))
+                     for t, _ in shots]
+        for k, ((trajectory, view), when) in enumerate(zip(shots, times)):
+            self._animate(trajectory, view, final=k == len(shots) - 1, times=when)
+
+    def _animate(self, trajectory: Any, view: dict[str, Any] | None = None, final: bool = True,
+                 times: np.ndarray | None = None) -> None:
         """Draw a shot just simulated: frames at :meth:`animation_times` of its trajectory, with ``view`` (the
         shot's cue, tip and HUD); the last one is the state after the shot (``final``: the table now, cue ball
         re-spotted if it was pocketed; else the trajectory's own end, when another shot follows in the same step).
@@ -480,7 +541,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             return
         from billiards_env.render.animation import sample_frames
 
-        times = self.animation_times(trajectory.duration)
+        if times is None:
+            times = self.animation_times(trajectory.duration)
         pos, on, turned = sample_frames(trajectory, times, self._orientations_now() if self._spin else None)
         if turned is not None:
             self._orientations = turned[-1]

@@ -191,6 +191,10 @@ class EnvConfig:
     render_width: int = _doc("Width (px) of rendered frames; the height follows the table's aspect.", default=800)
     render_fps: int = _doc("Frames per simulated second of the shot animations (also metadata['render_fps']).",
                            default=30)
+    render_max_frames: int = _doc("rgb_array_list: the most frames one step draws, all its shots together (a game "
+                                  "step holds the opponent's reply too); a longer step is drawn at a lower frame "
+                                  "rate, evenly in simulated time. 0 = no cap (an 800 px frame is 1.3 MB).",
+                                  default=200)
     render_speedup: float = _doc("Animation playback speed: simulated seconds per second of animation (1 = real "
                                  "time; 4 = four times faster, a quarter of the frames).", default=1.0)
 
@@ -268,11 +272,27 @@ def read_yaml(path: str | os.PathLike[str]) -> dict[str, Any]:
     return dict(data)
 
 
+#: Keys that only a game reads: given for a scene without rules they are refused (they would do nothing).
+GAME_KEYS = ("opponent", "first_shooter", "opening", "rules", "win_reward", "loss_penalty", "foul_penalty",
+             "position_reward")
+
+
+def _check_game_keys(cfg: EnvConfig, given: set[str]) -> EnvConfig:
+    """Refuse the game-only keys a user gave for a scene without rules (their defaults exist for every config)."""
+    if cfg.task not in GAMES:
+        wrong = sorted(k for k in given if k in GAME_KEYS)
+        if wrong:
+            raise ConfigError(f"{wrong[0]}: only the games (task {' or '.join(map(repr, GAMES))}, e.g. "
+                              f"Billiards9Ball-v0) read it; task {cfg.task!r} has no opponent, rules or game "
+                              f"rewards: leave out {', '.join(map(repr, wrong))}")
+    return cfg
+
+
 def load_config(scene: str | None = None, config: Any = None, **overrides: Any) -> EnvConfig:
     """The configuration of an environment: packaged scene ``scene`` (defaults), then ``config`` (a YAML path,
     a mapping or an :class:`EnvConfig`), then keyword ``overrides``."""
     if isinstance(config, EnvConfig):
-        return config.updated(overrides, source="keyword arguments")
+        return _check_game_keys(config.updated(overrides, source="keyword arguments"), set(overrides))
     raw = EnvConfig().to_dict()
     if scene is not None:
         p = scene_path(scene)
@@ -286,7 +306,12 @@ def load_config(scene: str | None = None, config: Any = None, **overrides: Any) 
             raise ConfigError(f"config: expected a YAML file path, a mapping or an EnvConfig, got "
                               f"{type(config).__name__}")
     _merge(raw, overrides, "keyword arguments")
-    return _build(raw, "keyword arguments" if overrides else "config")
+    given = set(overrides)
+    if isinstance(config, (str, os.PathLike)):
+        given |= set(read_yaml(config))
+    elif isinstance(config, Mapping):
+        given |= set(config)
+    return _check_game_keys(_build(raw, "keyword arguments" if overrides else "config"), given)
 
 
 # --- sections --------------------------------------------------------------------------------------------------
@@ -480,6 +505,8 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _require(64 <= cfg.render_width <= 8192, "render_width", f"must be 64..8192 pixels, got {cfg.render_width}")
     _require(1 <= cfg.render_fps <= 1000, "render_fps", f"must be 1..1000, got {cfg.render_fps}")
     _require(cfg.render_speedup > 0, "render_speedup", f"must be > 0, got {cfg.render_speedup}")
+    _require(cfg.render_max_frames >= 0, "render_max_frames",
+             f"must be >= 0 (0: no cap), got {cfg.render_max_frames}")
     t = cfg.table
     r = cfg.ball_radius
     _require(4 * r < min(t.length, t.width), "ball_radius",

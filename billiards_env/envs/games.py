@@ -25,7 +25,7 @@ from billiards_env.games.hud import game_hud
 from billiards_env.games.session import GameSession
 from billiards_env.physics.aim import aim_angle
 from billiards_env.players import make_player
-from billiards_env.rules import ANYWHERE, GameState
+from billiards_env.rules import ANYWHERE, GameState, RulesError
 from billiards_env.rules.state import Call
 from billiards_env.shot_path import CueShot, PlayedShot
 from billiards_env.table_state import TableState
@@ -126,12 +126,22 @@ class GameTask(Task):
             self.opponent.reset(int(rng.integers(2**31)))
         s = self.session
         opts = options or {}
+        given = [k for k in self.option_keys if k in opts]
+        if given and "positions" not in opts:
+            raise ValueError(f"reset options: {', '.join(map(repr, given))} set up a table by hand and need "
+                             "'positions' ((N, 2) metres) too; without positions the game racks as usual")
         s.last_call = None
         s.score.new_game()
         if "positions" in opts:
-            s.set_state(GameState(self.spec.name, s.numbers_on(), shooter=self.agent,
+            try:
+                state = GameState(self.spec.name, s.numbers_on(), shooter=self.agent,
                                   ball_in_hand=opts.get("ball_in_hand", False), groups=opts.get("groups"),
-                                  break_shot=bool(opts.get("break_shot", False))))
+                                  break_shot=opts.get("break_shot", False))
+            except RulesError as exc:
+                raise ValueError(f"reset options: {exc}") from None
+            if not isinstance(state.break_shot, (bool, np.bool_)):
+                raise ValueError(f"reset options['break_shot']: expected True or False, got {state.break_shot!r}")
+            s.set_state(state)
             return self._info(None, [])
         for _ in range(MAX_RERACKS):
             s.order_rack(rng, self.config.placement)

@@ -71,6 +71,10 @@ class BilliardsVectorEnv(VectorEnv):
             raise ValueError(f"num_envs: must be a positive integer, got {num_envs!r}")
         if not 0 <= render_env < num_envs:
             raise ValueError(f"render_env: the sub-env to draw must be in [0, {num_envs}), got {render_env}")
+        if threads is not None and (isinstance(threads, bool) or not isinstance(threads, (int, np.integer))
+                                    or threads < 1):
+            raise ValueError(f"threads: numba threads for the physics, an integer >= 1 or None (chosen by the load), "
+                             f"got {threads!r}")
         if max_episode_steps is not None:
             raise ValueError("max_episode_steps: the billiards envs end episodes themselves; set the max_shots "
                              "config key instead")
@@ -186,7 +190,7 @@ class BilliardsVectorEnv(VectorEnv):
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
         """Step every sub-env (one shot each; sub-envs whose episode ended reset as ``autoreset_mode`` says)."""
         if not self.native:
-            return self._sync.step(actions)
+            return self._sync.step(self._parse(actions, clip=False))
         if not self._ever_reset:
             raise gym.error.ResetNeeded("call reset() before step(): the tables have no balls yet")
         n = self.num_envs
@@ -296,14 +300,20 @@ class BilliardsVectorEnv(VectorEnv):
     # ======================================================================================================
     # Native path: the parts of a step
     # ======================================================================================================
-    def _parse(self, actions: Any) -> np.ndarray:
-        """Actions as a C-contiguous (N, n) float64 array clipped to [-1, 1] (NaN/inf raise, as in the env)."""
+    def _parse(self, actions: Any, clip: bool = True) -> np.ndarray:
+        """Actions as a C-contiguous (N, n) float64 array clipped to [-1, 1] (NaN/inf raise, as in the env); the
+        one-by-one path gets them unclipped (each sub-env clips its own)."""
         n_act = self.template.action_type.n
         try:
-            act = np.asarray(actions, dtype=np.float64).reshape(self.num_envs, n_act)
+            act = np.asarray(actions, dtype=np.float64)
+            if act.size != self.num_envs * n_act:
+                raise ValueError
+            act = act.reshape(self.num_envs, n_act)
         except (ValueError, TypeError):
-            raise ValueError(f"actions: expected {self.num_envs} x {n_act} numbers in [-1, 1] "
-                             f"({self.template.action_type.layout()}), got shape {np.shape(actions)}") from None
+            raise ValueError(f"actions: expected a batch of shape ({self.num_envs}, {n_act}) (num_envs x "
+                             f"{self.template.action_type.layout()}), got shape {np.shape(actions)}") from None
+        if not clip:
+            return act
         if not np.isfinite(act).all():
             k = int(np.flatnonzero(~np.isfinite(act).all(axis=1))[0])
             raise ValueError(f"actions[{k}]: must be finite numbers, got {act[k].tolist()}; check the policy's output "

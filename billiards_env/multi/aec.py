@@ -24,6 +24,7 @@ from pettingzoo.utils import wrappers
 from billiards_env.envs.base import RENDER_MODES, BilliardsEnv
 from billiards_env.envs.config import ConfigError
 from billiards_env.envs.games import GameTask
+from billiards_env.games import GAMES
 from billiards_env.rules import GameState
 
 #: The two agents; ``player_k`` is player ``k`` of the rules (``GameState.shooter``, ``Call.winner``).
@@ -112,10 +113,14 @@ class BilliardsGameAEC(AECEnv, EzPickle):
     def __init__(self, render_mode: str | None = None, config: Any = None, **overrides: Any) -> None:
         EzPickle.__init__(self, render_mode=render_mode, config=config, **overrides)
         super().__init__()
+        task = overrides.get("task")
+        if task is not None and task not in GAMES:
+            raise ConfigError(f"task: {task!r} is not a game; the two-player env plays one of {', '.join(GAMES)} "
+                              "(leave the key out)")
         game = self.game_class(render_mode=render_mode, config=config, **{**overrides, "opponent": None})
         if not isinstance(game.task, GameTask):
-            raise ConfigError(f"task: {game.config.task!r} is not a game; the two-player env plays 'nine_ball' or "
-                              "'eight_ball' (leave the key out)")
+            raise ConfigError(f"task: {game.config.task!r} is not a game; the two-player env plays one of "
+                              f"{', '.join(GAMES)} (leave the key out)")
         game.task.auto_opponent = False  # the AEC env passes the turn; nobody plays inside step
         #: The single-agent game env the shots are played on (players act on it: ``player.act(game_env, obs)``).
         self.game_env: BilliardsEnv = game

@@ -114,7 +114,10 @@ def test_action_from_shot_inverts_the_mapping(aim):
         got_angle, got_speed = env.shot_from_action(env.action_from_shot(angle, speed))[:2]
         assert math.cos(got_angle - angle) == pytest.approx(1.0, abs=1e-10)
         assert got_speed == pytest.approx(speed, rel=1e-6)
-    assert env.shot_from_action(env.action_from_shot(0.0, 99.0))[1] == pytest.approx(env.config.speed_max)
+    # A policy's action is clipped; a programmer's argument out of range is refused with the range.
+    assert env.shot_from_action([0.0, 7.0])[1] == pytest.approx(env.config.speed_max)
+    with pytest.raises(ValueError, match=r"speed 99.0 m/s is outside this env's range \[0.5, 5.0\]"):
+        env.action_from_shot(0.0, 99.0)
 
 
 def test_relative_aim_zero_hits_the_target_full():

@@ -150,7 +150,7 @@ def test_game_demo_places_breaks_and_the_opponent_replies(capsys, monkeypatch):
 
 def test_opponent_is_refused_for_a_scene(capsys):
     assert play.main(["--env", "BilliardsOneBall-v0", "--opponent", "random", "--demo"]) == 2
-    assert "not a game" in capsys.readouterr().err
+    assert "only the games" in capsys.readouterr().err
 
 
 def test_ball_in_hand_drag_and_click_map_to_the_placement_dims():

@@ -92,9 +92,12 @@ def test_ball_in_hand_placement_moves_to_the_nearest_legal_point():
     d = math.dist(shot.place, (1.5, 0.6))
     assert d >= 2 * R and d == pytest.approx(2 * R, abs=1e-5)  # just off the ball, on the side asked for
     assert shot.place[0] > 1.5
-    # A point off the table moves inside the allowed area, to its corner (L - R, R); that lies inside the corner
-    # pocket's capture circle, so on to the nearest point just outside the circle (radially out from the pocket).
-    shot = u.shot_from_action(u.action_from_shot(0.0, 1.0, place=(5.0, -1.0)))
+    # A programmer's place off the table is refused with the area; a policy's placement dims beyond the box are
+    # clipped to the area's corner (L - R, R), which lies inside the corner pocket's capture circle, so the cue
+    # ball goes on to the nearest point just outside the circle (radially out from the pocket).
+    with pytest.raises(ValueError, match="outside the ball-in-hand area"):
+        u.action_from_shot(0.0, 1.0, place=(5.0, -1.0))
+    shot = u.shot_from_action(np.array([0.0, 0.0, 3.0, -3.0], np.float32))
     x, y = shot.place
     corner = int(np.argmin(np.hypot(u.table.pocket_xy[:, 0] - L, u.table.pocket_xy[:, 1])))
     gap = math.dist((x, y), u.table.pocket_xy[corner]) - u.table.pocket_radius[corner]
@@ -197,6 +200,6 @@ def test_ball_in_hand_never_places_the_cue_ball_where_it_drops_at_once():
         gaps = np.hypot(t.pocket_xy[:, 0] - x, t.pocket_xy[:, 1] - y) - t.pocket_radius
         assert gaps.min() > 0.0
         assert np.hypot(x - px, y - py) < 0.1  # moved just out of the circle, not far away
-    action = u.action_from_shot(0.0, 2.0, place=(0.0, 0.0))
+    action = u.action_from_shot(0.0, 2.0, place=(x0, y0))  # the area's corner: in the pocket's circle
     info = env.step(action)[4]
     assert info["sim_time"] > 0.0 and info["n_events"] >= 1  # the shot is played, not a drop at t = 0

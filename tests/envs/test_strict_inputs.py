@@ -1,0 +1,141 @@
+"""Nothing is accepted silently: a programmer's bad argument gets one clear error naming the valid range (a policy's
+actions are still clipped), the agent sees the opponent's shots, a recorded step cannot exhaust memory."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from env_helpers import gym
+
+from billiards_env.envs.config import ConfigError
+
+
+def _nine_ball(**kw):
+    env = gym.make("Billiards9Ball-v0", **kw)
+    env.reset(seed=3)
+    return env, env.unwrapped
+
+
+def test_set_opponent_takes_a_name_and_refuses_nonsense_at_once():
+    env, u = _nine_ball()
+    u.set_opponent("search")
+    assert u.task.opponent.name == "search"
+    with pytest.raises(ValueError, match="unknown baseline 'serch'"):
+        u.set_opponent("serch")
+    with pytest.raises(TypeError, match="expected a player"):
+        u.set_opponent(42)
+
+
+def test_game_reset_options_need_positions_and_valid_values():
+    env, u = _nine_ball()
+    with pytest.raises(ValueError, match="need 'positions'"):
+        env.reset(options={"ball_in_hand": "anywhere"})
+    pos = u.balls.pos.copy()
+    with pytest.raises(ValueError, match="ball_in_hand: must be False, 'anywhere' or 'kitchen'"):
+        env.reset(options={"positions": pos, "ball_in_hand": "everywhere"})
+    env.reset(options={"positions": pos, "ball_in_hand": "anywhere"})
+    assert u.state.view.place_area is not None
+
+
+@pytest.mark.parametrize("kwargs,message", [
+    ({"place": (5.0, 5.0)}, r"outside the ball-in-hand area x in \[0.02857, 0.635\]"),
+    ({"place": (math.nan, 0.6)}, "place must be finite"),
+    ({"side": 0.3}, "no tip-offset dims"),
+    ({"pocket": 2}, "calls no pocket"),
+    ({"push": True}, "no push-outs"),
+    ({"speed": 9.0}, r"outside this env's range \[0.5, 8.0\]"),
+])
+def test_action_from_shot_refuses_what_it_cannot_play(kwargs, message):
+    env, u = _nine_ball()
+    speed = kwargs.pop("speed", 2.0)
+    with pytest.raises(ValueError, match=message):
+        u.action_from_shot(0.0, speed, **kwargs)
+
+
+def test_eight_ball_called_pocket_is_checked_not_wrapped():
+    env = gym.make("Billiards8Ball-v0")
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match=r"pocket index 0..5, got 7"):
+        env.unwrapped.action_from_shot(0.0, 2.0, pocket=7)
+    a = env.unwrapped.action_from_shot(0.0, 2.0, pocket=4)
+    assert env.unwrapped.shot_from_action(a).pocket == 4
+
+
+def test_spin_tip_offset_beyond_the_limit_is_refused():
+    env = gym.make("BilliardsOneBall-v0", friction="spin", spin_action=True, max_tip_offset=0.4)
+    env.reset(seed=0)
+    with pytest.raises(ValueError, match="the largest is max_tip_offset = 0.4"):
+        env.unwrapped.action_from_shot(0.0, 2.0, side=0.3, top=0.3)
+    shot = env.unwrapped.shot_from_action(env.unwrapped.action_from_shot(0.0, 2.0, side=0.2, top=-0.1))
+    assert shot.side == pytest.approx(0.2) and shot.top == pytest.approx(-0.1)
+
+
+def test_policy_actions_are_still_clipped():
+    env, u = _nine_ball()
+    shot = u.shot_from_action(np.array([0.0, 40.0, -9.0, 9.0], np.float32))
+    assert shot.speed == pytest.approx(u.config.speed_max)
+    x0, x1, y0, y1 = u.state.view.place_area
+    assert x0 - 1e-12 <= shot.place[0] <= x1 + 1e-12 and y0 - 1e-12 <= shot.place[1] <= y1 + 1e-12
+
+
+@pytest.mark.parametrize("key,value", [("opponent", "search"), ("opponent", None), ("win_reward", 2.0),
+                                       ("first_shooter", "opponent")])
+def test_game_keys_on_a_scene_without_rules_are_refused(key, value):
+    with pytest.raises(ConfigError, match=f"{key}: only the games"):
+        gym.make("BilliardsOneBall-v0", **{key: value})
+
+
+def test_vector_env_threads_must_be_positive():
+    with pytest.raises(ValueError, match="threads: .* integer >= 1 or None"):
+        gym.make_vec("BilliardsOneBall-v0", 2, threads=-3)
+
+
+def test_game_vector_env_names_the_batch_shape():
+    vec = gym.make_vec("Billiards9Ball-v0", 3, opponent="random")
+    vec.reset(seed=0)
+    with pytest.raises(ValueError, match=r"batch of shape \(3, 4\)"):
+        vec.step(np.zeros(4))
+    vec.close()
+
+
+def test_info_describes_every_opponent_shot():
+    env = gym.make("Billiards9Ball-v0", opponent="geometric")
+    env.reset(seed=1)
+    seen = 0
+    for _ in range(20):
+        obs, reward, term, trunc, info = env.step(env.action_space.sample())
+        turns = info["opponent_turns"]
+        assert len(turns) == info["opponent_shots"]
+        for t in turns:
+            assert t["shooter"] == 1
+            assert set(t) >= {"pocketed", "foul", "foul_reason", "call", "scratch", "first_contact", "turn_over"}
+            assert (t["foul_reason"] is not None) == t["foul"]
+            assert t["scratch"] == ("cue" in t["pocketed"])
+        if turns:
+            # Only the last shot of a reply passes the turn back (or ends the game).
+            assert all(not t["turn_over"] for t in turns[:-1])
+            assert turns[-1]["turn_over"] or info["winner"] != -1
+            seen += len(turns)
+        if term or trunc:
+            env.reset()
+    assert seen > 0
+
+
+def test_a_recorded_step_draws_at_most_render_max_frames():
+    env = gym.make("Billiards9Ball-v0", render_mode="rgb_array_list", render_width=120, render_max_frames=40)
+    env.reset(seed=0)
+    env.render()
+    lengths = []
+    for _ in range(3):
+        *_, term, trunc, info = env.step(env.action_space.sample())
+        frames = env.render()
+        lengths.append(len(frames))
+        assert 2 <= len(frames) <= 40
+        if term or trunc:
+            break
+    uncapped = gym.make("Billiards9Ball-v0", render_mode="rgb_array_list", render_width=120, render_max_frames=0)
+    uncapped.reset(seed=0)
+    uncapped.render()
+    uncapped.step(np.zeros(4, np.float32))
+    assert len(uncapped.render()) > 40  # a break lasts seconds at 30 fps: the cap above did bite
