@@ -15,30 +15,33 @@ from typing import Any, Callable
 
 import numpy as np
 
+from billiards_env.envs.config import NOISE_PRESETS
 from billiards_env.games import GAMES
+from billiards_env.physics.balls import BALL_RADIUS
 
 #: Single-agent env id of each game (what a trained game policy was trained on), from the game registry.
 GAME_ENV_IDS = {g.name: g.env_id for g in GAMES.values()}
 
-#: Shot noise like the FastFiz/PoolFiz tournaments' (Computational Pool, 2005-2008): cue angle phi 0.125 deg,
-#: speed 0.075 m/s (relative here: 0.075 / 2 m/s, a typical shot), tip offsets a, b 0.5 mm (of R = 28.575 mm).
-FASTFIZ_NOISE = {"angle_noise": math.radians(0.125), "speed_noise": 0.075 / 2.0, "tip_noise": 0.5 / 28.575}
-
-
-def noise_kwargs(noise: str | float, spin: bool) -> dict[str, float]:
-    """Env kwargs of a league noise setting: ``"fastfiz"`` (:data:`FASTFIZ_NOISE`; the tip noise only under the
-    spin model), ``0`` (none), or an angle spread in rad (the speed's, relative, 3x it: the league's older setting)."""
-    if isinstance(noise, str) and noise.lower() == "fastfiz":
-        kw = dict(FASTFIZ_NOISE)
-        if not spin:
-            del kw["tip_noise"]
+def noise_kwargs(noise: str | float, spin: bool, ball_radius: float = BALL_RADIUS) -> dict[str, Any]:
+    """Env kwargs of a league noise setting: a named noise of the envs (``"olympiad"``: FastFiz's level-1 noise,
+    ``"fastfiz"``: the older FastFiz-like setting; :data:`billiards_env.envs.config.NOISE_PRESETS`, written out
+    key by key, the tip noise only under the spin model), ``0`` (none), or an angle spread in rad (the speed's,
+    relative, 3x it: the league's older setting)."""
+    if isinstance(noise, str) and noise.lower() in NOISE_PRESETS:
+        kw = dict(NOISE_PRESETS[noise.lower()])
+        tip_mm = kw.pop("tip_noise_mm")
+        if spin:
+            kw["tip_noise"] = tip_mm * 1e-3 / ball_radius
+        if kw.get("speed_noise_mode") == "relative":
+            del kw["speed_noise_mode"]  # the default
         return kw
     try:
         x = float(noise)
     except (TypeError, ValueError):
         x = math.nan
     if not math.isfinite(x) or x < 0:
-        raise ValueError(f"noise: expected 'fastfiz' or an angle spread >= 0 (rad), got {noise!r}")
+        raise ValueError(f"noise: expected {' or '.join(map(repr, NOISE_PRESETS))} or an angle spread >= 0 (rad), "
+                         f"got {noise!r}")
     return {"angle_noise": x, "speed_noise": 3.0 * x} if x > 0 else {}
 
 
@@ -140,5 +143,5 @@ def physics_kwargs(config: Any) -> dict[str, Any]:
     return kw
 
 
-__all__ = ["TrainedPlayer", "trained_player", "noise_kwargs", "FASTFIZ_NOISE", "GAME_ENV_IDS", "game_config",
+__all__ = ["TrainedPlayer", "trained_player", "noise_kwargs", "GAME_ENV_IDS", "game_config",
            "physics_kwargs"]

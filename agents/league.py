@@ -12,9 +12,10 @@ deterministic actions in its own action and observation types (:class:`agents.ga
 plays ``--games`` games on the two-player env (:mod:`billiards_env.multi`, absolute action type), seats swapped
 every game so each breaks as often as the other; game ``k`` of a match uses the rack of seed ``seed + k``, so every
 pair meets on the same racks. ``--spin`` plays under the spin model (friction ``spin``, tip offsets in the action);
-a trained player brings its own physics (all must agree). ``--noise`` plays with shot noise: ``fastfiz`` (the
-Computational Pool tournaments' spreads: angle 0.125 deg, speed 0.075 m/s, tip 0.5 mm;
-:data:`agents.games.FASTFIZ_NOISE`) or an angle spread in rad (the speed's 3x it, relative).
+a trained player brings its own physics (all must agree). ``--noise`` plays with shot noise: a named noise of the
+envs (``olympiad``: FastFiz's level-1 noise of the Computational Pool Olympiads, aim 0.125 deg, speed 0.075 m/s, tip
+offsets 0.5 mm; ``fastfiz``: the older setting with a relative speed spread of 3.75 %; see
+:data:`billiards_env.envs.config.NOISE_PRESETS`) or an angle spread in rad (the speed's 3x it, relative).
 
 The report: each pair's wins, the row player's win rate with its Wilson 95% interval, the break-and-run rate (the
 breaker wins before the opponent shoots), Elo ratings fitted to all games (Bradley-Terry maximum likelihood,
@@ -287,6 +288,8 @@ def league_env_kwargs(players: Sequence[tuple[str, Any]], spin: bool, noise: str
 def setting_text(kw: dict[str, Any]) -> str:
     friction = kw.get("friction") or kw.get("physics", {}).get("friction", "rolling")
     noise = ", ".join(f"{k} {kw[k]:.4g}" for k in ("angle_noise", "speed_noise", "tip_noise") if kw.get(k))
+    if kw.get("speed_noise_mode") == "absolute":
+        noise = noise.replace("speed_noise", "speed_noise (m/s)")
     return f"physics: {friction}" + (", tip offsets in the action" if kw.get("spin_action") else "") + \
         f"; shot noise: {noise or 'none'}"
 
@@ -353,8 +356,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--search-games", type=int, default=None, help="games of the pairs with the search player "
                    "(default: --games)")
     p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--noise", default="0", help="'fastfiz' (tournament noise) or an angle spread (rad; the speed's "
-                   "is 3x it, relative); default 0: none")
+    p.add_argument("--noise", default="0", help="'olympiad' (FastFiz level-1 noise), 'fastfiz' (the older "
+                   "tournament-like noise) or an angle spread (rad; the speed's is 3x it, relative); default 0: none")
     p.add_argument("--spin", action="store_true", help="the spin model (tip offsets in the action)")
     p.add_argument("--runouts", type=int, default=0, help="racks of the run-out-from-ball-in-hand test per player")
     p.add_argument("--runout-seed", type=int, default=50_000)

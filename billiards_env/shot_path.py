@@ -42,14 +42,19 @@ class CueShot(NamedTuple):
 
 @njit(cache=True)
 def noisy_shot(angle: float, speed: float, side: float, top: float, n_angle: float, n_speed: float,
-               n_side: float, n_top: float, use_angle: bool, use_speed: bool, use_tip: bool) -> tuple:
-    """The shot as played: the angle noise added, the speed scaled by ``1 + n_speed`` (never below 0), the tip
-    noise added and the tip kept inside the miscue limit (:data:`TIP_LIMIT`). The noise values are drawn by the
-    caller from its generator, in this order, only for the noises in use (:func:`draw_noise`)."""
+               n_side: float, n_top: float, use_angle: bool, use_speed: bool, use_tip: bool,
+               speed_absolute: bool = False) -> tuple:
+    """The shot as played: the angle noise added, the speed scaled by ``1 + n_speed`` (``speed_absolute``:
+    ``n_speed`` m/s added; never below 0), the tip noise added and the tip kept inside the miscue limit
+    (:data:`TIP_LIMIT`). The noise values are drawn by the caller from its generator, in this order, only for the
+    noises in use (:func:`draw_noise`)."""
     if use_angle:
         angle += n_angle
     if use_speed:
-        speed *= max(0.0, 1.0 + n_speed)
+        if speed_absolute:
+            speed = max(0.0, speed + n_speed)
+        else:
+            speed *= max(0.0, 1.0 + n_speed)
     if use_tip:
         side += n_side
         top += n_top
@@ -90,7 +95,8 @@ def play_shot(state: TableState, shot: CueShot, rng: np.random.Generator, record
         b.pos[0] = shot.place
     noise = draw_noise(rng, s) if s.noisy else (0.0, 0.0, 0.0, 0.0)
     angle, speed, side, top = noisy_shot(shot.angle, shot.speed, shot.side, shot.top, *noise,
-                                         s.angle_noise > 0.0, s.speed_noise > 0.0, s.tip_noise > 0.0)
+                                         s.angle_noise > 0.0, s.speed_noise > 0.0, s.tip_noise > 0.0,
+                                         s.speed_noise_absolute)
     start = (float(b.pos[0, 0]), float(b.pos[0, 1]))
     b.vel[0, 0] = speed * math.cos(angle)
     b.vel[0, 1] = speed * math.sin(angle)

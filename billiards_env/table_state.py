@@ -59,9 +59,9 @@ def free_view(balls: Balls) -> ShotView:
 
 @dataclass(frozen=True)
 class ShotSettings:
-    """What a shooter may do with the cue: the speed range (m/s), the shot noise (angle rad, relative speed, tip
-    offset fraction of R; Gaussian standard deviations), whether tip offsets are set (spin model and spin dims) and
-    their largest offset (fraction of R)."""
+    """What a shooter may do with the cue: the speed range (m/s), the shot noise (Gaussian standard deviations:
+    angle rad, speed relative or, with ``speed_noise_absolute``, m/s, tip offset fraction of R), whether tip offsets
+    are set (spin model and spin dims) and their largest offset (fraction of R)."""
 
     speed_min: float
     speed_max: float
@@ -70,6 +70,7 @@ class ShotSettings:
     tip_noise: float = 0.0
     tip_offsets: bool = False
     max_tip_offset: float = 0.5
+    speed_noise_absolute: bool = False
 
     @property
     def speed_range(self) -> tuple[float, float]:

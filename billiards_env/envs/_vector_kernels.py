@@ -79,7 +79,7 @@ def _target(on):
 # Constants of a pot env, packed in one float array (``cfg``) and one int array (``icfg``) by :func:`pack_config`.
 C_SPEED_LO, C_SPEED_SPAN, C_MAX_TIP, C_ANGLE_NOISE, C_SPEED_NOISE, C_TIP_NOISE, C_MAX_GHOST, C_BALL_RADIUS, \
     C_HEAD_X, C_HEAD_Y, C_WIDTH, C_POT_REWARD, C_SCRATCH_PENALTY, C_MISS_PENALTY, C_STEP_PENALTY, C_SX, C_SY = range(17)
-I_AIM, I_SPIN_ACTION, I_SPIN_MODEL, I_SINGLE_SHOT, I_MAX_SHOTS, I_POSITIONS_OBS = range(6)
+I_AIM, I_SPIN_ACTION, I_SPIN_MODEL, I_SINGLE_SHOT, I_MAX_SHOTS, I_POSITIONS_OBS, I_SPEED_NOISE_ABS = range(7)
 # Columns of the per-table float outputs (``fout``) and int outputs (``iout``).
 F_REWARD, F_ANGLE, F_SPEED, F_SIDE, F_TOP, F_START_X, F_START_Y = range(7)
 O_TERMINATED, O_TRUNCATED, O_SUCCESS, O_SCRATCH, O_POCKETED = range(5)
@@ -110,13 +110,14 @@ def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.ndarray, np.n
     cfg[C_STEP_PENALTY] = c.step_penalty
     cfg[C_SX] = 1.0 / table.length
     cfg[C_SY] = 1.0 / table.width
-    icfg = np.zeros(6, np.int64)
+    icfg = np.zeros(7, np.int64)
     icfg[I_AIM] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
     icfg[I_SPIN_ACTION] = int(a.spin)
     icfg[I_SPIN_MODEL] = int(c.physics.friction == "spin")
     icfg[I_SINGLE_SHOT] = int(c.single_shot)
     icfg[I_MAX_SHOTS] = int(c.max_shots)
     icfg[I_POSITIONS_OBS] = int(observation_type.name == "positions" and observation_type.n_game == 0)
+    icfg[I_SPEED_NOISE_ABS] = int(c.speed_noise_mode == "absolute")
     return cfg, icfg
 
 
@@ -163,7 +164,7 @@ def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
         angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], 0.0, 0.0, False, 0.0, cfg[C_MAX_GHOST])
     angle, speed, side, top = noisy_shot(angle, speed, side, top, noise[k, 0], noise[k, 1], noise[k, 2],
                                          noise[k, 3], cfg[C_ANGLE_NOISE] > 0.0, cfg[C_SPEED_NOISE] > 0.0,
-                                         cfg[C_TIP_NOISE] > 0.0)
+                                         cfg[C_TIP_NOISE] > 0.0, icfg[I_SPEED_NOISE_ABS] != 0)
     fout[k, F_START_X] = p[0, 0]
     fout[k, F_START_Y] = p[0, 1]
     vel[k, 0, 0] = speed * math.cos(angle)

@@ -82,7 +82,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                               max_time=c.max_time, max_events=c.max_events)
         spin = c.physics.friction == "spin"
         settings = ShotSettings(float(c.speed_min), float(c.speed_max), float(c.angle_noise), float(c.speed_noise),
-                                float(c.tip_noise), spin and bool(c.spin_action), float(c.max_tip_offset))
+                                float(c.tip_noise), spin and bool(c.spin_action), float(c.max_tip_offset),
+                                c.speed_noise_mode == "absolute")
         #: The table state every part reads (see the class docstring).
         self.state = TableState(balls, c.table, c.physics, simulator, tuple(range(n)), settings)
         self.shots = 0

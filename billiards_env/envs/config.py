@@ -55,6 +55,15 @@ OPENINGS = ("break", "ball_in_hand", "either")
 #: ``pot`` (the scenes without rules) and every registered game (:data:`billiards_env.games.GAMES`).
 TASKS = ("pot",) + tuple(GAMES)
 OPPONENTS = ("geometric", "search", "random")
+SPEED_NOISE_MODES = ("relative", "absolute")
+#: The named shot noises (config key ``noise``): the keys they set (tip_noise only under the spin model; a tip
+#: noise in mm is a fraction of the config's ball radius).
+NOISE_PRESETS: dict[str, dict[str, Any]] = {
+    "olympiad": {"angle_noise": math.radians(0.125), "speed_noise": 0.075, "speed_noise_mode": "absolute",
+                 "tip_noise_mm": 0.5},
+    "fastfiz": {"angle_noise": math.radians(0.125), "speed_noise": 0.075 / 2.0, "speed_noise_mode": "relative",
+                "tip_noise_mm": 0.5},
+}
 FIRST_SHOOTERS = ("agent", "opponent", "random")
 MAX_OBJECT_BALLS = 15
 #: The sections shared with scene files, and the parser of each.
@@ -138,8 +147,16 @@ class EnvConfig:
                                  default=0.5)
     angle_noise: float = _doc("Shot noise: standard deviation (rad) of Gaussian noise added to the angle; 0 = off.",
                               default=0.0)
-    speed_noise: float = _doc("Shot noise: relative standard deviation of the speed (speed *= 1 + N(0, s)); "
-                              "0 = off.", default=0.0)
+    speed_noise: float = _doc("Shot noise: standard deviation of the speed, relative (speed *= 1 + N(0, s)) or in "
+                              "m/s (speed += N(0, s)) as speed_noise_mode says; 0 = off.", default=0.0)
+    speed_noise_mode: str = _doc("'relative' (speed_noise a fraction of the speed) or 'absolute' (in m/s, as "
+                                 "FastFiz's noise).", default="relative")
+    noise: str | None = _doc("A named shot noise, setting angle_noise, speed_noise (and its mode) and, under the "
+                             "spin model, tip_noise, unless given too: 'olympiad' (FastFiz's level-1 noise of the "
+                             "Computational Pool Olympiads: aim 0.125 deg, speed 0.075 m/s, tip offsets 0.5 mm; "
+                             "its 0.1 deg elevation noise has no counterpart on a level cue), 'fastfiz' (the older "
+                             "FastFiz-like setting of the leagues: aim 0.125 deg, speed 3.75 %, tip 0.5 mm), or "
+                             "None.", default=None)
     tip_noise: float = _doc("Shot noise: standard deviation (fraction of R) of Gaussian noise added to each tip "
                             "offset (spin model only; the result is kept inside the miscue limit); 0 = off.",
                             default=0.0)
@@ -288,11 +305,24 @@ def _check_game_keys(cfg: EnvConfig, given: set[str]) -> EnvConfig:
     return cfg
 
 
+def _apply_noise(cfg: EnvConfig, given: set[str]) -> EnvConfig:
+    """``cfg`` with its named noise (key ``noise``) filled into the noise keys not given explicitly."""
+    if cfg.noise is None:
+        return cfg
+    preset = dict(NOISE_PRESETS[cfg.noise])
+    tip_mm = preset.pop("tip_noise_mm")
+    if cfg.physics.friction == "spin":
+        preset["tip_noise"] = tip_mm * 1e-3 / cfg.ball_radius
+    fill = {k: v for k, v in preset.items() if k not in given}
+    return cfg.updated(fill, source=f"noise {cfg.noise!r}") if fill else cfg
+
+
 def load_config(scene: str | None = None, config: Any = None, **overrides: Any) -> EnvConfig:
     """The configuration of an environment: packaged scene ``scene`` (defaults), then ``config`` (a YAML path,
     a mapping or an :class:`EnvConfig`), then keyword ``overrides``."""
     if isinstance(config, EnvConfig):
-        return _check_game_keys(config.updated(overrides, source="keyword arguments"), set(overrides))
+        cfg = config.updated(overrides, source="keyword arguments")
+        return _check_game_keys(_apply_noise(cfg, set(overrides)), set(overrides))
     raw = EnvConfig().to_dict()
     if scene is not None:
         p = scene_path(scene)
@@ -311,7 +341,8 @@ def load_config(scene: str | None = None, config: Any = None, **overrides: Any) 
         given |= set(read_yaml(config))
     elif isinstance(config, Mapping):
         given |= set(config)
-    return _check_game_keys(_build(raw, "keyword arguments" if overrides else "config"), given)
+    cfg = _build(raw, "keyword arguments" if overrides else "config")
+    return _check_game_keys(_apply_noise(cfg, given), given)
 
 
 # --- sections --------------------------------------------------------------------------------------------------
@@ -462,6 +493,9 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _choice(cfg, "task", TASKS)
     _choice(cfg, "first_shooter", FIRST_SHOOTERS)
     _choice(cfg, "opening", OPENINGS)
+    _choice(cfg, "speed_noise_mode", SPEED_NOISE_MODES)
+    _require(cfg.noise is None or cfg.noise in NOISE_PRESETS, "noise",
+             f"unknown value {cfg.noise!r}; use one of {', '.join(map(repr, NOISE_PRESETS))} or None")
     game = cfg.task in GAMES
     _require(cfg.opening == "break" or game, "opening",
              f"only the games (task {' or '.join(map(repr, GAMES))}) have an opening; leave it 'break'")

@@ -69,10 +69,10 @@ def test_player_stats_count_breaks_and_decision_times():
 
 
 def test_league_settings_noise_and_physics():
-    from agents.games import FASTFIZ_NOISE
-
     kw = league_env_kwargs([("geometric", None)], spin=True, noise="fastfiz")
-    assert kw["friction"] == "spin" and kw["spin_action"] and kw["tip_noise"] == FASTFIZ_NOISE["tip_noise"]
+    assert kw["friction"] == "spin" and kw["spin_action"] and kw["tip_noise"] == pytest.approx(0.5 / 28.575)
+    kw = league_env_kwargs([("geometric", None)], spin=True, noise="olympiad")
+    assert kw["speed_noise"] == 0.075 and kw["speed_noise_mode"] == "absolute"
     kw = league_env_kwargs([("geometric", None)], spin=False, noise="fastfiz")
     assert "tip_noise" not in kw and kw["angle_noise"] == pytest.approx(0.0021817, rel=1e-4)
     assert league_env_kwargs([], spin=False, noise="0.005") == {"angle_noise": 0.005, "speed_noise": 0.015}
