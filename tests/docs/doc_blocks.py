@@ -17,6 +17,8 @@ Directives, in an HTML comment right above the fence (invisible when rendered, v
   Ray cluster, the test suite itself); the reason is required and shown in the test report.
 - ``<!-- docs-test: before: COMMAND -->``: run COMMAND first (e.g. make the trained run a block loads), with the
   same budgets as the commands of bash blocks.
+- ``<!-- docs-test: output-of: COMMAND -->`` above a JSON block: the block is what COMMAND prints (same keys in the
+  same order, each number equal to the printed one to the digits the block shows).
 """
 from __future__ import annotations
 
@@ -43,6 +45,7 @@ class Block:
     code: str
     skip: str | None = None  #: the reason given by a skip directive
     before: list[str] = field(default_factory=list)  #: commands of before directives
+    output_of: str | None = None  #: the command whose output this block shows (an output-of directive)
 
     @property
     def where(self) -> str:
@@ -106,8 +109,11 @@ def _read_directives(block: Block, lines: list[str], start: int) -> None:
             block.skip = arg
         elif kind == "before":
             block.before.append(arg)
+        elif kind == "output-of":
+            block.output_of = arg
         else:
-            raise DocsFormatError(f"{block.where}: unknown directive 'docs-test: {kind}'; use skip or before")
+            raise DocsFormatError(f"{block.where}: unknown directive 'docs-test: {kind}'; use skip, before or "
+                                  "output-of")
 
 
 def commands(code: str) -> list[str]:

@@ -212,6 +212,49 @@ def test_data_block_parses(block: Block):
         yaml.safe_load(block.code)
 
 
+OUTPUTS = [b for b in BLOCKS if b.output_of]
+
+
+@pytest.mark.parametrize("block", OUTPUTS, ids=[b.where for b in OUTPUTS])
+def test_output_sample_matches_the_command(block: Block, tmp_path: Path):
+    """A sample of a command's output is what the command prints now (numbers to the digits the sample shows)."""
+    assert block.lang == "json", f"{block.where}: output-of is checked on JSON blocks"
+    box = make_sandbox(tmp_path)
+    command, _ = prepare(block.output_of, box)
+    proc = subprocess.run(["bash", "-c", command.replace("python -m ", f"{shlex.quote(sys.executable)} -m ")],
+                          cwd=box, env=_env(), capture_output=True, text=True, timeout=DEFAULT_TIMEOUT)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    shown, printed = json.loads(block.code, parse_float=_Shown), json.loads(proc.stdout)
+    problems = _compare(shown, printed, "$")
+    assert not problems, f"{block.where}: the sample differs from `{block.output_of}`: {problems[:10]}"
+
+
+class _Shown(float):
+    """A float parsed from a sample, remembering how many decimals it showed."""
+
+    def __new__(cls, text: str) -> "_Shown":
+        obj = super().__new__(cls, float(text))
+        mantissa, _, exp = text.lower().partition("e")
+        decimals = len(mantissa.partition(".")[2]) - (int(exp) if exp else 0)
+        obj.tolerance = 0.5 * 10.0 ** (-decimals) * (1 + 1e-9)
+        return obj
+
+
+def _compare(shown: object, printed: object, at: str) -> list[str]:
+    if isinstance(shown, dict):
+        if not isinstance(printed, dict) or list(shown) != list(printed):
+            return [f"{at}: keys {list(shown)} != {list(printed) if isinstance(printed, dict) else printed!r}"]
+        return [p for k in shown for p in _compare(shown[k], printed[k], f"{at}.{k}")]
+    if isinstance(shown, list):
+        if not isinstance(printed, list) or len(shown) != len(printed):
+            return [f"{at}: {len(shown)} items shown, {printed!r} printed"]
+        return [p for k, (a, b) in enumerate(zip(shown, printed)) for p in _compare(a, b, f"{at}[{k}]")]
+    if isinstance(shown, _Shown):
+        ok = isinstance(printed, (int, float)) and abs(float(printed) - shown) <= shown.tolerance
+        return [] if ok else [f"{at}: {float(shown)!r} shown, {printed!r} printed"]
+    return [] if shown == printed and type(shown) is type(printed) else [f"{at}: {shown!r} shown, {printed!r} printed"]
+
+
 @pytest.mark.parametrize("block", [pytest.param(b, marks=_marks(b), id=b.where) for b in SHELL])
 def test_shell_block_runs(block: Block, tmp_path: Path):
     box = make_sandbox(tmp_path)
