@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from typing import Any
 
 #: Seconds a command without a rule may take.
 DEFAULT_TIMEOUT = 90.0
@@ -33,8 +34,9 @@ class Rule:
 
     pattern: str
     why: str  #: what the rule is for (shown when it fails)
-    sub: list[tuple[str, str]] = field(default_factory=list)  #: regex substitutions on the command
+    sub: list[tuple[str, Any]] = field(default_factory=list)  #: regex substitutions (a string or a function)
     add: str = ""  #: arguments appended
+    add_missing: dict[str, str] = field(default_factory=dict)  #: flag -> value, appended if the flag is absent
     slow: bool = False
     timeout: float = DEFAULT_TIMEOUT
     kind: str = "run"  #: run | server (must come up, then stopped) | pip (checked, not run)
@@ -49,7 +51,9 @@ class Rule:
     def apply(self, command: str) -> str:
         for old, new in self.sub:
             command = re.sub(old, new, command)
-        return f"{command} {self.add}".strip()
+        missing = " ".join(f"{flag} {value}" for flag, value in self.add_missing.items()
+                           if not re.search(rf"(^| ){re.escape(flag)}( |=|$)", command))
+        return " ".join(part for part in (command, missing, self.add) if part)
 
 
 RULES: list[Rule] = [
@@ -63,8 +67,10 @@ RULES: list[Rule] = [
          slow=True, timeout=900, cwd="root"),
     Rule(r"pip install", "install commands: every package they name is installed (or is an extra of "
                          "pyproject.toml), not reinstalled", kind="pip"),
-    Rule(r"python -m agents\.train --resume", "resume with a total budget above what the tiny run spent",
-         sub=[(r"--seconds \S+", "")], add="--seconds 8 --no-progress", slow=True, timeout=300),
+    Rule(r"python -m agents\.train --resume", "resume with a total budget above what the tiny run spent (a total "
+                                               "given is scaled by 1/100: 1080 s become 10.8)",
+         sub=[(r"--seconds (\S+)", lambda m: f"--seconds {float(m.group(1)) / 100:g}")],
+         add_missing={"--seconds": "8"}, add="--no-progress", slow=True, timeout=300),
     Rule(r"python -m agents\.train", "training: a few seconds (in the default set: the README's three lines "
                                       "load the run it makes)",
          sub=[(r"--seconds \S+", "")], add=TINY_TRAIN, timeout=300),

@@ -90,16 +90,16 @@ def prepare(command: str, box: Path) -> tuple[str, Rule | None]:
     return command, rule
 
 
-def run_command(command: str, box: Path, where: str) -> None:
-    """Run one docs command in the sandbox as its rule says; fail with its output if it does not do as written."""
+def run_command(command: str, box: Path, where: str, venv: str | None = None) -> None:
+    """Run one docs command in the sandbox as its rule says (in ``venv`` if given: a block of RLlib commands runs
+    wholly in the RLlib venv, as the README's reader has activated it); fail with its output if it does not do as
+    written."""
     command, rule = prepare(command, box)
     rule = rule or Rule("", "no rule: as written")
     if rule.kind == "pip":
         check_install(command, where)
         return
-    python = _python(rule.venv)
-    if rule.venv != ".venv" and not rule.cwd == "root":
-        pass
+    python = _python(venv or rule.venv)
     if rule.cwd == "root" and rule.venv == ".venv" and "scripts/" in command and not (ROOT / ".venv").exists():
         pytest.skip(f"{command}: no .venv in this checkout (scripts/setup.sh makes it; CI has one)")
     if rule.cwd == "root" and "--rllib" in command and not (ROOT / ".venv-rllib").exists():
@@ -258,8 +258,11 @@ def _compare(shown: object, printed: object, at: str) -> list[str]:
 @pytest.mark.parametrize("block", [pytest.param(b, marks=_marks(b), id=b.where) for b in SHELL])
 def test_shell_block_runs(block: Block, tmp_path: Path):
     box = make_sandbox(tmp_path)
-    for command in block.before + commands(block.code):
-        run_command(command, box, block.where)
+    cmds = block.before + commands(block.code)
+    venvs = {rule.venv for rule in (rule_for(prepare_name(c)) for c in cmds) if rule is not None}
+    venv = ".venv-rllib" if ".venv-rllib" in venvs else None
+    for command in cmds:
+        run_command(command, box, block.where, venv)
 
 
 def _python_files() -> list:
@@ -273,20 +276,21 @@ def _python_files() -> list:
 
 
 RUNNER = r"""
-import json, sys, traceback
+import json, sys, time, traceback
 blocks = json.load(open(sys.argv[1]))
 scope = {"__name__": "__main__"}
 for b in blocks:
     if b["skip"]:
         print(f"SKIPPED {b['where']}: {b['skip']}", flush=True)
         continue
+    t0 = time.perf_counter()
     try:
         exec(compile(b["code"], b["where"], "exec"), scope)
     except BaseException:
         print(f"FAILED {b['where']}", flush=True)
         traceback.print_exc()
         sys.exit(1)
-    print(f"PASSED {b['where']}", flush=True)
+    print(f"PASSED {b['where']} ({time.perf_counter() - t0:.1f} s)", flush=True)
 """
 
 
@@ -310,3 +314,4 @@ def test_python_blocks_run(doc: str, blocks: list[Block], tmp_path: Path):
         pytest.fail(f"{doc}: {ran[-1] if ran else 'the blocks did not start'}\n--- stderr (end)\n"
                     f"{proc.stderr[-4000:]}")
     assert len(ran) == len(blocks), proc.stdout[-2000:]
+    print("\n".join(ran))  # each block's time, shown with -s or on failure
