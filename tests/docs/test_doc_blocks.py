@@ -315,3 +315,57 @@ def test_python_blocks_run(doc: str, blocks: list[Block], tmp_path: Path):
                     f"{proc.stderr[-4000:]}")
     assert len(ran) == len(blocks), proc.stdout[-2000:]
     print("\n".join(ran))  # each block's time, shown with -s or on failure
+
+
+# --- commands in the prose ----------------------------------------------------------------------------------
+#: An inline command in the prose: `python -m MODULE ...`, a console script, or a venv's python running a module.
+_INLINE = re.compile(r"`((?:\.venv[-\w]*/bin/)?python -m [\w.]+[^`]*|billiards-(?:sim|play)(?: [^`]*)?)`")
+
+
+def inline_commands() -> dict[str, list[tuple[str, str]]]:
+    """Commands quoted inline in the docs' prose (outside code blocks), by the module they run."""
+    found: dict[str, list[tuple[str, str]]] = {}
+    for doc in DOCS:
+        text = re.sub(r"```.*?```", "", (ROOT / doc).read_text(encoding="utf-8"), flags=re.S)
+        for m in _INLINE.finditer(" ".join(text.split())):
+            command = prepare_name(re.sub(r"^\.venv[-\w]*/bin/", "", m.group(1)))
+            module = command.split()[2]
+            if "<" in module:
+                continue
+            found.setdefault(module, []).append((doc, command))
+    return found
+
+
+def test_inline_commands_name_real_modules_and_flags():
+    """Each command quoted in the prose runs a module that exists, and every ``--flag`` it uses is one its
+    ``--help`` lists (the flags of all modules checked in one go, their ``--help`` in parallel)."""
+    import importlib.util
+
+    found = inline_commands()
+    assert "agents.train" in found and "billiards_env.sim" in found, sorted(found)
+    for module in found:
+        if module == "pip":
+            continue
+        top = module.split(".")[0]
+        if top == "billiards_env" or (ROOT / top).is_dir():
+            assert importlib.util.find_spec(module) is not None, f"{found[module][0]}: no module {module}"
+    flagged = {m: cs for m, cs in found.items() if m != "pip" and any(" --" in c for _, c in cs)}
+    procs = {}
+    for module in sorted(flagged):
+        venv = ".venv-rllib" if module in ("benchmarks.rllib_throughput",) else ".venv"
+        exe = sys.executable if venv == ".venv" else str(ROOT / venv / "bin" / "python")
+        if not Path(exe).exists():
+            continue
+        procs[module] = subprocess.Popen([exe, "-m", module, "--help"], cwd=ROOT, env=_env(), text=True,
+                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, stdin=subprocess.DEVNULL)
+    problems = []
+    for module, proc in procs.items():
+        out, err = proc.communicate(timeout=300)
+        if proc.returncode != 0:
+            problems.append(f"`python -m {module} --help` failed: {err.strip().splitlines()[-1:]}")
+            continue
+        for doc, command in flagged[module]:
+            for flag in re.findall(r"(?<![\w-])(--[a-z][\w-]*)", command):
+                if flag not in out:
+                    problems.append(f"{doc}: `{command}`: {flag} is not an option of python -m {module}")
+    assert not problems, "\n".join(problems)
