@@ -224,19 +224,25 @@ class PlayApp:
         """Keep the referee's call of every shot played inside ``env.step``/``reset`` (the human's and the
         opponent's), for the turn log; the env's ``info["opponent_turns"]`` is used instead where it exists."""
         task = self.core.task
-        judge = task.judge
+        owner = task if hasattr(task, "judge") else getattr(task, "session", None)  # who judges the shots
+        if owner is None or not hasattr(owner, "judge"):
+            return  # the env's info alone then (opponent_turns; the human's shot from its own keys)
+        judge = owner.judge
 
-        def judge_and_record(env: Any, outcome: Any) -> Any:
-            call = judge(env, outcome)
+        def judge_and_record(*args: Any, **kwargs: Any) -> Any:
+            call = judge(*args, **kwargs)
             self._calls.append(call)
             return call
 
-        task.judge = judge_and_record
+        owner.judge = judge_and_record
 
     def _names(self) -> tuple[str, str]:
+        task = self.core.task
+        if hasattr(task, "names"):
+            return tuple(task.names())  # type: ignore[return-value]
         from billiards_env.envs.game_hud import player_names
 
-        return player_names(self.core.task)
+        return player_names(task)
 
     @staticmethod
     def _opponent_turns(info: dict[str, Any], calls: list[Any]) -> list[dict[str, Any]]:

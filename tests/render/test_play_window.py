@@ -98,3 +98,19 @@ def test_who_breaks_after_r(breaker, expected):
             assert app.log.lines and app.log.lines[0][0].startswith("geometric:")
     app.close()
     assert breakers == expected
+
+
+def test_log_reads_the_envs_opponent_turns():
+    """Where the env's info gives ``opponent_turns`` (ball ids as strings), the log uses them as they are."""
+    info = {"opponent_shots": 2, "opponent_turns": [
+        {"shooter": 1, "pocketed": ("3",), "scratch": False, "foul": False, "foul_reason": None, "call": "legal",
+         "turn_over": False},
+        {"shooter": 1, "pocketed": ("cue",), "scratch": True, "foul": True, "foul_reason": "scratch",
+         "call": "scratch", "turn_over": True}]}
+    log = TurnLog()
+    log.add(play.PlayApp._opponent_turns(info, []), NAMES)
+    assert [line for line, _ in log.lines] == ["geometric: pocketed 3 - shoots again",
+                                               "geometric: FOUL scratch - you have ball in hand"]
+    own = play._info_turn({"pocketed": ["cue"], "foul": True, "foul_reason": "scratch", "call": "scratch",
+                           "scratch": True, "turn_over": True, "winner": -1, "opponent_shots": 2}, 0)
+    assert turn_line(own, NAMES)[0] == "you: FOUL scratch - geometric has ball in hand"
