@@ -240,4 +240,53 @@ class RunCheckpoint(BaseCallback):
             p.unlink(missing_ok=True)
 
 
-__all__ = ["SeededEvalCallback", "TrainingClock", "RunCheckpoint"]
+class BudgetProgressBar(BaseCallback):
+    """A progress bar whose end (and ETA) is the run's real limit: with a time budget, the budget's seconds (wall or
+    CPU, :class:`TrainingClock`), with the env steps beside it; without one, the ``steps`` to do. (SB3's own bar
+    counts ``n_timesteps``, which a budgeted run never reaches: a 30-minute job showed an ETA of 3.5 hours.)"""
+
+    def __init__(self, clock: TrainingClock, steps: int, every: int = 50) -> None:
+        super().__init__(0)
+        self.clock = clock
+        self.steps = int(steps)
+        self.every = max(int(every), 1)
+        self.bar: Any = None
+        self._start_steps = 0
+
+    def _on_training_start(self) -> None:
+        from tqdm import tqdm
+
+        self._start_steps = int(self.model.num_timesteps)
+        c = self.clock
+        if c.max_seconds > 0:
+            unit = "CPU s" if c.clock == "cpu" else "s"
+            self.bar = tqdm(total=round(c.max_seconds), initial=min(round(c.elapsed()), round(c.max_seconds)),
+                            unit=unit, desc=f"budget ({c.clock} clock)", dynamic_ncols=True,
+                            bar_format="{desc}: {percentage:3.0f}%|{bar}| {n:.0f}/{total:.0f} " + unit
+                                       + " [{elapsed}<{remaining}{postfix}]")
+        else:
+            self.bar = tqdm(total=self.steps, unit="step", desc="steps", dynamic_ncols=True)
+
+    def _on_step(self) -> bool:
+        if self.bar is not None and self.n_calls % self.every == 0:
+            self._update()
+        return True
+
+    def _update(self) -> None:
+        c = self.clock
+        done = int(self.model.num_timesteps) - self._start_steps
+        if c.max_seconds > 0:
+            self.bar.n = min(c.elapsed(), c.max_seconds)
+            self.bar.set_postfix_str(f"{self.model.num_timesteps:,} steps", refresh=False)
+        else:
+            self.bar.n = min(done, self.steps)
+        self.bar.refresh()
+
+    def _on_training_end(self) -> None:
+        if self.bar is not None:
+            self._update()
+            self.bar.close()
+            self.bar = None
+
+
+__all__ = ["SeededEvalCallback", "TrainingClock", "RunCheckpoint", "BudgetProgressBar"]

@@ -2,7 +2,8 @@
 
 A config file is a YAML mapping. The entry named after the env id is in the RL Zoo format, so
 ``python -m rl_zoo3.train --algo sac --env BilliardsOneBall-v0 --gym-packages billiards_env
---conf-file configs/train/one_ball_sac.yaml --log-interval 2000`` trains from the same file::
+--conf-file configs/train/one_ball_sac.yaml ...`` trains from the same file (with the flags the README gives: the
+zoo knows only ``lin_`` schedules and gives its evaluation env only the command line's env kwargs)::
 
     BilliardsOneBall-v0:
       n_timesteps: !!float 1e6

@@ -81,11 +81,18 @@ def model_player(path: str | Path, env_id: str | None = None, label: str | None 
         return rllib_player(path, env_id, label)
     from .config import load_train_config, parse_hyperparams
     from .train import algo_class
+    from .zoo import is_zoo_run, read_zoo_run
 
-    model_zip, run_dir = resolve_model(path)
     env_kwargs: dict[str, Any] = {}
     wrapper = None
     algo = None
+    zoo_norm = None
+    if is_zoo_run(path):  # an RL Zoo run folder (logs/<algo>/<env_id>_<k>): its config.yml says what it trained on
+        zoo = read_zoo_run(path)
+        model_zip, run_dir = zoo.model_zip, zoo.run_dir
+        env_id, env_kwargs, algo, zoo_norm = env_id or zoo.env_id, zoo.env_kwargs, zoo.algo, zoo.vecnormalize
+    else:
+        model_zip, run_dir = resolve_model(path)
     if run_dir is not None and (run_dir / "config.yaml").exists():
         cfg = load_train_config(run_dir / "config.yaml")
         setup = parse_hyperparams(cfg)
@@ -103,7 +110,8 @@ def model_player(path: str | Path, env_id: str | None = None, label: str | None 
                      or a in str(model_zip).lower()), "sac")
     model = algo_class(algo).load(str(model_zip), device="cpu")
     norm = None
-    for cand in ([run_dir / "vecnormalize.pkl", run_dir / "checkpoints" / "vecnormalize.pkl"] if run_dir else []):
+    candidates = [run_dir / "vecnormalize.pkl", run_dir / "checkpoints" / "vecnormalize.pkl"] if run_dir else []
+    for cand in ([zoo_norm] if zoo_norm else []) + candidates:
         if cand.exists():
             import pickle
 

@@ -13,8 +13,10 @@ replay buffer, ``latest.json``), ``eval/evaluations.npz``, ``monitor/`` (per-env
 ``is_success``) and ``tb/`` (TensorBoard: ``tensorboard --logdir runs``).
 
 ``--resume`` takes a run folder (or a checkpoint ``.zip`` inside one): the latest checkpoint's model and
-replay buffer are loaded and training goes on in the same folder up to ``n_timesteps`` (and the remaining
-wall-clock budget). Ctrl-C or SIGTERM saves a checkpoint before exiting, so an interruption loses at most one
+replay buffer are loaded and training goes on in the same folder up to ``n_timesteps`` and the time budget
+``max_seconds``, both totals of the run (``--timesteps`` and ``--seconds`` override them as totals too; a run that
+has spent either is refused with the command that trains on). The budget counts the seconds of
+``budget_clock``: ``wall`` or the training process's ``cpu`` seconds (the committed configs). Ctrl-C or SIGTERM saves a checkpoint before exiting, so an interruption loses at most one
 checkpoint interval even if the process is killed harder.
 """
 from __future__ import annotations
@@ -191,6 +193,21 @@ class _Interrupted(Exception):
     pass
 
 
+def _spent_budget(max_seconds: float, clock: str, seconds: float, steps: int, n_timesteps: int) -> str | None:
+    """What a resumed run has already used up, as the end of an error message, or None if it can train on: both
+    limits are the run's totals (``max_seconds`` in the budget's clock, ``n_timesteps``), counting earlier
+    sessions."""
+    unit = "CPU s" if clock == "cpu" else "s"
+    if max_seconds and seconds >= max_seconds:
+        return (f"has spent its time budget ({seconds:.0f} of {max_seconds:.0f} {unit}, max_seconds counts the "
+                f"run's total {clock} seconds): nothing to train. To train on, raise the total, e.g. "
+                f"--seconds {seconds + 300:.0f} for 300 {unit} more")
+    if steps >= n_timesteps:
+        return (f"has reached n_timesteps ({steps} of {n_timesteps} steps, the run's total): nothing to train. To "
+                f"train on, raise the total, e.g. --timesteps {steps + 100_000}")
+    return None
+
+
 def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = None,
           progress_bar: bool | None = None, quiet: bool = False, vec_env: str = "auto") -> dict[str, Any]:
     """Train from a resolved config; returns the run summary (also written to ``run.json``). ``vec_env``: see
@@ -198,7 +215,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     import torch
     from stable_baselines3.common.callbacks import CallbackList
 
-    from .callbacks import RunCheckpoint, SeededEvalCallback, TrainingClock
+    from .callbacks import BudgetProgressBar, RunCheckpoint, SeededEvalCallback, TrainingClock
 
     s = cfg.settings
     torch.set_num_threads(max(int(s.torch_threads), 1))
@@ -219,6 +236,10 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
             offset_seconds = float(ckpt_meta.get("wall_seconds") or p.get("wall_seconds", 0.0))
             rewards = [e["mean_reward"] for e in p.get("evaluations", [])]
             prior_best = max(rewards) if rewards else -np.inf
+        spent = _spent_budget(s.max_seconds, s.budget_clock, offset_seconds, int(ckpt_meta.get("timesteps") or 0),
+                              setup.n_timesteps)
+        if spent is not None:  # before loading the model and its replay buffer
+            raise TrainConfigError(f"--resume: {run_dir} {spent}")
     elif run_dir is None:
         name = s.name or (Path(cfg.source).stem if cfg.source != "<dict>" else f"{cfg.env_id}-{s.algo}")
         run_dir = new_run_dir(REPO_ROOT / s.run_root if not Path(s.run_root).is_absolute() else Path(s.run_root),
@@ -245,6 +266,10 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
             model.load_replay_buffer(str(run_dir / "checkpoints" / rb))
             say(f"replay buffer restored: {model.replay_buffer.size()} transitions")
         offset_steps = int(model.num_timesteps)
+        spent = _spent_budget(s.max_seconds, s.budget_clock, offset_seconds, offset_steps, setup.n_timesteps)
+        if spent is not None:
+            env.close()
+            raise TrainConfigError(f"--resume: {run_dir} {spent}")
     else:
         kwargs = dict(setup.algo_kwargs)
         noise = _action_noise(setup, env)
@@ -309,9 +334,11 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     old_handler = signal.signal(signal.SIGTERM, _on_term) if hasattr(signal, "SIGTERM") else None
     interrupted = False
     use_bar = s.progress_bar if progress_bar is None else progress_bar
+    if use_bar:
+        callbacks.append(BudgetProgressBar(clock, remaining))
     try:
         if remaining > 0 and not (s.max_seconds and offset_seconds >= s.max_seconds):
-            model.learn(remaining, callback=CallbackList(callbacks), progress_bar=use_bar,
+            model.learn(remaining, callback=CallbackList(callbacks), progress_bar=False,
                         reset_num_timesteps=resume is None, tb_log_name="run",
                         log_interval=s.log_interval if s.log_interval > 0 else 10**9)
     except (KeyboardInterrupt, _Interrupted):
@@ -320,14 +347,14 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     finally:
         if old_handler is not None:
             signal.signal(signal.SIGTERM, old_handler)
-        if ckpt.model is None:
+        if getattr(ckpt, "model", None) is None:  # learn() never ran (SB3 sets .model in init_callback)
             ckpt.init_callback(model)
         ckpt.save_now()
     final = run_dir / "final_model.zip"
     model.save(final)
     if model.get_vec_normalize_env() is not None:
         model.get_vec_normalize_env().save(str(run_dir / "vecnormalize.pkl"))
-    if clock.model is None:
+    if getattr(clock, "model", None) is None:
         clock.init_callback(model)
     summary = clock.summary()
     summary["interrupted"] = interrupted
@@ -377,8 +404,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--resume", help="run folder or checkpoint .zip to continue")
     p.add_argument("--env-id", help="env entry of the config to train (default: billiards.env_id)")
     p.add_argument("--algo", help="override billiards.algo (sac, td3, ppo, a2c, ddpg)")
-    p.add_argument("--timesteps", type=float, help="override n_timesteps")
-    p.add_argument("--seconds", type=float, help="override billiards.max_seconds (wall-clock budget)")
+    p.add_argument("--timesteps", type=float,
+                   help="override n_timesteps: the run's total env steps (with --resume, counting those done)")
+    p.add_argument("--seconds", type=float,
+                   help="override billiards.max_seconds: the run's total training budget in the config's clock "
+                        "(billiards.budget_clock: 'cpu' = CPU seconds of the training process, as the committed "
+                        "configs count; 'wall' = elapsed seconds); with --resume, counting the seconds already "
+                        "spent, so give more than the run has used to train on")
     p.add_argument("--seed", type=int, help="override billiards.seed")
     p.add_argument("--n-envs", type=int, help="override n_envs")
     p.add_argument("--name", help="run name (folder runs/<name>-<timestamp>)")

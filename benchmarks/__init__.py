@@ -1,5 +1,5 @@
 """The benchmark suite of the repository (not part of the installed package): run from the repository root with
-``python -m benchmarks [--quick] [--only SECTION] [--out docs/bench]`` (see :mod:`benchmarks.__main__`).
+``python -m benchmarks [--quick] [--only SECTION] [--write | --out DIR]`` (see :mod:`benchmarks.__main__`).
 
 Sections (``--only`` takes one, repeatable; default all):
 

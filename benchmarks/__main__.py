@@ -1,5 +1,9 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch] [--out docs/bench]``,
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch] [--write | --out DIR]``,
 from the repository root.
+
+It prints what it measured and nothing else; reports are written only when asked: ``--write`` updates the
+committed ones in ``docs/bench/``, ``--out DIR`` writes them elsewhere (a section run alone merges into the
+report's JSON, the other sections keeping their earlier figures and time stamps).
 
 Without ``--only`` every part runs: the accuracy suite (speed against error, ``speed_vs_error.md/.json/.png``),
 then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``), then the
@@ -17,6 +21,8 @@ import time
 from pathlib import Path
 
 SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch")
+#: Where ``--write`` puts the reports (the committed ones).
+DEFAULT_OUT = Path("docs/bench")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -28,7 +34,10 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--quick", action="store_true", help="small configuration (about a minute)")
     ap.add_argument("--only", choices=SECTIONS, action="append",
                     help="run only this part (repeatable); default: all")
-    ap.add_argument("--out", type=Path, default=Path("docs/bench"), help="output directory (default docs/bench)")
+    where = ap.add_mutually_exclusive_group()
+    where.add_argument("--write", action="store_true",
+                       help=f"write the reports into {DEFAULT_OUT}/ (the committed ones); default: print only")
+    where.add_argument("--out", type=Path, default=None, help="write the reports into this directory")
     ap.add_argument("--pooltool-python", default=None,
                     help="python of the pooltool venv (default .venv-pooltool/bin/python in the repo, or "
                          "$BILLIARDS_BENCH_POOLTOOL_PYTHON)")
@@ -41,8 +50,11 @@ def main(argv: list[str] | None = None) -> int:
                     help="env section: also time the unwrapped envs with shots through Simulator.run(validate=False) "
                          "instead of the in-place kernel call (printed only)")
     ap.add_argument("--render-only", action="store_true",
-                    help="measure nothing: re-write the Markdown (and the plot) from the JSON files in --out")
+                    help="measure nothing: re-write the Markdown (and the plot) from the JSON files of --out/--write")
     args = ap.parse_args(argv)
+    out: Path | None = DEFAULT_OUT if args.write else args.out
+    if args.render_only and out is None:
+        ap.error("--render-only re-writes reports: give --write (docs/bench) or --out DIR")
     only = tuple(args.only) if args.only else SECTIONS
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
@@ -55,30 +67,32 @@ def main(argv: list[str] | None = None) -> int:
         pass
 
     if args.render_only:
-        if "accuracy" in only and (args.out / "speed_vs_error.json").exists():
-            accuracy.render(args.out)
-        if (args.out / "speed.json").exists():
-            speed.render(args.out)
-        if (args.out / "spin.json").exists():
-            spin.render(args.out)
-        if (args.out / "batch.json").exists():
-            batch.render(args.out)
-        log(f"[bench] re-rendered the reports in {args.out}")
+        assert out is not None
+        if "accuracy" in only and (out / "speed_vs_error.json").exists():
+            accuracy.render(out)
+        if (out / "speed.json").exists():
+            speed.render(out)
+        if (out / "spin.json").exists():
+            spin.render(out)
+        if (out / "batch.json").exists():
+            batch.render(out)
+        log(f"[bench] re-rendered the reports in {out}")
         return 0
-    if "accuracy" in only:
-        accuracy.main(args.out, quick=args.quick)
+    acc = accuracy.main(out, quick=args.quick) if "accuracy" in only else None
     rest = tuple(s for s in ("speed", "env", "pooltool", "latency") if s in only)
     if rest:
-        speed.main(args.out, quick=args.quick, sections=rest, pooltool_python=args.pooltool_python,
+        speed.main(out, quick=args.quick, sections=rest, pooltool_python=args.pooltool_python,
                    allow_setup=not args.no_pooltool_setup, env_seconds=args.env_seconds,
-                   env_ids=tuple(args.env_ids) if args.env_ids else None, env_compare=args.env_compare)
+                   env_ids=tuple(args.env_ids) if args.env_ids else None, env_compare=args.env_compare,
+                   accuracy=acc)
     if "spin" in only:
-        spin.main(args.out, quick=args.quick, pooltool_python=args.pooltool_python,
+        spin.main(out, quick=args.quick, pooltool_python=args.pooltool_python,
                   allow_setup=not args.no_pooltool_setup)
     if "batch" in only:
-        batch.main(args.out, quick=args.quick, pooltool_python=args.pooltool_python,
+        batch.main(out, quick=args.quick, pooltool_python=args.pooltool_python,
                    allow_setup=not args.no_pooltool_setup)
-    log(f"[bench] done in {time.perf_counter() - t0:.0f} s; outputs in {args.out}")
+    log(f"[bench] done in {time.perf_counter() - t0:.0f} s; "
+        + (f"reports in {out}" if out is not None else "no report written (--write or --out DIR to write them)"))
     return 0
 
 

@@ -469,7 +469,8 @@ def render(out: Path) -> None:
     (out / "speed_vs_error.md").write_text(render_markdown(doc, doc["machine"], png.name))
 
 
-def main(out: Path, quick: bool = False, cfg: AccuracyConfig | None = None) -> dict[str, Any]:
+def main(out: Path | None, quick: bool = False, cfg: AccuracyConfig | None = None) -> dict[str, Any]:
+    """Measure; write ``speed_vs_error.md/.json/.png`` into ``out`` if given, else print the report."""
     cfg = cfg or (QUICK if quick else FULL)
     info = machine_info()
     doc = run_accuracy(cfg)
@@ -477,6 +478,9 @@ def main(out: Path, quick: bool = False, cfg: AccuracyConfig | None = None) -> d
     doc["end_load"] = load_now()
     doc["machine"] = info
     doc["target_exact_faster"] = exact_faster_check(doc)
+    if out is None:
+        print(render_markdown(doc, info, None), flush=True)
+        return doc
     out.mkdir(parents=True, exist_ok=True)
     write_json(out / "speed_vs_error.json", doc)
     png = out / "speed_vs_error.png"

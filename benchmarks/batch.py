@@ -1,5 +1,5 @@
-"""The batch and vector-env benchmark (issue 12): ``python -m benchmarks --only batch`` writes
-``docs/bench/batch.md`` and ``batch.json``.
+"""The batch and vector-env benchmark (issue 12): ``python -m benchmarks --only batch --write``
+writes ``docs/bench/batch.md`` and ``batch.json``.
 
 Every target of the issue, measured in one run on this machine, with pooltool 0.6.0 timed in the same run:
 
@@ -361,16 +361,18 @@ def render(out: Path) -> None:
     (out / "batch.md").write_text(render_markdown(doc))
 
 
-def main(out: Path, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict:
-    """Measure everything and write ``batch.json`` and ``batch.md`` into ``out``; print the targets."""
+def main(out: Path | None, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict:
+    """Measure everything and print the targets; write ``batch.json`` and ``batch.md`` into ``out`` if given."""
     doc = run(quick, pooltool_python, allow_setup)
-    out.mkdir(parents=True, exist_ok=True)
-    write_json(out / "batch.json", doc)
-    (out / "batch.md").write_text(render_markdown(doc))
+    if out is not None:
+        out.mkdir(parents=True, exist_ok=True)
+        write_json(out / "batch.json", doc)
+        (out / "batch.md").write_text(render_markdown(doc))
     for r in targets(doc):
         log(f"[batch] {r['name']}: {r['value']} (target {r['target']}: "
             f"{'pass' if r['ok'] else 'MISS' if r['ok'] is False else 'n/a'})")
-    log(f"[batch] wrote {out / 'batch.md'}")
+    if out is not None:
+        log(f"[batch] wrote {out / 'batch.md'}")
     return doc
 
 

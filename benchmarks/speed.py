@@ -563,9 +563,29 @@ def render(out: Path) -> None:
     (out / "speed.md").write_text(render_markdown(doc, acc))
 
 
-def main(out: Path, quick: bool = False, sections: tuple[str, ...] = ("speed", "env", "pooltool", "latency"),
+def main(out: Path | None, quick: bool = False, sections: tuple[str, ...] = ("speed", "env", "pooltool", "latency"),
          pooltool_python: str | None = None, allow_setup: bool = True, env_seconds: float | None = None,
-         env_ids: tuple[str, ...] | None = None, env_compare: bool = False) -> dict[str, Any]:
+         env_ids: tuple[str, ...] | None = None, env_compare: bool = False,
+         accuracy: dict[str, Any] | None = None) -> dict[str, Any]:
+    """Measure ``sections`` and print the targets they measured (``accuracy``: this run's accuracy doc, if it ran).
+    With ``out``, also merge them into ``out/speed.json`` (the sections of earlier runs that this run did not redo
+    stay, with their own time stamps) and re-write ``speed.md``; without, nothing is written."""
+    measured: dict[str, Any] = {"machine": machine_info(), "quick": quick}
+    if "speed" in sections:
+        measured["ours"] = run_ours(quick)
+    if "env" in sections:
+        measured["env_steps"] = run_env_steps(quick, ids=env_ids or ENV_IDS, seconds=env_seconds,
+                                              compare=env_compare)
+    if "pooltool" in sections:
+        measured["pooltool"] = run_pooltool_section(quick, python=pooltool_python, allow_setup=allow_setup)
+    if "latency" in sections:
+        measured["latency"] = run_latency(quick)
+    measured["end_load"] = load_now()
+    for r in targets(measured, accuracy):
+        if r["measured"] != "not measured":  # only what this run measured
+            log(f"[target] {r['status']:4s} {r['target']}: {r['measured']}")
+    if out is None:
+        return measured
     out.mkdir(parents=True, exist_ok=True)
     path = out / "speed.json"
     doc: dict[str, Any] = {}
@@ -574,22 +594,10 @@ def main(out: Path, quick: bool = False, sections: tuple[str, ...] = ("speed", "
             doc = json.loads(path.read_text())
         except ValueError:
             doc = {}
-    doc["machine"] = machine_info()
-    doc["quick"] = quick
-    ours = None
-    if "speed" in sections:
-        ours = run_ours(quick)
-        doc["ours"] = ours
-    if "env" in sections:
-        doc["env_steps"] = run_env_steps(quick, ids=env_ids or ENV_IDS, seconds=env_seconds, compare=env_compare)
-    if "pooltool" in sections:
-        doc["pooltool"] = run_pooltool_section(quick, python=pooltool_python, allow_setup=allow_setup)
-    if "latency" in sections:
-        doc["latency"] = run_latency(quick)
-    doc["end_load"] = load_now()
-    acc = None
+    doc.update(measured)
+    acc = accuracy
     acc_path = out / "speed_vs_error.json"
-    if acc_path.exists():
+    if acc is None and acc_path.exists():
         try:
             acc = json.loads(acc_path.read_text())
         except ValueError:
@@ -598,6 +606,4 @@ def main(out: Path, quick: bool = False, sections: tuple[str, ...] = ("speed", "
     write_json(path, doc)
     (out / "speed.md").write_text(render_markdown(doc, acc))
     log(f"[speed] wrote {out / 'speed.md'}")
-    for r in doc["targets"]:
-        log(f"[target] {r['status']:4s} {r['target']}: {r['measured']}")
     return doc

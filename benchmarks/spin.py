@@ -1,6 +1,6 @@
 """The spin model's benchmark: time per spin shot (``exact``) against pooltool 0.6.0 with its default models, and
-the ``step`` solver's speed against error on spin shots. ``python -m benchmarks --only spin`` writes
-``docs/bench/spin.md`` and ``spin.json``.
+the ``step`` solver's speed against error on spin shots. ``python -m benchmarks --only spin --write``
+writes ``docs/bench/spin.md`` and ``spin.json``.
 
 - **Speed**: stun, draw and follow shots into a ball, english off a rail, a 15-ball break with follow and side;
   ours: ``Simulator(table, Physics(friction="spin")).run`` (with and without validating the balls); pooltool:
@@ -227,13 +227,16 @@ def render(out: Path) -> None:
     (out / "spin.md").write_text(render_markdown(json.loads((out / "spin.json").read_text())))
 
 
-def main(out: Path, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict:
-    """Run both parts and write ``spin.json`` and ``spin.md`` into ``out``."""
+def main(out: Path | None, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict:
+    """Run both parts; write ``spin.json`` and ``spin.md`` into ``out`` if given, else print the report."""
     table = Table()
     doc = {"machine": machine_info(), "quick": quick}
     doc["speed"] = run_speed(quick, table, pooltool_python, allow_setup)
     doc["accuracy"] = run_accuracy(quick, table)
     doc["end_load"] = load_now()
+    if out is None:
+        print(render_markdown(doc), flush=True)
+        return doc
     out.mkdir(parents=True, exist_ok=True)
     write_json(out / "spin.json", doc)
     (out / "spin.md").write_text(render_markdown(doc))

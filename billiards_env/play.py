@@ -8,11 +8,15 @@ Ball in hand (games): drag the cue ball, or click (or right-click) where to put 
 The 8 (8-ball): when you are on the 8, call its pocket: click the pocket, or press 1-6 (the numbers on the rail).
 Spin (--spin): the arrow keys move the cue tip on the cue-ball diagram (right of the power bar), or click the
 diagram; C centres it.
+A drag too short to shoot says so (drag further from the press point). Space (or S) skips the rest of the
+animation (e.g. the opponent's reply).
 Keys: R starts a new episode (a new game), Esc / Q (or closing the window) quits.
 
-Games: --opponent geometric|search|random plays against a baseline player (you break; its shots animate after
-yours), --opponent human lets two people play at one window, taking turns. The panel under the table shows whose
-turn it is, the groups, ball in hand, the last call and the score.
+Games: --opponent geometric|search|random plays against a baseline player (its shots animate after yours),
+--opponent human lets two people play at one window, taking turns. The break alternates between the players from
+game to game (you break the first; --breaker you|opponent|random chooses otherwise). The panel under the table
+shows whose turn it is, the groups, ball in hand, the last call and the score; below it, the turn log gives each
+shot of the game in words (the referee's call, and why a turn passed).
 
 ``--demo`` plays a scripted turn (aim at the target ball, drag, release; in a game: place the cue ball, break,
 and shoot until the opponent has replied) from synthetic pygame events and quits, so the program can be
@@ -23,6 +27,7 @@ stops at once with exit status 2 and a hint, instead of playing in a window nobo
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import math
 import os
 import sys
@@ -47,7 +52,11 @@ PICK_RADII = 1.8
 #: A press within this many pocket radii of a pocket (when the 8 needs a call) calls that pocket.
 POCKET_PICK = 1.6
 OPPONENTS = ("geometric", "search", "random", "human")
-
+#: Who breaks each game: alternate (you, then the opponent, ...), always you, always the opponent, or drawn.
+BREAKERS = ("alternate", "you", "opponent", "random")
+#: The turn log under the panel of a game: lines shown and their height (px).
+LOG_LINES = 6
+LOG_LINE = 18
 
 class PlayApp:
     """The interactive game: an env in ``render_mode="human"`` drawing into this app's pygame window, its
@@ -69,7 +78,8 @@ class PlayApp:
 
     def __init__(self, env_id: str = "BilliardsOneBall-v0", seed: int | None = None, width: int = 800,
                  speedup: float = 1.0, realtime: bool = True, allow_headless: bool | None = None,
-                 opponent: str | None = None, spin: bool = False, **env_kwargs: Any) -> None:
+                 opponent: str | None = None, spin: bool = False, breaker: str = "alternate",
+                 **env_kwargs: Any) -> None:
         import gymnasium as gym
         import pygame
 
@@ -78,6 +88,8 @@ class PlayApp:
 
         if opponent is not None and opponent not in OPPONENTS:
             raise ValueError(f"opponent: unknown {opponent!r}; use one of {', '.join(OPPONENTS)}")
+        if breaker not in BREAKERS:
+            raise ValueError(f"breaker: unknown {breaker!r}; use one of {', '.join(BREAKERS)}")
         if spin:
             env_kwargs = {**env_kwargs, "friction": "spin", "spin_action": True}
         if opponent is not None:
@@ -98,7 +110,16 @@ class PlayApp:
             pygame.display.quit()
             raise
         self.two_people = opponent == "human"
+        from billiards_env.render.turn_log import TurnLog
+
+        self.breaker = breaker
+        self.games = 0  # games started (the break alternates with it)
+        self.log = TurnLog()
+        self._calls: list[Any] = []  # the referee's calls of the shots of the step under way
+        self.skipping = False  # Space: the rest of the animation is not shown
+        self.too_soft = False
         if self.is_game:
+            self._record_calls()
             task = self.core.task
             if self.two_people:
                 task.auto_opponent = False  # nobody plays inside step: the players take turns at the window
@@ -110,8 +131,9 @@ class PlayApp:
         self.realtime = realtime
         w, h = self.renderer.size
         self.table_size = (w, h)
+        self.panel_height = PANEL_HEIGHT + (LOG_LINES * LOG_LINE + 8 if self.is_game else 0)
         pygame.font.init()
-        self.screen = pygame.display.set_mode((w, h + PANEL_HEIGHT))
+        self.screen = pygame.display.set_mode((w, h + self.panel_height))
         pygame.display.set_caption(f"billiards-play: {env_id}")
         self.font = pygame.font.Font(None, 22)
         self.clock = pygame.time.Clock()
@@ -164,13 +186,71 @@ class PlayApp:
 
     # --- game -------------------------------------------------------------------------------------------
     def reset(self, seed: int | None = None, options: dict[str, Any] | None = None) -> None:
-        """A new episode (a new game): ``env.reset(seed=seed, options=options)``."""
-        self.env.reset(seed=seed, options=options)
+        """A new episode (a new game): ``env.reset(seed=seed, options=options)``. In a game the breaker follows
+        ``breaker`` (alternate: you the first game, the opponent the next...); an opponent's break animates and is
+        logged."""
+        if self.is_game:
+            self._choose_breaker()
+            self._calls = []
+            self.log.clear()
+        _, info = self.env.reset(seed=seed, options=options)
+        self.games += 1
         self.shots, self.total, self.done, self.success = 0, 0.0, False, False
-        self.opponent_shots = 0
+        self.opponent_shots = int(info.get("opponent_shots", 0)) if self.is_game else 0
         self.dragging, self.press, self.power = False, None, 0.0
+        self.skipping = self.too_soft = False
+        if self.is_game:
+            turns = self._opponent_turns(info, self._calls)
+            self.log.add(turns, self._names())
         self._new_turn()
-        self.status = self._hint("aim with the mouse; press, drag and release to shoot")
+        base = "aim with the mouse; press, drag and release to shoot"
+        if self.is_game and self.opponent_shots:
+            names = self._names()
+            base = f"{names[1]} broke; {names[self.core.task.state.shooter]} to shoot"
+        self.status = self._hint(base)
+
+    def _choose_breaker(self) -> None:
+        """Set who breaks the next game (the env's ``first_shooter``, read at reset) from ``breaker``."""
+        who = {"you": "agent", "opponent": "opponent", "random": "random"}.get(self.breaker)
+        if who is None:  # alternate: the first game (games == 0) you, then the opponent...
+            who = "agent" if self.games % 2 == 0 else "opponent"
+        task = self.core.task
+        if task.config.first_shooter != who:
+            task.config = dataclasses.replace(task.config, first_shooter=who)
+
+    def _record_calls(self) -> None:
+        """Keep the referee's call of every shot played inside ``env.step``/``reset`` (the human's and the
+        opponent's), for the turn log; the env's ``info["opponent_turns"]`` is used instead where it exists."""
+        task = self.core.task
+        owner = task if hasattr(task, "judge") else getattr(task, "session", None)  # who judges the shots
+        if owner is None or not hasattr(owner, "judge"):
+            return  # the env's info alone then (opponent_turns; the human's shot from its own keys)
+        judge = owner.judge
+
+        def judge_and_record(*args: Any, **kwargs: Any) -> Any:
+            call = judge(*args, **kwargs)
+            self._calls.append(call)
+            return call
+
+        owner.judge = judge_and_record
+
+    def _names(self) -> tuple[str, str]:
+        task = self.core.task
+        if hasattr(task, "names"):
+            return tuple(task.names())  # type: ignore[return-value]
+        from billiards_env.envs.game_hud import player_names
+
+        return player_names(task)
+
+    @staticmethod
+    def _opponent_turns(info: dict[str, Any], calls: list[Any]) -> list[dict[str, Any]]:
+        """The opponent's shots of a step or reset: ``info["opponent_turns"]`` if the env gives it, else the calls
+        recorded after the first ``skip`` ones (the human's own shot)."""
+        turns = info.get("opponent_turns")
+        if turns is not None:
+            return [dict(t) for t in turns]
+        n = int(info.get("opponent_shots", 0) or 0)
+        return [call_turn(c) for c in calls[len(calls) - n:]] if n else []
 
     def _new_turn(self) -> None:
         """Before a shot: pick up the cue ball if in hand, forget the called pocket, aim at the target."""
@@ -218,11 +298,20 @@ class PlayApp:
         side, top = self.tip if self.spin else (0.0, 0.0)
         action = self.core.action_from_shot(self.aim, self.speed(), side, top, place=self.place, pocket=self.pocket)
         self.last_action = action
-        self.status = f"shot {self.shots + 1}: {self.speed():.2f} m/s ..."
+        self.status = f"shot {self.shots + 1}: {self.speed():.2f} m/s ... (Space skips the animation)"
         self.dragging, self.power = False, 0.0  # released: the bar goes, the balls move
         self.place = None
-        _, reward, terminated, truncated, info = self.env.step(action)
+        shooter = int(self.core.task.state.shooter) if self.is_game else 0
+        self._calls = []
+        self.skipping = self.too_soft = False
+        try:
+            _, reward, terminated, truncated, info = self.env.step(action)
+        finally:
+            self.skipping = False
         self.last_info = info
+        if self.is_game:
+            own = call_turn(self._calls[0]) if self._calls else _info_turn(info, shooter)
+            self.log.add([own] + self._opponent_turns(info, self._calls), self._names())
         self.shots += 1
         self.total += float(reward)
         self.opponent_shots += int(info.get("opponent_shots", 0))
@@ -297,6 +386,12 @@ class PlayApp:
                     self.shoot()
                 elif self.in_hand():  # a click, not a drag: put the cue ball there
                     self.put_cue_ball(e.pos)
+                    self.status = self._hint("cue ball placed; press and drag away to shoot")
+                else:
+                    px = int(math.ceil(MIN_POWER * POWER_DRAG * self.table_size[0]))
+                    self.too_soft = True
+                    self.status = (f"too soft to shoot: press, then drag at least {px} px away from where you "
+                                   "pressed before releasing (the further, the harder)")
                 self.dragging, self.power = False, 0.0
 
     def _press(self, pos: tuple[int, int]) -> None:
@@ -394,7 +489,7 @@ class PlayApp:
 
         pg = self.pg
         w, h = self.table_size
-        pg.draw.rect(self.screen, PANEL_BG, pg.Rect(0, h, w, PANEL_HEIGHT))
+        pg.draw.rect(self.screen, PANEL_BG, pg.Rect(0, h, w, self.panel_height))
         bar = pg.Rect(10, h + 8, max(60, w // 3), 16)
         pg.draw.rect(self.screen, BAR_BG, bar, border_radius=4)
         if self.power > 0:
@@ -412,6 +507,9 @@ class PlayApp:
             room = int(cx - r) - 20
         text(self.screen, label, 22, TEXT, (bar.right + 10, bar.centery), max_width=room - bar.right)
         text(self.screen, self.status, 22, TEXT, (10, h + 40), max_width=room)
+        if self.is_game:
+            self.log.draw(self.screen, pg.Rect(10, h + PANEL_HEIGHT + 4, w - 20, LOG_LINES * LOG_LINE),
+                          line_height=LOG_LINE)
 
     # --- loop -------------------------------------------------------------------------------------------
     def run(self, events: Iterable[list[Any]] | None = None, max_frames: int | None = None) -> dict[str, Any]:
@@ -464,10 +562,14 @@ class PlayWindow:
             for e in pg.event.get((pg.QUIT, pg.KEYDOWN, pg.MOUSEBUTTONDOWN, pg.MOUSEBUTTONUP)):
                 if e.type == pg.QUIT or (e.type == pg.KEYDOWN and e.key in (pg.K_ESCAPE, pg.K_q)):
                     app.running = False
+                elif e.type == pg.KEYDOWN and e.key in SKIP_KEYS(pg):
+                    app.skipping = True  # the rest of this step's animation is not shown
         return not app.running
 
     def show(self, surface: Any, fps: float | None = None) -> None:
         app = self.app
+        if app.skipping:  # Space: nothing drawn or waited for until the step returns
+            return
         app.screen.blit(surface, (0, 0))
         app.draw_panel()
         app.pg.display.flip()
@@ -477,6 +579,31 @@ class PlayWindow:
 
     def close(self) -> None:
         """The app closes the display itself (:meth:`PlayApp.close`)."""
+
+
+def SKIP_KEYS(pg: Any) -> tuple[int, ...]:  # noqa: N802 - a constant that needs pygame imported
+    """Keys that skip the rest of an animation."""
+    return (pg.K_SPACE, pg.K_s)
+
+
+def call_turn(call: Any) -> dict[str, Any]:
+    """A referee's :class:`~billiards_env.rules.Call` as a turn-log entry (the keys of the env's
+    ``info["opponent_turns"]``, plus ``turn_over``, ``game_over``, ``winner`` and ``push_out``)."""
+    return {
+        "pocketed": tuple(n for n in call.pocketed if n not in call.respot),
+        "foul": bool(call.foul), "foul_reason": call.reason if call.foul else None, "call": call.reason,
+        "scratch": bool(call.cue_pocketed), "shooter": int(call.shooter), "turn_over": bool(call.turn_over),
+        "game_over": bool(call.game_over), "winner": call.winner, "push_out": bool(call.push_out),
+    }
+
+
+def _info_turn(info: dict[str, Any], shooter: int) -> dict[str, Any]:
+    """The human's own shot as a turn-log entry, from a game step's info (when no call was recorded)."""
+    winner = info.get("winner", -1)
+    return {"pocketed": info.get("pocketed", ()), "foul": info.get("foul", False),
+            "foul_reason": info.get("foul_reason"), "call": info.get("call"), "scratch": info.get("scratch", False),
+            "shooter": shooter, "turn_over": info.get("turn_over"),
+            "game_over": winner in (0, 1) and not info.get("opponent_shots"), "winner": winner}
 
 
 # --- scripted play (--demo, tests) ------------------------------------------------------------------------------
@@ -540,6 +667,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--opponent", default=None, choices=list(OPPONENTS),
                    help="games: the opponent, a baseline player or 'human' (two people take turns); default: the "
                         "env's (geometric)")
+    p.add_argument("--breaker", default="alternate", choices=list(BREAKERS),
+                   help="games: who breaks each game; alternate (default): you the first, then the opponent, ...")
     p.add_argument("--spin", action="store_true",
                    help="the spin model with tip offsets (friction='spin', spin_action=True): draw, follow, english")
     p.add_argument("--seed", type=int, default=None, help="seed of the first episode (default: random)")
@@ -560,7 +689,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         app = PlayApp(args.env, seed=args.seed, width=args.width, speedup=args.speedup,
                       realtime=not args.demo, allow_headless=True if args.demo else None, opponent=args.opponent,
-                      spin=args.spin, **kwargs)
+                      spin=args.spin, breaker=args.breaker, **kwargs)
     except (ValueError, HeadlessDisplayError) as exc:  # bad config (the message names the key), or no display
         print(f"billiards-play: error: {exc}", file=sys.stderr)
         return 2

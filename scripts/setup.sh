@@ -3,6 +3,9 @@
 # nothing changed. Torch goes first, pinned to the CPU build (a loose requirement would pull a CUDA build).
 # `--rllib`: the same plus the rllib extra (Ray RLlib) in .venv-rllib. Ray pins its own Gymnasium (1.2.2 for
 # ray 2.60), so it gets a venv of its own: .venv keeps the newest Gymnasium and no Ray.
+# It says what it is doing at each step (a first set-up takes a few minutes, ~90 s of it compiling kernels).
+# TORCH_INDEX_URL: where torch comes from (e.g. PyTorch's CPU wheel index, see the README), if the default index
+# would give a CUDA build (PyPI on Linux does).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 PY=${PYTHON:-python3}
@@ -12,16 +15,26 @@ if [ "${1:-}" = "--rllib" ]; then
   VENV=.venv-rllib
   EXTRAS=agents,rllib,dev
 fi
+say() { echo "setup: $*"; }
 if [ ! -x "$VENV/bin/python" ]; then
+  say "creating $VENV"
   "$PY" -m venv "$VENV"
 fi
 stamp=$VENV/.setup-stamp
 want=$(cat pyproject.toml scripts/setup.sh | sha256sum | cut -c1-16)
 if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
+  say "upgrading pip in $VENV"
   "$VENV/bin/python" -m pip install -q --upgrade pip
-  "$VENV/bin/python" -m pip install -q "torch==2.13.0"
+  torch_index=()
+  if [ -n "${TORCH_INDEX_URL:-}" ]; then torch_index=(--index-url "$TORCH_INDEX_URL"); fi
+  say "installing torch 2.13.0, the CPU build${TORCH_INDEX_URL:+ (from $TORCH_INDEX_URL)} (~200 MB to download on a cold pip cache)"
+  "$VENV/bin/python" -m pip install -q "torch==2.13.0" ${torch_index[@]+"${torch_index[@]}"}
+  say "installing billiards_env and its dependencies (extras: $EXTRAS)"
   "$VENV/bin/python" -m pip install -q -e ".[$EXTRAS]"
   echo "$want" > "$stamp"
+else
+  say "$VENV is up to date"
 fi
 # Compile the physics kernels into numba's cache now, so the first shot a user runs is fast.
+say "compiling the physics kernels into numba's cache (~90 s the first time, a few seconds after that)"
 "$VENV/bin/python" -m billiards_env.warmup

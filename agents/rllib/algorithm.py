@@ -59,7 +59,15 @@ def init_ray(address: str | None = None, quiet: bool = False) -> bool:
         "logging_level": "ERROR" if quiet else "WARNING",
     }
     if address:
-        ray.init(address=address, **kwargs)
+        try:
+            ray.init(address=address, **kwargs)
+        except ConnectionError as exc:  # no cluster there: one line instead of Ray's traceback
+            where = "on this node" if address == "auto" else f"at {address}"
+            raise RLlibConfigError(
+                f"--address {address}: no running Ray cluster {where} ({str(exc).split('. ')[0]}). Start one "
+                "(`ray start --head` on the head node, `ray start --address=<head-ip>:6379` on the others; README, "
+                "'On a Ray cluster'), or leave --address out to train on a local Ray with this machine's CPUs"
+            ) from None
     else:  # "local": a new instance even where `ray start` left a cluster (which plain ray.init() would join)
         ray.init(address="local", num_cpus=os.cpu_count() or 1, **kwargs)
     return True

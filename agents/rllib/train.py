@@ -223,8 +223,7 @@ def train(cfg: RLlibConfig, run_dir: Path | None = None, resume: Path | None = N
     """Train from a resolved config; returns the run summary (also written to ``run.json``)."""
     import torch
 
-    from ..train import REPO_ROOT, _git_commit, new_run_dir
-    from .algorithm import build_algorithm, cpus_needed, init_ray
+    from .algorithm import init_ray
     from .player import resume_checkpoint
 
     s = cfg.settings
@@ -238,11 +237,52 @@ def train(cfg: RLlibConfig, run_dir: Path | None = None, resume: Path | None = N
         ckpt, run_dir = resume_checkpoint(resume)
         if run_dir is None:
             raise RLlibConfigError(f"--resume: {resume} is not inside an agents.rllib run folder")
-    elif run_dir is None:
+    import ray
+
+    started = init_ray(s.address, quiet)  # first: a cluster that is not there leaves no run folder behind
+    try:
+        return _train(cfg, run_dir, resume, ckpt, started, say)
+    except BaseException:
+        if started:
+            ray.shutdown()
+        raise
+
+
+def _train(cfg: RLlibConfig, run_dir: Path | None, resume: Path | None, ckpt: Path | None, started: bool,
+           say: Any) -> dict[str, Any]:
+    """:func:`train` once Ray is up. A new run's folder that fails before its first iteration is removed, so that
+    failed starts leave no stub folders for ``runs/<name>-*`` globs to match."""
+    from ..train import REPO_ROOT, new_run_dir
+
+    s = cfg.settings
+    if resume is None and run_dir is None:
         root = Path(s.run_root) if Path(s.run_root).is_absolute() else REPO_ROOT / s.run_root
         run_dir = new_run_dir(root, s.name or f"rllib_{s.env_id.split('-')[0].lower()}_{s.algo.lower()}")
     run_dir = Path(run_dir)
+    new_folder = resume is None and not (run_dir.exists() and any(run_dir.iterdir()))
     run_dir.mkdir(parents=True, exist_ok=True)
+
+    def drop_stub() -> None:
+        if new_folder and not (run_dir / "progress.json").exists() and not (run_dir / "checkpoints").exists():
+            shutil.rmtree(run_dir, ignore_errors=True)  # nothing trained: no stub folder
+
+    try:
+        result = _train_in(cfg, run_dir, resume, ckpt, started, say)
+    except BaseException:
+        drop_stub()
+        raise
+    drop_stub()  # interrupted before the first iteration
+    return result
+
+
+def _train_in(cfg: RLlibConfig, run_dir: Path, resume: Path | None, ckpt: Path | None, started: bool,
+              say: Any) -> dict[str, Any]:
+    import ray
+
+    from ..train import _git_commit
+    from .algorithm import build_algorithm, cpus_needed
+
+    s = cfg.settings
     progress = Progress(run_dir)
     if resume is not None:
         progress.load()
@@ -256,9 +296,6 @@ def train(cfg: RLlibConfig, run_dir: Path | None = None, resume: Path | None = N
     (run_dir / "env.json").write_text(json.dumps({"id": s.env_id, "kwargs": single_env_kwargs(s.env_kwargs)},
                                                  indent=2))
 
-    import ray
-
-    started = init_ray(s.address, quiet)
     algo = None
     interrupted = False
     old_handler = None

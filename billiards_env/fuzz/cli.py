@@ -194,10 +194,13 @@ def main(argv: list[str] | None = None) -> int:
             d = shrink_case(d, args.invariant, log=lambda m: print(m, file=sys.stderr))
             print(json.dumps(d, indent=1))
         rep, _ = run_case(d)
-        print(f"status {rep.status}, {rep.n_events} events; violations:", file=sys.stderr)
-        for name, msg in rep.violations.items():
-            print(f"  {name}: {msg}", file=sys.stderr)
-        return 1 if rep.violations else 0
+        if rep.violations:
+            print(f"status {rep.status}, {rep.n_events} events; {len(rep.violations)} violation(s):", file=sys.stderr)
+            for name, msg in rep.violations.items():
+                print(f"  {name}: {msg}", file=sys.stderr)
+            return 1
+        print(f"status {rep.status}, {rep.n_events} events; no violations")
+        return 0
     out = Path(args.out)
     if not 0.0 <= args.spin <= 1.0:
         print("fuzz: --spin is a share of the shots, in [0, 1]", file=sys.stderr)

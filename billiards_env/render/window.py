@@ -1,10 +1,12 @@
 """An on-screen window for ``render_mode="human"``: the only module that opens a display.
 
 Without a display (no ``DISPLAY``/``WAYLAND_DISPLAY`` on Linux) pygame quietly falls back to its ``offscreen``
-video driver (``dummy`` when asked for by ``SDL_VIDEODRIVER``): a "window" then opens without error, shows nothing
-and the program waits on it invisibly. :func:`require_display` turns that into a clear :class:`HeadlessDisplayError`;
-set ``BILLIARDS_ALLOW_HEADLESS=1`` (or pass ``allow_headless=True``) to draw into an invisible window anyway, as
-the tests do to exercise the human-mode code path.
+video driver: a "window" then opens without error, shows nothing and the program waits on it invisibly.
+:func:`require_display` turns that into a clear :class:`HeadlessDisplayError`. A headless driver the user chose
+(``SDL_VIDEODRIVER=dummy`` or ``offscreen``, how pygame programs run in CI) is a different case: the env's human
+mode then draws into the invisible window, as Gymnasium's own pygame envs do, so ``gymnasium``'s ``check_env``
+runs headless with no project variable. ``billiards-play`` (an interactive window) refuses every invisible
+display; ``BILLIARDS_ALLOW_HEADLESS=1`` (or ``allow_headless=True``) accepts one anyway (its tests).
 """
 from __future__ import annotations
 
@@ -33,18 +35,52 @@ def headless_allowed() -> bool:
     return os.environ.get(ALLOW_HEADLESS_ENV, "").strip().lower() in ("1", "true", "yes")
 
 
+def chosen_driver() -> str:
+    """The video driver the user chose with ``SDL_VIDEODRIVER`` (lower case), or ``""`` if none."""
+    return os.environ.get("SDL_VIDEODRIVER", "").strip().lower()
+
+
+def _x11_only() -> bool:
+    """Linux with an X display, no Wayland display and no driver chosen: SDL would still probe Wayland first,
+    which prints ``error: XDG_RUNTIME_DIR is invalid or not set`` where that variable is missing (ssh -X, a
+    container): a stray line on every start of a window."""
+    return (sys.platform.startswith("linux") and not chosen_driver() and bool(os.environ.get("DISPLAY"))
+            and not os.environ.get("WAYLAND_DISPLAY"))
+
+
+def init_display() -> bool:
+    """``pygame.display.init()``, asking SDL for X11 straight away on an X11-only Linux session (no stray Wayland
+    message; the variable is set for the call only, so it does not count as the user's choice). False if that X
+    server does not answer (nothing initialised: SDL would fall back to an invisible ``offscreen`` window)."""
+    if pygame.display.get_init():
+        return True
+    if not _x11_only():
+        pygame.display.init()
+        return True
+    os.environ["SDL_VIDEODRIVER"] = "x11"
+    try:
+        pygame.display.init()
+    except pygame.error:
+        return False
+    finally:
+        os.environ.pop("SDL_VIDEODRIVER", None)
+    return True
+
+
 def headless_reason() -> str | None:
     """Why a window would be invisible here, or None if it can be seen. Initialises pygame's display if needed.
 
     On Linux with neither ``DISPLAY`` nor ``WAYLAND_DISPLAY`` set (and no ``SDL_VIDEODRIVER`` chosen) there is no
     display to open: the display is not even initialised (SDL would print a stray error and fall back to
-    ``offscreen``). Otherwise the video driver pygame picked decides: ``offscreen`` (its silent fallback when no
-    display server answers) and ``dummy`` (chosen by hand) show nothing."""
-    chosen = os.environ.get("SDL_VIDEODRIVER", "").strip().lower()
+    ``offscreen``); with only ``DISPLAY`` set, an X server must answer there. Otherwise the video driver pygame
+    picked decides: ``offscreen`` (its silent fallback when no display server answers) and ``dummy`` (chosen by
+    hand) show nothing."""
+    chosen = chosen_driver()
     if sys.platform.startswith("linux") and not chosen and not pygame.display.get_init() and not (
             os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
         return "there is no display: DISPLAY and WAYLAND_DISPLAY are unset"
-    pygame.display.init()
+    if not init_display():
+        return f"no X server answered at DISPLAY={os.environ.get('DISPLAY')}"
     driver = pygame.display.get_driver()
     if driver not in HEADLESS_DRIVERS:
         return None
@@ -52,32 +88,48 @@ def headless_reason() -> str | None:
     return f"pygame's video driver is {driver!r} ({why}), so a window would be invisible"
 
 
-def require_display(what: str, instead: str, allow_headless: bool | None = None) -> None:
+def invisible_by_choice() -> bool:
+    """True if pygame's display runs on a headless driver because the user chose it (``SDL_VIDEODRIVER=dummy``
+    or ``offscreen``): drawing invisibly is then what was asked for. False before the display is initialised."""
+    if not pygame.display.get_init():
+        return False
+    driver = pygame.display.get_driver()
+    return driver in HEADLESS_DRIVERS and chosen_driver() == driver
+
+
+def require_display(what: str, instead: str, allow_headless: bool | None = None,
+                    accept_chosen_driver: bool = False) -> None:
     """Initialise pygame's display, or raise :class:`HeadlessDisplayError` if a window could not be seen.
 
     ``what`` names the caller (``"render_mode='human'"``), ``instead`` says what to use without a display.
-    ``allow_headless`` (default: the ``BILLIARDS_ALLOW_HEADLESS`` variable) accepts an invisible window.
+    ``allow_headless`` (default: the ``BILLIARDS_ALLOW_HEADLESS`` variable) accepts any invisible window;
+    ``accept_chosen_driver`` accepts one on a headless driver the user chose with ``SDL_VIDEODRIVER`` (the env's
+    human mode, as Gymnasium's pygame envs do), but still refuses the silent fallback of a machine with no display.
     """
     if allow_headless is None:
         allow_headless = headless_allowed()
     was_init = pygame.display.get_init()
     reason = None if allow_headless else headless_reason()
-    if reason is None:
-        pygame.display.init()
+    if reason is None or (accept_chosen_driver and invisible_by_choice()):
+        if not init_display():  # allowed headless where the X server does not answer: SDL's offscreen fallback
+            pygame.display.init()
         return
     if not was_init and pygame.display.get_init():
         pygame.display.quit()
+    hint = ("SDL_VIDEODRIVER=dummy draws into an invisible window on purpose (CI)" if accept_chosen_driver else
+            f"{ALLOW_HEADLESS_ENV}=1 draws into an invisible window anyway (tests)")
     raise HeadlessDisplayError(
         f"{what} needs a display, but {reason}. {instead}; or run it where a display is available (a desktop "
-        f"session, DISPLAY=:0, or a virtual one: xvfb-run). {ALLOW_HEADLESS_ENV}=1 draws into an invisible "
-        "window anyway (tests).")
+        f"session, DISPLAY=:0, or a virtual one: xvfb-run); {hint}.")
 
 
 class HumanWindow:
     """A pygame window that shows rendered frames at a steady rate and notices when the user closes it.
 
-    Raises :class:`HeadlessDisplayError` where no window can be seen (see :func:`require_display`) unless
-    ``allow_headless`` (default: the ``BILLIARDS_ALLOW_HEADLESS`` environment variable) is true.
+    Raises :class:`HeadlessDisplayError` where no window can be seen (see :func:`require_display`): no display and
+    no video driver chosen, or pygame's silent ``offscreen`` fallback. A headless driver chosen with
+    ``SDL_VIDEODRIVER`` (``dummy``, ``offscreen``) draws invisibly, as asked; so does ``allow_headless`` (default:
+    the ``BILLIARDS_ALLOW_HEADLESS`` environment variable).
     """
 
     def __init__(self, size: tuple[int, int], title: str = "billiards_env", allow_headless: bool | None = None
@@ -87,10 +139,12 @@ class HumanWindow:
             raise ValueError(f"window size must be positive, got {size!r}")
         require_display("render_mode='human'", "Use render_mode='rgb_array' or 'rgb_array_list' to get frames "
                         "without a display (billiards_env.envs.recording.record_gif writes an episode as a GIF)",
-                        allow_headless)
+                        allow_headless, accept_chosen_driver=True)
         self._screen = pygame.display.set_mode(self.size)
         pygame.display.set_caption(title)
         self._clock = pygame.time.Clock()
+        #: Whether frames are paced at ``fps``: not in an invisible window, where nobody watches the animation.
+        self.paced = pygame.display.get_driver() not in HEADLESS_DRIVERS
         self._closed = False
         self._events: list[pygame.event.Event] = []
 
@@ -102,7 +156,8 @@ class HumanWindow:
         return self._closed
 
     def show(self, surface: pygame.Surface | np.ndarray, fps: float | None = None) -> None:
-        """Display a frame (a surface, or an ``(H, W, 3) uint8`` array) now, then wait to hold ``fps`` if given.
+        """Display a frame (a surface, or an ``(H, W, 3) uint8`` array) now, then wait to hold ``fps`` if given
+        (not in an invisible window: there the frames go through at once).
 
         Frames of another size are scaled to the window. Does nothing once the window is closed.
         """
@@ -114,7 +169,7 @@ class HumanWindow:
             surface = pygame.transform.smoothscale(surface.convert(self._screen), self.size)
         self._screen.blit(surface, (0, 0))
         pygame.display.flip()
-        if fps:
+        if fps and self.paced:
             self._clock.tick(fps)
 
     def take_events(self) -> list[pygame.event.Event]:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .errors import RulesError
+from .errors import RulesError, checked_keywords
 from .ruleset import Ruleset, break_fouls, clean_call, contact_fouls, end_call, foul_call
 from .state import (ANYWHERE, EIGHT_BALL, EIGHT_EARLY, EIGHT_NOT_CALLED, EIGHT_ON_BREAK, EIGHT_ON_FOUL,
                     EIGHT_POCKETED, EIGHT_WRONG_POCKET, KITCHEN, LEGAL, SCRATCH, SOLIDS, STRIPES, THREE_FOULS, Call,
@@ -25,6 +25,7 @@ def group_of(number: int) -> str | None:
     return SOLIDS if number < EIGHT else STRIPES
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class EightBallOptions:
     """Options of :class:`EightBall` (defaults: WPA where the WPA leaves no choice to the players).

@@ -7,12 +7,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .errors import RulesError
+from .errors import RulesError, checked_keywords
 from .ruleset import Ruleset, break_fouls, clean_call, contact_fouls, end_call, foul_call
 from .state import LEGAL, NINE_BALL, NINE_POCKETED, PUSH_OUT, SCRATCH, THREE_FOULS, Call, GameState, ShotInfo
 from .summary import ShotSummary
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class NineBallOptions:
     """Options of :class:`NineBall` (defaults: WPA).

@@ -151,3 +151,34 @@ def test_committed_configs_are_valid_algorithm_configs(local_ray, path):
     assert config.env_config == ({**cfg.settings.env_kwargs, "threads": 1}
                                  if cfg.vectorize_mode == "vector_entry_point" else cfg.settings.env_kwargs)
     assert config.is_multi_agent == bool(cfg.settings.self_play)
+
+
+def test_failed_start_leaves_no_stub_run_folder(local_ray, tmp_path):
+    """A new run that fails before its first iteration removes its folder (the README's `runs/<name>-*` globs
+    would otherwise match it)."""
+    cpus = int(ray.cluster_resources()["CPU"])
+    cfg = load_rllib_config({"rllib": {"env_runners": {"num_env_runners": cpus + 1}},
+                             "billiards": {"iterations": 1, "run_root": str(tmp_path), "name": "stub"}})
+    with pytest.raises(RLlibConfigError, match="reserve"):
+        train(cfg, quiet=True)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_address_auto_without_a_cluster_is_one_clear_line(tmp_path, monkeypatch, capsys):
+    """`--address auto` with no cluster: one line saying what to do, no traceback, no run folder. Ray's own
+    ConnectionError is raised by a stand-in for ray.init: with `auto` a real Ray joins any instance it finds on the
+    node (this module's local one, another job's), so the missing cluster cannot be had for sure here."""
+    from agents.rllib.train import main
+
+    def no_cluster(*args, **kwargs):
+        raise ConnectionError("Could not find any running Ray instance. Please specify the one to connect to by "
+                              "setting `--address` flag or `RAY_ADDRESS` environment variable.")
+
+    monkeypatch.setattr(ray, "is_initialized", lambda: False)
+    monkeypatch.setattr(ray, "init", no_cluster)
+    code = main(["--address", "auto", "--iterations", "1", "--num-env-runners", "0", "--run-root", str(tmp_path)])
+    assert code == 2
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert len(lines) == 1
+    assert lines[0].startswith("agents.rllib: error: --address auto: no running Ray cluster") and "ray start" in lines[0]
+    assert list(tmp_path.iterdir()) == []

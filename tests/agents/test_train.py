@@ -159,3 +159,36 @@ def test_short_training_beats_random_on_an_easy_scene(tmp_path):
 def test_longer_training_on_the_easy_scene(tmp_path):
     trained, rand = _easy_training(tmp_path, seconds=240, steps=200_000)
     assert trained >= rand + 0.5, (trained, rand)
+
+
+def test_resume_of_a_spent_run_says_how_to_train_on(tmp_path, capsys):
+    """A run whose budget is spent: one clear line with the command that trains on (it used to crash with an
+    AttributeError); --seconds is the run's total, so a larger one trains on in the same folder."""
+    meta = train(load_train_config(_config(tmp_path, n_timesteps=100_000, max_seconds=3, budget_clock="cpu",
+                                           eval_freq=0)), quiet=True)
+    run = Path(meta["run_dir"])
+    assert meta["stopped_by_budget"] and meta["wall_seconds"] >= 3
+    capsys.readouterr()
+    assert main(["--resume", str(run), "--no-progress", "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert "has spent its time budget" in err and "CPU s" in err and "--seconds" in err
+    assert main(["--resume", str(run), "--seconds", str(meta["wall_seconds"] + 2), "--no-progress", "--quiet"]) == 0
+    meta2 = json.loads((run / "run.json").read_text())
+    assert meta2["timesteps"] > meta["timesteps"] and meta2["wall_seconds"] >= meta["wall_seconds"] + 2
+
+
+def test_progress_bar_counts_the_budget(tmp_path, capsys):
+    """With a time budget the bar's end (and so its ETA) is the budget, not n_timesteps."""
+    meta = train(load_train_config(_config(tmp_path, n_timesteps=2_000_000, max_seconds=2, eval_freq=0)),
+                 progress_bar=True, quiet=True)
+    err = capsys.readouterr().err
+    assert "budget (wall clock)" in err and "/2 s" in err and "2,000,000" not in err
+    assert meta["stopped_by_budget"]
+
+
+def test_help_says_what_seconds_counts(capsys):
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    out = " ".join(capsys.readouterr().out.split())
+    assert "CPU seconds" in out and "total" in out and "wall-clock budget" not in out

@@ -120,7 +120,9 @@ def test_human_mode_without_a_display_says_what_to_do(monkeypatch):
     from billiards_env.render.window import ALLOW_HEADLESS_ENV, HeadlessDisplayError
 
     monkeypatch.delenv(ALLOW_HEADLESS_ENV, raising=False)
-    monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")
+    monkeypatch.delenv("SDL_VIDEODRIVER", raising=False)  # SDL_VIDEODRIVER=dummy would ask for an invisible window
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    monkeypatch.setenv("DISPLAY", ":97")  # no X server there: pygame would fall back to 'offscreen' silently
     env = gym.make("BilliardsOneBall-v0", render_mode="human", render_width=120)
     with pytest.raises(HeadlessDisplayError, match="render_mode='human' needs a display.*rgb_array"):
         env.reset(seed=0)

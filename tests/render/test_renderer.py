@@ -258,17 +258,49 @@ def test_human_window_notices_quit_event() -> None:
 
 
 @pytest.mark.parametrize("driver", ["dummy", "offscreen"])
-def test_human_window_refuses_an_invisible_display(monkeypatch, driver: str) -> None:
-    """Without a display pygame falls back to a driver that shows nothing: say so instead of drawing unseen."""
-    from billiards_env.render.window import ALLOW_HEADLESS_ENV, HeadlessDisplayError, headless_allowed
+def test_human_window_draws_invisibly_on_a_driver_the_user_chose(monkeypatch, driver: str) -> None:
+    """SDL_VIDEODRIVER=dummy (how pygame programs run in CI) asks for an invisible window: no project variable is
+    needed, as with Gymnasium's own pygame envs; nobody watches, so frames are not paced."""
+    from billiards_env.render.window import ALLOW_HEADLESS_ENV
 
     monkeypatch.setenv("SDL_VIDEODRIVER", driver)
     monkeypatch.delenv(ALLOW_HEADLESS_ENV, raising=False)
-    assert not headless_allowed()
-    with pytest.raises(HeadlessDisplayError, match=f"{driver}.*rgb_array.*{ALLOW_HEADLESS_ENV}=1"):
-        HumanWindow((64, 48))
-    assert not pygame.display.get_init()
-    monkeypatch.setenv(ALLOW_HEADLESS_ENV, "1")  # the opt-in the tests use
-    assert headless_allowed()
     with HumanWindow((64, 48)) as window:
         assert not window.closed and pygame.display.get_driver() == driver
+        assert not window.paced
+        window.show(np.zeros((48, 64, 3), np.uint8), fps=0.5)  # would wait 2 s if paced
+    assert not pygame.display.get_init()
+
+
+def test_human_window_refuses_the_silent_fallback_of_a_machine_without_display(monkeypatch) -> None:
+    """No driver chosen and no display server answering: pygame falls back to 'offscreen' without a word, and a
+    program would wait on a window nobody sees. That stays an error saying what to do."""
+    from billiards_env.render.window import ALLOW_HEADLESS_ENV, HeadlessDisplayError
+
+    monkeypatch.delenv("SDL_VIDEODRIVER", raising=False)
+    monkeypatch.delenv("WAYLAND_DISPLAY", raising=False)
+    monkeypatch.delenv(ALLOW_HEADLESS_ENV, raising=False)
+    monkeypatch.setenv("DISPLAY", ":97")  # no X server there
+    with pytest.raises(HeadlessDisplayError, match="no X server answered at DISPLAY=:97.*rgb_array.*"
+                                                   "SDL_VIDEODRIVER=dummy"):
+        HumanWindow((64, 48))
+    assert not pygame.display.get_init()
+    monkeypatch.setenv(ALLOW_HEADLESS_ENV, "1")  # the opt-in billiards-play's tests use
+    with HumanWindow((64, 48)) as window:
+        assert not window.closed and pygame.display.get_driver() == "offscreen"
+    monkeypatch.setenv("WAYLAND_DISPLAY", "wayland-97")  # no compositor either: SDL falls back to offscreen
+    monkeypatch.delenv(ALLOW_HEADLESS_ENV)
+    with pytest.raises(HeadlessDisplayError, match="offscreen.*no display server answered"):
+        HumanWindow((64, 48))
+
+
+def test_human_window_without_any_display_says_what_to_do(monkeypatch) -> None:
+    from billiards_env.render import window as window_module
+
+    monkeypatch.setattr(window_module.sys, "platform", "linux")
+    for var in ("SDL_VIDEODRIVER", "DISPLAY", "WAYLAND_DISPLAY", window_module.ALLOW_HEADLESS_ENV):
+        monkeypatch.delenv(var, raising=False)
+    with pytest.raises(window_module.HeadlessDisplayError, match="DISPLAY and WAYLAND_DISPLAY are unset.*"
+                                                                 "SDL_VIDEODRIVER=dummy"):
+        HumanWindow((64, 48))
+    assert not pygame.display.get_init()
