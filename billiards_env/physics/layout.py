@@ -480,6 +480,7 @@ def nearest_point_in_d(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
     rad = np.broadcast_to(np.asarray(radius, dtype=float), (len(pos),))
     discs = [(float(pos[k, 0]), float(pos[k, 1]), float(rad[row] + rad[k] + clearance))
              for k in range(len(pos)) if on_table[k] and k != row]
+    discs = [q for q in discs if math.hypot(q[0] - cx, q[1] - cy) < r + q[2]]  # only those reaching into the D
 
     def into_d(px: float, py: float) -> tuple[float, float]:
         dx, dy = px - cx, py - cy

@@ -14,7 +14,7 @@ direction, speed and tip offsets, where to place the cue ball when it is in hand
   (:func:`billiards_env.physics.batch.run_shots`), judged by the rules' compiled judge
   (:func:`billiards_env.rules.snooker.judge_batch`: points, penalty, the next ball on), and valued by the points
   plus the position they leave: the chance of potting the next ball on (the striker's when he keeps the table, the
-  opponent's when he does not; :func:`billiards_env.players.search.next_shot_ease`). The best few are re-run under
+  opponent's when he does not; :func:`pot_chances`, compiled). The best few are re-run under
   small errors and the most robust is played; with the cue ball in hand the search runs from the best places in
   the D.
 """
@@ -24,8 +24,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 
-from billiards_env.physics import Balls, Simulator
+from billiards_env.physics import Balls, Simulator, Table
 from billiards_env.physics.aim import aim_angle, direction_vector, ghost_ball_position, pocket_window
 from billiards_env.physics.batch import run_shots
 from billiards_env.physics.layout import SNOOKER_COLOURS, d_point, nearest_point_in_d, spot_snooker_colours
@@ -33,7 +34,7 @@ from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.rules.snooker import (COLOUR_VALUES, VALUE_NAMES, Snooker, SnookerState, ball_on_mask,
                                          judge_batch)
 
-from .search import next_shot_ease
+from .search import WINDOW_GRID
 from .shots import MAX_CUT, ghost_ball_shots, pot_probability, speed_to_travel
 
 #: Default speed range of snooker shots (m/s).
@@ -97,7 +98,7 @@ def d_placements(balls: Balls, sim: Simulator, cue: int, targets: list[int], n: 
     """Ball in hand: up to ``n`` legal places in the D (at least a ball apart) that leave the easiest pot of a ball
     of ``targets``, best first. Tried: a grid over the D (:func:`~billiards_env.physics.layout.d_point`) and, for
     every target and pocket, the points behind its ghost ball moved into the D; scored by
-    :func:`~billiards_env.players.search.next_shot_ease`."""
+    :func:`pot_chances`."""
     table = sim.table
     b = balls
     r = float(b.radius[cue])
@@ -124,7 +125,9 @@ def d_placements(balls: Balls, sim: Simulator, cue: int, targets: list[int], n: 
     pos[:, cue] = places
     on = np.repeat(b.on_table[None], len(places), axis=0)
     on[:, cue] = True
-    ease = next_shot_ease(table, b.radius, pos, on, cue, [targets] * len(places), sigma, windows=windows)
+    mask = np.zeros(on.shape, bool)
+    mask[:, targets] = True
+    ease = pot_chances(table, b.radius, pos, on, cue, mask, sigma, windows)
     out: list[tuple[float, float]] = []
     for k in np.argsort(-ease, kind="stable"):
         p = places[k]
@@ -133,6 +136,114 @@ def d_placements(balls: Balls, sim: Simulator, cue: int, targets: list[int], n: 
         if len(out) >= n:
             break
     return out
+
+
+# --- the chance of the next pot (compiled) ---------------------------------------------------------------------------
+
+def _windows_array(table: Table, radius: np.ndarray, pos: np.ndarray, on: np.ndarray, targets: np.ndarray,
+                   windows: dict) -> np.ndarray:
+    """``(N, B, P, 3)``: each target's pocket windows (direction, half-width, distance; NaN: no window) in each
+    layout, from :func:`~billiards_env.physics.aim.pocket_window` through the cache ``windows`` (keyed as
+    :func:`~billiards_env.players.search.next_shot_ease` keys it: a window per ``WINDOW_GRID`` cell)."""
+    n, b = on.shape
+    out = np.full((n, b, table.n_pockets, 3), np.nan)
+    q = WINDOW_GRID
+    for k, j in zip(*np.nonzero(targets & on)):
+        rj = float(radius[j])
+        o = pos[k, j]
+        cell = (rj, round(float(o[0]) / q), round(float(o[1]) / q))
+        wins = windows.get(cell)
+        if wins is None:
+            wins = [(p, w) for p in range(table.n_pockets) if (w := pocket_window(o, rj, table, p)) is not None]
+            windows[cell] = wins
+        for p, w in wins:
+            out[k, j, p] = w
+    return out
+
+
+@njit(cache=True)
+def _blocked(ax, ay, bx, by, pos_k, on_k, radius, skip1, skip2, clear):
+    """Whether a ball of ``pos_k`` on the table (but ``skip1``, ``skip2``) comes closer than ``clear + r`` to the
+    segment ``a -> b``."""
+    dx = bx - ax
+    dy = by - ay
+    l2 = max(dx * dx + dy * dy, 1e-24)
+    for m in range(pos_k.shape[0]):
+        if m == skip1 or m == skip2 or not on_k[m]:
+            continue
+        t = min(max(((pos_k[m, 0] - ax) * dx + (pos_k[m, 1] - ay) * dy) / l2, 0.0), 1.0)
+        ex = pos_k[m, 0] - ax - t * dx
+        ey = pos_k[m, 1] - ay - t * dy
+        need = clear + radius[m]
+        if ex * ex + ey * ey < need * need:
+            return True
+    return False
+
+
+@njit(cache=True)
+def _pot_chances(pos, on, radius, cue, targets, win, length, width, cos_max, sigma):
+    """Per layout, the pot chance of its easiest ghost-ball shot at a ball of ``targets``: the tolerance of
+    :func:`~billiards_env.players.search.next_shot_ease` (the window's half-width scaled by ``(r_c + r_o)
+    cos(cut) / (d + r_c + r_o)``, a tenth when a path is blocked; cuts beyond ``acos(cos_max)`` and ghost balls off
+    the table do not count) through ``erf(tol / (sqrt2 sigma))``."""
+    n = pos.shape[0]
+    out = np.zeros(n)
+    rc = radius[cue]
+    for k in range(n):
+        if not on[k, cue]:
+            continue
+        cx = pos[k, cue, 0]
+        cy = pos[k, cue, 1]
+        best = 0.0
+        for j in range(pos.shape[1]):
+            if j == cue or not targets[k, j] or not on[k, j]:
+                continue
+            ox = pos[k, j, 0]
+            oy = pos[k, j, 1]
+            contact = rc + radius[j]
+            for p in range(win.shape[2]):
+                ang = win[k, j, p, 0]
+                if ang != ang:
+                    continue
+                ux = math.cos(ang)
+                uy = math.sin(ang)
+                gx = ox - contact * ux
+                gy = oy - contact * uy
+                if gx < rc or gx > length - rc or gy < rc or gy > width - rc:
+                    continue
+                vx = gx - cx
+                vy = gy - cy
+                d = math.hypot(vx, vy)
+                cos_cut = (vx * ux + vy * uy) / max(d, 1e-12)
+                if cos_cut < cos_max:
+                    continue
+                tol = win[k, j, p, 1] * contact * cos_cut / (d + contact)
+                if tol <= best:
+                    continue
+                dobj = win[k, j, p, 2]
+                if _blocked(cx, cy, gx, gy, pos[k], on[k], radius, cue, j, rc) or \
+                        _blocked(ox, oy, ox + ux * dobj, oy + uy * dobj, pos[k], on[k], radius, cue, j, radius[j]):
+                    tol /= 10.0
+                best = max(best, tol)
+        out[k] = math.erf(best / (math.sqrt(2.0) * max(sigma, 1e-12)))
+    return out
+
+
+def pot_chances(table: Table, radius: np.ndarray, pos: np.ndarray, on: np.ndarray, cue: int,
+                targets: np.ndarray, sigma: float, windows: dict | None = None,
+                max_cut: float = MAX_CUT) -> np.ndarray:
+    """For ``N`` layouts (``pos`` (N, B, 2), ``on`` (N, B)), the chance of potting the easiest ghost-ball shot at a
+    ball of ``targets`` ((N, B) bool) when the cue angle errs with spread ``sigma`` (rad): the compiled
+    equivalent of :func:`~billiards_env.players.search.next_shot_ease` (the same tolerance and window cache)."""
+    windows = {} if windows is None else windows
+    pos = np.ascontiguousarray(pos, dtype=float)
+    on = np.ascontiguousarray(on, dtype=np.bool_)
+    targets = np.ascontiguousarray(targets, dtype=np.bool_)
+    if len(pos) == 0:
+        return np.zeros(0)
+    win = _windows_array(table, radius, pos, on, targets, windows)
+    return _pot_chances(pos, on, np.ascontiguousarray(radius, dtype=float), int(cue), targets, win,
+                        float(table.length), float(table.width), math.cos(max_cut), float(sigma))
 
 
 # --- geometric -------------------------------------------------------------------------------------------------------
@@ -253,15 +364,14 @@ def _evaluate(b: Balls, sim: Simulator, state: SnookerState, values: np.ndarray,
         pos = res.pos[near].copy()
         on = res.on_table[near].copy()
         col_rows = {VALUE_NAMES[int(v)]: int(r) for r, v in enumerate(values) if v >= 2}
-        targets = []
+        targets = np.zeros(on.shape, bool)
         for q, k in enumerate(near):
             if respot[k]:
                 spot = {c: col_rows[c] for c in SNOOKER_COLOURS if respot[k] & (1 << COLOUR_VALUES[c])}
                 spot_snooker_colours(pos[q], on[q], b.radius, sim.table, spot)
             code = int(next_on[k])
-            mask = (values == 1) if code == 1 else ((values >= 2) if code == 0 else (values == code))
-            targets.append([int(j) for j in np.flatnonzero(mask & on[q])])
-        ease = next_shot_ease(sim.table, b.radius, pos, on, cue, targets, sigma, windows=windows)
+            targets[q] = (values == 1) if code == 1 else ((values >= 2) if code == 0 else (values == code))
+        ease = pot_chances(sim.table, b.radius, pos, on, cue, targets, sigma, windows)
         term = np.where(keep[near], st.position_weight, -st.safety_weight) * ease
         total[near] += term
     return total
@@ -358,5 +468,5 @@ def _first_row(b: Balls, sim: Simulator, cue: int, shot: np.ndarray) -> int:
     return int(res.first_contact[0])
 
 
-__all__ = ["SPEED_RANGE", "SnookerShot", "target_rows", "d_placements", "snooker_geometric_shot",
+__all__ = ["SPEED_RANGE", "SnookerShot", "target_rows", "pot_chances", "d_placements", "snooker_geometric_shot",
            "SnookerSearchSettings", "snooker_search_shot"]
