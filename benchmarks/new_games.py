@@ -1,13 +1,13 @@
 """The players of snooker and three-cushion, measured (issue 24), from the repository root:
 
-    python -m benchmarks.new_games [--three-cushion N] [--frames F] [--seed S] [--json out.json]
+    python -m benchmarks.new_games [--three-cushion N] [--frames F] [--match-frames M] [--seed S] [--json out.json]
 
 - three-cushion: the search player (:func:`billiards_env.players.three_cushion.three_cushion_shot`, spin model) from
   ``N`` random positions of the three balls: how often it finds a point, how often the shot scores when played
   exactly and under FastFiz-like shot noise (angle 0.125 deg, speed 3.75 %, tip 0.5 mm), and its decision time;
 - snooker: ``F`` frames of each player against itself from the break-off (rolling model), with and without that
   noise: breaks (a visit's points; the mean over visits that scored, and the highest), points per visit, and the
-  decision time.
+  decision time; with ``--match-frames M``, ``M`` frames of search against geometric under that noise.
 
 The figures print as a table (and go to ``--json``). Decision times are wall-clock on the machine as it is
 (the median of the decisions); compare players within one run.
@@ -74,12 +74,17 @@ def three_cushion(n: int, seed: int) -> dict[str, Any]:
             "shots_simulated_median": float(np.median(sims))}
 
 
-def snooker_frames(player: str, frames: int, seed: int, noise: tuple[float, float, float],
+def snooker_frames(player: str | tuple[str, str], frames: int, seed: int, noise: tuple[float, float, float],
                    max_shots: int = 400) -> dict[str, Any]:
+    """``frames`` frames between ``player`` (one name: against itself; a pair: player 0 and player 1, who
+    alternate breaking off), each from the break-off to its end (or ``max_shots``)."""
+    names = (player, player) if isinstance(player, str) else tuple(player)
     table = snooker_table()
     sim = Simulator(table, Physics())
     rules = Snooker()
     breaks, visits, times = [], [], []
+    by_player: dict[int, list[int]] = {0: [], 1: []}
+    won = [0, 0]
     shots_total = 0
     for f in range(frames):
         rng = np.random.default_rng(seed + f)
@@ -91,7 +96,7 @@ def snooker_frames(player: str, frames: int, seed: int, noise: tuple[float, floa
         windows: dict = {}
         for _ in range(max_shots):
             t0 = time.perf_counter()
-            if player == "search":
+            if names[state.shooter] == "search":
                 shot = snooker_search_shot(balls, sim, state, values, snookered=snk, rules=rules,
                                            angle_noise=noise[0], speed_noise=noise[1], rng=rng, windows=windows)
             else:
@@ -105,13 +110,17 @@ def snooker_frames(player: str, frames: int, seed: int, noise: tuple[float, floa
                 visits.append(c.break_points)
                 if c.break_points > 0:
                     breaks.append(c.break_points)
+                    by_player[c.shooter].append(c.break_points)
             state, snk = turn.state, turn.snookered
             if state.frame_over:
+                won[state.winner] += 1
                 break
-    return {"player": player, "frames": frames, "noise": list(noise), "shots": shots_total,
-            "mean_break": float(np.mean(breaks)) if breaks else 0.0, "highest_break": int(max(breaks, default=0)),
-            "breaks": len(breaks), "points_per_visit": float(np.mean(visits)) if visits else 0.0,
-            "decision_s_median": float(np.median(times))}
+    return {"player": "/".join(names) if names[0] != names[1] else names[0], "frames": frames,
+            "noise": list(noise), "shots": shots_total, "mean_break": float(np.mean(breaks)) if breaks else 0.0,
+            "highest_break": int(max(breaks, default=0)), "breaks": len(breaks),
+            "points_per_visit": float(np.mean(visits)) if visits else 0.0,
+            "decision_s_median": float(np.median(times)), "frames_won": won,
+            "mean_break_by_player": [float(np.mean(by_player[p])) if by_player[p] else 0.0 for p in (0, 1)]}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -119,6 +128,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--three-cushion", type=int, default=200, help="random three-cushion positions (0: skip)")
     ap.add_argument("--frames", type=int, default=3, help="snooker frames per player and noise (0: skip)")
     ap.add_argument("--players", nargs="+", default=["geometric", "search"], choices=["geometric", "search"])
+    ap.add_argument("--match-frames", type=int, default=0,
+                    help="snooker frames of search (player 0) against geometric (player 1), with shot noise")
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--json", default=None, help="write the figures to this file")
     args = ap.parse_args(argv)
@@ -140,6 +151,12 @@ def main(argv: list[str] | None = None) -> int:
                 out["snooker"].append(r)
                 print(f"| {player} | {label} | {r['frames']} | {r['shots']} | {r['breaks']} | {r['mean_break']:.1f} "
                       f"| {r['highest_break']} | {r['points_per_visit']:.1f} | {r['decision_s_median'] * 1e3:.0f} ms |")
+    if args.match_frames:
+        r = snooker_frames(("search", "geometric"), args.match_frames, args.seed, (FASTFIZ[0], FASTFIZ[1], 0.0))
+        out["snooker_match"] = r
+        print(f"snooker, search against geometric, {r['frames']} frames with FastFiz-like noise: frames won "
+              f"{r['frames_won'][0]}-{r['frames_won'][1]}, mean break {r['mean_break_by_player'][0]:.1f} against "
+              f"{r['mean_break_by_player'][1]:.1f}")
     if args.json:
         with open(args.json, "w", encoding="utf-8") as fh:
             json.dump(out, fh, indent=2)

@@ -4,6 +4,9 @@ ball-in-hand placement moved to the nearest legal point.
 Table markings (the x axis runs along the length from the head cushion at ``x = 0``): the head string is the line
 ``x = length/4`` (the kitchen is ``x < length/4``), the head spot is ``(length/4, width/2)``, the foot spot
 ``(3 length/4, width/2)`` and the long string the line ``y = width/2``. Every other module asks this one.
+
+Snooker (the baulk cushion at ``x = 0``): the baulk line, the D, the colours' spots, the reds' triangle, the
+WPBSA re-spotting of colours and the cue ball in hand in the D. Three-cushion: the UMB opening position.
 """
 from __future__ import annotations
 
@@ -15,7 +18,7 @@ from numba import njit
 
 from .balls import BALL_RADIUS, Balls
 from .errors import SceneError
-from .table import (CAROM_BALL_MASS, CAROM_BALL_RADIUS, CAROM_LENGTH, CAROM_WIDTH, SNOOKER_BALL_MASS,
+from .table import (CAROM_BALL_MASS, CAROM_BALL_RADIUS, CAROM_WIDTH, SNOOKER_BALL_MASS,
                     SNOOKER_BALL_RADIUS, SNOOKER_LENGTH, SNOOKER_WIDTH, Table)
 
 #: Ball numbers of the 15-ball rack, row by row from the apex (8-ball in the middle of the third row).
@@ -518,7 +521,8 @@ def nearest_point_in_d(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
             along = (ar * ar - br * br + d * d) / (2.0 * d)
             h = math.sqrt(max(ar * ar - along * along, 0.0))
             mx, my = ax + along * (bx - ax) / d, ay + along * (by - ay) / d
-            cands += [(mx - h * (by - ay) / d, my + h * (bx - ax) / d), (mx + h * (by - ay) / d, my - h * (bx - ax) / d)]
+            cands += [(mx - h * (by - ay) / d, my + h * (bx - ax) / d),
+                      (mx + h * (by - ay) / d, my - h * (bx - ax) / d)]
     best, best_d2 = None, math.inf
     for qx, qy in cands:
         qx, qy = into_d(qx, qy)

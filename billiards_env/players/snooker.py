@@ -27,7 +27,7 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics import Balls, Simulator, Table
-from billiards_env.physics.aim import aim_angle, direction_vector, ghost_ball_position, pocket_window
+from billiards_env.physics.aim import aim_angle, direction_vector, ghost_ball_position, pocket_window, segment_blocked
 from billiards_env.physics.batch import run_shots
 from billiards_env.physics.layout import SNOOKER_COLOURS, d_point, nearest_point_in_d, spot_snooker_colours
 from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
@@ -251,10 +251,10 @@ def pot_chances(table: Table, radius: np.ndarray, pos: np.ndarray, on: np.ndarra
 def snooker_geometric_shot(balls: Balls, sim: Simulator, state: SnookerState, values: np.ndarray,
                            speed_range: tuple[float, float] = SPEED_RANGE, snookered: bool = False,
                            rules: Snooker | None = None, sigma: float = 0.003) -> SnookerShot:
-    """The geometric player's shot: the ghost-ball shot at a ball on with the most expected points (pot
-    probability under an angle error ``sigma`` times the ball's value; a free ball when ``snookered`` and the rules
-    allow one), from the best place in the D when the cue ball is in hand; else a soft full-ball hit on the nearest
-    ball on."""
+    """The geometric player's shot: the ghost-ball shot with clear paths at a ball on with the most expected
+    points (pot probability under an angle error ``sigma`` times the ball's value; a free ball when ``snookered``
+    and the rules allow one), from the best place in the D when the cue ball is in hand; without one, a firm
+    full-ball hit on the nearest ball on in plain view."""
     rules = rules or Snooker()
     values = np.asarray(values)
     cue = _cue_row(values)
@@ -268,7 +268,7 @@ def snooker_geometric_shot(balls: Balls, sim: Simulator, state: SnookerState, va
     for cut in (MAX_CUT, math.radians(88.0)):
         for s in ghost_ball_shots(b, sim.table, sim.physics, cue, targets, speed_range, cut):
             v = pot_probability(s.score, sigma) * max(int(values[s.target]), 1)
-            if v > best_value:
+            if s.clear and v > best_value:
                 best, best_value = s, v
         if best is not None:
             break
@@ -276,10 +276,17 @@ def snooker_geometric_shot(balls: Balls, sim: Simulator, state: SnookerState, va
         nom, fb = _declarations(state, int(values[best.target]), free)
         return SnookerShot(best.angle, best.speed, place=place, nominated=nom, free_ball=fb, target=best.target,
                            value=best_value)
-    on = [j for j in targets if int(values[j]) in (1, COLOUR_VALUES.get(state.on, 0)) or state.on == "colour"]
-    j = min(on or targets, key=lambda k: float(np.hypot(*(b.pos[k] - b.pos[cue]))))
-    d = float(np.hypot(*(b.pos[j] - b.pos[cue])))
-    speed = min(max(speed_to_travel(d + 0.5, 0.3, sim.physics), speed_range[0]), speed_range[1])
+    # no clear pot: a firm full-ball contact on the nearest ball on in plain view (else the nearest)
+    others = [k for k in range(len(b)) if b.on_table[k] and k != cue]
+
+    def in_view(j: int) -> bool:
+        rest = [k for k in others if k != j]
+        return not segment_blocked(b.pos[cue], b.pos[j], b.pos[rest], b.radius[rest] + b.radius[cue])
+
+    dist = {j: float(np.hypot(*(b.pos[j] - b.pos[cue]))) for j in targets}
+    seen = [j for j in targets if in_view(j)]
+    j = min(seen or targets, key=dist.__getitem__)
+    speed = min(max(speed_to_travel(dist[j] + 1.0, 0.3, sim.physics), speed_range[0]), speed_range[1])
     nom, fb = _declarations(state, int(values[j]), free)
     return SnookerShot(aim_angle(b.pos[cue], b.pos[j]), float(speed), place=place, nominated=nom, free_ball=fb,
                        target=j, value=0.0)
@@ -299,7 +306,8 @@ class SnookerSearchSettings:
     sweep_angles: int = 48  #: soft shots in every direction (safeties)
     sweep_speeds: tuple[float, ...] = (0.08, 0.2)  #: fractions of the speed range
     top_k: int = 6  #: best candidates re-run under small errors
-    robust_samples: int = 6
+    robust_samples: int = 6  #: re-runs of each of the best without shot noise in the env...
+    noisy_samples: int = 16  #: ...and with it
     robust_angle: float = 0.0015  #: rad, when the env has no angle noise
     robust_speed: float = 0.03  #: relative
     robust_tip: float = 0.02  #: ball radii
@@ -307,39 +315,47 @@ class SnookerSearchSettings:
     position_weight: float = 4.0  #: worth of a sure next pot when keeping the table
     safety_weight: float = 4.0  #: cost of leaving the opponent a sure pot
     in_hand_ease: float = 0.7  #: the opponent's assumed pot chance with the cue ball in hand after an in-off
+    missed_pot_value: float = -2.0  #: worth of a pot that misses under the shot noise (the opponent's chance)
     win_value: float = 100.0  #: a won (lost) frame
     ease_noise: float = 0.003  #: angle spread (rad) the next shot's pot chance assumes
     placements: int = 3  #: places in the D searched from
 
 
 def _candidates(b: Balls, sim: Simulator, cue: int, targets: list[int], values: np.ndarray,
-                speed_range: tuple[float, float], st: SnookerSearchSettings, spin: bool) -> np.ndarray:
+                speed_range: tuple[float, float], st: SnookerSearchSettings, spin: bool,
+                sigma: float) -> tuple[np.ndarray, np.ndarray]:
     """``(angle, speed, side, top)`` rows: each of the best ghost-ball shots at the angle offsets and speed factors
-    (with the tip variants under the spin model), then the sweep."""
+    (with the tip variants under the spin model), then the sweep; and per row the pot chance of its ghost-ball
+    shot under an angle error ``sigma`` (1 for the sweep)."""
     lo, hi = speed_range
     shots = ghost_ball_shots(b, sim.table, sim.physics, cue, targets, speed_range, math.radians(85.0))
     shots.sort(key=lambda s: -pot_probability(s.score, st.ease_noise) * max(int(values[s.target]), 1))
     spins = st.spins if spin else ((0.0, 0.0),)
     out = []
+    chance = []
     for s in shots[:st.n_geometric]:
+        p = pot_probability(s.score, sigma)
         for da in st.angle_offsets:
             out.append((s.angle + da, min(max(s.speed, lo), hi), 0.0, 0.0))
+            chance.append(p)
         for f in st.speed_factors:
             for side, top in spins:
                 if f != 1.0 or side or top:
                     out.append((s.angle, min(max(s.speed * f, lo), hi), side, top))
+                    chance.append(p)
     base = aim_angle(b.pos[cue], b.pos[targets[0]]) if targets else 0.0
     for k in range(st.sweep_angles):
         for f in st.sweep_speeds:
             out.append((base + 2.0 * math.pi * k / st.sweep_angles, lo + f * (hi - lo), 0.0, 0.0))
-    return np.array(out, dtype=float).reshape(-1, 4)
+            chance.append(1.0)
+    return np.array(out, dtype=float).reshape(-1, 4), np.array(chance, dtype=float)
 
 
 def _evaluate(b: Balls, sim: Simulator, state: SnookerState, values: np.ndarray, cue: int, free: int,
               shots: np.ndarray, st: SnookerSearchSettings, sigma: float, windows: dict,
-              full: bool) -> np.ndarray:
+              full: bool) -> tuple[np.ndarray, np.ndarray]:
     """Simulate ``shots`` (N, 4) in one batch (``free``: the value of the nominated free ball, 0: none) and value
-    each (N,). The value is the
+    each: ``(totals, scored)`` (N,), ``scored`` the shots that score without a foul. The value is the
     points scored minus the penalty, plus ``keep_value`` and the position term when the striker keeps the table,
     minus the opponent's chances when he does not, or +-``win_value`` when the frame ends. Position terms are
     computed for the rows within reach of the best (``full``: for every row)."""
@@ -374,7 +390,7 @@ def _evaluate(b: Balls, sim: Simulator, state: SnookerState, values: np.ndarray,
         ease = pot_chances(sim.table, b.radius, pos, on, cue, targets, sigma, windows)
         term = np.where(keep[near], st.position_weight, -st.safety_weight) * ease
         total[near] += term
-    return total
+    return total, keep | (frame_end & (points > 0) & (fouls == 0))
 
 
 def snooker_search_shot(balls: Balls, sim: Simulator, state: SnookerState, values: np.ndarray,
@@ -404,15 +420,22 @@ def snooker_search_shot(balls: Balls, sim: Simulator, state: SnookerState, value
     best_score = -math.inf
     for place in places:
         b = _with_cue(balls, cue, place)
-        shots = _candidates(b, sim, cue, targets, values, speed_range, st, spin)
-        totals = _evaluate(b, sim, state, values, cue, 0, shots, st, sigma, windows, False)
+        exact = angle_noise == 0.0 and speed_noise == 0.0 and (not spin or tip_noise == 0.0)
+        shots, chance = _candidates(b, sim, cue, targets, values, speed_range, st, spin, sigma)
+        totals, scored = _evaluate(b, sim, state, values, cue, 0, shots, st, sigma, windows, False)
         if free_ok:  # a free ball: each shot judged with the ball it hits first (if not on) as the free ball
-            totals = np.maximum(totals, _evaluate_free(b, sim, state, values, cue, shots, st, sigma, windows))
-        order = np.argsort(-totals, kind="stable")[:st.top_k]
+            f_tot, f_scored = _evaluate_free(b, sim, state, values, cue, shots, st, sigma, windows)
+            better = f_tot > totals
+            totals, scored = np.where(better, f_tot, totals), np.where(better, f_scored, scored)
+        # under shot noise a pot goes in with the chance of its ghost-ball shot's tolerance
+        expected = totals if exact else np.where(scored, chance * totals + (1.0 - chance) * st.missed_pot_value,
+                                                 totals)
+        order = np.argsort(-expected, kind="stable")[:st.top_k]
+        samples = st.robust_samples if exact else st.noisy_samples
         sa = angle_noise or st.robust_angle
         ss = speed_noise or st.robust_speed
         stn = (tip_noise or st.robust_tip) if spin else 0.0
-        noisy = np.repeat(shots[order], st.robust_samples, axis=0)
+        noisy = np.repeat(shots[order], samples, axis=0)
         m = len(noisy)
         noisy[:, 0] += rng.normal(0.0, sa, m)
         noisy[:, 1] = np.clip(noisy[:, 1] * (1.0 + rng.normal(0.0, ss, m)), lo, hi)
@@ -422,13 +445,14 @@ def snooker_search_shot(balls: Balls, sim: Simulator, state: SnookerState, value
             r = np.hypot(noisy[:, 2], noisy[:, 3])
             f = np.where(r > 0.98 * MAX_TIP_OFFSET, 0.98 * MAX_TIP_OFFSET / np.maximum(r, 1e-12), 1.0)
             noisy[:, 2:] *= f[:, None]
-        n_tot = _evaluate(b, sim, state, values, cue, 0, noisy, st, sigma, windows, True)
+        n_tot = _evaluate(b, sim, state, values, cue, 0, noisy, st, sigma, windows, True)[0]
         if free_ok:
-            n_tot = np.maximum(n_tot, _evaluate_free(b, sim, state, values, cue, noisy, st, sigma, windows, True))
-        means = n_tot.reshape(len(order), st.robust_samples).mean(axis=1)
-        exact = angle_noise == 0.0 and speed_noise == 0.0 and (not spin or tip_noise == 0.0)
-        robust = totals[order] + 0.5 * means if exact else (totals[order] + means * st.robust_samples) / (
-            1 + st.robust_samples)
+            n_tot = np.maximum(n_tot, _evaluate_free(b, sim, state, values, cue, noisy, st, sigma, windows,
+                                                     True)[0])
+        means = n_tot.reshape(len(order), samples).mean(axis=1)
+        # without noise the unperturbed outcome is what happens (the re-runs break ties towards margin); with
+        # noise the re-runs sample what may happen, and the pot-chance estimate steadies them
+        robust = totals[order] + 0.5 * means if exact else 0.5 * (expected[order] + means)
         q = int(np.argmax(robust))
         if robust[q] > best_score:
             k = int(order[q])
@@ -442,10 +466,12 @@ def snooker_search_shot(balls: Balls, sim: Simulator, state: SnookerState, value
     return best
 
 
-def _evaluate_free(b, sim, state, values, cue, shots, st, sigma, windows, full=False) -> np.ndarray:
-    """Totals of ``shots`` when a ball not on that the cue ball hits first is the nominated free ball: each colour
-    as the free ball, the best kept per shot only for the shots that hit it first."""
+def _evaluate_free(b, sim, state, values, cue, shots, st, sigma, windows, full=False
+                   ) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`_evaluate` of ``shots`` when a ball not on that the cue ball hits first is the nominated free ball
+    (-inf for the shots that hit a ball on first or nothing)."""
     out = np.full(len(shots), -math.inf)
+    scored = np.zeros(len(shots), bool)
     spin = sim.physics.friction == "spin"
     res = run_shots(sim, b, shots[:, 0], shots[:, 1], ball=cue, side=shots[:, 2] if spin else None,
                     top=shots[:, 3] if spin else None, validate=False)
@@ -456,8 +482,8 @@ def _evaluate_free(b, sim, state, values, cue, shots, st, sigma, windows, full=F
             continue
         rows = np.flatnonzero(first_val == v)
         if len(rows):
-            out[rows] = _evaluate(b, sim, state, values, cue, v, shots[rows], st, sigma, windows, full)
-    return out
+            out[rows], scored[rows] = _evaluate(b, sim, state, values, cue, v, shots[rows], st, sigma, windows, full)
+    return out, scored
 
 
 def _first_row(b: Balls, sim: Simulator, cue: int, shot: np.ndarray) -> int:

@@ -116,7 +116,8 @@ def judge(on, nominated, free_ball, reds, colours, first, reds_potted, potted, c
     """One shot under the rules, on integers.
 
     In: ``on`` (1 red, 0 any colour, 2..7 that colour), ``nominated`` (the colour nominated when on a colour, 0:
-    none, then the first colour hit counts), ``free_ball`` (the colour nominated as a free ball, 0: none),
+    none, then the first colour hit counts), ``free_ball`` (the colour nominated as a free ball, 0: none; it must
+    be hit first, then counts as the ball on),
     ``reds`` (reds on the table before the shot), ``colours`` (bit mask, bit v set for colour value v on the
     table), ``first`` (value of the ball hit first, -1 none), ``reds_potted``, ``potted`` (bit mask of the
     colours potted), ``cue_potted``.

@@ -179,7 +179,7 @@ def summarize_carom(events: np.ndarray, rows: tuple[int, int, int]) -> CaromSumm
     return CaromSummary(role[int(f)], role[int(s)], int(c), int(t), int(b))
 
 
-# --- rules -------------------------------------------------------------------------------------------------------------
+# --- rules -----------------------------------------------------------------------------------------------------------
 
 def _check_player(name: str, value: object) -> None:
     if isinstance(value, bool) or value not in (0, 1):
@@ -370,7 +370,7 @@ class ThreeCushion:
         return c, self.next_state(state, c)
 
 
-__all__ = ["THREE_CUSHION", "CAROM_IDS", "CUSHIONS_NEEDED", "POINT", "NO_POINT", "TARGET_REACHED",
-           "EQUALIZING",            "INNINGS_LIMIT", "BREAK_NOT_ON_RED", "NO_CONTACT", "FOULS", "RED", "OPPONENT", "scan_carom",
+__all__ = ["THREE_CUSHION", "CAROM_IDS", "CUSHIONS_NEEDED", "POINT", "NO_POINT", "TARGET_REACHED", "EQUALIZING",
+           "INNINGS_LIMIT", "BREAK_NOT_ON_RED", "NO_CONTACT", "FOULS", "RED", "OPPONENT", "scan_carom",
            "scan_carom_batch", "carom_rows", "CaromSummary", "summarize_carom", "ThreeCushionOptions",
            "ThreeCushionState", "ThreeCushionCall", "ThreeCushion"]

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 from snooker_helpers import (R, SIM, SPOTS, TABLE, angle_to, hit_and_stay, in_off, layout, miss_all, pot,
-                             pot_two, shoot)
+                             pot_two)
 
 from billiards_env.physics.batch import run_shots
 from billiards_env.physics.layout import SNOOKER_COLOURS, snooker_balls
