@@ -38,7 +38,7 @@ from typing import Literal, Sequence, Union
 import numpy as np
 from numba import njit
 
-from ..physics.codes import EV_COLLISION
+from ..physics.codes import EV_COLLISION, EV_POCKET
 from ..physics.layout import SNOOKER_COLOURS
 from .errors import RulesError
 
@@ -524,7 +524,7 @@ def summarize_snooker(events: np.ndarray, pocket: np.ndarray, values: np.ndarray
     cue = int(cues[0])
     f = int(_first_contact(ev, cue))
     down = [int(b) for b in np.flatnonzero(pk >= 0)]
-    order = {int(b): k for k, b in enumerate(ev[ev[:, 0] == 2, 1].tolist())}  # pocket events in time order
+    order = {int(b): k for k, b in enumerate(ev[ev[:, 0] == EV_POCKET, 1].tolist())}  # pocket events in time order
     down.sort(key=lambda b: order.get(b, len(order) + b))
     return SnookerSummary(None if f < 0 else VALUE_NAMES[int(vals[f])],
                           sum(1 for b in down if vals[b] == RED_VALUE),

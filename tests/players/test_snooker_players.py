@@ -150,3 +150,11 @@ def test_search_players_finish_a_short_frame():
             break
     assert state.frame_over and state.winner in (0, 1) and state.score[state.winner] > state.score[1 - state.winner]
     assert not balls.on_table[(values >= 1) & (values <= 6)].any()  # a frame ends on the last black
+
+
+def test_search_is_deterministic_for_a_seed_and_leaves_the_balls_alone():
+    balls, values = table_with(RED_POT)
+    before = balls.pos.copy()
+    shots = [snooker_search_shot(balls, SIM, mid(reds=1), values, angle_noise=0.002, speed_noise=0.03,
+                                 rng=np.random.default_rng(5)) for _ in range(2)]
+    assert shots[0] == shots[1] and np.array_equal(balls.pos, before)

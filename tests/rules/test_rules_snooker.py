@@ -373,3 +373,12 @@ def test_bad_input_is_refused_clearly():
     with pytest.raises(RulesError, match="state.shooter"):
         RULES.next_state(st(shooter=1), RULES.call(st(), pot("red1")))
     assert SPOTS["black"][0] > SPOTS["pink"][0] and angle_to((0, 0), (1, 0)) == 0.0
+
+
+def test_summary_lists_colours_in_the_order_they_dropped():
+    """A hand-made log: the pink drops before the blue although its row comes later."""
+    ids = ("cue", "red1", "blue", "pink")
+    vals = snooker_values(ids)
+    ev = np.array([[0, 0, 3], [2, 3, 2], [2, 2, 5], [3, 0, -1]])  # cue hits pink; pink drops; blue drops; cue stops
+    s = summarize_snooker(ev, np.array([-1, -1, 5, 2]), vals)
+    assert s.first == "pink" and s.colours_potted == ("pink", "blue") and s.reds_potted == 0 and not s.cue_pocketed
