@@ -5,6 +5,7 @@
 - three-cushion: the search player (:func:`billiards_env.players.three_cushion.three_cushion_shot`, spin model) from
   ``N`` random positions of the three balls: how often it finds a point, how often the shot scores when played
   exactly and under FastFiz-like shot noise (angle 0.125 deg, speed 3.75 %, tip 0.5 mm), and its decision time;
+  the geometric player's scoring rate from the same positions (spin model and rolling law);
 - snooker: ``F`` frames of each player against itself from the break-off (rolling model), with and without that
   noise: breaks (a visit's points; the mean over visits that scored, and the highest), points per visit, and the
   decision time; with ``--match-frames M``, ``M`` frames of search against geometric under that noise.
@@ -27,7 +28,7 @@ from billiards_env.physics.layout import CAROM_IDS, place_random, snooker_balls
 from billiards_env.physics.table import CAROM_BALL_MASS, CAROM_BALL_RADIUS, carom_table, snooker_table
 from billiards_env.players.referee import noisy, snooker_turn
 from billiards_env.players.snooker import snooker_geometric_shot, snooker_search_shot
-from billiards_env.players.three_cushion import three_cushion_shot
+from billiards_env.players.three_cushion import three_cushion_geometric_shot, three_cushion_shot
 from billiards_env.rules.snooker import Snooker, snooker_values
 from billiards_env.rules.three_cushion import summarize_carom
 
@@ -72,6 +73,27 @@ def three_cushion(n: int, seed: int) -> dict[str, Any]:
     return {"positions": n, "found": found / n, "scored": scored / n, "scored_fastfiz_noise": scored_noisy / n,
             "decision_s_median": float(np.median(times)), "decision_s_mean": float(np.mean(times)),
             "shots_simulated_median": float(np.median(sims))}
+
+
+def three_cushion_geometric(n: int, seed: int) -> dict[str, Any]:
+    """The geometric player from the same random positions, under the spin model and the rolling law."""
+    table = carom_table()
+    out: dict[str, Any] = {"positions": n}
+    for law in ("spin", "rolling"):
+        sim = Simulator(table, Physics(friction=law))
+        rng = np.random.default_rng(seed)
+        scored, times = 0, []
+        for _ in range(n):
+            balls = random_carom(rng, table)
+            t0 = time.perf_counter()
+            shot = three_cushion_geometric_shot(balls, table, sim.physics, 0, 1, 2)
+            times.append(time.perf_counter() - t0)
+            spin = {"side": shot.side, "top": shot.top} if law == "spin" else {}
+            res = sim.run(balls.strike(0, shot.angle, shot.speed, **spin), validate=False)
+            ev = np.stack([res.events.kind, res.events.ball, res.events.other], axis=1)
+            scored += summarize_carom(ev, (0, 1, 2)).point
+        out[law] = {"scored": scored / n, "decision_s_median": float(np.median(times))}
+    return out
 
 
 def snooker_frames(player: str | tuple[str, str], frames: int, seed: int, noise: tuple[float, float, float],
@@ -141,6 +163,11 @@ def main(argv: list[str] | None = None) -> int:
               f"{r['found']:.1%}, scored {r['scored']:.1%} (exact), {r['scored_fastfiz_noise']:.1%} (FastFiz-like "
               f"noise); decision {r['decision_s_median'] * 1e3:.0f} ms median ({r['shots_simulated_median']:.0f} "
               "shots simulated)")
+        g = three_cushion_geometric(args.three_cushion, args.seed)
+        out["three_cushion_geometric"] = g
+        print(f"three-cushion geometric, the same positions: scored {g['spin']['scored']:.1%} under the spin model, "
+              f"{g['rolling']['scored']:.1%} under the rolling law; decision "
+              f"{g['spin']['decision_s_median'] * 1e3:.0f} ms median")
     if args.frames:
         out["snooker"] = []
         print("| snooker player | noise | frames | shots | breaks | mean break | highest | points/visit | decision |")

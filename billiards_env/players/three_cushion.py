@@ -1,4 +1,5 @@
-"""A three-cushion player: search over spin shots (:func:`three_cushion_shot`).
+"""Three-cushion players: search over spin shots (:func:`three_cushion_shot`), and a geometric baseline
+(:func:`three_cushion_geometric_shot`).
 
 Scoring in three-cushion is a matter of exact paths: the cue ball must meet both object balls with three cushions
 before the second, and side spin bends every rebound. So the player simulates: a sweep of directions (and aims at
@@ -28,11 +29,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from billiards_env.physics import Balls, Simulator
-from billiards_env.physics.aim import offset_aim_angle
+from billiards_env.physics import Balls, Physics, Simulator, Table
+from billiards_env.physics.aim import aim_angle, deflected_cue_velocity, offset_aim_angle, ray_cushion_hit
 from billiards_env.physics.batch import run_shots
+from billiards_env.physics.codes import ROLLING
+from billiards_env.physics.motion import launch_speed, speed_after_distance, stop_distance
 from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.rules.three_cushion import CUSHIONS_NEEDED, scan_carom_batch
+
+#: Tip offset (ball radii above the centre) that sets a struck ball rolling at once (``2/5 R``).
+NATURAL_ROLL = 0.4
 
 
 @dataclass(frozen=True)
@@ -164,4 +170,117 @@ def three_cushion_shot(sim: Simulator, balls: Balls, cue: int, opponent: int, re
                      int(cush[k]), n_sim)
 
 
-__all__ = ["CaromSearchSettings", "CaromShot", "three_cushion_shot"]
+# --- the geometric baseline ------------------------------------------------------------------------------------------
+
+def _trace(x: float, y: float, ux: float, uy: float, speed: float, bx: float, by: float, contact: float,
+           table: Table, r: float, decel: float, max_bounces: int) -> tuple[int, float, float]:
+    """A lone ball from ``(x, y)`` along ``(ux, uy)`` at ``speed`` on straight lines, reflecting off the cushions
+    (the normal component scaled by the table's restitution) and slowing by the rolling law: ``(cushions, miss,
+    path)``: the cushions it touched before it first came within ``contact`` of ``(bx, by)`` (-1 if it never did
+    before stopping or ``max_bounces``), how far inside ``contact`` its path passed (the margin), and the path
+    length to there."""
+    e = table.cushion_restitution
+    path = 0.0
+    for bounce in range(max_bounces + 1):
+        reach = stop_distance(speed, ROLLING, decel, 0.0, 0.0)
+        t_wall, wall = ray_cushion_hit(x, y, ux, uy, table.length, table.width, r)
+        seg = min(reach, t_wall)
+        t = min(max((bx - x) * ux + (by - y) * uy, 0.0), seg)  # closest approach on this segment
+        d = math.hypot(x + t * ux - bx, y + t * uy - by)
+        if d < contact:
+            back = math.sqrt(max(contact * contact - d * d, 0.0))  # where it first touches
+            return bounce, contact - d, path + max(t - back, 0.0)
+        if reach <= t_wall:
+            return -1, 0.0, path
+        speed = speed_after_distance(speed, t_wall, ROLLING, decel, 0.0)
+        x, y = x + t_wall * ux, y + t_wall * uy
+        path += t_wall
+        vx, vy = speed * ux, speed * uy
+        if wall in (0, 1):
+            vx = -e * vx
+        else:
+            vy = -e * vy
+        speed = math.hypot(vx, vy)
+        if speed <= 1e-6:
+            return -1, 0.0, path
+        ux, uy = vx / speed, vy / speed
+    return -1, 0.0, path
+
+
+def three_cushion_geometric_shot(balls: Balls, table: Table, physics: Physics, cue: int, opponent: int, red: int,
+                                 speed_range: tuple[float, float] = (0.5, 6.0), cuts: int = 61,
+                                 after_speeds: tuple[float, ...] = (1.2, 2.0, 3.0),
+                                 max_bounces: int = 6, red_first: bool = False) -> CaromShot:
+    """The geometric player's three-cushion shot, without the simulator: ball-first shots cutting each object
+    ball from thin to full (``cuts`` aims), the cue ball leaving along the collision law's deflection
+    (:func:`~billiards_env.physics.aim.deflected_cue_velocity`, no spin, no throw) at each of ``after_speeds``,
+    then bouncing off the cushions in straight lines (the table's restitution, the rolling law). A shot scores in
+    this model when that path meets the other ball after three cushions or more. Of each run of neighbouring
+    scoring aims the middle one is played, from the widest run (the margin for error). ``red_first``: only shots
+    that meet the red first (the opening shot). The tip stays in the centre; the model ignores the spin model's
+    sliding and curving, which is what the search player simulates."""
+    c = balls.pos[cue]
+    rc = float(balls.radius[cue])
+    mc = float(balls.mass[cue])
+    e_ball = physics.ball_restitution
+    decel = physics.deceleration
+    spin = physics.friction == "spin"
+    top = NATURAL_ROLL if spin else 0.0
+    lo, hi = speed_range
+    best: tuple[int, float, float, float] | None = None  # (run length, angle, speed, cushions)
+    for first, second in ((red, opponent), (opponent, red)) if not red_first else ((red, opponent),):
+        a = balls.pos[first]
+        b = balls.pos[second]
+        contact_a = rc + float(balls.radius[first])
+        contact_b = rc + float(balls.radius[second])
+        for v_after in after_speeds:
+            ok = np.zeros(cuts, bool)
+            shots = [(0.0, 0.0, 0)] * cuts
+            for q, f in enumerate(np.linspace(-0.95, 0.95, cuts)):
+                ang = offset_aim_angle(c, a, f * contact_a)
+                ux, uy = math.cos(ang), math.sin(ang)
+                along = (a[0] - c[0]) * ux + (a[1] - c[1]) * uy
+                off2 = contact_a * contact_a - ((a[0] - c[0]) * uy - (a[1] - c[1]) * ux) ** 2
+                if along <= 0.0 or off2 < 0.0:
+                    continue
+                d_cg = along - math.sqrt(off2)  # to the ghost ball
+                gx, gy = c[0] + d_cg * ux, c[1] + d_cg * uy
+                # the other ball must not be in the way to the first
+                t = min(max((b[0] - c[0]) * ux + (b[1] - c[1]) * uy, 0.0), d_cg)
+                if math.hypot(c[0] + t * ux - b[0], c[1] + t * uy - b[1]) < contact_b:
+                    continue
+                n = np.array([a[0] - gx, a[1] - gy]) / contact_a
+                w = deflected_cue_velocity(np.array([ux, uy]), n, e_ball, mc, float(balls.mass[first]))
+                if spin:  # a rolling cue ball keeps its roll: it curves to 5/7 of its new velocity + 2/7 of the old
+                    w = 5.0 / 7.0 * w + 2.0 / 7.0 * np.array([ux, uy])
+                keep = float(np.hypot(*w))  # cue speed kept per unit impact speed
+                if keep < 0.05:
+                    continue
+                cushions, _, _ = _trace(gx, gy, w[0] / keep, w[1] / keep, v_after, b[0], b[1], contact_b, table, rc,
+                                        decel, max_bounces)
+                if cushions < CUSHIONS_NEEDED:
+                    continue
+                v0 = launch_speed(d_cg, v_after / keep, ROLLING, decel, 0.0) if spin else \
+                    launch_speed(d_cg, v_after / keep, *physics.path_args)
+                if v0 > hi:
+                    continue
+                ok[q] = True
+                shots[q] = (ang, max(v0, lo), cushions)
+            k = 0
+            while k < cuts:  # runs of scoring aims: the middle of each
+                if not ok[k]:
+                    k += 1
+                    continue
+                start = k
+                while k < cuts and ok[k]:
+                    k += 1
+                mid = shots[(start + k - 1) // 2]
+                if best is None or k - start > best[0]:
+                    best = (k - start, mid[0], mid[1], mid[2])
+    if best is None:  # nothing in the model: a firm full hit on the red
+        return CaromShot(aim_angle(c, balls.pos[red]), float(min(max(3.0, lo), hi)), 0.0, top, False, 0.0, 0, 0)
+    run, angle, speed, cushions = best
+    return CaromShot(float(angle), float(speed), 0.0, top, True, run / cuts, int(cushions), 0)
+
+
+__all__ = ["CaromSearchSettings", "CaromShot", "three_cushion_shot", "three_cushion_geometric_shot"]

@@ -9,7 +9,8 @@ from billiards_env.physics.layout import CAROM_IDS, carom_balls
 from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.physics.table import CAROM_BALL_MASS, CAROM_BALL_RADIUS, carom_table
 from billiards_env.players.referee import three_cushion_turn
-from billiards_env.players.three_cushion import CaromSearchSettings, three_cushion_shot
+from billiards_env.players.three_cushion import (CaromSearchSettings, three_cushion_geometric_shot,
+                                                three_cushion_shot)
 from billiards_env.rules.three_cushion import ThreeCushion, summarize_carom
 
 TABLE = carom_table()
@@ -79,3 +80,20 @@ def test_turn_applies_the_call_and_keeps_the_balls_where_they_stop():
     assert call.point == shot.point and (nxt.shooter == 0) == call.point and not call.foul
     assert call.first == "red"  # the opening shot meets the red first
     assert np.all(balls.vel == 0.0) and not np.array_equal(balls.pos, balls_of(None).pos)
+
+
+@pytest.mark.parametrize("layout", [0, 2])
+def test_geometric_player_scores_in_the_rolling_model(layout):
+    """Without spin the straight-line model is the engine's: its shot scores (from these layouts)."""
+    sim = Simulator(TABLE, Physics())
+    balls = balls_of(LAYOUTS[layout])
+    shot = three_cushion_geometric_shot(balls, TABLE, sim.physics, 0, 1, 2, red_first=layout == 0)
+    assert shot.point and shot.cushions >= 3 and shot.side == shot.top == 0.0
+    res = sim.run(balls.strike(0, shot.angle, shot.speed))
+    s = summarize_carom(np.stack([res.events.kind, res.events.ball, res.events.other], axis=1), (0, 1, 2))
+    assert s.point and (layout != 0 or (s.first == "red" and s.cushions_before_first == 0))
+
+
+def test_geometric_player_rolls_the_cue_ball_under_the_spin_model():
+    shot = three_cushion_geometric_shot(balls_of(LAYOUTS[1]), TABLE, SIM.physics, 0, 1, 2)
+    assert shot.top == 0.4 and shot.side == 0.0 and 0.5 <= shot.speed <= 6.0
