@@ -84,6 +84,12 @@ def _declarations(state: SnookerState, value: int, free: bool) -> tuple[str | No
     return None, None
 
 
+def _worth(values: np.ndarray, state: SnookerState) -> np.ndarray:
+    """Points a pot of each row scores: its value when it is on, else (a free ball) the value of the ball on."""
+    on = ball_on_mask(values, state.on)
+    return np.where(on, np.maximum(values, 1), 1 if state.on == "red" else max(state.on_value, 1))
+
+
 def _with_cue(balls: Balls, cue: int, place: tuple[float, float] | None) -> Balls:
     if place is None:
         return balls
@@ -264,10 +270,11 @@ def snooker_geometric_shot(balls: Balls, sim: Simulator, state: SnookerState, va
     if state.ball_in_hand:
         place = d_placements(balls, sim, cue, targets, 1, sigma)[0]
     b = _with_cue(balls, cue, place)
+    worth = _worth(values, state)
     best, best_value = None, -1.0
     for cut in (MAX_CUT, math.radians(88.0)):
         for s in ghost_ball_shots(b, sim.table, sim.physics, cue, targets, speed_range, cut):
-            v = pot_probability(s.score, sigma) * max(int(values[s.target]), 1)
+            v = pot_probability(s.score, sigma) * worth[s.target]
             if s.clear and v > best_value:
                 best, best_value = s, v
         if best is not None:
@@ -321,7 +328,7 @@ class SnookerSearchSettings:
     placements: int = 3  #: places in the D searched from
 
 
-def _candidates(b: Balls, sim: Simulator, cue: int, targets: list[int], values: np.ndarray,
+def _candidates(b: Balls, sim: Simulator, cue: int, targets: list[int], values: np.ndarray, state: SnookerState,
                 speed_range: tuple[float, float], st: SnookerSearchSettings, spin: bool,
                 sigma: float) -> tuple[np.ndarray, np.ndarray]:
     """``(angle, speed, side, top)`` rows: each of the best ghost-ball shots at the angle offsets and speed factors
@@ -329,7 +336,8 @@ def _candidates(b: Balls, sim: Simulator, cue: int, targets: list[int], values: 
     shot under an angle error ``sigma`` (1 for the sweep)."""
     lo, hi = speed_range
     shots = ghost_ball_shots(b, sim.table, sim.physics, cue, targets, speed_range, math.radians(85.0))
-    shots.sort(key=lambda s: -pot_probability(s.score, st.ease_noise) * max(int(values[s.target]), 1))
+    worth = _worth(values, state)
+    shots.sort(key=lambda s: -pot_probability(s.score, st.ease_noise) * worth[s.target])
     spins = st.spins if spin else ((0.0, 0.0),)
     out = []
     chance = []
@@ -421,7 +429,7 @@ def snooker_search_shot(balls: Balls, sim: Simulator, state: SnookerState, value
     for place in places:
         b = _with_cue(balls, cue, place)
         exact = angle_noise == 0.0 and speed_noise == 0.0 and (not spin or tip_noise == 0.0)
-        shots, chance = _candidates(b, sim, cue, targets, values, speed_range, st, spin, sigma)
+        shots, chance = _candidates(b, sim, cue, targets, values, state, speed_range, st, spin, sigma)
         totals, scored = _evaluate(b, sim, state, values, cue, 0, shots, st, sigma, windows, False)
         if free_ok:  # a free ball: each shot judged with the ball it hits first (if not on) as the free ball
             f_tot, f_scored = _evaluate_free(b, sim, state, values, cue, shots, st, sigma, windows)
