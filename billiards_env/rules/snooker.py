@@ -627,7 +627,7 @@ class Snooker:
             free = first  # the first ball hit, not on, counts as the nominated free ball
         nominated = COLOUR_VALUES[info.nominated] if info.nominated is not None else 0
         potted = _mask(summary.colours_potted)
-        fouls_b, penalty, points, nom, respot, nxt, reds_after, colours_after, frame_end = judge(
+        fouls_b, penalty, points, nom, respot, nxt, _, _, frame_end = judge(
             code, nominated, free, state.reds, state.colour_mask, first, summary.reds_potted, potted,
             summary.cue_pocketed)
         fouls = tuple(f for f, bit in zip(FOULS, (_F_IN_OFF, _F_NO_HIT, _F_FIRST, _F_POT)) if fouls_b & bit)
