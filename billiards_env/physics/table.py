@@ -1,6 +1,7 @@
 """Table geometry: the playing area, its cushions and its pockets (SI units, origin at a corner)."""
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -99,3 +100,98 @@ class Table:
     def without_pockets(self) -> "Table":
         """A copy of this table with no pockets (a carom table)."""
         return self.with_pockets(np.zeros((0, 2)), np.zeros(0))
+
+
+# --- pocket sizes: a real pocket's mouth as a capture circle ---------------------------------------------------
+# A capture circle is not a pocket with jaws, so its radius is calibrated: the default pool table's circles
+# (CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS) admit a certain fraction of the entry width a WPA pocket of that
+# table has; another table's circles admit the same fraction of its own pockets' entry width. The entry width is
+# measured on the straight-in shot: a ball heading along the corner's diagonal, or square into a side pocket,
+# with its path offset sideways by ``d``; it enters the real pocket while ``d < (mouth - 2R) / 2`` and the capture
+# circle while ``d`` is below the half-widths below.
+
+#: Radius of a pool ball (m): the same number as ``balls.BALL_RADIUS`` (that module imports this one).
+POOL_BALL_RADIUS = 0.028575
+#: WPA pocket mouths (m, jaw to jaw) of the pool table the default capture radii stand for: the middles of the WPA
+#: ranges, corner 4 1/2 - 4 5/8 in, side 5 - 5 1/8 in.
+POOL_CORNER_MOUTH = 0.1159
+POOL_SIDE_MOUTH = 0.1286
+
+
+def corner_entry_half_width(capture_radius: float, ball_radius: float) -> float:
+    """Largest sideways offset ``d`` of a ball heading straight along a corner pocket's diagonal that still enters
+    the capture circle (centred on the corner) before its ball touches a cushion: ``(sqrt2 R + d)^2 + d^2 = r^2``
+    (the ball meets the cushion at ``sqrt2 R + d`` along the diagonal, ``d`` off it). 0 if even ``d = 0`` fails."""
+    a = math.sqrt(2.0) * ball_radius
+    disc = 2.0 * capture_radius * capture_radius - a * a
+    return max(0.0, 0.5 * (-a + math.sqrt(disc))) if disc > 0.0 else 0.0
+
+
+def corner_capture_radius(half_width: float, ball_radius: float) -> float:
+    """Inverse of :func:`corner_entry_half_width`: the corner capture radius with entry half-width ``half_width``."""
+    return math.hypot(math.sqrt(2.0) * ball_radius + half_width, half_width)
+
+
+def side_entry_half_width(capture_radius: float, ball_radius: float) -> float:
+    """Largest sideways offset ``d`` of a ball heading square into a side pocket (capture circle centred on the
+    cushion line) that still enters the circle before touching the cushion: ``d^2 + R^2 = r^2``."""
+    return math.sqrt(max(capture_radius * capture_radius - ball_radius * ball_radius, 0.0))
+
+
+def side_capture_radius(half_width: float, ball_radius: float) -> float:
+    """Inverse of :func:`side_entry_half_width`."""
+    return math.hypot(half_width, ball_radius)
+
+
+def capture_radii(corner_mouth: float, side_mouth: float, ball_radius: float) -> tuple[float, float]:
+    """Capture radii ``(corner, side)`` for pockets with these mouths (m, jaw to jaw) and balls of
+    ``ball_radius``, calibrated on the default pool table: each admits the same fraction of its real entry width
+    ``(mouth - 2R) / 2`` as the default table's circle of that kind admits of a WPA pocket's."""
+    for name, mouth in (("corner_mouth", corner_mouth), ("side_mouth", side_mouth)):
+        if not mouth > 2.0 * ball_radius:
+            raise SceneError(f"{name}: {mouth} m does not let a ball of radius {ball_radius} m through; "
+                             "a mouth must be wider than the ball")
+    k_corner = corner_entry_half_width(CORNER_POCKET_RADIUS, POOL_BALL_RADIUS) / (
+        0.5 * (POOL_CORNER_MOUTH - 2.0 * POOL_BALL_RADIUS))
+    k_side = side_entry_half_width(SIDE_POCKET_RADIUS, POOL_BALL_RADIUS) / (
+        0.5 * (POOL_SIDE_MOUTH - 2.0 * POOL_BALL_RADIUS))
+    return (corner_capture_radius(k_corner * 0.5 * (corner_mouth - 2.0 * ball_radius), ball_radius),
+            side_capture_radius(k_side * 0.5 * (side_mouth - 2.0 * ball_radius), ball_radius))
+
+
+# --- the snooker table ------------------------------------------------------------------------------------------
+#: WPBSA: playing area 11 ft 8 1/2 in x 5 ft 10 in (3569 x 1778 mm) within the cushion faces.
+SNOOKER_LENGTH = 3.569
+SNOOKER_WIDTH = 1.778
+#: WPBSA: balls 52.5 mm across; a set weighs about 142 g a ball (the rules allow 3 g between the balls of a set).
+SNOOKER_BALL_RADIUS = 0.02625
+SNOOKER_BALL_MASS = 0.142
+#: Pocket mouths (m, jaw to jaw). The WPBSA's pocket templates are not published; these are pooltool's generic
+#: snooker table (``SnookerTableSpecs``: corner 0.083, side 0.087), within the figures quoted for match tables.
+SNOOKER_CORNER_MOUTH = 0.083
+SNOOKER_SIDE_MOUTH = 0.087
+#: The snooker table's capture radii (m): about 0.047 (corner) and 0.034 (middle), see :func:`capture_radii`.
+SNOOKER_CORNER_POCKET_RADIUS, SNOOKER_SIDE_POCKET_RADIUS = capture_radii(
+    SNOOKER_CORNER_MOUTH, SNOOKER_SIDE_MOUTH, SNOOKER_BALL_RADIUS)
+
+
+def snooker_table(cushion_restitution: float = DEFAULT_CUSHION_RESTITUTION) -> Table:
+    """The 12 ft snooker table: 3.569 x 1.778 m, six pockets in the pool order (bottom-left, bottom-middle,
+    bottom-right, top-left, top-middle, top-right; ``x = 0`` is the baulk cushion) with snooker-sized capture
+    circles for balls of :data:`SNOOKER_BALL_RADIUS`."""
+    xy, r = default_pockets(SNOOKER_LENGTH, SNOOKER_WIDTH, SNOOKER_CORNER_POCKET_RADIUS, SNOOKER_SIDE_POCKET_RADIUS)
+    return Table(SNOOKER_LENGTH, SNOOKER_WIDTH, cushion_restitution, xy, r)
+
+
+# --- the carom (three-cushion) table ----------------------------------------------------------------------------
+#: UMB match billiard: playing area 2.84 x 1.42 m, no pockets.
+CAROM_LENGTH = 2.84
+CAROM_WIDTH = 1.42
+#: UMB: balls 61 - 61.5 mm across, 205 - 220 g.
+CAROM_BALL_RADIUS = 0.03075
+CAROM_BALL_MASS = 0.21
+
+
+def carom_table(cushion_restitution: float = DEFAULT_CUSHION_RESTITUTION) -> Table:
+    """The match carom table for three-cushion: 2.84 x 1.42 m, no pockets."""
+    return Table(CAROM_LENGTH, CAROM_WIDTH, cushion_restitution, np.zeros((0, 2)), np.zeros(0))
