@@ -587,8 +587,9 @@ def SKIP_KEYS(pg: Any) -> tuple[int, ...]:  # noqa: N802 - a constant that needs
 
 
 def call_turn(call: Any) -> dict[str, Any]:
-    """A referee's :class:`~billiards_env.rules.Call` as a turn-log entry (the keys of the env's
-    ``info["opponent_turns"]``, plus ``turn_over``, ``game_over``, ``winner`` and ``push_out``)."""
+    """A referee's :class:`~billiards_env.rules.Call` (or the session's verdict on it) as a turn-log entry (the keys
+    of the env's ``info["opponent_turns"]``, plus ``turn_over``, ``game_over``, ``winner`` and ``push_out``)."""
+    call = getattr(call, "call", call)  # a session's Verdict holds the ruleset's call
     return {
         "pocketed": tuple(n for n in call.pocketed if n not in call.respot),
         "foul": bool(call.foul), "foul_reason": call.reason if call.foul else None, "call": call.reason,

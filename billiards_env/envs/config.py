@@ -509,7 +509,7 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
         _require(cfg.n_object_balls == spec.n_object_balls, "n_object_balls",
                  f"{cfg.task} is played with {spec.n_object_balls} object balls, got {cfg.n_object_balls}")
         try:
-            spec.logic.options(cfg.rules)
+            spec.session_class.options(cfg.rules)
         except (RulesError, TypeError) as exc:
             raise ConfigError(f"rules: {exc}") from None
     else:

@@ -15,18 +15,15 @@ Reward (the agent's): ``+win_reward`` for a won game, ``-loss_penalty`` for a lo
 """
 from __future__ import annotations
 
+import importlib
 import inspect
 from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
 
 from billiards_env.games import GameSpec, game_spec
-from billiards_env.games.hud import game_hud
-from billiards_env.games.session import GameSession
+from billiards_env.games.session import GameSession, Verdict
 from billiards_env.physics.aim import aim_angle
-from billiards_env.players import make_player
-from billiards_env.rules import ANYWHERE, GameState, RulesError
-from billiards_env.rules.state import Call
 from billiards_env.shot_path import CueShot, PlayedShot
 from billiards_env.table_state import TableState
 
@@ -36,46 +33,57 @@ from .tasks import Driver, PotTask, Task
 if TYPE_CHECKING:  # pragma: no cover
     from .config import EnvConfig
 
-#: Shots one turn of the opponent may take before the env stops it (a run-out of 15 balls needs 16).
+#: Shots one turn of the opponent may take (at least; max_shots if larger) before the env raises (a run-out of 15 balls
+#: needs 16).
 MAX_TURN_SHOTS = 60
 #: Racks drawn at most at reset when the opponent breaks and wins before the agent shoots.
 MAX_RERACKS = 20
+
+
+def make_game_player(session_class: Any, name: str, seed: int | None = 0) -> Any:
+    """The built-in player ``name`` of a game (its session's ``players``), e.g. ``"geometric"``."""
+    try:
+        path = session_class.players[name]
+    except KeyError:
+        raise ValueError(f"unknown player {name!r} for this game; use one of "
+                         f"{', '.join(session_class.players)}") from None
+    module, _, attr = path.partition(":")
+    return getattr(importlib.import_module(module), attr)(seed=seed)
 
 
 class GameTask(Task):
     """A game under its rules (see the module docstring). The agent is player 0."""
 
     has_ball_in_hand = True
-    option_keys = ("ball_in_hand", "groups", "break_shot")
 
     def __init__(self, config: "EnvConfig", state: TableState, spec: GameSpec) -> None:
         super().__init__(config, state)
         self.spec = spec
         self.name = spec.name
-        self.session = GameSession(spec, config.rules, state)
+        self.session: GameSession = spec.session_class(spec, config.rules, state)
         self.declarations = self.session.declarations
-        self.n_features = spec.logic.n_features
-        self.ids = state.ids
+        self.n_features = self.session.n_features
+        self.option_keys = self.session.option_keys
         self.agent = 0
         #: Whether the opponent's turns are played inside ``step`` (single-agent mode).
         self.auto_opponent = True
         self.opponent: Any = None
         self._opponent_codec = False  # the opponent's act takes an action type (see set_opponent)
         if config.opponent is not None:
-            self.set_opponent(make_player(config.opponent, seed=0))
+            self.set_opponent(config.opponent)
         #: The players' names in the HUD (None: "agent" and the opponent's name).
         self.player_names: tuple[str, str] | None = None
         self._ease = 0.0  # the next shot's ease after the last call (position_reward)
 
     # --- the game, for readers ------------------------------------------------------------------------------------
     @property
-    def state(self) -> GameState:
-        """The rules' state (shooter, ball in hand, groups, fouls in a row, game over, winner); setting it
-        continues the game from there (a situation set up by hand)."""
+    def state(self) -> Any:
+        """The rules' state (shooter, game over, winner, and the game's own fields); setting it continues the game
+        from there (a situation set up by hand)."""
         return self.session.state
 
     @state.setter
-    def state(self, value: GameState) -> None:
+    def state(self, value: Any) -> None:
         self.session.set_state(value)
 
     @property
@@ -83,8 +91,13 @@ class GameTask(Task):
         return self.session.rules
 
     @property
-    def last_call(self) -> Call | None:
+    def last_call(self) -> Any:
+        """The ruleset's call on the last shot (its own fields; :attr:`verdict` sums it up alike for every game)."""
         return self.session.last_call
+
+    @property
+    def verdict(self) -> Verdict | None:
+        return self.session.verdict
 
     @property
     def score(self) -> Any:
@@ -92,12 +105,13 @@ class GameTask(Task):
 
     # --- configuration -------------------------------------------------------------------------------------------
     def set_opponent(self, policy: Any) -> None:
-        """The opponent's policy: a player of :mod:`billiards_env.players` (or any object whose ``act(state, obs,
-        codec)`` takes a table state and the action type to act in), an object with ``act(env, obs)``, an SB3-style
-        model (``predict``), a callable ``obs -> action``, or None (play alone). A name (``"geometric"``,
-        ``"search"``, ``"random"``) makes that player. Anything else raises ``TypeError`` now, not at the next step."""
+        """The opponent's policy: a player (an object whose ``act(state, obs, codec)`` takes a table state and the
+        action type to act in, as the players of :mod:`billiards_env.players` do), an object with ``act(env, obs)``,
+        an SB3-style model (``predict``), a callable ``obs -> action``, or None (play alone). A name (``"geometric"``,
+        ``"search"``, ``"random"``) makes that player of this game. Anything else raises ``TypeError`` now, not at
+        the next step."""
         if isinstance(policy, str):
-            policy = make_player(policy, seed=0)
+            policy = make_game_player(self.spec.session_class, policy)
         if policy is not None and not (hasattr(policy, "act") or hasattr(policy, "predict") or callable(policy)):
             raise TypeError(f"opponent: expected a player (act), a model (predict), a callable obs -> action, a "
                             f"player's name or None; got {type(policy).__name__}")
@@ -131,26 +145,19 @@ class GameTask(Task):
             raise ValueError(f"reset options: {', '.join(map(repr, given))} set up a table by hand and need "
                              "'positions' ((N, 2) metres) too; without positions the game racks as usual")
         s.last_call = None
+        s.verdict = None
         s.score.new_game()
         if "positions" in opts:
-            try:
-                state = GameState(self.spec.name, s.numbers_on(), shooter=self.agent,
-                                  ball_in_hand=opts.get("ball_in_hand", False), groups=opts.get("groups"),
-                                  break_shot=opts.get("break_shot", False))
-            except RulesError as exc:
-                raise ValueError(f"reset options: {exc}") from None
-            if not isinstance(state.break_shot, (bool, np.bool_)):
-                raise ValueError(f"reset options['break_shot']: expected True or False, got {state.break_shot!r}")
-            s.set_state(state)
+            s.setup(opts, self.agent)
             return self._info(None, [])
         for _ in range(MAX_RERACKS):
-            s.order_rack(rng, self.config.placement)
+            s.new_game(rng, self.config.placement)
             first = {"agent": self.agent, "opponent": 1 - self.agent}.get(self.config.first_shooter)
             if first is None:
                 first = int(rng.integers(2))
             if first != self.agent and self.opponent is None and self.auto_opponent:
                 first = self.agent  # alone: the agent breaks
-            s.set_state(s.rules.initial_state(first_shooter=first))
+            s.start(first)
             opening = self.config.opening
             if opening == "either":
                 opening = "ball_in_hand" if rng.integers(2) else "break"
@@ -159,7 +166,7 @@ class GameTask(Task):
             if first == self.agent or not self.auto_opponent or self.opponent is None:
                 return self._info(None, [])
             turns = self._opponent_turn(driver)
-            if not s.state.game_over:
+            if not s.game_over:
                 return self._info(None, turns)
             state.balls.on_table.fill(True)  # the opponent won from the break: rack again
             state.balls.vel.fill(0.0)
@@ -168,76 +175,71 @@ class GameTask(Task):
         raise RuntimeError("the opponent won every game before the agent's first shot")  # pragma: no cover
 
     def _open_with_ball_in_hand(self, state: TableState, first: int, driver: Driver) -> None:
-        """The ``ball_in_hand`` opening: a break played by the env (full speed from where the cue ball stands, the
-        head spot, at the nearest legal ball, with the env's shot noise), the game's last ball (9-ball: the 9,
-        8-ball: the 8) respotted if it dropped, the others left down, and ``first`` to shoot with the cue ball in
-        hand anywhere on an open table."""
+        """The ``ball_in_hand`` opening (pool games): a break played by the env (full speed from where the cue ball
+        stands, the head spot, at the nearest legal ball, with the env's shot noise), then the session's opening
+        (the game's last ball respotted, ``first`` to shoot with the cue ball in hand anywhere)."""
         s = self.session
         b = state.balls
         rows = s.legal_rows()
         cue = b.pos[0]
         target = min(rows, key=lambda j: float(np.hypot(*(b.pos[j] - cue))))
         driver.play(CueShot(aim_angle(cue, b.pos[target]), float(self.config.speed_max)), "table")
-        s.respot_opening()
-        s.set_state(GameState(self.spec.name, s.numbers_on(), shooter=first, ball_in_hand=ANYWHERE, groups=None,
-                              break_shot=False))
+        s.open_with_ball_in_hand(first)
 
     # --- shots ----------------------------------------------------------------------------------------------------
     def before_shot(self, shot: CueShot) -> None:
         self.session.begin_shot(shot)
 
-    def _judge(self, state: TableState, played: PlayedShot) -> Call:
+    def _judge(self, state: TableState, played: PlayedShot) -> Verdict:
         """Call a shot just played and apply the call (the session); note the next shot's ease for shaping."""
-        call = self.session.judge(played.outcome)
+        v = self.session.judge(played.outcome)
         self._ease = 0.0
-        if self.config.position_reward and not call.game_over and not call.turn_over and \
-                (call.shooter == self.agent or not self.auto_opponent):
+        if self.config.position_reward and not v.game_over and not v.turn_over and \
+                (v.shooter == self.agent or not self.auto_opponent):
             self._ease = next_shot_ease(state, self.config.candidate_slots)
-        return call
+        return v
 
     def on_shot(self, state: TableState, played: PlayedShot, shots: int, driver: Driver
                 ) -> tuple[float, bool, bool, dict[str, Any]]:
         c = self.config
-        call = self._judge(state, played)
-        reward = self._shaping(call, self.agent)
+        v = self._judge(state, played)
+        reward = self._shaping(v, self.agent)
         turns: list[dict[str, Any]] = []
         practice_over = False
         s = self.session
-        if not s.state.game_over and s.state.shooter != self.agent and self.auto_opponent:
+        if not s.game_over and s.shooter != self.agent and self.auto_opponent:
             if self.opponent is None:
                 practice_over = True
             else:
                 turns = self._opponent_turn(driver)
-        st = s.state
-        if st.game_over:
-            reward += self._result_reward(st.winner, self.agent)
-        terminated = bool(st.game_over or practice_over)
+        if s.game_over:
+            reward += self._result_reward(s.winner, self.agent)
+        terminated = bool(s.game_over or practice_over)
         truncated = bool(not terminated and shots >= c.max_shots)
-        return float(reward), terminated, truncated, self._info(call, turns)
+        return float(reward), terminated, truncated, self._info(v, turns)
 
-    def reward_of(self, call: Call, player: int) -> float:
-        """``player``'s reward for the one shot judged by ``call`` (whoever shot it): the shaping of its own shot,
+    def reward_of(self, verdict: Verdict, player: int) -> float:
+        """``player``'s reward for the one shot judged ``verdict`` (whoever shot it): the shaping of its own shot,
         plus the win/loss reward if the shot ended the game. The two-player env gives each player its own."""
-        r = self._shaping(call, player)
-        if call.game_over:
-            r += self._result_reward(call.winner, player)
+        r = self._shaping(verdict, player)
+        if verdict.game_over:
+            r += self._result_reward(verdict.winner, player)
         return float(r)
 
     def _result_reward(self, winner: int | None, player: int) -> float:
         c = self.config
         return c.win_reward if winner == player else -c.loss_penalty
 
-    def _shaping(self, call: Call, player: int) -> float:
+    def _shaping(self, v: Verdict, player: int) -> float:
         c = self.config
         r = 0.0
-        if call.shooter != player:
+        if v.shooter != player:
             return r
-        if call.foul:
+        if v.foul:
             r -= c.foul_penalty
         elif c.pot_reward:
-            counted = [n for n in call.pocketed if n not in call.respot]
-            r += c.pot_reward * len(counted)
-        if c.position_reward and call is self.session.last_call:
+            r += c.pot_reward * v.scored
+        if c.position_reward and v is self.session.verdict:
             r += c.position_reward * self._ease
         return r
 
@@ -245,52 +247,51 @@ class GameTask(Task):
         """Let the opponent shoot until the agent's turn or the end of the game; one dict per shot."""
         s = self.session
         turns: list[dict[str, Any]] = []
-        while not s.state.game_over and s.state.shooter != self.agent and len(turns) < MAX_TURN_SHOTS:
+        cap = max(MAX_TURN_SHOTS, self.config.max_shots)
+        while not s.game_over and s.shooter != self.agent and len(turns) < cap:
             shot = driver.opponent_shot()
             self.before_shot(shot)
             played = driver.play(shot, "opponent")
-            call = self._judge(s.table, played)
-            turns.append(self._turn_info(call, played))
-        if not s.state.game_over and s.state.shooter != self.agent:  # pragma: no cover - a stuck opponent
-            st = s.state
-            s.set_state(GameState(st.game, st.on_table, shooter=self.agent, ball_in_hand=ANYWHERE, groups=st.groups,
-                                  break_shot=False))
+            turns.append(self._turn_info(self._judge(s.table, played), played))
+        if not s.game_over and s.shooter != self.agent:  # pragma: no cover - a stuck opponent
+            raise RuntimeError(f"the opponent took {cap} shots in one turn without the game ending or the turn "
+                               "passing; raise max_shots if its game allows longer turns")
         return turns
 
-    def _turn_info(self, call: Call, played: PlayedShot) -> dict[str, Any]:
+    def _turn_info(self, v: Verdict, played: PlayedShot) -> dict[str, Any]:
         """What one opponent shot did (an entry of ``info["opponent_turns"]``)."""
         o = played.outcome
-        ids = self.ids
+        ids = self.session.table.ids
         return {
-            "shooter": call.shooter,
+            "shooter": v.shooter,
             "pocketed": tuple(ids[i] for i in o.pocketed),
             "scratch": o.scratch,
             "first_contact": ids[o.first_contact] if o.first_contact >= 0 else None,
-            "foul": bool(call.foul),
-            "foul_reason": call.reason if call.foul else None,
-            "call": call.reason,
-            "turn_over": bool(call.turn_over),
+            "foul": v.foul,
+            "foul_reason": v.reason if v.foul else None,
+            "call": v.reason,
+            "turn_over": v.turn_over,
             "angle": played.shot.angle,
             "speed": played.shot.speed,
+            **self.session.call_info(v),
         }
 
-    def _info(self, call: Call | None, turns: list[dict[str, Any]]) -> dict[str, Any]:
-        s = self.session.state
+    def _info(self, v: Verdict | None, turns: list[dict[str, Any]]) -> dict[str, Any]:
+        s = self.session
         info: dict[str, Any] = {
-            "foul": bool(call.foul) if call is not None else False,
-            "foul_reason": call.reason if (call is not None and call.foul) else None,
-            "turn_over": bool(call.turn_over) if call is not None else False,
-            "ball_in_hand": s.ball_in_hand if not s.game_over else False,
+            "foul": bool(v.foul) if v is not None else False,
+            "foul_reason": v.reason if (v is not None and v.foul) else None,
+            "turn_over": bool(v.turn_over) if v is not None else False,
             "winner": -1 if s.winner is None else s.winner,  # an int always (vector envs stack info values)
             "is_success": bool(s.game_over and s.winner == self.agent),
             "opponent_shots": len(turns),
             "opponent_turns": turns,
             "shooter": s.shooter,
-            "groups": s.groups,
-            "legal_targets": self.session.rules.legal_targets(s) if not s.game_over else (),
+            "legal_targets": s.legal_names(),
+            **s.call_info(v),
         }
-        if call is not None:
-            info["call"] = call.reason
+        if v is not None:
+            info["call"] = v.reason
         return info
 
     # --- what is drawn --------------------------------------------------------------------------------------------
@@ -308,8 +309,8 @@ class GameTask(Task):
         return "agent", str(getattr(opp, "name", None) or type(opp).__name__)
 
     def hud(self) -> dict[str, Any]:
-        """What the game shows on screen (:func:`~billiards_env.games.hud.game_hud`)."""
-        return game_hud(self.session, self.names())
+        """What the game shows on screen (its session's HUD)."""
+        return self.session.hud(self.names())
 
 
 def as_policy(policy: Any) -> Callable[[Any, Any], np.ndarray]:
@@ -332,4 +333,4 @@ def task_factory(config: "EnvConfig", state: TableState) -> Task:
     return GameTask(config, state, game_spec(config.task))
 
 
-__all__ = ["GameTask", "MAX_TURN_SHOTS", "MAX_RERACKS", "as_policy", "task_factory"]
+__all__ = ["GameTask", "MAX_TURN_SHOTS", "MAX_RERACKS", "as_policy", "task_factory", "make_game_player"]

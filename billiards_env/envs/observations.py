@@ -13,8 +13,8 @@
   ``candidates`` action type chooses among (:mod:`billiards_env.envs.candidates`), a fixed number of slots of 12
   values each (pocket, cut, distances, ease, clear paths, scratch risk, speed), best first.
 
-A game appends its features (the turn, ball in hand, group...: :attr:`GameLogic.features
-<billiards_env.games.logic.GameLogic>`), seen by the shooter or by the player asked for (the two-player env).
+A game appends its features (the turn, ball in hand, group...: its session's ``features``,
+:mod:`billiards_env.games`), seen by the shooter or by the player asked for (the two-player env).
 Every type reads a :class:`~billiards_env.table_state.TableState`, never the env: the single env, the native vector
 env (one state per table) and a trained player observe through the same code.
 """

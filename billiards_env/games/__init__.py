@@ -1,10 +1,9 @@
 """billiards_env.games: the games played on the tables, above the rules and below the envs (no Gymnasium).
 
 - :mod:`.registry`: :data:`GAMES`, one :class:`GameSpec` per game: the one list every other module reads;
-- :mod:`.logic`: :class:`GameLogic`, what a game does besides its rules (rack order, declarations, features, HUD);
+- :mod:`.session`: :class:`GameSession`, one game in progress on a table state (judges shots, applies the calls,
+  tells who is to shoot and what they may do, the features an agent observes, the HUD); each game subclasses it;
 - :mod:`.pool`: 9-ball and 8-ball;
-- :mod:`.session`: :class:`GameSession`, one game in progress on a table state (judges shots, respots balls,
-  tells who is to shoot and what they may do);
 - :mod:`.hud`: the plain data of a game's HUD (the score, the call in words).
 
 Importing this package loads only the registry; the rest loads on use.

@@ -1,23 +1,30 @@
-"""9-ball and 8-ball: their :class:`~.logic.GameLogic` (the rules themselves are :mod:`billiards_env.rules`).
+"""9-ball and 8-ball: their session (:class:`PoolSession`; the rules themselves are :mod:`billiards_env.rules`).
 
 Both are pool games on a pool table: the cue ball in hand behind the head string (the kitchen) or anywhere, the
 same eleven game features, the rack ordered as the rules say (9-ball: the 1 at the apex, the 9 in the middle;
-8-ball: the 8 in the middle of the third row, a solid and a stripe in the back corners).
+8-ball: the 8 in the middle of the third row, a solid and a stripe in the back corners), and the ``ball_in_hand``
+opening (run-out practice: a break played for nobody, then the cue ball in hand anywhere).
 """
 from __future__ import annotations
 
 from dataclasses import replace
+from typing import Any, ClassVar
 
 import numpy as np
 
-from billiards_env.physics.layout import head_string_x
+from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, head_string_x, spot_cue_ball,
+                                          spot_object_ball)
+from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.physics.table import Table
-from billiards_env.rules import (EIGHT_BALL, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions, GameState,
-                                 NineBall, NineBallOptions, Ruleset)
+from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions,
+                                 GameState, NineBall, NineBallOptions, RulesError, ShotInfo, summarize_outcome)
+from billiards_env.rules.state import Call
+from billiards_env.table_state import Area, ShotView, TableState
 
-from .logic import Area, GameLogic
+from .hud import base_hud
+from .session import GameSession, Verdict
 
-#: The game features every pool game observes (see :func:`pool_features`).
+#: The game features every pool game observes (see :meth:`PoolSession.features`).
 N_POOL_FEATURES = 11
 
 
@@ -30,63 +37,232 @@ def pool_place_area(state: GameState, table: Table, radius: float) -> Area | Non
     return radius, x1, radius, table.width - radius
 
 
-def pool_features(rules: Ruleset, s: GameState, me: int) -> np.ndarray:
-    """The game seen by player ``me``: ball in hand (anywhere / kitchen), break shot, its lowest legal target / 15,
-    its group (solids, stripes), on the 8, its own and its opponent's fouls in a row / 2, push-out available, and
-    whether it is its turn (eleven values in [0, 1])."""
-    out = np.zeros(N_POOL_FEATURES, np.float32)
-    mine = s.shooter == me and not s.game_over
-    out[0] = 1.0 if (mine and s.ball_in_hand) else 0.0
-    out[1] = 1.0 if (mine and s.ball_in_hand == KITCHEN) else 0.0
-    out[2] = 1.0 if s.break_shot else 0.0
-    # The viewer's own targets (8-ball: its group) also when it is not its turn (the two-player env).
-    targets = rules.legal_targets(s if me == s.shooter else replace(s, shooter=me)) if not s.game_over else ()
-    out[3] = targets[0] / 15.0 if targets else 0.0
-    if s.groups is not None:
-        out[4] = 1.0 if s.groups[me] == SOLIDS else 0.0
-        out[5] = 1.0 if s.groups[me] == STRIPES else 0.0
-    out[6] = 1.0 if (s.game == EIGHT_BALL and targets == (8,)) else 0.0
-    out[7] = min(s.fouls_in_a_row[me] / 2.0, 1.0)
-    out[8] = min(s.fouls_in_a_row[1 - me] / 2.0, 1.0)
-    out[9] = 1.0 if s.push_out_available else 0.0
-    out[10] = 1.0 if mine else 0.0
-    return out
-
-
 def _order(fixed: dict[int, int], free: list[int], n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
     free = [free[k] for k in rng.permutation(len(free))]
     it = iter(free)
     return tuple(fixed[slot] if slot in fixed else next(it) for slot in range(n_slots))
 
 
-def nine_ball_rack(n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
-    """The diamond's numbers slot by slot: the 1 at the apex, the 9 in the middle, the others drawn."""
-    return _order({0: 1, 4: 9}, list(range(2, 9)), n_slots, rng)
+class PoolSession(GameSession):
+    """A pool game (9-ball, 8-ball; see the module docstring). Balls are numbered as their ids (``"cue"`` 0)."""
+
+    n_features = N_POOL_FEATURES
+    option_keys = ("ball_in_hand", "groups", "break_shot")
+    openings = ("break", "ball_in_hand", "either")
+    players = {"random": "billiards_env.players.random:RandomPlayer",
+               "geometric": "billiards_env.players.geometric:GeometricPlayer",
+               "search": "billiards_env.players.search:SearchPlayer"}
+    #: The ball the ``ball_in_hand`` opening respots if the break dropped it (the game's last ball).
+    opening_respot: ClassVar[int]
+
+    def __init__(self, spec: Any, rules: Any, table: TableState) -> None:
+        self.numbers = np.asarray(table.numbers, dtype=np.int64)
+        self.row_of = {int(n): i for i, n in enumerate(self.numbers.tolist())}
+        self._rack_slots: np.ndarray | None = None
+        super().__init__(spec, rules, table)
+
+    # --- the state ---------------------------------------------------------------------------------------------------
+    def numbers_on(self) -> tuple[int, ...]:
+        """Numbers of the object balls on the table (ascending rows)."""
+        on = self.table.balls.on_table
+        return tuple(int(n) for i, n in enumerate(self.numbers.tolist()) if on[i] and n)
+
+    def legal_rows(self) -> list[int]:
+        """Rows of the balls the shooter may hit first (the rules' legal targets)."""
+        return [self.row_of[n] for n in self.rules.legal_targets(self.state)]
+
+    def needs_called_pocket(self) -> bool:
+        """The shooter must call a pocket for the next shot (8-ball, on the 8)."""
+        return bool(self.rules.needs_called_pocket(self.state))
+
+    def new_game(self, rng: np.random.Generator, placement: str) -> None:
+        self.order_rack(rng, placement)
+
+    def start(self, first: int) -> None:
+        self.set_state(self.rules.initial_state(first_shooter=first))
+
+    def setup(self, options: dict[str, Any], shooter: int) -> None:
+        try:
+            state = GameState(self.spec.name, self.numbers_on(), shooter=shooter,
+                              ball_in_hand=options.get("ball_in_hand", False), groups=options.get("groups"),
+                              break_shot=options.get("break_shot", False))
+        except RulesError as exc:
+            raise ValueError(f"reset options: {exc}") from None
+        if not isinstance(state.break_shot, (bool, np.bool_)):
+            raise ValueError(f"reset options['break_shot']: expected True or False, got {state.break_shot!r}")
+        self.set_state(state)
+
+    def open_with_ball_in_hand(self, first: int) -> None:
+        """After the ``ball_in_hand`` opening's break (played by the env): the game's last ball back on its spot if
+        it dropped, the others left down, the cue ball on the table, and ``first`` to shoot with the cue ball in
+        hand anywhere on an open table."""
+        t = self.table
+        b = t.balls
+        r = float(b.radius[0])
+        last = self.row_of[self.opening_respot]
+        if not b.on_table[last]:
+            spot_object_ball(b.pos, b.on_table, r, t.table, last)
+        if not b.on_table[0]:
+            spot_cue_ball(b.pos, b.on_table, r, t.table)
+        self.set_state(GameState(self.spec.name, self.numbers_on(), shooter=first, ball_in_hand=ANYWHERE, groups=None,
+                                 break_shot=False))
+
+    def order_rack(self, rng: np.random.Generator, placement: str) -> None:
+        """Order a racked layout (``placement`` ``"rack"`` or ``"diamond"``) as the rules say, drawing from ``rng``."""
+        if placement not in ("rack", "diamond"):
+            return
+        pos = self.table.balls.pos
+        if self._rack_slots is None:
+            order = DIAMOND_ORDER if placement == "diamond" else RACK_ORDER
+            self._rack_slots = np.array([pos[self.row_of[n]] for n in order])
+        slots = self._rack_slots
+        for slot, number in enumerate(self.rack_order(len(slots), rng)):
+            pos[self.row_of[number]] = slots[slot]
+        self.table.changed()
+
+    def rack_order(self, n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
+        """The ball number of each rack slot, drawn as the rules say."""
+        raise NotImplementedError
+
+    # --- the view ----------------------------------------------------------------------------------------------------
+    def view(self, table: TableState) -> ShotView:
+        s = self.state
+        rows = self.legal_rows()
+        on = table.balls.on_table
+        area = pool_place_area(s, table.table, float(table.balls.radius[0]))
+        return ShotView(tuple(int(i) for i in rows if on[i] and i != 0), min(rows) if rows else None, area,
+                        bool(s.break_shot and not s.game_over), self.needs_called_pocket(), bool(s.push_out_available),
+                        s.shooter)
+
+    def features(self, player: int | None = None) -> np.ndarray:
+        """The game seen by the player: ball in hand (anywhere / kitchen), break shot, its lowest legal target / 15,
+        its group (solids, stripes), on the 8, its own and its opponent's fouls in a row / 2, push-out available,
+        and whether it is its turn (eleven values in [0, 1])."""
+        s = self.state
+        me = self.viewer(player)
+        out = np.zeros(N_POOL_FEATURES, np.float32)
+        mine = s.shooter == me and not s.game_over
+        out[0] = 1.0 if (mine and s.ball_in_hand) else 0.0
+        out[1] = 1.0 if (mine and s.ball_in_hand == KITCHEN) else 0.0
+        out[2] = 1.0 if s.break_shot else 0.0
+        # The viewer's own targets (8-ball: its group) also when it is not its turn (the two-player env).
+        targets = self.rules.legal_targets(s if me == s.shooter else replace(s, shooter=me)) \
+            if not s.game_over else ()
+        out[3] = targets[0] / 15.0 if targets else 0.0
+        if s.groups is not None:
+            out[4] = 1.0 if s.groups[me] == SOLIDS else 0.0
+            out[5] = 1.0 if s.groups[me] == STRIPES else 0.0
+        out[6] = 1.0 if (s.game == EIGHT_BALL and targets == (8,)) else 0.0
+        out[7] = min(s.fouls_in_a_row[me] / 2.0, 1.0)
+        out[8] = min(s.fouls_in_a_row[1 - me] / 2.0, 1.0)
+        out[9] = 1.0 if s.push_out_available else 0.0
+        out[10] = 1.0 if mine else 0.0
+        return out
+
+    # --- shots -------------------------------------------------------------------------------------------------------
+    def _call(self, outcome: ShotOutcome, shot: Any) -> tuple[Call, GameState]:
+        s = self.state
+        summary = summarize_outcome(outcome, self.numbers)
+        push = bool(shot is not None and shot.push and s.push_out_available)
+        pocket = shot.pocket if (shot is not None and self.needs_called_pocket()) else None
+        return self.rules.play(s, summary, ShotInfo(push_out=push, called_pocket=pocket))
+
+    def _apply(self, call: Call, outcome: ShotOutcome) -> None:
+        t = self.table
+        b = t.balls
+        r = float(b.radius[0])
+        for n in call.respot:
+            spot_object_ball(b.pos, b.on_table, r, t.table, self.row_of[n])
+        if not b.on_table[0]:
+            spot_cue_ball(b.pos, b.on_table, r, t.table)  # in hand for the next shooter
+
+    def _kept(self, call: Call) -> tuple[int, ...]:
+        return tuple(n for n in call.pocketed if n not in call.respot)
+
+    def _verdict(self, call: Call) -> Verdict:
+        return Verdict(call.shooter, bool(call.foul), call.reason, bool(call.turn_over), bool(call.game_over),
+                       call.winner, float(len(self._kept(call))), call)
+
+    def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
+        s = self.state
+        return {"ball_in_hand": s.ball_in_hand if not s.game_over else False, "groups": s.groups}
+
+    def _what(self) -> str | None:
+        call = self.last_call
+        if call is None:
+            return None
+        if call.push_out:
+            return "push-out"
+        kept = self._kept(call)
+        return f"pocketed {', '.join(map(str, kept))}" if kept else "no ball pocketed"
+
+    def hud(self, names: tuple[str, str]) -> dict[str, Any]:
+        """The HUD: the common keys, the groups, ball in hand (the kitchen's line), the ringed targets (9-ball the
+        lowest ball, 8-ball the 8 once it is the target), and the called pocket. While a shot is under way (the
+        frames of its animation) the cue ball is no longer in hand and the called pocket is ringed."""
+        s = self.state
+        over = s.game_over
+        targets = () if over else tuple(self.rules.legal_targets(s))
+        shot = self.shot_under_way
+        in_hand = False if (over or shot is not None) else s.ball_in_hand
+        calling = bool(not over and self.needs_called_pocket())
+        return {
+            **base_hud(self, names, self._what()),
+            "groups": s.groups,
+            "ball_in_hand": in_hand,
+            "kitchen_x": head_string_x(self.table.table) if in_hand == KITCHEN else None,
+            "targets": self.hud_targets(targets),
+            "call_pocket": calling and shot is None,
+            "called_pocket": shot.pocket if (calling and shot is not None) else None,
+        }
+
+    def hud_targets(self, targets: tuple[int, ...]) -> tuple[int, ...]:
+        """The balls the HUD rings."""
+        return ()
 
 
-def eight_ball_rack(n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
-    """The triangle's numbers slot by slot: the 8 in the middle of the third row, a solid and a stripe in the back
-    corners (which corner drawn), the others drawn."""
-    corner_solid = int(rng.integers(2))
-    solid = int(rng.choice(np.arange(1, 8)))
-    stripe = int(rng.choice(np.arange(9, 16)))
-    fixed = {4: 8, 10: solid if corner_solid else stripe, 14: stripe if corner_solid else solid}
-    return _order(fixed, [n for n in range(1, 16) if n not in fixed.values()], n_slots, rng)
+class NineBallSession(PoolSession):
+    """9-ball: the lowest ball first, the 9 on a legal shot wins (push-outs off by default in the envs)."""
+
+    ruleset = NineBall
+    options_type = NineBallOptions
+    env_option_defaults = {"push_out": False}
+    opening_respot = 9
+
+    @classmethod
+    def declared(cls, rules: Any) -> tuple[str, ...]:
+        return ("push",) if rules.options.push_out else ()
+
+    def rack_order(self, n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
+        """The diamond's numbers slot by slot: the 1 at the apex, the 9 in the middle, the others drawn."""
+        return _order({0: 1, 4: 9}, list(range(2, 9)), n_slots, rng)
+
+    def hud_targets(self, targets: tuple[int, ...]) -> tuple[int, ...]:
+        return targets[:1]
 
 
-NINE_BALL_LOGIC = GameLogic(
-    ruleset=NineBall, options_type=NineBallOptions, env_option_defaults={"push_out": False},
-    declarations=lambda rules: ("push",) if rules.options.push_out else (),
-    place_area=pool_place_area, features=pool_features, n_features=N_POOL_FEATURES,
-    hud_targets=lambda state, targets: targets[:1],
-    order_rack=nine_ball_rack, opening_respot=9)
+class EightBallSession(PoolSession):
+    """8-ball: groups, the 8 last and in the called pocket."""
 
-EIGHT_BALL_LOGIC = GameLogic(
-    ruleset=EightBall, options_type=EightBallOptions,
-    declarations=lambda rules: ("pocket",) if rules.options.call_eight else (),
-    place_area=pool_place_area, features=pool_features, n_features=N_POOL_FEATURES,
-    hud_targets=lambda state, targets: targets if targets == (8,) else (),
-    order_rack=eight_ball_rack, opening_respot=8)
+    ruleset = EightBall
+    options_type = EightBallOptions
+    opening_respot = 8
 
-__all__ = ["NINE_BALL_LOGIC", "EIGHT_BALL_LOGIC", "N_POOL_FEATURES", "pool_features", "pool_place_area", "nine_ball_rack",
-           "eight_ball_rack"]
+    @classmethod
+    def declared(cls, rules: Any) -> tuple[str, ...]:
+        return ("pocket",) if rules.options.call_eight else ()
+
+    def rack_order(self, n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
+        """The triangle's numbers slot by slot: the 8 in the middle of the third row, a solid and a stripe in the
+        back corners (which corner drawn), the others drawn."""
+        corner_solid = int(rng.integers(2))
+        solid = int(rng.choice(np.arange(1, 8)))
+        stripe = int(rng.choice(np.arange(9, 16)))
+        fixed = {4: 8, 10: solid if corner_solid else stripe, 14: stripe if corner_solid else solid}
+        return _order(fixed, [n for n in range(1, 16) if n not in fixed.values()], n_slots, rng)
+
+    def hud_targets(self, targets: tuple[int, ...]) -> tuple[int, ...]:
+        return targets if targets == (8,) else ()
+
+
+__all__ = ["PoolSession", "NineBallSession", "EightBallSession", "N_POOL_FEATURES", "pool_place_area"]

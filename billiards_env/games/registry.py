@@ -3,8 +3,9 @@
 Registration of the env ids, the config's list of tasks, the two-player envs, the league and the agents read
 :data:`GAMES`; an unknown game is an error, never another game. A spec is light (names and where things are), so
 reading the registry imports nothing but this module: ``import billiards_env`` registers the game ids without
-loading the rules. What a game does (its ruleset, rack, features, HUD words) is its :class:`~.logic.GameLogic`,
-loaded on first use from ``spec.logic_path``. Adding a game: ``docs/architecture.md``.
+loading the rules. What a game does (its ruleset, rack, features, HUD, players) is its session class (a
+:class:`~.session.GameSession`), loaded on first use from ``spec.session_path``. Adding a game:
+``docs/architecture.md``.
 """
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .logic import GameLogic
+    from .session import GameSession
 
 
 @dataclass(frozen=True)
@@ -22,8 +23,8 @@ class GameSpec:
     """One game: ``name`` (the config's ``task`` value, e.g. ``"nine_ball"``), ``title`` (``"9-ball"``),
     ``env_id`` and ``env_class`` (the registered single-agent id and its ``module:Class``), ``scene`` (its packaged
     scene YAML, ``billiards_env/envs/scenes/<scene>.yaml``), ``aec_module`` (its PettingZoo module in
-    :mod:`billiards_env.multi`), ``n_object_balls``, and ``logic_path`` (``module:attribute`` of its
-    :class:`~.logic.GameLogic`)."""
+    :mod:`billiards_env.multi`), ``n_object_balls``, and ``session_path`` (``module:Class`` of its
+    :class:`~.session.GameSession` subclass)."""
 
     name: str
     title: str
@@ -32,12 +33,12 @@ class GameSpec:
     scene: str
     aec_module: str
     n_object_balls: int
-    logic_path: str
+    session_path: str
 
     @property
-    def logic(self) -> "GameLogic":
-        """The game's :class:`~.logic.GameLogic` (imported on first use)."""
-        module, _, attr = self.logic_path.partition(":")
+    def session_class(self) -> "type[GameSession]":
+        """The game's session class (imported on first use)."""
+        module, _, attr = self.session_path.partition(":")
         return getattr(importlib.import_module(module), attr)
 
 
@@ -69,8 +70,8 @@ def game_of_env(env_id: str) -> GameSpec | None:
 
 
 register_game(GameSpec("nine_ball", "9-ball", "Billiards9Ball-v0", "billiards_env.envs.nine_ball:NineBallEnv",
-                       "nine_ball", "nine_ball_v0", 9, "billiards_env.games.pool:NINE_BALL_LOGIC"))
+                       "nine_ball", "nine_ball_v0", 9, "billiards_env.games.pool:NineBallSession"))
 register_game(GameSpec("eight_ball", "8-ball", "Billiards8Ball-v0", "billiards_env.envs.eight_ball:EightBallEnv",
-                       "eight_ball", "eight_ball_v0", 15, "billiards_env.games.pool:EIGHT_BALL_LOGIC"))
+                       "eight_ball", "eight_ball_v0", 15, "billiards_env.games.pool:EightBallSession"))
 
 __all__ = ["GameSpec", "GAMES", "register_game", "game_spec", "game_of_env"]

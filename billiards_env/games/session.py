@@ -1,106 +1,151 @@
-"""One game in progress on a table state: :class:`GameSession`.
+"""One game in progress on a table state: :class:`GameSession`, the base of every game's session class.
 
-The session holds the rules' :class:`~billiards_env.rules.GameState`, judges each shot's
-:class:`~billiards_env.physics.outcome.ShotOutcome` with the ruleset, applies the call to the table (respotted
-balls, the cue ball back on the table for the next shooter in hand), keeps the score, and tells the table state who
-is to shoot and what they may do (its :class:`~billiards_env.table_state.ShotView`). It is the game for every
-driver: the single-agent env's task, the two-player env and the players all read it through ``table_state.game``.
-No Gymnasium here.
+A session holds the rules' state, judges each shot's :class:`~billiards_env.physics.outcome.ShotOutcome` with the
+ruleset, applies the call to the table (respotted balls, the cue ball in hand, a table put back...), keeps the
+score, and tells the table state who is to shoot and what they may do (its
+:class:`~billiards_env.table_state.ShotView`). It is the game for every driver: the single-agent env's task, the
+two-player env and the players all read it through ``table_state.game``. A game is one subclass (9-ball and 8-ball:
+:mod:`.pool`; snooker: :mod:`.snooker`; three-cushion: :mod:`.carom`) named by its registry entry. No Gymnasium.
+
+Every call is summed up in a :class:`Verdict` (who shot, foul, why, turn over, game over, the winner, what the
+shot scored), so the layers above treat every game alike; the call itself stays available for its own fields.
 """
 from __future__ import annotations
 
 import contextlib
-from dataclasses import replace
-from typing import Any, Iterator
+from abc import ABC, abstractmethod
+from typing import Any, ClassVar, Iterator, NamedTuple
 
 import numpy as np
 
-from billiards_env.physics.layout import DIAMOND_ORDER, RACK_ORDER, spot_cue_ball, spot_object_ball
 from billiards_env.physics.outcome import ShotOutcome
-from billiards_env.rules import Call, GameState, ShotInfo, summarize_outcome
 from billiards_env.table_state import ShotView, TableState
 
 from .hud import Score
 from .registry import GameSpec
 
 
-class GameSession:
-    """The game ``spec`` on ``table`` with the rules options ``rules`` (layered over the game's env defaults).
-    Installs itself as ``table.game`` and as the source of ``table.view``.
+class Verdict(NamedTuple):
+    """A call in the terms every game shares. ``scored``: what the shot earned its shooter (balls kept down in
+    pool, points in snooker and three-cushion): what the ``pot_reward`` shaping pays. ``call``: the ruleset's own
+    call (its game-specific fields)."""
 
-    ``state`` is the rules' state (shooter, ball in hand, groups, fouls, game over, winner); ``last_call`` the call
-    on the last shot; ``score`` the games won and the balls each player pocketed; ``shot_under_way`` the shot being
-    played (between :meth:`begin_shot` and :meth:`judge`: the HUD shows its called pocket)."""
+    shooter: int
+    foul: bool
+    reason: str
+    turn_over: bool
+    game_over: bool
+    winner: int | None
+    scored: float
+    call: Any
+
+
+class GameSession(ABC):
+    """A game on ``table`` under the rules options ``rules`` (layered over the game's env defaults). Installs itself
+    as ``table.game`` and as the source of ``table.view``.
+
+    ``state`` is the rules' state; ``last_call`` the call on the last shot; ``verdict`` its :class:`Verdict`;
+    ``score`` the games won and the balls each player pocketed; ``shot_under_way`` the shot being played (between
+    :meth:`begin_shot` and :meth:`judge`)."""
+
+    #: The ruleset class and its options class; the env's defaults of the options (under the user's ``rules``).
+    ruleset: ClassVar[type]
+    options_type: ClassVar[type]
+    env_option_defaults: ClassVar[dict[str, Any]] = {}
+    #: Game features appended to every observation (values in [0, 1]).
+    n_features: ClassVar[int] = 0
+    #: Reset options a table set up by hand reads besides ``positions`` and ``pocketed``.
+    option_keys: ClassVar[tuple[str, ...]] = ()
+    #: The env's ``opening`` values this game plays (``"break"`` always).
+    openings: ClassVar[tuple[str, ...]] = ("break",)
+    #: The built-in players by name: ``module:Class`` of each (a class taking ``seed``, with ``act(state, obs,
+    #: codec)``); the env's ``opponent`` names one.
+    players: ClassVar[dict[str, str]] = {}
 
     def __init__(self, spec: GameSpec, rules: Any, table: TableState) -> None:
         self.spec = spec
-        self.logic = spec.logic
-        self.rules = self.logic.make_rules(rules)
-        #: What the shooter declares besides the shot (action dims): ``"pocket"``, ``"push"``.
-        self.declarations: tuple[str, ...] = self.logic.declarations(self.rules)
+        self.rules = self.make_rules(rules)
+        #: What the shooter declares besides the shot (action dims): e.g. ``"pocket"``, ``"push"``.
+        self.declarations: tuple[str, ...] = self.declared(self.rules)
         self.table = table
-        self.numbers = np.asarray(table.numbers, dtype=np.int64)
-        self.row_of = {int(n): i for i, n in enumerate(self.numbers.tolist())}
-        self.state: GameState = self.rules.initial_state()
-        self.last_call: Call | None = None
+        self.state: Any = self.rules.initial_state()
+        self.last_call: Any = None
+        self.verdict: Verdict | None = None
         self.score = Score()
         self.shot_under_way: Any = None
         self._viewer: int | None = None
-        self._rack_slots: np.ndarray | None = None
         table.game = self
         table.view_source = self.view
         table.changed()
 
+    # --- configuration -------------------------------------------------------------------------------------------
+    @classmethod
+    def options(cls, overrides: Any = None) -> Any:
+        """The ruleset's options: the env's defaults, then ``overrides`` (a mapping; the options class refuses an
+        unknown key with the allowed ones)."""
+        return cls.options_type(**{**cls.env_option_defaults, **dict(overrides or {})})
+
+    @classmethod
+    def make_rules(cls, overrides: Any = None) -> Any:
+        return cls.ruleset(cls.options(overrides))
+
+    @classmethod
+    def declared(cls, rules: Any) -> tuple[str, ...]:
+        """The declaration dims of the action under ``rules`` (none by default)."""
+        return ()
+
+    @classmethod
+    def ball_set(cls, n_object_balls: int) -> tuple[tuple[str, ...], tuple[int, ...]]:
+        """The balls' ids and drawing numbers, row by row (row 0 the cue ball): ``"cue", "1" .. "n"`` and 0..n."""
+        n = n_object_balls + 1
+        return ("cue",) + tuple(str(k) for k in range(1, n)), tuple(range(n))
+
     # --- the game's state --------------------------------------------------------------------------------------------
-    def set_state(self, state: GameState) -> None:
+    def set_state(self, state: Any) -> None:
         """Continue from ``state`` (a new game, a table set up by hand)."""
         self.state = state
         self.table.changed()
 
-    def numbers_on(self) -> tuple[int, ...]:
-        """Numbers of the object balls on the table (ascending rows)."""
-        on = self.table.balls.on_table
-        return tuple(int(n) for i, n in enumerate(self.numbers.tolist()) if on[i] and n)
+    @property
+    def shooter(self) -> int:
+        return int(self.state.shooter)
 
-    def legal_rows(self) -> list[int]:
-        """Rows of the balls the shooter may hit first (the rules' legal targets)."""
-        return [self.row_of[n] for n in self.rules.legal_targets(self.state)]
+    @property
+    def game_over(self) -> bool:
+        return bool(self.state.game_over)
 
-    def needs_called_pocket(self) -> bool:
-        """The shooter must call a pocket for the next shot (8-ball, on the 8)."""
-        return bool(self.rules.needs_called_pocket(self.state))
+    @property
+    def winner(self) -> int | None:
+        return self.state.winner
 
+    @abstractmethod
+    def new_game(self, rng: np.random.Generator, placement: str) -> None:
+        """Set up a new game's table from the layout the env placed (a rack ordered as the rules say, drawing from
+        ``rng``); :meth:`start` then names the breaker."""
+
+    @abstractmethod
+    def start(self, first: int) -> None:
+        """The game's first shot, by player ``first`` (the rules' initial state)."""
+
+    @abstractmethod
+    def setup(self, options: dict[str, Any], shooter: int) -> None:
+        """A table set up by hand (reset options with ``positions``): the game's state from the balls on the table
+        and the game's own option keys; bad values raise ``ValueError`` naming the key."""
+
+    # --- what the shooter sees and may do ----------------------------------------------------------------------------
+    @abstractmethod
     def view(self, table: TableState) -> ShotView:
         """Who is to shoot and what they may do (the table state's ``view``)."""
-        s = self.state
-        rows = self.legal_rows()
-        on = table.balls.on_table
-        area = self.logic.place_area(s, table.table, float(table.balls.radius[0]))
-        return ShotView(tuple(int(i) for i in rows if on[i] and i != 0), min(rows) if rows else None, area,
-                        bool(s.break_shot and not s.game_over), self.needs_called_pocket(), bool(s.push_out_available),
-                        s.shooter)
 
-    # --- racks -------------------------------------------------------------------------------------------------------
-    def order_rack(self, rng: np.random.Generator, placement: str) -> None:
-        """Order a racked layout (``placement`` ``"rack"`` or ``"diamond"``) as the rules say, drawing from ``rng``."""
-        order_rack = self.logic.order_rack
-        if order_rack is None or placement not in ("rack", "diamond"):
-            return
-        pos = self.table.balls.pos
-        if self._rack_slots is None:
-            order = DIAMOND_ORDER if placement == "diamond" else RACK_ORDER
-            self._rack_slots = np.array([pos[self.row_of[n]] for n in order])
-        slots = self._rack_slots
-        for slot, number in enumerate(order_rack(len(slots), rng)):
-            pos[self.row_of[number]] = slots[slot]
-        self.table.changed()
-
-    # --- the view of one player --------------------------------------------------------------------------------------
+    @abstractmethod
     def features(self, player: int | None = None) -> np.ndarray:
         """The game features seen by ``player`` (default: the player of :meth:`seen_by`, else the shooter)."""
-        s = self.state
-        me = player if player is not None else (s.shooter if self._viewer is None else self._viewer)
-        return self.logic.features(self.rules, s, me)
+
+    def viewer(self, player: int | None) -> int:
+        """Whose point of view the features take: ``player``, else the one of :meth:`seen_by`, else the shooter."""
+        if player is not None:
+            return player
+        return self.shooter if self._viewer is None else self._viewer
 
     @contextlib.contextmanager
     def seen_by(self, player: int) -> Iterator[None]:
@@ -113,49 +158,54 @@ class GameSession:
         finally:
             self._viewer = saved
 
+    def legal_names(self) -> tuple[Any, ...]:
+        """The balls the shooter may hit first, as the rules name them (``info["legal_targets"]``)."""
+        return () if self.game_over else tuple(self.rules.legal_targets(self.state))
+
     # --- shots -------------------------------------------------------------------------------------------------------
     def begin_shot(self, shot: Any) -> None:
         """A shot is under way (its declarations are read when it is judged; the HUD shows it)."""
         self.shot_under_way = shot
 
-    def judge(self, outcome: ShotOutcome, shot: Any = None) -> Call:
+    def judge(self, outcome: ShotOutcome, shot: Any = None) -> Verdict:
         """Call the shot just played (``shot``: its :class:`~billiards_env.shot_path.CueShot`, for the
         declarations; default the one under way), apply the call to the table and the state, keep the score."""
-        s = self.state
         shot = self.shot_under_way if shot is None else shot
-        summary = summarize_outcome(outcome, self.numbers)
-        push = bool(shot is not None and shot.push and s.push_out_available)
-        pocket = shot.pocket if (shot is not None and self.needs_called_pocket()) else None
-        call, self.state = self.rules.play(s, summary, ShotInfo(push_out=push, called_pocket=pocket))
-        t = self.table
-        b = t.balls
-        r = float(b.radius[0])
-        for n in call.respot:
-            spot_object_ball(b.pos, b.on_table, r, t.table, self.row_of[n])
-        if not b.on_table[0]:
-            spot_cue_ball(b.pos, b.on_table, r, t.table)  # in hand for the next shooter
+        call, state = self._call(outcome, shot)
+        self.state = state
+        self._apply(call, outcome)
+        verdict = self._verdict(call)
         self.last_call = call
-        self.score.record(call)
+        self.verdict = verdict
+        self.score.record(verdict, self._kept(call))
         self.shot_under_way = None
-        t.changed()
-        return call
+        self.table.changed()
+        return verdict
 
-    def respot_opening(self) -> None:
-        """After the ``ball_in_hand`` opening's break: the game's last ball back on its spot if it dropped, the cue
-        ball on the table."""
-        t = self.table
-        b = t.balls
-        r = float(b.radius[0])
-        last = self.logic.opening_respot
-        if last is not None and not b.on_table[self.row_of[last]]:
-            spot_object_ball(b.pos, b.on_table, r, t.table, self.row_of[last])
-        if not b.on_table[0]:
-            spot_cue_ball(b.pos, b.on_table, r, t.table)
-        t.changed()
+    @abstractmethod
+    def _call(self, outcome: ShotOutcome, shot: Any) -> tuple[Any, Any]:
+        """The rules' call on the shot and the state after it."""
 
-    def viewer_state(self, player: int) -> GameState:
-        """The rules' state with ``player`` to shoot (what that player's legal targets are read from)."""
-        return self.state if self.state.shooter == player else replace(self.state, shooter=player)
+    @abstractmethod
+    def _apply(self, call: Any, outcome: ShotOutcome) -> None:
+        """Apply the call to the table (respots, the cue ball...)."""
+
+    @abstractmethod
+    def _verdict(self, call: Any) -> Verdict:
+        """The call as a :class:`Verdict`."""
+
+    def _kept(self, call: Any) -> tuple[Any, ...]:
+        """The balls the shot pocketed for its shooter that stay down (the HUD's score)."""
+        return ()
+
+    def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
+        """The game's own keys of a step's ``info`` after ``verdict`` (None: after a reset): what the state is
+        now and what the call said."""
+        return {}
+
+    @abstractmethod
+    def hud(self, names: tuple[str, str]) -> dict[str, Any]:
+        """The HUD of the game now (keys: :mod:`billiards_env.render.hud`)."""
 
 
-__all__ = ["GameSession"]
+__all__ = ["GameSession", "Verdict"]

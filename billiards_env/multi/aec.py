@@ -7,7 +7,7 @@ places the ball-in-hand cue ball, respots balls and keeps the :class:`~billiards
 ``auto_opponent`` is off, so nobody plays automatically: one AEC ``step`` is one shot of the agent to shoot
 (``game_env.step``), and the turn passes as the rules say (``task.state.shooter``). Each agent observes the table
 from its own point of view (``game_env.observe(player)``), and each gets its own reward for the shot
-(``task.reward_of(call, player)``).
+(``task.reward_of(verdict, player)``).
 """
 from __future__ import annotations
 
@@ -174,9 +174,9 @@ class BilliardsGameAEC(AECEnv, EzPickle):
             raise RuntimeError(f"{agent} selected but player {self.task.state.shooter} is to shoot")
         self._cumulative_rewards[agent] = 0.0
         _, _, terminated, truncated, info = self.game_env.step(action)
-        call = self.task.last_call
-        assert call is not None
-        self.rewards = {a: self.task.reward_of(call, k) for a, k in self.agent_index.items()}
+        verdict = self.task.verdict
+        assert verdict is not None
+        self.rewards = {a: self.task.reward_of(verdict, k) for a, k in self.agent_index.items()}
         if terminated or truncated:
             self.terminations = {a: bool(terminated) for a in self.agents}
             self.truncations = {a: bool(truncated) for a in self.agents}
