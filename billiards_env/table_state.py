@@ -14,19 +14,91 @@ No Gymnasium and no pygame here.
 from __future__ import annotations
 
 import contextlib
+import math
 from dataclasses import dataclass, field
-from typing import Any, Callable, Iterator
+from typing import Any, Callable, Iterator, NamedTuple
 
 import numpy as np
 
 from billiards_env.physics.balls import Balls
-from billiards_env.physics.layout import nearest_free_point
+from billiards_env.physics.layout import nearest_free_point, nearest_point_in_d
 from billiards_env.physics.model import Physics
 from billiards_env.physics.simulate import Simulator
 from billiards_env.physics.table import Table
 
-#: ``(x0, x1, y0, y1)``: a rectangle of cue-ball centres (ball in hand).
-Area = tuple[float, float, float, float]
+class RectArea(NamedTuple):
+    """Where the cue ball may be placed: the rectangle ``x0 <= x <= x1, y0 <= y <= y1`` of ball centres (the
+    kitchen, the whole table). Unpacks as ``(x0, x1, y0, y1)``, the bounding box every area has."""
+
+    x0: float
+    x1: float
+    y0: float
+    y1: float
+
+    def point(self, u: float, v: float) -> tuple[float, float]:
+        """The point of ``(u, v)`` in ``[-1, 1]^2`` (an action's placement dims), linearly."""
+        return self.x0 + 0.5 * (u + 1.0) * (self.x1 - self.x0), self.y0 + 0.5 * (v + 1.0) * (self.y1 - self.y0)
+
+    def square(self, x: float, y: float) -> tuple[float, float]:
+        """``(u, v)`` of the point ``(x, y)`` (the inverse of :meth:`point`)."""
+        return (2.0 * (x - self.x0) / max(self.x1 - self.x0, 1e-12) - 1.0,
+                2.0 * (y - self.y0) / max(self.y1 - self.y0, 1e-12) - 1.0)
+
+    def contains(self, x: float, y: float, tol: float = 1e-9) -> bool:
+        return self.x0 - tol <= x <= self.x1 + tol and self.y0 - tol <= y <= self.y1 + tol
+
+    def nearest(self, x: float, y: float, balls: Balls, holes: np.ndarray) -> tuple[float, float]:
+        """The legal point nearest ``(x, y)``: in the area, off the other balls and the pockets' capture circles."""
+        return nearest_free_point(x, y, balls.pos, balls.on_table, balls.radius, 0, tuple(self), holes=holes)
+
+    def describe(self) -> str:
+        return f"x in [{self.x0:.4g}, {self.x1:.4g}], y in [{self.y0:.4g}, {self.y1:.4g}] m"
+
+
+class HalfDiscArea(NamedTuple):
+    """Where the cue ball may be placed: the half-disc of radius ``x1 - x0`` centred on ``(x1, (y0 + y1) / 2)`` on its
+    ``x <= x1`` side (snooker's D; ``table`` for the nearest legal point). Unpacks as its bounding box."""
+
+    x0: float
+    x1: float
+    y0: float
+    y1: float
+
+    @property
+    def geometry(self) -> tuple[float, float, float]:
+        """``(cx, cy, r)``: the centre of the straight side and the radius."""
+        return self.x1, 0.5 * (self.y0 + self.y1), self.x1 - self.x0
+
+    def point(self, u: float, v: float) -> tuple[float, float]:
+        """The point of ``(u, v)`` in ``[-1, 1]^2``: ``u`` across (``y``), ``v`` from the arc (-1) to the straight
+        side (+1) along the line ``y`` fixed; continuous and one to one."""
+        cx, cy, r = self.geometry
+        u = min(max(float(u), -1.0), 1.0)
+        v = min(max(float(v), -1.0), 1.0)
+        depth = math.sqrt(max(r * r - (r * u) ** 2, 0.0))
+        return cx - depth * 0.5 * (1.0 - v), cy + r * u
+
+    def square(self, x: float, y: float) -> tuple[float, float]:
+        cx, cy, r = self.geometry
+        u = min(max((y - cy) / r, -1.0), 1.0)
+        depth = math.sqrt(max(r * r - (r * u) ** 2, 0.0))
+        v = 1.0 - 2.0 * (cx - x) / depth if depth > 1e-12 else 1.0
+        return u, min(max(v, -1.0), 1.0)
+
+    def contains(self, x: float, y: float, tol: float = 1e-9) -> bool:
+        cx, cy, r = self.geometry
+        return x <= cx + tol and math.hypot(x - cx, y - cy) <= r + tol
+
+    def nearest(self, x: float, y: float, balls: Balls, table: Table) -> tuple[float, float]:
+        return nearest_point_in_d(x, y, balls.pos, balls.on_table, balls.radius, 0, table)
+
+    def describe(self) -> str:
+        cx, cy, r = self.geometry
+        return f"the half-disc of radius {r:.4g} m on ({cx:.4g}, {cy:.4g}), x <= {cx:.4g}"
+
+
+#: Where a cue ball in hand may go (both unpack as their bounding box ``(x0, x1, y0, y1)``).
+Area = RectArea | HalfDiscArea
 
 
 @dataclass(frozen=True, eq=False)
@@ -127,10 +199,10 @@ class TableState:
         return tuple(self.balls.ids)
 
     # --- ball in hand ---------------------------------------------------------------------------------------------
-    def table_area(self) -> Area:
+    def table_area(self) -> RectArea:
         """Every legal cue-ball centre on the table (the placement area of a scene without ball in hand)."""
         r = float(self.balls.radius[0])
-        return r, self.table.length - r, r, self.table.width - r
+        return RectArea(r, self.table.length - r, r, self.table.width - r)
 
     def legal_cue_position(self, x: float, y: float) -> tuple[float, float]:
         """Where a ball-in-hand cue ball asked for at ``(x, y)`` goes: the nearest point of the view's placement
@@ -139,8 +211,9 @@ class TableState:
         area = self.view.place_area
         if area is None:
             area = self.table_area()
-        b = self.balls
-        return nearest_free_point(x, y, b.pos, b.on_table, b.radius, 0, area, holes=self._holes)
+        if isinstance(area, HalfDiscArea):
+            return area.nearest(x, y, self.balls, self.table)
+        return area.nearest(x, y, self.balls, self._holes)
 
     @contextlib.contextmanager
     def cue_moved_to(self, place: tuple[float, float] | None) -> Iterator[None]:
@@ -170,4 +243,4 @@ def state_of(source: Any) -> TableState:
     return state
 
 
-__all__ = ["TableState", "ShotView", "ShotSettings", "Area", "free_view", "state_of"]
+__all__ = ["TableState", "ShotView", "ShotSettings", "Area", "RectArea", "HalfDiscArea", "free_view", "state_of"]

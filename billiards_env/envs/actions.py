@@ -177,9 +177,8 @@ class ActionType:
         area = state.view.place_area if self.placement else None
         if area is None:
             return CueShot(self.angle(state, a[0]), speed, side, top, None, pocket, push)
-        x0, x1, y0, y1 = area
         k = self._place_at
-        place = state.legal_cue_position(x0 + 0.5 * (a[k] + 1.0) * (x1 - x0), y0 + 0.5 * (a[k + 1] + 1.0) * (y1 - y0))
+        place = state.legal_cue_position(*area.point(a[k], a[k + 1]))
         with state.cue_moved_to(place):  # the aim is relative to where the cue ball will be
             angle = self.angle(state, a[0])
         return CueShot(angle, speed, side, top, place, pocket, push)
@@ -195,9 +194,7 @@ class ActionType:
         out = np.zeros(self.n, dtype=np.float64)
         area = state.view.place_area if (self.placement and place is not None) else None
         if area is not None:
-            x0, x1, y0, y1 = area
-            out[self._place_at] = 2.0 * (float(place[0]) - x0) / max(x1 - x0, 1e-12) - 1.0
-            out[self._place_at + 1] = 2.0 * (float(place[1]) - y0) / max(y1 - y0, 1e-12) - 1.0
+            out[self._place_at], out[self._place_at + 1] = area.square(float(place[0]), float(place[1]))
             with state.cue_moved_to(state.legal_cue_position(float(place[0]), float(place[1]))):
                 out[0] = self.aim(state, angle)
         else:

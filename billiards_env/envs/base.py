@@ -331,10 +331,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             if area is None:
                 raise ValueError("action_from_shot: place given, but the shooter has no ball in hand now "
                                  "(state.view.place_area is None); leave place None")
-            x0, x1, y0, y1 = area
-            if not (x0 - 1e-9 <= x <= x1 + 1e-9 and y0 - 1e-9 <= y <= y1 + 1e-9):
+            if not area.contains(x, y):
                 raise ValueError(f"action_from_shot: place ({x:.4g}, {y:.4g}) is outside the ball-in-hand area "
-                                 f"x in [{x0:.4g}, {x1:.4g}], y in [{y0:.4g}, {y1:.4g}] m")
+                                 f"{area.describe()}")
         if pocket is not None:
             if "pocket" not in at.declarations:
                 raise ValueError(f"action_from_shot: pocket given, but {self.task.name!r} calls no pocket (only "

@@ -391,9 +391,11 @@ def _merge(raw: dict[str, Any], layer: Mapping[str, Any], source: str) -> None:
         key = str(key)
         if key in SECTIONS:
             section = _section_input(key, value, source)
-            if key == "table" and ({"corner_pocket_radius", "side_pocket_radius", "pockets"} & set(section)):
+            if key == "table" and "preset" in section:  # a named table replaces the table so far
+                raw[key] = {}
+            elif key == "table" and ({"corner_pocket_radius", "side_pocket_radius", "pockets"} & set(section)):
                 raw[key] = {k: v for k, v in raw[key].items()
-                            if k not in ("corner_pocket_radius", "side_pocket_radius", "pockets")}
+                            if k not in ("corner_pocket_radius", "side_pocket_radius", "pockets", "preset")}
             raw[key] = {**raw[key], **section}
         elif key in _FIELDS:
             raw[key] = value

@@ -19,7 +19,7 @@ from billiards_env.physics.table import Table
 from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions,
                                  GameState, NineBall, NineBallOptions, RulesError, ShotInfo, summarize_outcome)
 from billiards_env.rules.state import Call
-from billiards_env.table_state import Area, ShotView, TableState
+from billiards_env.table_state import Area, RectArea, ShotView, TableState
 
 from .hud import base_hud
 from .session import GameSession, Verdict
@@ -34,7 +34,7 @@ def pool_place_area(state: GameState, table: Table, radius: float) -> Area | Non
     if not bih or state.game_over:
         return None
     x1 = head_string_x(table) if bih == KITCHEN else table.length - radius
-    return radius, x1, radius, table.width - radius
+    return RectArea(radius, x1, radius, table.width - radius)
 
 
 def _order(fixed: dict[int, int], free: list[int], n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:

@@ -17,9 +17,10 @@ from .errors import SceneError, check_finite, check_non_negative, check_number, 
 from .model import Physics
 from .result import ShotResult
 from .simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, Simulator, SolverSettings
-from .table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, Table, default_pockets
+from .table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, TABLE_PRESETS, Table, default_pockets
 
-TABLE_FIELDS = {"length", "width", "cushion_restitution", "pockets", "corner_pocket_radius", "side_pocket_radius"}
+TABLE_FIELDS = {"preset", "length", "width", "cushion_restitution", "pockets", "corner_pocket_radius",
+                "side_pocket_radius"}
 POCKET_FIELDS = {"x", "y", "radius"}
 #: The physics section's fields are :class:`Physics`'s: one set of names and defaults for scenes and envs.
 PHYSICS_FIELDS = {f.name for f in fields(Physics)}
@@ -139,9 +140,18 @@ def _string(name: str, value: Any) -> str:
 def parse_table(value: Any, where: str = "table") -> Table:
     """A :class:`Table` from a scene's (or an env config's) ``table`` section: ``length``, ``width``,
     ``cushion_restitution``, and either ``pockets`` (a list of ``{x, y, radius}``, ``[]`` for none) or the radii
-    of the six standard pockets, ``corner_pocket_radius`` and ``side_pocket_radius``."""
+    of the six standard pockets, ``corner_pocket_radius`` and ``side_pocket_radius``; or ``preset`` (``pool``,
+    ``snooker``: the 12 ft table with its pockets, ``carom``: the pocketless match table), whose fields the others
+    given override."""
     t = _mapping(where, value, TABLE_FIELDS)
     kw: dict[str, Any] = {}
+    if "preset" in t:
+        name = _string(f"{where}.preset", t["preset"])
+        if name not in TABLE_PRESETS:
+            raise SceneError(f"{where}.preset: unknown table {name!r}; use one of {', '.join(TABLE_PRESETS)}")
+        base = TABLE_PRESETS[name]()
+        kw = {"length": base.length, "width": base.width, "cushion_restitution": base.cushion_restitution,
+              "pocket_xy": base.pocket_xy, "pocket_radius": base.pocket_radius}
     for f in ("length", "width", "cushion_restitution"):
         if f in t:
             kw[f] = check_number(f"{where}.{f}", t[f])

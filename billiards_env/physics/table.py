@@ -195,3 +195,7 @@ CAROM_BALL_MASS = 0.21
 def carom_table(cushion_restitution: float = DEFAULT_CUSHION_RESTITUTION) -> Table:
     """The match carom table for three-cushion: 2.84 x 1.42 m, no pockets."""
     return Table(CAROM_LENGTH, CAROM_WIDTH, cushion_restitution, np.zeros((0, 2)), np.zeros(0))
+
+
+#: The named tables of scene files and env configs (``table: {preset: snooker}``).
+TABLE_PRESETS = {"pool": Table, "snooker": snooker_table, "carom": carom_table}
