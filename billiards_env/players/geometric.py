@@ -11,8 +11,7 @@ from typing import Any
 import numpy as np
 
 from .context import ShotContext, shot_context, to_action
-from .geometry import MAX_CUT, Decision, choose_place, geometric_decision, table_model, target_windows
-from .geometry import ARRIVE_SPEED, PLACE_BACKS, SPEED_FACTORS
+from .geometry import MAX_CUT, PLACE_BACKS, Decision, choose_place, geometric_decision, table_model
 from .shots import ShotCandidate, candidate_of
 
 
@@ -46,15 +45,13 @@ def choose_placement(env: Any, ctx: ShotContext, max_cut: float = MAX_CUT,
     from billiards_env.physics.errors import SceneError
 
     b = ctx.balls
-    tm = table_model(ctx.table, ctx.physics)
-    targets = np.asarray(ctx.targets, dtype=np.int64)
-    pos = np.ascontiguousarray(b.pos, dtype=np.float64)
-    radius = np.ascontiguousarray(b.radius, dtype=np.float64)
-    x, y, ok = choose_place(pos, np.ascontiguousarray(b.on_table, dtype=np.bool_), radius,
-                            np.ascontiguousarray(b.mass, dtype=np.float64), int(ctx.cue), targets,
-                            target_windows(pos, radius, targets, tm), tm, float(ctx.speed_range[0]),
-                            float(ctx.speed_range[1]), float(max_cut), np.asarray(ctx.place_area, dtype=np.float64),
-                            np.asarray(backs, dtype=np.float64), ARRIVE_SPEED, np.asarray(SPEED_FACTORS))
+    x, y, ok = choose_place(np.ascontiguousarray(b.pos, dtype=np.float64),
+                            np.ascontiguousarray(b.on_table, dtype=np.bool_),
+                            np.ascontiguousarray(b.radius, dtype=np.float64),
+                            np.ascontiguousarray(b.mass, dtype=np.float64), int(ctx.cue),
+                            np.asarray(ctx.targets, dtype=np.int64), *table_model(ctx.table, ctx.physics),
+                            float(ctx.speed_range[0]), float(ctx.speed_range[1]), float(max_cut),
+                            np.asarray(ctx.place_area, dtype=np.float64), np.asarray(backs, dtype=np.float64))
     if not ok:
         raise SceneError(f"no legal point for ball row {ctx.cue} in the area {ctx.place_area}: it is covered by "
                          "other balls")

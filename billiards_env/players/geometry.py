@@ -49,8 +49,8 @@ PLACE_BACKS = (0.25, 0.5)
 SCRATCH_BOUNCES = 4
 
 
-class TableModel(NamedTuple):
-    """The table and the motion law as the kernels take them (see :func:`table_model`)."""
+class Model(NamedTuple):
+    """The table and the motion law as the compiled code reads them (built inside it by :func:`model`)."""
 
     length: float
     width: float
@@ -64,21 +64,40 @@ class TableModel(NamedTuple):
     ball_e: float  #: ball-ball restitution
 
 
+class TableModel(NamedTuple):
+    """The table and the motion law as plain arrays, what the compiled functions take (:func:`table_model`):
+    ``pocket_xy`` (K, 2), ``pocket_r`` (K,) and ``params`` = ``(length, width, cushion restitution, law, a, k,
+    min speed, ball restitution)`` (``law, a, k``: :attr:`billiards_env.physics.Physics.path_args`). Three arrays,
+    so that a call costs no more than passing three arrays."""
+
+    pocket_xy: np.ndarray
+    pocket_r: np.ndarray
+    params: np.ndarray
+
+
 def table_model(table, physics) -> TableModel:
     """The :class:`TableModel` of a :class:`~billiards_env.physics.Table` and a
     :class:`~billiards_env.physics.Physics`."""
     law, a, k = physics.path_args
-    return TableModel(float(table.length), float(table.width), float(table.cushion_restitution),
-                      np.ascontiguousarray(table.pocket_xy, dtype=np.float64),
-                      np.ascontiguousarray(table.pocket_radius, dtype=np.float64), int(law), float(a), float(k),
-                      float(physics.min_speed), float(physics.ball_restitution))
+    params = np.array([table.length, table.width, table.cushion_restitution, law, a, k, physics.min_speed,
+                       physics.ball_restitution], dtype=np.float64)
+    # Copies: writeable arrays (the table's are read-only), so every caller hits the same compiled signature.
+    return TableModel(np.array(table.pocket_xy, dtype=np.float64), np.array(table.pocket_radius, dtype=np.float64),
+                      params)
+
+
+@njit(cache=True)
+def model(pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray) -> Model:
+    """The :class:`Model` of a :class:`TableModel`'s arrays."""
+    return Model(params[0], params[1], params[2], pocket_xy, pocket_r, int(params[3]), params[4], params[5],
+                 params[6], params[7])
 
 
 # --- windows ----------------------------------------------------------------------------------------------------
 
 @njit(cache=True)
-def target_windows(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: TableModel,
-                   samples: int = WINDOW_SAMPLES) -> np.ndarray:
+def windows_of(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Model,
+               samples: int = WINDOW_SAMPLES) -> np.ndarray:
     """The pocket windows of every target: ``(T, K, 4)`` rows ``(centre, half-width, distance, found)``
     (:func:`billiards_env.physics.aim.pocket_windows`)."""
     k_p = tm.pocket_r.shape[0]
@@ -90,10 +109,17 @@ def target_windows(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm:
     return out
 
 
+@njit(cache=True)
+def target_windows(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, pocket_xy: np.ndarray,
+                   pocket_r: np.ndarray, params: np.ndarray) -> np.ndarray:
+    """:func:`windows_of` on a :class:`TableModel`'s arrays (41 samples)."""
+    return windows_of(pos, radius, targets, model(pocket_xy, pocket_r, params))
+
+
 # --- one ghost-ball shot ----------------------------------------------------------------------------------------
 
 @njit(cache=True)
-def _speed_to_travel(d: float, v_end: float, tm: TableModel) -> float:
+def _speed_to_travel(d: float, v_end: float, tm: Model) -> float:
     """Launch speed to roll ``d`` and still move at ``v_end`` (raised to just above the stopping speed)."""
     v_end = max(v_end, tm.v_min * 1.05 + 1e-6)
     return launch_speed(d, v_end, tm.law, tm.decel, tm.k)
@@ -101,9 +127,9 @@ def _speed_to_travel(d: float, v_end: float, tm: TableModel) -> float:
 
 @njit(cache=True)
 def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: float, w_half: float, w_dist: float,
-             pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, tm: TableModel,
+             pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, tm: Model,
              lo: float, hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool,
-             scratch: np.ndarray) -> bool:
+             scratch: np.ndarray, floor: float = -math.inf) -> bool:
     """The ghost-ball shot from the cue ball at ``(cx, cy)`` sending ball ``j`` into pocket ``p`` through its
     window ``(w_angle, w_half, w_dist)``, written into ``out`` (a row of :data:`N_COLS`); False (and ``out``
     untouched) when there is none: the ghost ball on the cue ball, a cut beyond ``max_cut``, or the ghost ball off
@@ -114,7 +140,8 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     bounces, ``check_scratch``), the arrival speed is scaled by the next of ``factors`` until one is safe. The
     ease (``COL_TOL``): the pocket window seen from the ball scaled by ``(rc + ro) cos(cut) / (d_cue + rc + ro)``;
     the score divides it by 10 when a path is blocked, by 3 when the speed is out of range and by 2 for the
-    scratch risk. ``scratch``: a (2, 2) work array."""
+    scratch risk. ``scratch``: a (2, 2) work array. ``floor``: skip (return False) a shot whose ease cannot
+    beat it (the score is at most the tolerance), before its paths and speeds are worked out."""
     rc = radius[cue]
     mc = mass[cue]
     ox = pos[j, 0]
@@ -137,6 +164,9 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     if cut > max_cut:
         return False
     if not (rc <= gx <= tm.length - rc and rc <= gy <= tm.width - rc):
+        return False
+    tol = w_half * (rc + ro) * cos_cut / (d_cue + rc + ro)
+    if tol <= floor:
         return False
     clear = not segment_blocked_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc) and \
         not segment_blocked_by(ox, oy, ox + ux * w_dist, oy + uy * w_dist, pos, on, radius, cue, j, ro)
@@ -171,7 +201,6 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
             break
     if not reachable:
         speed = hi
-    tol = w_half * (rc + ro) * cos_cut / (d_cue + rc + ro)
     score = tol
     if not clear:
         score /= 10.0
@@ -208,7 +237,7 @@ def rank_rows(rows: np.ndarray) -> np.ndarray:
 
 @njit(cache=True)
 def ghost_shots_from(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray,
-                     cue: int, targets: np.ndarray, windows: np.ndarray, tm: TableModel, lo: float, hi: float,
+                     cue: int, targets: np.ndarray, windows: np.ndarray, tm: Model, lo: float, hi: float,
                      max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool) -> np.ndarray:
     """Every ghost-ball shot (:func:`shot_row`) from the cue ball at ``(cx, cy)`` at every ball of ``targets`` on
     the table (``windows``: theirs, :func:`target_windows`) into every pocket, easiest first: ``(M, N_COLS)``."""
@@ -232,11 +261,13 @@ def ghost_shots_from(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radi
 
 @njit(cache=True)
 def ghost_shots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
-                targets: np.ndarray, tm: TableModel, lo: float, hi: float, max_cut: float, arrive: float,
-                factors: np.ndarray, check_scratch: bool) -> np.ndarray:
-    """Every ghost-ball shot of the table from where the cue ball lies (:func:`ghost_shots_from`), easiest
-    first, windows included: :func:`billiards_env.players.shots.ghost_ball_shots` as rows."""
-    windows = target_windows(pos, radius, targets, tm)
+                targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float,
+                hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool) -> np.ndarray:
+    """Every ghost-ball shot of the table (a :class:`TableModel`'s arrays) from where the cue ball lies
+    (:func:`ghost_shots_from`), easiest first, windows included: :func:`billiards_env.players.shots.ghost_ball_shots`
+    as rows."""
+    tm = model(pocket_xy, pocket_r, params)
+    windows = windows_of(pos, radius, targets, tm)
     return ghost_shots_from(pos[cue, 0], pos[cue, 1], pos, on, radius, mass, cue, targets, windows, tm, lo, hi,
                             max_cut, arrive, factors, check_scratch)
 
@@ -369,12 +400,11 @@ def _consider(qx: float, qy: float, px: float, py: float, discs: np.ndarray, x0:
               y1: float, best: np.ndarray) -> None:
     qx = min(max(qx, x0), x1)
     qy = min(max(qy, y0), y1)
-    if _legal(qx, qy, discs, x0, x1, y0, y1):
-        d2 = (qx - px) ** 2 + (qy - py) ** 2
-        if d2 < best[2]:
-            best[0] = qx
-            best[1] = qy
-            best[2] = d2
+    d2 = (qx - px) ** 2 + (qy - py) ** 2
+    if d2 < best[2] and _legal(qx, qy, discs, x0, x1, y0, y1):  # the nearer test first: it is the cheap one
+        best[0] = qx
+        best[1] = qy
+        best[2] = d2
 
 
 @njit(cache=True)
@@ -429,7 +459,7 @@ def nearest_free(x: float, y: float, discs: np.ndarray, x0: float, x1: float, y0
 
 
 @njit(cache=True)
-def pocket_holes(tm: TableModel) -> np.ndarray:
+def pocket_holes(tm: Model) -> np.ndarray:
     """The pockets' capture circles as holes ``(K, 3)`` (x, y, r) for :func:`free_discs`."""
     k_p = tm.pocket_r.shape[0]
     out = np.empty((k_p, 3))
@@ -443,9 +473,9 @@ def pocket_holes(tm: TableModel) -> np.ndarray:
 # --- ball in hand: where to put the cue ball -------------------------------------------------------------------------
 
 @njit(cache=True)
-def choose_place(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
-                 targets: np.ndarray, windows: np.ndarray, tm: TableModel, lo: float, hi: float, max_cut: float,
-                 area: np.ndarray, backs: np.ndarray, arrive: float, factors: np.ndarray) -> tuple:
+def place_for_shot(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                   targets: np.ndarray, windows: np.ndarray, tm: Model, lo: float, hi: float, max_cut: float,
+                   area: np.ndarray, backs: np.ndarray, arrive: float, factors: np.ndarray) -> tuple:
     """Ball in hand: the legal cue position (in ``area`` = (x0, x1, y0, y1), off the other balls and the pockets'
     capture circles) that leaves the easiest ghost-ball shot. The places tried: ``backs`` metres straight behind
     the ghost ball of every target and pocket with a window, moved to the nearest legal point; each scored by the
@@ -479,9 +509,12 @@ def choose_place(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.n
                 if on[j] and j != cue:
                     for q in range(k_p):
                         wq = windows[t, q]
+                        # A shot whose ease cannot beat the best place so far, nor this place's best shot, cannot
+                        # change the choice: skipped before its paths and speeds.
                         if wq[WIN_FOUND] != 0.0 and shot_row(row, px, py, j, q, wq[WIN_ANGLE], wq[WIN_HALF],
                                                              wq[WIN_DIST], pos, on, radius, mass, cue, tm, lo, hi,
-                                                             max_cut, arrive, factors, True, scratch):
+                                                             max_cut, arrive, factors, True, scratch,
+                                                             max(best_score, score)):
                             if row[COL_SCORE] > score:
                                 score = row[COL_SCORE]
                 if score < 0.0:
@@ -493,17 +526,29 @@ def choose_place(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.n
     return best_x, best_y, True
 
 
+@njit(cache=True)
+def choose_place(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                 targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float,
+                 hi: float, max_cut: float, area: np.ndarray, backs: np.ndarray) -> tuple:
+    """:func:`place_for_shot` on a :class:`TableModel`'s arrays (the default arrival speed and factors)."""
+    tm = model(pocket_xy, pocket_r, params)
+    return place_for_shot(pos, on, radius, mass, cue, targets, windows_of(pos, radius, targets, tm), tm, lo, hi,
+                          max_cut, area, backs, ARRIVE_SPEED, np.array(SPEED_FACTORS))
+
+
 # --- the geometric player's decision -----------------------------------------------------------------------------------
 
 @njit(cache=True)
 def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
-                              targets: np.ndarray, tm: TableModel, lo: float, hi: float, area: np.ndarray,
-                              in_hand: bool, is_break: bool, max_cut: float) -> tuple:
+                              targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray,
+                              lo: float, hi: float, area: np.ndarray, in_hand: bool, is_break: bool,
+                              max_cut: float) -> tuple:
     """The geometric player's shot (see :func:`geometric_decision`) as
     ``(place_x, place_y, placed, angle, speed, shot_row, rows, status)``: ``placed`` whether the cue ball is placed
     (ball in hand), ``rows`` the ranked ghost-ball shots from where it is played (cut up to
     ``max(max_cut, 88 deg)``), ``shot_row`` the index of the one played (-1: the break or the fallback direct hit),
     ``status`` 0, or 1 when ball in hand found no legal point."""
+    tm = model(pocket_xy, pocket_r, params)
     factors = np.array(SPEED_FACTORS)
     empty = np.empty((0, N_COLS))
     px = 0.0
@@ -525,10 +570,10 @@ def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
         if j < 0:
             j = cue
         return px, py, in_hand, math.atan2(pos[j, 1] - cy, pos[j, 0] - cx), hi, -1, empty, 0
-    windows = target_windows(pos, radius, targets, tm)
+    windows = windows_of(pos, radius, targets, tm)
     if in_hand:
         backs = np.array(PLACE_BACKS)
-        px, py, ok = choose_place(pos, on, radius, mass, cue, targets, windows, tm, lo, hi, max_cut, area, backs,
+        px, py, ok = place_for_shot(pos, on, radius, mass, cue, targets, windows, tm, lo, hi, max_cut, area, backs,
                                   ARRIVE_SPEED, factors)
         if not ok:
             return px, py, in_hand, 0.0, hi, -1, empty, 1
@@ -584,8 +629,8 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
     px, py, placed, angle, speed, k, rows, status = geometric_decision_arrays(
         np.ascontiguousarray(pos, dtype=np.float64), np.ascontiguousarray(on, dtype=np.bool_),
         np.ascontiguousarray(radius, dtype=np.float64), np.ascontiguousarray(mass, dtype=np.float64), int(cue),
-        np.ascontiguousarray(targets, dtype=np.int64), tm, float(speed_range[0]), float(speed_range[1]), area,
-        in_hand, bool(is_break), float(max_cut))
+        np.ascontiguousarray(targets, dtype=np.int64), tm.pocket_xy, tm.pocket_r, tm.params, float(speed_range[0]),
+        float(speed_range[1]), area, in_hand, bool(is_break), float(max_cut))
     if status == 1:
         raise SceneError(f"no legal point for ball row {cue} in the area {tuple(place_area)}: it is covered by "
                          "other balls")
@@ -593,9 +638,9 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
     return Decision((float(px), float(py)) if placed else None, float(angle), float(speed), pocket, int(k), rows)
 
 
-__all__ = ["TableModel", "table_model", "target_windows", "shot_row", "rank_rows", "ghost_shots_from",
-           "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs", "nearest_free",
-           "pocket_holes", "choose_place", "geometric_decision_arrays", "geometric_decision", "Decision",
+__all__ = ["Model", "TableModel", "table_model", "model", "windows_of", "target_windows", "shot_row", "rank_rows",
+           "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
+           "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "geometric_decision_arrays", "geometric_decision", "Decision",
            "N_COLS", "MAX_CUT", "FALLBACK_CUT", "ARRIVE_SPEED", "SPEED_FACTORS", "DIRECT_HIT_SPEED", "PLACE_BACKS",
            "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE", "COL_CUT",
            "COL_D_CUE", "COL_D_OBJ", "COL_WINDOW", "COL_TOL", "COL_CLEAR", "COL_REACH", "COL_RISK", "COL_SCORE"]

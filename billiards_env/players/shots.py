@@ -93,7 +93,7 @@ def ghost_ball_shots(
     rows = ghost_shots(np.ascontiguousarray(balls.pos, dtype=np.float64), np.ascontiguousarray(on, dtype=np.bool_),
                        np.ascontiguousarray(balls.radius, dtype=np.float64),
                        np.ascontiguousarray(balls.mass, dtype=np.float64), int(cue),
-                       np.asarray(targets, dtype=np.int64).reshape(-1), table_model(table, physics),
+                       np.asarray(targets, dtype=np.int64).reshape(-1), *table_model(table, physics),
                        float(speed_range[0]), float(speed_range[1]), float(max_cut), float(arrive_speed),
                        np.asarray(speed_factors, dtype=np.float64).reshape(-1), bool(check_scratch))
     return [candidate_of(r) for r in rows]
