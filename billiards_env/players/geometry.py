@@ -23,8 +23,8 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit
 
-from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between, ghost_point, lone_path_pocket,
-                                       pocket_windows, segment_blocked_by)
+from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between, dot2, ghost_point,
+                                       lone_path_pocket, pocket_windows, segment_blocked_by)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
 
 #: Columns of a shot row.
@@ -595,6 +595,169 @@ def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
     return px, py, in_hand, angle, min(max(DIRECT_HIT_SPEED, lo), hi), -1, rows, 0
 
 
+# --- the ease of the next shot (the search player's position term) ------------------------------------------------
+
+@njit(cache=True)
+def _ball_windows(j: int, pos: np.ndarray, radius: np.ndarray, tm: Model, base_pos: np.ndarray,
+                  base_win: np.ndarray, base_have: np.ndarray, fresh: np.ndarray) -> np.ndarray:
+    """Ball ``j``'s pocket windows ``(K, 4)``: those of the base table (``base_win[j]``, worked out on first use)
+    when it has not moved from ``base_pos[j]``, else worked out into ``fresh``."""
+    if pos[j, 0] == base_pos[j, 0] and pos[j, 1] == base_pos[j, 1]:
+        if not base_have[j]:
+            pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
+                           WINDOW_SAMPLES, base_win[j])
+            base_have[j] = True
+        return base_win[j]
+    pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width, WINDOW_SAMPLES,
+                   fresh)
+    return fresh
+
+
+@njit(cache=True)
+def layout_tolerance(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int,
+                     targets: np.ndarray, tm: Model, cos_max: float, base_pos: np.ndarray, base_win: np.ndarray,
+                     base_have: np.ndarray, fresh: np.ndarray) -> float:
+    """The easiest ghost-ball shot's cue-angle tolerance from the cue ball at ``(cx, cy)`` on the layout ``pos``,
+    ``on`` at a ball of ``targets``: the pocket window seen from the ball scaled by ``(rc + ro) cos(cut) /
+    (d_cue + rc + ro)``, divided by 10 when the cue ball's or the ball's path is blocked; cuts with a cosine below
+    ``cos_max`` and ghost balls off the table do not count (0 if nothing counts). No speeds: the position term of
+    the search player. Windows of balls still where they were on the base table come from ``base_win``."""
+    rc = radius[cue]
+    best = 0.0
+    if not on[cue]:
+        return best
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if not on[j] or j == cue:
+            continue
+        rj = radius[j]
+        contact = rc + rj
+        ox = pos[j, 0]
+        oy = pos[j, 1]
+        wins = _ball_windows(j, pos, radius, tm, base_pos, base_win, base_have, fresh)
+        for p in range(wins.shape[0]):
+            if wins[p, WIN_FOUND] == 0.0:
+                continue
+            wa = wins[p, WIN_ANGLE]
+            gx, gy = ghost_point(ox, oy, wa, contact)
+            if not (rc <= gx <= tm.length - rc and rc <= gy <= tm.width - rc):
+                continue
+            ux = math.cos(wa)
+            uy = math.sin(wa)
+            vx = gx - cx
+            vy = gy - cy
+            d = math.hypot(vx, vy)
+            cos_cut = dot2(vx, vy, ux, uy) / max(d, 1e-12)
+            if cos_cut < cos_max:
+                continue
+            tol = wins[p, WIN_HALF] * contact * cos_cut / (d + contact)
+            if tol <= best:  # a blocked path only lowers it
+                continue
+            wd = wins[p, WIN_DIST]
+            if segment_blocked_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc) or \
+                    segment_blocked_by(ox, oy, ox + ux * wd, oy + uy * wd, pos, on, radius, cue, j, rj):
+                tol /= 10.0
+            if tol > best:
+                best = tol
+    return best
+
+
+@njit(cache=True)
+def pot_chance(tolerance: float, sigma: float) -> float:
+    """The chance a shot with cue-angle ``tolerance`` pots when the cue angle errs by a normal spread ``sigma``:
+    ``erf(tolerance / (sqrt(2) sigma))`` (:func:`billiards_env.players.shots.pot_probability`)."""
+    return math.erf(max(tolerance, 0.0) / (math.sqrt(2.0) * max(sigma, 1e-12)))
+
+
+@njit(cache=True)
+def layouts_ease(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int, rows: np.ndarray,
+                 group: np.ndarray, t_flat: np.ndarray, t_off: np.ndarray, pocket_xy: np.ndarray,
+                 pocket_r: np.ndarray, params: np.ndarray, sigma: float, max_cut: float,
+                 base_pos: np.ndarray) -> np.ndarray:
+    """For the layouts ``rows`` of ``pos`` (N, B, 2) / ``on`` (N, B) (e.g. the final tables of a batch of shots),
+    the chance of potting the easiest next shot (:func:`layout_tolerance` through :func:`pot_chance`) at one of
+    that layout's targets: ``t_flat[t_off[g]:t_off[g + 1]]`` for its group ``g = group[k]``. Windows are worked out
+    once per ball for balls still at ``base_pos`` (the table the shots were played from)."""
+    tm = model(pocket_xy, pocket_r, params)
+    nb = radius.shape[0]
+    base_win = np.zeros((nb, pocket_r.shape[0], 4))
+    base_have = np.zeros(nb, np.bool_)
+    fresh = np.zeros((pocket_r.shape[0], 4))
+    cos_max = math.cos(max_cut)
+    out = np.zeros(rows.shape[0])
+    for i in range(rows.shape[0]):
+        k = rows[i]
+        g = group[k]
+        tol = layout_tolerance(pos[k, cue, 0], pos[k, cue, 1], pos[k], on[k], radius, cue,
+                               t_flat[t_off[g]:t_off[g + 1]], tm, cos_max, base_pos, base_win, base_have, fresh)
+        out[i] = pot_chance(tol, sigma)
+    return out
+
+
+@njit(cache=True)
+def places_ease(places: np.ndarray, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int,
+                targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, sigma: float,
+                max_cut: float) -> np.ndarray:
+    """:func:`layouts_ease` for one table with the cue ball put at each of ``places`` (M, 2) in turn."""
+    tm = model(pocket_xy, pocket_r, params)
+    nb = radius.shape[0]
+    base_win = np.zeros((nb, pocket_r.shape[0], 4))
+    base_have = np.zeros(nb, np.bool_)
+    fresh = np.zeros((pocket_r.shape[0], 4))
+    on2 = on.copy()
+    on2[cue] = True
+    cos_max = math.cos(max_cut)
+    out = np.zeros(places.shape[0])
+    for i in range(places.shape[0]):
+        tol = layout_tolerance(places[i, 0], places[i, 1], pos, on2, radius, cue, targets, tm, cos_max, pos,
+                               base_win, base_have, fresh)
+        out[i] = pot_chance(tol, sigma)
+    return out
+
+
+@njit(cache=True)
+def search_places(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int, targets: np.ndarray,
+                  pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, area: np.ndarray,
+                  backs: np.ndarray, cuts: np.ndarray) -> tuple:
+    """Ball in hand, the places the search player tries: ``backs`` metres behind the ghost ball of every target
+    and pocket with a window, straight in and turned by each of ``cuts``, moved to the nearest legal point (off the
+    balls and the pockets' capture circles, in ``area``). Returns ``(places (M, 2), status)``: 0, or 1 when there
+    is no window (the one place is then the middle of the area, moved to the nearest legal point), or 2 when the
+    area has no legal point."""
+    tm = model(pocket_xy, pocket_r, params)
+    x0, x1, y0, y1 = area[0], area[1], area[2], area[3]
+    discs = free_discs(pos, on, radius, cue, pocket_holes(tm), 1e-6)
+    windows = windows_of(pos, radius, targets, tm)
+    k_p = pocket_r.shape[0]
+    out = np.empty((targets.shape[0] * k_p * backs.shape[0] * cuts.shape[0] + 1, 2))
+    n = 0
+    r = radius[cue]
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        for p in range(k_p):
+            w = windows[t, p]
+            if w[WIN_FOUND] == 0.0:
+                continue
+            gx, gy = ghost_point(pos[j, 0], pos[j, 1], w[WIN_ANGLE], r + radius[j])
+            for b in range(backs.shape[0]):
+                for c in range(cuts.shape[0]):
+                    a = w[WIN_ANGLE] + cuts[c]
+                    x = gx - backs[b] * math.cos(a)
+                    y = gy - backs[b] * math.sin(a)
+                    px, py, ok = nearest_free(min(max(x, x0), x1), min(max(y, y0), y1), discs, x0, x1, y0, y1)
+                    if not ok:
+                        return out[:0], 2
+                    out[n, 0] = px
+                    out[n, 1] = py
+                    n += 1
+    if n == 0:
+        px, py, ok = nearest_free(0.5 * (x0 + x1), 0.5 * (y0 + y1), discs, x0, x1, y0, y1)
+        out[0, 0] = px
+        out[0, 1] = py
+        return out[:1], 1 if ok else 2
+    return out[:n], 0
+
+
 class Decision(NamedTuple):
     """A geometric decision: strike at ``angle``, ``speed`` from ``place`` (ball in hand, else None); ``pocket``:
     the pocket of the ghost-ball shot played (-1: none: the break or the direct hit); ``shot``: its row in ``rows``
@@ -640,7 +803,8 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
 
 __all__ = ["Model", "TableModel", "table_model", "model", "windows_of", "target_windows", "shot_row", "rank_rows",
            "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
-           "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "geometric_decision_arrays", "geometric_decision", "Decision",
+           "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "pot_chance",
+           "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision", "Decision",
            "N_COLS", "MAX_CUT", "FALLBACK_CUT", "ARRIVE_SPEED", "SPEED_FACTORS", "DIRECT_HIT_SPEED", "PLACE_BACKS",
            "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE", "COL_CUT",
            "COL_D_CUE", "COL_D_OBJ", "COL_WINDOW", "COL_TOL", "COL_CLEAR", "COL_REACH", "COL_RISK", "COL_SCORE"]

@@ -22,7 +22,7 @@ from billiards_env.players.geometric import choose_placement, geometric_shot
 from billiards_env.players.geometry import (COL_POCKET, COL_SCORE, COL_TARGET, free_discs, geometric_decision,
                                             ghost_shots, nearest_free, pocket_holes, model, py_hypot, table_model)
 
-import players_reference as reference
+from billiards_env.players import _reference as reference
 
 R = BALL_RADIUS
 
