@@ -1,4 +1,4 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch] [--out docs/bench]``,
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players] [--out docs/bench]``,
 from the repository root.
 
 Without ``--only`` every part runs: the accuracy suite (speed against error, ``speed_vs_error.md/.json/.png``),
@@ -16,7 +16,7 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -47,7 +47,7 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, batch, speed, spin
+    from . import accuracy, batch, players, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -63,6 +63,8 @@ def main(argv: list[str] | None = None) -> int:
             spin.render(args.out)
         if (args.out / "batch.json").exists():
             batch.render(args.out)
+        if (args.out / "players.json").exists():
+            players.render(args.out)
         log(f"[bench] re-rendered the reports in {args.out}")
         return 0
     if "accuracy" in only:
@@ -78,6 +80,8 @@ def main(argv: list[str] | None = None) -> int:
     if "batch" in only:
         batch.main(args.out, quick=args.quick, pooltool_python=args.pooltool_python,
                    allow_setup=not args.no_pooltool_setup)
+    if "players" in only:
+        players.main(args.out, quick=args.quick)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; outputs in {args.out}")
     return 0
 

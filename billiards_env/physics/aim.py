@@ -443,6 +443,29 @@ def segment_blocked_by(ax: float, ay: float, bx: float, by: float, pos: np.ndarr
 
 
 @njit(cache=True)
+def segment_touched_by(ax: float, ay: float, bx: float, by: float, pos: np.ndarray, on: np.ndarray,
+                       radius: np.ndarray, skip1: int, skip2: int, r_moving: float) -> bool:
+    """:func:`segment_blocked_by` measured on squared distances and without slack: a ball whose centre is
+    exactly at (or, by round-off, a hair inside) the two radii from the segment blocks it. Balls at rest after a
+    shot often touch exactly; this is the test the search player's position term has always used, kept so that
+    its choices do not change at such ties."""
+    abx = bx - ax
+    aby = by - ay
+    l2 = max(abx * abx + aby * aby, 1e-24)
+    for k in range(pos.shape[0]):
+        if on[k] and k != skip1 and k != skip2:
+            qx = pos[k, 0] - ax
+            qy = pos[k, 1] - ay
+            t = min(max((qx * abx + qy * aby) / l2, 0.0), 1.0)
+            dx = pos[k, 0] - (ax + t * abx)
+            dy = pos[k, 1] - (ay + t * aby)
+            c = r_moving + radius[k]
+            if dx * dx + dy * dy < c * c:
+                return True
+    return False
+
+
+@njit(cache=True)
 def _segment_blocked(ax: float, ay: float, bx: float, by: float, others: np.ndarray, clearance: np.ndarray) -> bool:
     abx = bx - ax
     aby = by - ay
@@ -571,9 +594,10 @@ def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table,
 
 __all__ = [
     "WINDOW_SAMPLES", "window_of", "pocket_windows", "dot2", "cos_between", "segment_distance",
-    "segment_blocked_by", "collide_into", "lone_path_pocket", "ray_circle_entry", "ray_cushion_hit", "ray_cushion_distance", "ray_circle_entries",
-    "ray_cushion_distances", "aim_angle", "direction_vector", "wrap_angle", "angular_radius",
-    "ghost_ball_position", "cut_cosine", "cut_angle", "offset_aim_angle", "aim_offset", "pocket_window",
-    "pocket_mouth_axes", "pocket_bearings", "segment_blocked", "path_clear", "collision_velocities",
-    "deflected_cue_velocity", "object_ball_speed", "path_pocket", "path_enters_pocket",
+    "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "ray_circle_entry",
+    "ray_cushion_hit", "ray_cushion_distance", "ray_circle_entries", "ray_cushion_distances", "aim_angle",
+    "direction_vector", "wrap_angle", "angular_radius", "ghost_ball_position", "cut_cosine", "cut_angle",
+    "offset_aim_angle", "aim_offset", "pocket_window", "pocket_mouth_axes", "pocket_bearings", "segment_blocked",
+    "path_clear", "collision_velocities", "deflected_cue_velocity", "object_ball_speed", "path_pocket",
+    "path_enters_pocket",
 ]

@@ -1,7 +1,8 @@
 """The geometric player: ghost-ball aiming at the easiest pocket (:func:`billiards_env.players.shots.ghost_ball_shots`).
 
 Its whole decision (the break, the ball-in-hand placement, the easiest shot with the 80 then 88 degree cut limits,
-the direct hit when nothing pots) is one compiled call on arrays: :func:`billiards_env.players.geometry.geometric_decision`.
+the direct hit when nothing pots) is one compiled call on arrays
+(:func:`billiards_env.players.geometry.geometric_decision`).
 The functions here take a :class:`ShotContext` (or the env, for the player) and call it.
 """
 from __future__ import annotations

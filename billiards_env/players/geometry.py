@@ -24,13 +24,14 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between, dot2, ghost_point,
-                                       lone_path_pocket, pocket_windows, segment_blocked_by)
+                                       lone_path_pocket, pocket_windows, segment_blocked_by,
+                                       segment_touched_by)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
 
 #: Columns of a shot row.
 COL_TARGET, COL_POCKET, COL_ANGLE, COL_SPEED, COL_NEED, COL_OBJ_ANGLE, COL_CUT, COL_D_CUE, COL_D_OBJ, COL_WINDOW, \
-    COL_TOL, COL_CLEAR, COL_REACH, COL_RISK, COL_SCORE = range(15)
-N_COLS = 15
+    COL_TOL, COL_CLEAR, COL_REACH, COL_RISK, COL_SCORE, COL_CLEAR_OBJ = range(16)
+N_COLS = 16
 #: Columns of a window row (:func:`target_windows`): centre direction, half-width, distance, found (1.0 / 0.0).
 WIN_ANGLE, WIN_HALF, WIN_DIST, WIN_FOUND = range(4)
 
@@ -168,8 +169,8 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     tol = w_half * (rc + ro) * cos_cut / (d_cue + rc + ro)
     if tol <= floor:
         return False
-    clear = not segment_blocked_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc) and \
-        not segment_blocked_by(ox, oy, ox + ux * w_dist, oy + uy * w_dist, pos, on, radius, cue, j, ro)
+    clear_obj = not segment_blocked_by(ox, oy, ox + ux * w_dist, oy + uy * w_dist, pos, on, radius, cue, j, ro)
+    clear = clear_obj and not segment_blocked_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc)
     collide_into(scratch, 1.0 * cos_cut, 0.0, 0.0, 0.0, -1.0, 0.0, mc, mo, e)
     transfer = scratch[1, 0]  # object ball speed per unit impact speed
     speed = hi
@@ -223,6 +224,7 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     out[COL_REACH] = 1.0 if reachable else 0.0
     out[COL_RISK] = 1.0 if risk else 0.0
     out[COL_SCORE] = score
+    out[COL_CLEAR_OBJ] = 1.0 if clear_obj else 0.0
     return True
 
 
@@ -536,7 +538,7 @@ def choose_place(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.n
                           max_cut, area, backs, ARRIVE_SPEED, np.array(SPEED_FACTORS))
 
 
-# --- the geometric player's decision -----------------------------------------------------------------------------------
+# --- the geometric player's decision ---------------------------------------------------------------------------
 
 @njit(cache=True)
 def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
@@ -621,7 +623,8 @@ def layout_tolerance(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radi
     ``on`` at a ball of ``targets``: the pocket window seen from the ball scaled by ``(rc + ro) cos(cut) /
     (d_cue + rc + ro)``, divided by 10 when the cue ball's or the ball's path is blocked; cuts with a cosine below
     ``cos_max`` and ghost balls off the table do not count (0 if nothing counts). No speeds: the position term of
-    the search player. Windows of balls still where they were on the base table come from ``base_win``."""
+    the search player; a ball touching a path blocks it (:func:`~billiards_env.physics.aim.segment_touched_by`).
+    Windows of balls still where they were on the base table come from ``base_win``."""
     rc = radius[cue]
     best = 0.0
     if not on[cue]:
@@ -654,8 +657,8 @@ def layout_tolerance(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radi
             if tol <= best:  # a blocked path only lowers it
                 continue
             wd = wins[p, WIN_DIST]
-            if segment_blocked_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc) or \
-                    segment_blocked_by(ox, oy, ox + ux * wd, oy + uy * wd, pos, on, radius, cue, j, rj):
+            if segment_touched_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc) or \
+                    segment_touched_by(ox, oy, ox + ux * wd, oy + uy * wd, pos, on, radius, cue, j, rj):
                 tol /= 10.0
             if tol > best:
                 best = tol
@@ -804,7 +807,8 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
 __all__ = ["Model", "TableModel", "table_model", "model", "windows_of", "target_windows", "shot_row", "rank_rows",
            "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "pot_chance",
-           "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision", "Decision",
-           "N_COLS", "MAX_CUT", "FALLBACK_CUT", "ARRIVE_SPEED", "SPEED_FACTORS", "DIRECT_HIT_SPEED", "PLACE_BACKS",
-           "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE", "COL_CUT",
-           "COL_D_CUE", "COL_D_OBJ", "COL_WINDOW", "COL_TOL", "COL_CLEAR", "COL_REACH", "COL_RISK", "COL_SCORE"]
+           "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",
+           "Decision", "N_COLS", "MAX_CUT", "FALLBACK_CUT", "ARRIVE_SPEED", "SPEED_FACTORS", "DIRECT_HIT_SPEED",
+           "PLACE_BACKS", "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE",
+           "COL_CUT", "COL_D_CUE", "COL_D_OBJ", "COL_WINDOW", "COL_TOL", "COL_CLEAR", "COL_REACH", "COL_RISK",
+           "COL_SCORE", "COL_CLEAR_OBJ", "WIN_ANGLE", "WIN_HALF", "WIN_DIST", "WIN_FOUND"]
