@@ -41,10 +41,6 @@ from .shots import MAX_CUT, direct_hit
 #: follow, left and right english.
 SPIN_VARIANTS: tuple[tuple[float, float], ...] = ((0.0, 0.0), (0.0, -0.35), (0.0, 0.35), (-0.3, 0.0), (0.3, 0.0))
 
-#: Grid (m) of the object-ball positions whose pocket windows :func:`next_shot_ease` caches: a window is the same
-#: to well within the noise for balls less than a millimetre apart.
-WINDOW_GRID = 5e-4
-
 #: Rules values of a candidate in a game (before position): won, lost, a foul, the turn kept (+ per ball).
 WIN_VALUE = 10.0
 FOUL_VALUE = -3.0
