@@ -210,6 +210,47 @@ class ActionType:
         return np.clip(out, -1.0, 1.0).astype(np.float32)
 
 
+    # --- many shots at once (the search player values what an action plays) ---------------------------------------
+    @property
+    def plain_absolute(self) -> bool:
+        """Whether this type is the plain absolute aim (the base class's arithmetic, untouched by a subclass), whose
+        round trip :meth:`round_trip_arrays` computes on arrays."""
+        cls = type(self)
+        return self.code == AIM_ABSOLUTE and all(getattr(cls, name) is getattr(ActionType, name)
+                                                 for name in ("angle", "aim", "shot", "action", "parse"))
+
+    def round_trip_arrays(self, angles: np.ndarray, speeds: np.ndarray, sides: np.ndarray, tops: np.ndarray
+                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """For the plain absolute aim (:attr:`plain_absolute`): the shots ``(angles, speeds, sides, tops)`` played
+        by the float32 actions of the given ones (:meth:`action` then :meth:`shot`, the same float operations,
+        element by element; the tip dims per distinct tip offset), and those actions' shot dims ``(N, 2 or 4)``."""
+        if not self.plain_absolute:
+            raise TypeError(f"round_trip_arrays: only the plain absolute aim maps arrays, not {self.name!r}")
+        lo, span = self.speed_lo, self.speed_span
+        angles = np.asarray(angles, dtype=np.float64)
+        a0 = np.clip(((angles + math.pi) % (2.0 * math.pi) - math.pi) / math.pi, -1.0, 1.0).astype(np.float32)
+        a1 = np.clip(2.0 * (np.asarray(speeds, dtype=np.float64) - lo) / span - 1.0, -1.0, 1.0).astype(np.float32)
+        angle = math.pi * np.clip(a0.astype(np.float64), -1.0, 1.0)
+        speed = lo + 0.5 * (np.clip(a1.astype(np.float64), -1.0, 1.0) + 1.0) * span
+        side = np.zeros(len(angles))
+        top = np.zeros(len(angles))
+        dims = [a0, a1]
+        if self.spin:
+            a2 = np.zeros(len(angles), np.float32)
+            a3 = np.zeros(len(angles), np.float32)
+            sides = np.asarray(sides, dtype=np.float64)
+            tops = np.asarray(tops, dtype=np.float64)
+            for sd0, tp0 in set(zip(sides.tolist(), tops.tolist())):
+                sel = (sides == sd0) & (tops == tp0)
+                x, y = np.clip(np.array(disc_to_square(sd0 / self.max_tip, tp0 / self.max_tip)), -1.0,
+                               1.0).astype(np.float32)
+                u, w = square_to_disc(min(max(float(x), -1.0), 1.0), min(max(float(y), -1.0), 1.0))
+                a2[sel], a3[sel] = x, y
+                side[sel], top[sel] = self.max_tip * u, self.max_tip * w
+            dims += [a2, a3]
+        return angle, speed, side, top, np.stack(dims, axis=1)
+
+
 class AbsoluteAim(ActionType):
     """``angle = pi * a[0]`` (0 = +x, counter-clockwise)."""
 

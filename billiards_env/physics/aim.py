@@ -29,7 +29,9 @@ import math
 from typing import TYPE_CHECKING, Sequence, Union
 
 import numpy as np
-from numba import njit
+from llvmlite import ir
+from numba import njit, types
+from numba.extending import intrinsic
 
 from .collide import resolve_ball_ball
 from .motion import speed_after_distance, stop_distance
@@ -164,11 +166,38 @@ def ghost_ball_position(obj: Vec2, direction: float, contact: float) -> np.ndarr
     return np.array(ghost_point(float(obj[0]), float(obj[1]), float(direction), float(contact)))
 
 
+@intrinsic
+def _fma(typingctx, a, b, c):
+    """``a * b + c`` rounded once (LLVM's ``fma``), for :func:`dot2`."""
+    sig = types.float64(types.float64, types.float64, types.float64)
+
+    def codegen(context, builder, signature, args):
+        d = ir.DoubleType()
+        fn = builder.module.declare_intrinsic("llvm.fma", [d], ir.FunctionType(d, [d, d, d]))
+        return builder.call(fn, args)
+
+    return sig, codegen
+
+
+@njit(cache=True)
+def dot2(ax: float, ay: float, bx: float, by: float) -> float:
+    """The dot product of ``(ax, ay)`` and ``(bx, by)``, rounded as ``numpy.dot`` of two 2-vectors rounds it on
+    x86-64 (OpenBLAS's ddot fuses the second product onto the first): the compiled players and the numpy code they
+    replaced agree bit for bit, and the result no longer depends on the BLAS build."""
+    return _fma(ay, by, ax * bx)
+
+
+@njit(cache=True)
+def cos_between(ax: float, ay: float, bx: float, by: float) -> float:
+    """:func:`cut_cosine` of the unit vectors ``(ax, ay)`` and ``(bx, by)`` (compiled)."""
+    return min(max(dot2(ax, ay, bx, by), -1.0), 1.0)
+
+
 def cut_cosine(aim_direction: Vec2, object_direction: Vec2) -> float:
     """Cosine of the cut angle: between the cue ball's direction at impact and the object ball's direction
     (both unit vectors), clipped to [-1, 1]."""
-    return float(np.clip(np.dot(np.asarray(aim_direction, dtype=float), np.asarray(object_direction, dtype=float)),
-                         -1.0, 1.0))
+    return float(cos_between(float(aim_direction[0]), float(aim_direction[1]), float(object_direction[0]),
+                             float(object_direction[1])))
 
 
 def cut_angle(aim_direction: Vec2, object_direction: Vec2) -> float:
@@ -197,49 +226,167 @@ def aim_offset(cue: Vec2, obj: Vec2, angle: float) -> float:
 
 # --- pockets ---------------------------------------------------------------------------------------------------
 
+@njit(cache=True)
+def _window_sample(k: int, div: int, theta_c: float, half: float, step: float) -> float:
+    """Direction of sample ``k`` of ``div + 1`` across ``[theta_c - half, theta_c + half]``, rounded exactly as
+    ``theta_c + numpy.linspace(-half, half, div + 1)`` rounds it (``k * step - half``, the last one ``half``)."""
+    if k == div:
+        return theta_c + half
+    if step == 0.0:
+        return theta_c + (k / div * (2.0 * half) - half)
+    return theta_c + (k * step - half)
+
+
+@njit(cache=True)
+def _window_sample_ok(ox: float, oy: float, a: float, cx: float, cy: float, pr: float, length: float,
+                      width: float, radius: float) -> bool:
+    """Whether a ball of ``radius`` at ``(ox, oy)`` rolling along direction ``a`` enters the capture circle
+    ``(cx, cy, pr)`` before it touches a cushion (the engine's ray tests, 1e-9 m of slack)."""
+    ux = math.cos(a)
+    uy = math.sin(a)
+    t_in = ray_circle_entry(ox, oy, ux, uy, cx, cy, pr)
+    if not math.isfinite(t_in):
+        return False
+    return t_in <= ray_cushion_hit(ox, oy, ux, uy, length, width, radius)[0] + 1e-9
+
+
+#: Samples of a window that :func:`window_of` tracks in one 64-bit mask (more: every sample is ray-tested).
+_MASK_SAMPLES = 62
+#: Margin (in samples) around a crossing direction: its computed position is off by far less (round-off, and the
+#: 1e-9 m slack of the ray test seen as an angle).
+_CROSS_MARGIN = 0.25
+
+
+@njit(cache=True)
+def _mark_crossing(mask: int, angle: float, theta_c: float, half: float, step: float, div: int) -> int:
+    """``mask`` with the bits of the samples that must be ray-tested because direction ``angle`` (where a sample's
+    feasibility may change) lies between them and the sample before: the samples ``k`` with the crossing in
+    ``[k - 1, k]``, give or take :data:`_CROSS_MARGIN`."""
+    d = angle - theta_c
+    if d > math.pi:
+        d -= 2.0 * math.pi
+    elif d < -math.pi:
+        d += 2.0 * math.pi
+    s = (d + half) / step
+    lo = max(int(math.ceil(s - _CROSS_MARGIN)), 0)
+    hi = min(int(math.floor(s + 1.0 + _CROSS_MARGIN)), div)
+    for k in range(lo, hi + 1):
+        mask |= 1 << k
+    return mask
+
+
+@njit(cache=True)
+def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, length: float, width: float,
+              samples: int) -> tuple:
+    """:func:`pocket_window` for the capture circle ``(cx, cy, pr)``: ``(centre, half-width, distance, found)``.
+
+    The window is the one sampled by ``samples`` directions across the circle's angular size (the widest run of
+    directions that reach the circle before a cushion), found in closed form. From a ball inside the cushion lines,
+    a direction reaches the circle first exactly when its entry point lies inside them, so feasibility changes only
+    at the directions of the points where the circle crosses a cushion segment (from a ball on or beyond a cushion
+    line: also where the direction crosses an axis, as the cushion ahead changes). Only the first sample after
+    each such direction, and the first, second and last samples (the tangent directions, decided by round-off), are
+    ray-tested (:func:`_window_sample_ok`); every other sample has the test of the one before. The result is
+    bit-identical to ray-testing every sample.
+    """
+    vx = cx - ox
+    vy = cy - oy
+    dist = math.hypot(vx, vy)
+    theta_c = math.atan2(cy - oy, cx - ox)
+    if dist <= pr:
+        return theta_c, math.pi / 2, 0.0, True
+    half = math.asin(min(1.0, pr / dist))
+    div = samples - 1
+    step = (half - (-half)) / div
+    # The samples to ray-test, as bits.
+    if samples > _MASK_SAMPLES or not step > 0.0:
+        mask = -1
+    else:
+        mask = 1 | 2 | (1 << div)
+        x_lo, x_hi, y_lo, y_hi = radius, length - radius, radius, width - radius
+        inside = x_lo < ox < x_hi and y_lo < oy < y_hi
+        tol = 1e-7
+        for m in range(4):
+            w = (x_lo, x_hi, y_lo, y_hi)[m]
+            off = w - (cx if m < 2 else cy)
+            if abs(off) > pr + tol:
+                continue
+            h = math.sqrt(max(pr * pr - off * off, 0.0))
+            for sgn in (-1.0, 1.0):
+                if m < 2:
+                    qx, qy = w, cy + sgn * h
+                    on_edge = y_lo - tol <= qy <= y_hi + tol
+                else:
+                    qx, qy = cx + sgn * h, w
+                    on_edge = x_lo - tol <= qx <= x_hi + tol
+                if on_edge or not inside:
+                    mask = _mark_crossing(mask, math.atan2(qy - oy, qx - ox), theta_c, half, step, div)
+        if not inside:  # the cushion ahead changes where the direction crosses an axis
+            for m in range(-2, 3):
+                mask = _mark_crossing(mask, 0.5 * math.pi * m, theta_c, half, step, div)
+    # One pass over the samples: the widest run of feasible ones (the first of equals).
+    best_len = 0
+    best_start = 0
+    run_start = -1
+    flag = False
+    for k in range(div + 2):
+        if k > div:
+            flag = False
+        elif mask == -1 or (mask >> k) & 1:
+            flag = _window_sample_ok(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr, length,
+                                     width, radius)
+        if flag and run_start < 0:
+            run_start = k
+        elif not flag and run_start >= 0:
+            if k - run_start > best_len:
+                best_len = k - run_start
+                best_start = run_start
+            run_start = -1
+    if best_len == 0:
+        return 0.0, 0.0, 0.0, False
+    lo = best_start
+    hi = best_start + best_len - 1
+    step2 = 2.0 * half / div
+    centre = 0.5 * (_window_sample(lo, div, theta_c, half, step) + _window_sample(hi, div, theta_c, half, step))
+    width_ = 0.5 * ((hi - lo) * step2 + step2)
+    d_in = ray_circle_entry(ox, oy, math.cos(centre), math.sin(centre), cx, cy, pr)
+    if not math.isfinite(d_in):
+        d_in = dist
+    return centre, width_, d_in, True
+
+
+@njit(cache=True)
+def pocket_windows(ox: float, oy: float, radius: float, pocket_xy: np.ndarray, pocket_r: np.ndarray, length: float,
+                   width: float, samples: int, out: np.ndarray) -> None:
+    """:func:`window_of` for every pocket: ``out[p] = (centre, half-width, distance, found)`` (``found`` 1.0 or
+    0.0; the other columns are 0 without a window)."""
+    for p in range(pocket_r.shape[0]):
+        c, h, d, ok = window_of(ox, oy, radius, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p], length, width,
+                                samples)
+        out[p, 0] = c
+        out[p, 1] = h
+        out[p, 2] = d
+        out[p, 3] = 1.0 if ok else 0.0
+
+
 def pocket_window(obj: Vec2, radius: float, table: Table, pocket: int,
                   samples: int = WINDOW_SAMPLES) -> tuple[float, float, float] | None:
     """The directions along which a ball of ``radius`` at ``obj`` rolls into the capture circle of ``pocket``
     before touching a cushion.
 
-    ``samples`` directions across the circle's angular size are tested with the engine's own ray tests. Returns
+    ``samples`` directions across the circle's angular size, as tested by the engine's own ray tests. Returns
     ``(centre direction, half-width, distance to the capture circle along the centre)`` of the widest contiguous
     run of good directions (a lone good sample counts as a sliver ``step / 2`` wide), or None if there is none.
-    From inside the circle: ``(direction to its centre, pi / 2, 0)``.
+    From inside the circle: ``(direction to its centre, pi / 2, 0)``. Compiled (:func:`window_of`): which samples
+    are good follows from where the circle crosses the cushion lines, so few are ray-tested.
     """
-    obj = np.asarray(obj, dtype=float)
+    if samples < 2:
+        raise ValueError(f"samples: need at least 2 directions across the pocket, got {samples}")
     c = table.pocket_xy[pocket]
-    pr = float(table.pocket_radius[pocket])
-    v = c - obj
-    dist = float(np.hypot(*v))
-    theta_c = aim_angle(obj, c)
-    if dist <= pr:
-        return float(theta_c), math.pi / 2, 0.0
-    half = angular_radius(pr, dist)
-    angles = theta_c + np.linspace(-half, half, samples)
-    ux, uy = np.cos(angles), np.sin(angles)
-    t_in = ray_circle_entries(obj[0], obj[1], ux, uy, c[0], c[1], pr)
-    t_wall = ray_cushion_distances(obj[0], obj[1], ux, uy, table.length, table.width, radius)
-    ok = np.isfinite(t_in) & (t_in <= t_wall + 1e-9)
-    if not ok.any():
-        return None
-    # Widest run of consecutive feasible samples.
-    best_len, best_start, run_start = 0, 0, None
-    for k, flag in enumerate(list(ok) + [False]):
-        if flag and run_start is None:
-            run_start = k
-        elif not flag and run_start is not None:
-            if k - run_start > best_len:
-                best_len, best_start = k - run_start, run_start
-            run_start = None
-    lo, hi = best_start, best_start + best_len - 1
-    step = 2.0 * half / (samples - 1)
-    centre = 0.5 * (angles[lo] + angles[hi])
-    width = 0.5 * ((hi - lo) * step + step)
-    d_in = ray_circle_entry(obj[0], obj[1], math.cos(centre), math.sin(centre), c[0], c[1], pr)
-    if not math.isfinite(d_in):
-        d_in = dist
-    return float(centre), float(width), float(d_in)
+    centre, half, d_in, found = window_of(float(obj[0]), float(obj[1]), float(radius), float(c[0]), float(c[1]),
+                                          float(table.pocket_radius[pocket]), float(table.length),
+                                          float(table.width), int(samples))
+    return (float(centre), float(half), float(d_in)) if found else None
 
 
 def pocket_mouth_axes(table: Table) -> np.ndarray:
@@ -269,21 +416,72 @@ def pocket_bearings(point: Vec2, table: Table,
 
 # --- clear paths -----------------------------------------------------------------------------------------------
 
+@njit(cache=True)
+def segment_distance(px: float, py: float, ax: float, ay: float, abx: float, aby: float, l2: float) -> float:
+    """Distance from the point ``(px, py)`` to the segment from ``(ax, ay)`` along ``(abx, aby)`` (``l2``: that
+    vector's squared length, 0 for a point)."""
+    if l2 == 0.0:
+        return math.hypot(px - ax, py - ay)
+    t = min(max(dot2(px - ax, py - ay, abx, aby) / l2, 0.0), 1.0)
+    return math.hypot(px - (ax + t * abx), py - (ay + t * aby))
+
+
+@njit(cache=True)
+def segment_blocked_by(ax: float, ay: float, bx: float, by: float, pos: np.ndarray, on: np.ndarray,
+                       radius: np.ndarray, skip1: int, skip2: int, r_moving: float) -> bool:
+    """Whether a ball of ``radius`` ``r_moving`` rolling from ``a`` to ``b`` touches a ball of the table
+    (``pos`` (B, 2), ``on`` (B,), ``radius`` (B,)) other than rows ``skip1`` and ``skip2``: a centre closer than
+    the two radii summed (less 1e-9 m) to the segment."""
+    abx = bx - ax
+    aby = by - ay
+    l2 = dot2(abx, aby, abx, aby)
+    for k in range(pos.shape[0]):
+        if on[k] and k != skip1 and k != skip2:
+            if segment_distance(pos[k, 0], pos[k, 1], ax, ay, abx, aby, l2) < (radius[k] + r_moving) - 1e-9:
+                return True
+    return False
+
+
+@njit(cache=True)
+def segment_touched_by(ax: float, ay: float, bx: float, by: float, pos: np.ndarray, on: np.ndarray,
+                       radius: np.ndarray, skip1: int, skip2: int, r_moving: float) -> bool:
+    """:func:`segment_blocked_by` measured on squared distances and without slack: a ball whose centre is
+    exactly at (or, by round-off, a hair inside) the two radii from the segment blocks it. Balls at rest after a
+    shot often touch exactly; this is the test the search player's position term has always used, kept so that
+    its choices do not change at such ties."""
+    abx = bx - ax
+    aby = by - ay
+    l2 = max(abx * abx + aby * aby, 1e-24)
+    for k in range(pos.shape[0]):
+        if on[k] and k != skip1 and k != skip2:
+            qx = pos[k, 0] - ax
+            qy = pos[k, 1] - ay
+            t = min(max((qx * abx + qy * aby) / l2, 0.0), 1.0)
+            dx = pos[k, 0] - (ax + t * abx)
+            dy = pos[k, 1] - (ay + t * aby)
+            c = r_moving + radius[k]
+            if dx * dx + dy * dy < c * c:
+                return True
+    return False
+
+
+@njit(cache=True)
+def _segment_blocked(ax: float, ay: float, bx: float, by: float, others: np.ndarray, clearance: np.ndarray) -> bool:
+    abx = bx - ax
+    aby = by - ay
+    l2 = dot2(abx, aby, abx, aby)
+    for k in range(others.shape[0]):
+        if segment_distance(others[k, 0], others[k, 1], ax, ay, abx, aby, l2) < clearance[k] - 1e-9:
+            return True
+    return False
+
+
 def segment_blocked(a: Vec2, b: Vec2, others: np.ndarray, clearance: np.ndarray) -> bool:
     """Whether any centre of ``others`` (M, 2) comes closer than its ``clearance`` (M,) to the segment ``a -> b``
     (for a ball rolling from ``a`` to ``b``: clearance = the two radii summed)."""
-    if len(others) == 0:
-        return False
-    a = np.asarray(a, dtype=float)
-    ab = np.asarray(b, dtype=float) - a
-    L2 = float(ab @ ab)
-    if L2 == 0.0:
-        d = np.hypot(*(others - a).T)
-    else:
-        t = np.clip(((others - a) @ ab) / L2, 0.0, 1.0)
-        proj = a + t[:, None] * ab
-        d = np.hypot(*(others - proj).T)
-    return bool(np.any(d < clearance - 1e-9))
+    others = np.asarray(others, dtype=float).reshape(-1, 2)
+    clearance = np.broadcast_to(np.asarray(clearance, dtype=float), (len(others),))
+    return bool(_segment_blocked(float(a[0]), float(a[1]), float(b[0]), float(b[1]), others, clearance))
 
 
 def path_clear(a: Vec2, b: Vec2, others: np.ndarray, clearance: np.ndarray) -> bool:
@@ -294,14 +492,22 @@ def path_clear(a: Vec2, b: Vec2, others: np.ndarray, clearance: np.ndarray) -> b
 # --- collisions (the engine's law, :mod:`.collide`) --------------------------------------------------------------
 
 @njit(cache=True)
-def _collide(v1x, v1y, v2x, v2y, nx, ny, m1, m2, e):
-    """Velocities after balls 1, 2 collide along the unit normal ``n`` (from 2 to 1), by the solvers' own law."""
-    vel = np.empty((2, 2))
+def collide_into(vel: np.ndarray, v1x: float, v1y: float, v2x: float, v2y: float, nx: float, ny: float, m1: float,
+                 m2: float, e: float) -> None:
+    """Velocities after balls 1, 2 collide along the unit normal ``n`` (from 2 to 1), by the solvers' own law,
+    written into the caller's ``(2, 2)`` array ``vel`` (rows: ball 1, ball 2)."""
     vel[0, 0] = v1x
     vel[0, 1] = v1y
     vel[1, 0] = v2x
     vel[1, 1] = v2y
     resolve_ball_ball(vel, 0, 1, nx, ny, 1.0, m1, m2, e, 0.0, 0.0, False)
+
+
+@njit(cache=True)
+def _collide(v1x, v1y, v2x, v2y, nx, ny, m1, m2, e):
+    """Velocities after balls 1, 2 collide along the unit normal ``n`` (from 2 to 1), by the solvers' own law."""
+    vel = np.empty((2, 2))
+    collide_into(vel, v1x, v1y, v2x, v2y, nx, ny, m1, m2, e)
     return vel[0, 0], vel[0, 1], vel[1, 0], vel[1, 1]
 
 
@@ -332,8 +538,9 @@ def object_ball_speed(impact_speed: float, cut_cos: float, e: float, m_cue: floa
 # --- a lone ball's path ----------------------------------------------------------------------------------------
 
 @njit(cache=True)
-def _path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
-                 max_bounces):
+def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
+                     max_bounces):
+    """:func:`path_pocket` on plain values (compiled): the pocket index, or -1."""
     for _ in range(max_bounces + 1):
         s = math.hypot(vx, vy)
         if s < 1e-6:
@@ -372,7 +579,7 @@ def path_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table, physic
     """The pocket a lone ball launched from ``start`` with ``velocity`` rolls into (-1: none) on straight lines,
     reflecting off up to ``max_bounces`` cushions with the table's restitution, slowing by the friction law, and
     stopping where the law stops it (no other balls)."""
-    return int(_path_pocket(float(start[0]), float(start[1]), float(velocity[0]), float(velocity[1]),
+    return int(lone_path_pocket(float(start[0]), float(start[1]), float(velocity[0]), float(velocity[1]),
                             float(radius), float(table.length), float(table.width),
                             float(table.cushion_restitution), table.pocket_xy, table.pocket_radius,
                             *physics.path_args, physics.min_speed, int(max_bounces)))
@@ -386,9 +593,11 @@ def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table,
 
 
 __all__ = [
-    "WINDOW_SAMPLES", "ray_circle_entry", "ray_cushion_hit", "ray_cushion_distance", "ray_circle_entries",
-    "ray_cushion_distances", "aim_angle", "direction_vector", "wrap_angle", "angular_radius",
-    "ghost_ball_position", "cut_cosine", "cut_angle", "offset_aim_angle", "aim_offset", "pocket_window",
-    "pocket_mouth_axes", "pocket_bearings", "segment_blocked", "path_clear", "collision_velocities",
-    "deflected_cue_velocity", "object_ball_speed", "path_pocket", "path_enters_pocket",
+    "WINDOW_SAMPLES", "window_of", "pocket_windows", "dot2", "cos_between", "segment_distance",
+    "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "ray_circle_entry",
+    "ray_cushion_hit", "ray_cushion_distance", "ray_circle_entries", "ray_cushion_distances", "aim_angle",
+    "direction_vector", "wrap_angle", "angular_radius", "ghost_ball_position", "cut_cosine", "cut_angle",
+    "offset_aim_angle", "aim_offset", "pocket_window", "pocket_mouth_axes", "pocket_bearings", "segment_blocked",
+    "path_clear", "collision_velocities", "deflected_cue_velocity", "object_ball_speed", "path_pocket",
+    "path_enters_pocket",
 ]

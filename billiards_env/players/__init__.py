@@ -14,6 +14,16 @@ action type. The decision functions (:func:`geometric_shot`, :func:`search_shot`
     player = make_player("search", seed=0)
     obs, info = env.reset(seed=1)
     action = player.act(env, obs)
+
+The players' geometry is compiled array code (:mod:`.geometry`, numba): every ghost-ball shot of a table, the
+ball-in-hand placement and the geometric player's whole decision are one call each on arrays (the balls, a
+:class:`TableModel` of the table and the motion law, the legal targets), no env needed::
+
+    d = geometric_decision(balls.pos, balls.on_table, balls.radius, balls.mass, targets,
+                           table_model(table, physics), (0.5, 5.0), place_area=None, is_break=False)
+    d.angle, d.speed, d.place, d.pocket
+
+:mod:`.slots` gives the ``candidates`` types' slot lists the same way.
 """
 from __future__ import annotations
 
@@ -23,6 +33,7 @@ import numpy as np
 
 from .context import ShotContext, player_inputs, shot_context, to_action
 from .geometric import GeometricPlayer, geometric_shot
+from .geometry import Decision, TableModel, geometric_decision, table_model
 from .random import RandomPlayer
 from .search import Outcome, SearchPlayer, SearchSettings, search_shot
 from .shots import MAX_CUT, ShotCandidate, direct_hit, ghost_ball_shots, position_score
@@ -56,4 +67,5 @@ def make_player(name: str, seed: int | None = 0, **kwargs: Any) -> Any:
 
 __all__ = ["BASELINES", "Player", "ShotContext", "shot_context", "to_action", "geometric_shot", "search_shot",
            "SearchSettings", "Outcome", "RandomPlayer", "GeometricPlayer", "SearchPlayer", "make_player", "PLAYERS",
-           "ShotCandidate", "ghost_ball_shots", "direct_hit", "position_score", "MAX_CUT"]
+           "ShotCandidate", "ghost_ball_shots", "direct_hit", "position_score", "MAX_CUT", "geometric_decision",
+           "Decision", "TableModel", "table_model"]

@@ -11,6 +11,11 @@ right english; plus a sweep of directions for kicks and safeties) is simulated i
 against the noise's spread). The best few are then re-simulated under the env's shot noise (angle, speed and tip
 offsets) and ranked by their mean value: robust shots, not lucky ones. With the cue ball in hand the search runs
 from the few best places for the next shot and keeps the best.
+
+Its own work is arrays and compiled code (:mod:`.geometry`): the candidates come from one call for every ghost-ball
+shot, the position terms of all final layouts from one call, the ball-in-hand places from one call; the batches run
+without event logs (what the rules read comes from the batch's arrays: :func:`shot_keys`) and the rules judge each
+distinct outcome once per decision (:class:`Judge`). What is left is the physics.
 """
 from __future__ import annotations
 
@@ -19,22 +24,20 @@ from dataclasses import dataclass
 from typing import Any, Callable, Sequence
 
 import numpy as np
+from numba import njit
 
-from billiards_env.physics.aim import direction_vector, ghost_ball_position, pocket_window
 from billiards_env.physics.batch import BatchResult, run_shots
-from billiards_env.rules import ShotInfo, summarize_arrays
+from billiards_env.rules import ShotInfo, ShotSummary, summarize_arrays
 
 from .context import ShotContext, player_inputs, shot_context, to_action
 from .geometric import break_shot
-from .shots import MAX_CUT, direct_hit, ghost_ball_shots, pot_probability
+from .geometry import (COL_ANGLE, COL_POCKET, COL_SPEED, COL_TARGET, ARRIVE_SPEED, SPEED_FACTORS, ghost_shots,
+                       layouts_ease, places_ease, search_places, table_model)
+from .shots import MAX_CUT, direct_hit
 
 #: Tip offsets ``(side, top)`` (fractions of R) tried with every ghost-ball shot under the spin model: stun, draw,
 #: follow, left and right english.
 SPIN_VARIANTS: tuple[tuple[float, float], ...] = ((0.0, 0.0), (0.0, -0.35), (0.0, 0.35), (-0.3, 0.0), (0.3, 0.0))
-
-#: Grid (m) of the object-ball positions whose pocket windows :func:`next_shot_ease` caches: a window is the same
-#: to well within the noise for balls less than a millimetre apart.
-WINDOW_GRID = 5e-4
 
 #: Rules values of a candidate in a game (before position): won, lost, a foul, the turn kept (+ per ball).
 WIN_VALUE = 10.0
@@ -82,22 +85,178 @@ class SearchSettings:
 
 # --- simulation and judgement ---------------------------------------------------------------------------------
 
+@njit(cache=True)
+def shot_keys(first_contact: np.ndarray, rail_after_contact: np.ndarray, pocket: np.ndarray,
+              pocketed_at: np.ndarray, numbers: np.ndarray, cue: int, rail_detail: bool) -> tuple:
+    """What the rules read of each shot of a batch, from the batch's arrays (no event log): rows ``(N, 4 + 2B)``
+    of ``first contact's number (-1: none), the cue ball's pocket (-1), the balls that reached a cushion after the
+    first contact, how many object balls dropped``, then their numbers in the order they dropped and their pockets
+    (each padded with -1). The cushion column is the bit mask of those balls' numbers with ``rail_detail``, else
+    only whether there is one (after the break the rules ask no more: ``ruleset.contact_fouls``). Also returns the
+    bit masks ``(N,)``, and per shot whether two object balls dropped at the same instant (their order then needs
+    the event log). The fields of :class:`~billiards_env.rules.ShotSummary`, as
+    :func:`~billiards_env.rules.summarize_arrays` finds them in the log."""
+    n, b = pocket.shape
+    keys = np.full((n, 4 + 2 * b), -1, np.int64)
+    masks = np.zeros(n, np.int64)
+    ties = np.zeros(n, np.bool_)
+    rows = np.empty(b, np.int64)
+    for k in range(n):
+        f = first_contact[k]
+        keys[k, 0] = numbers[f] if f >= 0 else -1
+        keys[k, 1] = pocket[k, cue]
+        mask = 0
+        for r in range(b):
+            if rail_after_contact[k, r]:
+                mask |= 1 << numbers[r]
+        masks[k] = mask
+        keys[k, 2] = mask if rail_detail else (1 if mask != 0 else 0)
+        m = 0
+        for r in range(b):
+            if r != cue and pocket[k, r] >= 0:
+                # insertion by drop time (stable in row order)
+                i = m
+                while i > 0 and pocketed_at[k, rows[i - 1]] > pocketed_at[k, r]:
+                    rows[i] = rows[i - 1]
+                    i -= 1
+                rows[i] = r
+                m += 1
+        keys[k, 3] = m
+        for i in range(m):
+            keys[k, 4 + i] = numbers[rows[i]]
+            keys[k, 4 + b + i] = pocket[k, rows[i]]
+            if i > 0 and not pocketed_at[k, rows[i]] > pocketed_at[k, rows[i - 1]]:
+                ties[k] = True
+    return keys, masks, ties
+
+
+def _key_from_log(events: np.ndarray, pocket: np.ndarray, numbers: np.ndarray, cue: int,
+                  rail_detail: bool) -> tuple[np.ndarray, int]:
+    """:func:`shot_keys`'s row and bit mask for one shot from its event log ``(M, 3)`` (kind, ball, other)."""
+    b = len(numbers)
+    s = summarize_arrays(events, pocket, numbers)
+    pocketed, pockets = s.pocketed, s.pockets
+    mask = int(sum(1 << int(n) for n in s.rail_balls))
+    key = np.full(4 + 2 * b, -1, np.int64)
+    key[0] = -1 if s.first_contact is None else s.first_contact
+    key[1] = s.cue_pocket
+    key[2] = mask if rail_detail else int(mask != 0)
+    key[3] = len(pocketed)
+    key[4:4 + len(pocketed)] = pocketed
+    key[4 + b:4 + b + len(pocketed)] = pockets
+    return key, mask
+
+
+def _rails(mask: int) -> tuple[int, ...]:
+    """The ball numbers of a bit mask, ascending."""
+    out = _RAILS.get(mask)
+    if out is None:
+        out = _RAILS[mask] = tuple(n for n in range(mask.bit_length()) if (mask >> n) & 1)
+    return out
+
+
+_RAILS: dict[int, tuple[int, ...]] = {}
+_NO_CALL = ShotInfo()
+
+
+class Judge:
+    """The rules' verdict on shots of one decision (one game state), each distinct outcome judged once: a shot's
+    value (+10 won, -10 lost, -3 a foul, +1 for keeping the turn plus 0.1 per ball that counts, 0 for a legal
+    miss), who shoots next (1: the shooter again, 0: the opponent without ball in hand, -1: nobody or ball in hand)
+    and the rows of the balls that player may hit first. Outcomes are :func:`shot_keys` rows: after the break only
+    whether some ball reached a cushion after the first contact counts, not which (the rules ask no more; a test
+    holds them to it: tests/players/test_search_fast.py), so one verdict serves all the shots that differ only
+    there (the summary judged is the first such shot's)."""
+
+    def __init__(self, ctx: ShotContext) -> None:
+        game = ctx.game
+        self.ctx = ctx
+        self.numbers = np.ascontiguousarray(game.numbers, dtype=np.int64)
+        self.eight_called = game.needs_called_pocket() and 8 in game.row_of
+        #: Whether the verdict may depend on which balls reached a cushion (the break), not only on whether one did.
+        self.rail_detail = bool(game.state.break_shot)
+        self.verdicts: dict[bytes, int] = {}  #: outcome key -> index into the lists below
+        self.values: list[float] = []
+        self.next: list[int] = []
+        self.targets: list[np.ndarray] = []
+        self._after: dict[Any, np.ndarray] = {}  # call -> legal rows after it
+
+    def ids(self, keys: np.ndarray, masks: np.ndarray) -> np.ndarray:
+        """The verdict index of each outcome key (judging the new ones; ``masks``: the shots' cushion bit masks,
+        :func:`shot_keys`)."""
+        out = np.empty(len(keys), np.int64)
+        for k, row in enumerate(keys):
+            kb = row.tobytes()
+            v = self.verdicts.get(kb)
+            if v is None:
+                v = self.verdicts[kb] = self._judge(row, int(masks[k]))
+            out[k] = v
+        return out
+
+    def _judge(self, key: np.ndarray, mask: int) -> int:
+        game = self.ctx.game
+        b = len(self.numbers)
+        k = key.tolist()
+        n_pot = k[3]
+        rails = _rails(mask)
+        pocketed = tuple(k[4:4 + n_pot])
+        pockets = tuple(k[4 + b:4 + b + n_pot])
+        summary = ShotSummary(None if k[0] < 0 else k[0], rails, pocketed, pockets, k[1] >= 0, k[1])
+        info = ShotInfo(called_pocket=pockets[pocketed.index(8)]) if self.eight_called and 8 in pocketed \
+            else _NO_CALL
+        state = game.state
+        call = game.rules.call(state, summary, info)
+        if call.game_over:
+            value, nxt, rows = (WIN_VALUE if call.winner == call.shooter else -WIN_VALUE), -1, np.zeros(0, np.int64)
+        elif call.foul:
+            value, nxt, rows = FOUL_VALUE, -1, np.zeros(0, np.int64)
+        else:
+            rows = self._after.get(call)
+            if rows is None:
+                nxt_state = game.rules.next_state(state, call)
+                rows = self._after[call] = np.array([game.row_of[n] for n in game.rules.legal_targets(nxt_state)],
+                                                    dtype=np.int64)
+            if call.turn_over:
+                value, nxt = 0.0, 0
+            else:
+                value, nxt = KEEP_VALUE + BALL_VALUE * len(set(call.pocketed) - set(call.respot)), 1
+        self.values.append(value)
+        self.next.append(nxt)
+        self.targets.append(rows)
+        return len(self.values) - 1
+
+
+@dataclass
+class Judged:
+    """A judged batch: per shot ``pots``, ``scratch``, ``hit``, ``values``, who shoots ``next`` (1, 0, -1) and
+    the group of that player's legal balls (``group``: rows ``t_flat[t_off[g]:t_off[g + 1]]``), and the batch."""
+
+    pots: np.ndarray
+    scratch: np.ndarray
+    hit: np.ndarray
+    values: np.ndarray
+    res: BatchResult
+    next: np.ndarray
+    group: np.ndarray
+    t_flat: np.ndarray
+    t_off: np.ndarray
+
+
 def _simulate(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = None, tops: Any = None
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, BatchResult]:
     """Play candidate shots, all in one batch (:func:`~billiards_env.physics.batch.run_shots`; each row is the
     single ``Simulator.run`` of its shot): ``(pots, scratch, hit, value, batch result)`` per candidate. Without a
-    game the value is :func:`_value`; in a game it is the rules' verdict (:func:`_judge`)."""
-    return _simulate_judged(ctx, angles, speeds, sides, tops)[:5]
+    game the value is :func:`_value`; in a game it is the rules' verdict (:class:`Judge`)."""
+    j = _simulate_judged(ctx, angles, speeds, sides, tops)
+    return j.pots, j.scratch, j.hit, j.values, j.res
 
 
-def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = None, tops: Any = None
-                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, BatchResult, np.ndarray,
-                                list[list[int]]]:
-    """:func:`_simulate`, plus per candidate who shoots next (1 the shooter, 0 the opponent from where the cue ball
-    lies, -1 nobody or ball in hand) and the rows of the balls that player may hit first."""
+def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = None, tops: Any = None,
+                     judge: Judge | None = None) -> Judged:
+    """:func:`_simulate`, with who shoots next and his legal balls (see :class:`Judged`)."""
     game = ctx.game is not None
     spin = ctx.physics.friction == "spin"
-    res = run_shots(ctx.simulator, ctx.balls, angles, speeds, ball=ctx.cue, validate=False, events=game,
+    res = run_shots(ctx.simulator, ctx.balls, angles, speeds, ball=ctx.cue, validate=False,
                     side=sides if spin else None, top=tops if spin else None)
     targets = np.asarray(ctx.targets, dtype=np.int64)
     pots = (res.pocket[:, targets] >= 0).sum(axis=1)
@@ -107,22 +266,28 @@ def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = No
     if not game:
         # Without rules the shooter plays on only after a pot without a scratch: a miss earns no position (it
         # must never outrank a pot), and a cleared table has no next shot.
-        left = [[j for j in ctx.targets if res.on_table[k, j]] for k in range(n)]
-        nxt = np.where((pots > 0) & ~scratch & np.array([bool(t) for t in left]), 1, -1)
-        return pots, scratch, hit, _value(pots, scratch, hit), res, nxt, left
-    ev = res.events
-    table = np.stack([ev.kind, ev.ball, ev.other], axis=1)
-    memo: dict[tuple[bytes, bytes], tuple[float, int, list[int]]] = {}
-    judged = []
-    for k in range(n):
-        rows = table[int(ev.offsets[k]):int(ev.offsets[k + 1])]
-        key = (rows.tobytes(), res.pocket[k].tobytes())  # the rules read only these: equal logs, equal calls
-        j = memo.get(key)
-        if j is None:
-            j = memo[key] = _judge_arrays(ctx, rows, res.pocket[k])
-        judged.append(j)
-    values = np.array([j[0] for j in judged])
-    return pots, scratch, hit, values, res, np.array([j[1] for j in judged]), [j[2] for j in judged]
+        left = res.on_table[:, targets].any(axis=1)
+        nxt = np.where((pots > 0) & ~scratch & left, 1, -1)
+        return Judged(pots, scratch, hit, _value(pots, scratch, hit), res, nxt, np.zeros(n, np.int64), targets,
+                      np.array([0, len(targets)], np.int64))
+    judge = judge or Judge(ctx)
+    keys, masks, ties = shot_keys(res.first_contact, res.rail_after_contact, res.pocket, res.pocketed_at,
+                                  judge.numbers, int(ctx.cue), judge.rail_detail)
+    for k in np.flatnonzero(ties):  # balls dropping at one instant: their order is the event log's
+        one = run_shots(ctx.simulator, ctx.balls, np.asarray(angles)[k:k + 1], np.asarray(speeds)[k:k + 1],
+                        ball=ctx.cue, validate=False, events=True,
+                        side=np.asarray(sides)[k:k + 1] if spin else None,
+                        top=np.asarray(tops)[k:k + 1] if spin else None)
+        ev = one.events
+        keys[k], masks[k] = _key_from_log(np.stack([ev.kind, ev.ball, ev.other], axis=1), one.pocket[0],
+                                          judge.numbers, int(ctx.cue), judge.rail_detail)
+    ids = judge.ids(keys, masks)
+    values = np.asarray(judge.values)[ids]
+    nxt = np.asarray(judge.next, dtype=np.int64)[ids]
+    lens = np.array([len(t) for t in judge.targets], dtype=np.int64)
+    t_off = np.concatenate([[0], np.cumsum(lens)]).astype(np.int64)
+    t_flat = np.concatenate(judge.targets).astype(np.int64) if judge.targets else np.zeros(0, np.int64)
+    return Judged(pots, scratch, hit, values, res, nxt, ids, t_flat, t_off)
 
 
 def _value(pots: Any, scratch: Any, hit: Any) -> Any:
@@ -130,161 +295,119 @@ def _value(pots: Any, scratch: Any, hit: Any) -> Any:
     return pots - 3.0 * scratch - np.where(hit, 0.0, 0.5)
 
 
-def _judge(ctx: ShotContext, events: Any, pocket: np.ndarray) -> tuple[float, int, list[int]]:
-    """A candidate under the game's rules (from its event log and pockets): its value (+10 won, -10 lost, -3 a
-    foul, +1 for keeping the turn plus 0.1 per ball that counts, 0 for a legal miss), who shoots next (1: the
-    shooter again, 0: the opponent without ball in hand, -1: nobody or ball in hand) and the rows of the balls that
-    player may hit first."""
-    return _judge_arrays(ctx, np.stack([events.kind, events.ball, events.other], axis=1), pocket)
-
-
-def _judge_arrays(ctx: ShotContext, events: np.ndarray, pocket: np.ndarray) -> tuple[float, int, list[int]]:
-    """:func:`_judge` from the ``(M, 3)`` event array (kind, ball, other)."""
-    game = ctx.game
-    summary = summarize_arrays(events, pocket, game.numbers)
-    eight = pocket[game.row_of[8]] if game.needs_called_pocket() and 8 in game.row_of else None
-    state = game.state
-    call = game.rules.call(state, summary, ShotInfo(called_pocket=None if eight is None or eight < 0
-                                                    else int(eight)))
-    if call.game_over:
-        return (WIN_VALUE if call.winner == call.shooter else -WIN_VALUE), -1, []
-    if call.foul:
-        return FOUL_VALUE, -1, []
-    nxt = game.rules.next_state(state, call)
-    rows = [game.row_of[n] for n in game.rules.legal_targets(nxt)]
-    if call.turn_over:
-        return 0.0, 0, rows
-    return KEEP_VALUE + BALL_VALUE * len(set(call.pocketed) - set(call.respot)), 1, rows
-
-
 # --- position: the ease of the next shot -------------------------------------------------------------------------
 
 def next_shot_ease(table: Any, radius: np.ndarray, pos: np.ndarray, on: np.ndarray, cue: int,
                    targets: Sequence[Sequence[int]], sigma: float, max_cut: float = MAX_CUT,
-                   windows: dict | None = None) -> np.ndarray:
+                   windows: dict | None = None, physics: Any = None) -> np.ndarray:
     """For ``N`` layouts (``pos`` (N, B, 2), ``on`` (N, B)), the probability of potting the easiest ghost-ball shot
     from the cue ball at one of the layout's ``targets[k]`` (rows), when the cue angle errs with spread ``sigma``
-    (rad): :func:`~.shots.pot_probability` of its tolerance, the tolerance being the geometric player's (the pocket window seen
-    from the ball, scaled by ``(r_c + r_o) cos(cut) / (d_cue + r_c + r_o)``, divided by 10 when the cue ball's or the
-    ball's path is blocked; cuts beyond ``max_cut`` and ghost balls off the table do not count). Vectorised over the
-    layouts. Pocket windows are computed once per target position, to ``WINDOW_GRID`` (``windows``: a cache that
-    may be shared between calls on one table)."""
+    (rad): :func:`~.shots.pot_probability` of its tolerance, the tolerance being the geometric player's (the pocket
+    window seen from the ball, scaled by ``(r_c + r_o) cos(cut) / (d_cue + r_c + r_o)``, divided by 10 when the cue
+    ball's or the ball's path is blocked; cuts beyond ``max_cut`` and ghost balls off the table do not count). One
+    compiled call (:func:`billiards_env.players.geometry.layouts_ease`); ``windows`` is not used any more (the
+    windows are exact, computed once per ball position that the layouts share with the first)."""
+    from billiards_env.physics import Physics
+
     n = len(pos)
-    best = np.zeros(n)
     if n == 0:
-        return best
-    windows = {} if windows is None else windows
-    rc = float(radius[cue])
-    groups: dict[tuple[int, bytes], list[int]] = {}
-    for k in range(n):
-        for j in targets[k]:
-            if on[k, j] and on[k, cue]:
-                groups.setdefault((int(j), pos[k, j].tobytes()), []).append(k)
-    q = WINDOW_GRID
-    cos_max = math.cos(max_cut)
-    lo = np.array([rc, rc])
-    hi = np.array([table.length - rc, table.width - rc])
-    for (j, key), rows in groups.items():
-        rows_a = np.asarray(rows)
-        o = pos[rows[0], j]
-        rj = float(radius[j])
-        contact = rc + rj
-        cell = (rj, round(float(o[0]) / q), round(float(o[1]) / q))
-        wins = windows.get(cell)
-        if wins is None:
-            wins = [(p, w) for p in range(table.n_pockets) if (w := pocket_window(o, rj, table, p)) is not None]
-            windows[cell] = wins
-        c = pos[rows_a, cue]  # (n, 2)
-        others = on[rows_a].copy()
-        others[:, cue] = False
-        others[:, j] = False
-        balls = pos[rows_a]  # (n, B, 2)
-        for p, (obj_angle, half, d_obj) in wins:
-            u = direction_vector(obj_angle)
-            g = ghost_ball_position(o, obj_angle, contact)
-            if not (np.all(g >= lo) and np.all(g <= hi)):
-                continue
-            v = g - c
-            d = np.hypot(v[:, 0], v[:, 1])
-            cos_cut = (v @ u) / np.maximum(d, 1e-12)
-            ok = cos_cut >= cos_max
-            if not ok.any():
-                continue
-            tol = half * contact * cos_cut / (d + contact)
-            blocked = _segments_blocked(c, np.broadcast_to(g, c.shape), balls, others, rc + radius) | \
-                _segments_blocked(np.broadcast_to(o, c.shape), np.broadcast_to(o + u * d_obj, c.shape), balls,
-                                  others, rj + radius)
-            tol = np.where(blocked, tol / 10.0, tol)
-            tol = np.where(ok, tol, 0.0)
-            best[rows_a] = np.maximum(best[rows_a], tol)
-    return np.array([pot_probability(t, sigma) for t in best.tolist()])
+        return np.zeros(0)
+    pos = np.ascontiguousarray(pos, dtype=np.float64)
+    lens = np.array([len(t) for t in targets], dtype=np.int64)
+    t_off = np.concatenate([[0], np.cumsum(lens)]).astype(np.int64)
+    t_flat = np.concatenate([np.asarray(t, dtype=np.int64) for t in targets]) if n else np.zeros(0, np.int64)
+    return layouts_ease(pos, np.ascontiguousarray(on, dtype=np.bool_), np.ascontiguousarray(radius, dtype=np.float64),
+                        int(cue), np.arange(n, dtype=np.int64), np.arange(n, dtype=np.int64), t_flat, t_off,
+                        *table_model(table, physics or Physics()), float(sigma), float(max_cut), pos[0])
 
 
-def _segments_blocked(a: np.ndarray, b: np.ndarray, q: np.ndarray, mask: np.ndarray, clearance: np.ndarray
-                      ) -> np.ndarray:
-    """Per row: does a ball of ``q`` (n, B, 2) selected by ``mask`` (n, B) come closer than ``clearance`` (B,) to the
-    segment ``a -> b`` (n, 2)?"""
-    ab = b - a
-    L2 = np.maximum((ab * ab).sum(axis=1), 1e-24)
-    aq = q - a[:, None, :]
-    t = np.clip((aq * ab[:, None, :]).sum(axis=2) / L2[:, None], 0.0, 1.0)
-    closest = a[:, None, :] + t[:, :, None] * ab[:, None, :]
-    dq = q - closest
-    d2 = (dq * dq).sum(axis=2)
-    return (mask & (d2 < clearance[None, :] ** 2)).any(axis=1)
+def _positions(ctx: ShotContext, st: SearchSettings, j: Judged, rows: np.ndarray, tm: Any
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """Position term and pot probability of the next shot (the shooter's when he keeps the turn, the opponent's
+    after a legal miss, 0 otherwise) for batch rows ``rows`` (see :func:`search_shot`)."""
+    term = np.zeros(len(j.values))
+    ease = np.zeros(len(j.values))
+    rows = np.asarray(rows, dtype=np.int64)
+    rows = rows[j.next[rows] >= 0]
+    if len(rows) == 0:
+        return term, ease
+    sigma = max(ctx.angle_noise, st.ease_noise)
+    b = ctx.balls
+    e = layouts_ease(j.res.pos, j.res.on_table, np.ascontiguousarray(b.radius, dtype=np.float64), int(ctx.cue), rows,
+                     j.group, j.t_flat, j.t_off, *tm, float(sigma), MAX_CUT,
+                     np.ascontiguousarray(b.pos, dtype=np.float64))
+    ease[rows] = e
+    term[rows] = np.where(j.next[rows] == 1, st.position_weight, -st.safety_weight) * e
+    return term, ease
 
 
 # --- the search -------------------------------------------------------------------------------------------------
 
-def _candidates(ctx: ShotContext, st: SearchSettings) -> list[tuple[float, float, float, float, str]]:
-    """``(angle, speed, side, top, source)`` of every candidate: each ghost-ball shot at the angle offsets (stun, its
-    own speed), at the speed factors with every tip variant (when the shooter sets tip offsets: the spin model and an
-    action with spin dims; else stun only), then the sweep."""
+@dataclass
+class Candidates:
+    """Candidate shots as arrays: ``angle``, ``speed``, ``side``, ``top``, and ``source``: the ghost-ball shot
+    (``shots[source]``: target, pocket) each comes from, -1 for the sweep."""
+
+    angle: np.ndarray
+    speed: np.ndarray
+    side: np.ndarray
+    top: np.ndarray
+    source: np.ndarray
+    shots: np.ndarray  #: (G, 2) target, pocket of the ghost-ball shots used
+
+    def name(self, k: int) -> str:
+        s = int(self.source[k])
+        return "sweep" if s < 0 else f"ghost:{int(self.shots[s, 0])}->{int(self.shots[s, 1])}"
+
+
+def _candidates(ctx: ShotContext, st: SearchSettings, tm: Any = None) -> Candidates:
+    """Every candidate: each ghost-ball shot (cut up to 85 deg, the ``n_geometric`` easiest) at the angle offsets
+    (stun, its own speed), at the speed factors with every tip variant (when the shooter sets tip offsets: the spin
+    model and an action with spin dims; else stun only), then the sweep of directions (from the direct hit on the
+    nearest legal ball) and speeds."""
     lo, hi = ctx.speed_range
     spins = st.spins if ctx.tip_offsets else ((0.0, 0.0),)
-    out: list[tuple[float, float, float, float, str]] = []
-    shots = ghost_ball_shots(ctx.balls, ctx.table, ctx.physics, ctx.cue, ctx.targets, ctx.speed_range,
-                             math.radians(85.0))
-    for s in shots[: st.n_geometric]:
-        src = f"ghost:{s.target}->{s.pocket}"
-        for da in st.angle_offsets:
-            out.append((s.angle + da, min(max(s.speed, lo), hi), 0.0, 0.0, src))
-        for f in st.speed_factors:
-            for side, top in spins:
-                if f == 1.0 and side == 0.0 and top == 0.0:
-                    continue  # already in (offset 0)
-                out.append((s.angle, min(max(s.speed * f, lo), hi), side, top, src))
-    base = direct_hit(ctx.balls, ctx.cue, ctx.targets)[0]
-    for k in range(st.sweep_angles):
-        a = base + 2.0 * math.pi * k / st.sweep_angles
-        for f in st.sweep_speeds:
-            out.append((a, lo + f * (hi - lo), 0.0, 0.0, "sweep"))
-    return out
-
-
-def _positions(ctx: ShotContext, st: SearchSettings, res: BatchResult, values: np.ndarray, nxt: np.ndarray,
-               targets: list[list[int]], rows: np.ndarray, windows: dict) -> tuple[np.ndarray, np.ndarray]:
-    """Position term and pot probability of the next shot (the shooter's when he keeps the turn, the opponent's
-    after a legal miss, 0 otherwise) for batch rows ``rows`` (see :func:`search_shot`)."""
-    term = np.zeros(len(values))
-    ease = np.zeros(len(values))
-    rows = np.asarray(rows, dtype=np.int64)
-    rows = rows[nxt[rows] >= 0]
-    if len(rows) == 0:
-        return term, ease
-    sigma = max(ctx.angle_noise, st.ease_noise)
-    e = next_shot_ease(ctx.table, ctx.balls.radius, res.pos[rows], res.on_table[rows], ctx.cue,
-                       [targets[k] for k in rows], sigma, windows=windows)
-    ease[rows] = e
-    term[rows] = np.where(nxt[rows] == 1, st.position_weight, -st.safety_weight) * e
-    return term, ease
+    b = ctx.balls
+    rows = ghost_shots(np.ascontiguousarray(b.pos, dtype=np.float64), np.ascontiguousarray(b.on_table, dtype=np.bool_),
+                       np.ascontiguousarray(b.radius, dtype=np.float64), np.ascontiguousarray(b.mass, dtype=np.float64),
+                       int(ctx.cue), np.asarray(ctx.targets, dtype=np.int64),
+                       *(tm or table_model(ctx.table, ctx.physics)), float(lo), float(hi), math.radians(85.0),
+                       ARRIVE_SPEED, np.asarray(SPEED_FACTORS), True)[: st.n_geometric]
+    offsets = np.asarray(st.angle_offsets, dtype=np.float64)
+    variants = [(f, sd, tp) for f in st.speed_factors for sd, tp in spins
+                if not (f == 1.0 and sd == 0.0 and tp == 0.0)]  # (1.0, stun) is already in (offset 0)
+    vf = np.array([v[0] for v in variants], dtype=np.float64)
+    per = len(offsets) + len(variants)
+    g = len(rows)
+    ang = np.empty(g * per)
+    spd = np.empty(g * per)
+    sd = np.zeros(g * per)
+    tp = np.zeros(g * per)
+    for i in range(g):
+        a, v = rows[i, COL_ANGLE], rows[i, COL_SPEED]
+        k = i * per
+        ang[k:k + len(offsets)] = a + offsets
+        spd[k:k + len(offsets)] = min(max(v, lo), hi)
+        k += len(offsets)
+        ang[k:k + len(variants)] = a
+        spd[k:k + len(variants)] = np.minimum(np.maximum(v * vf, lo), hi)
+        sd[k:k + len(variants)] = [x[1] for x in variants]
+        tp[k:k + len(variants)] = [x[2] for x in variants]
+    base = direct_hit(b, ctx.cue, ctx.targets)[0]
+    ks = np.repeat(np.arange(st.sweep_angles, dtype=np.float64), len(st.sweep_speeds))
+    fs = np.tile(np.asarray(st.sweep_speeds, dtype=np.float64), st.sweep_angles)
+    sweep_a = base + 2.0 * math.pi * ks / st.sweep_angles
+    sweep_v = lo + fs * (hi - lo)
+    n_s = len(ks)
+    return Candidates(np.concatenate([ang, sweep_a]), np.concatenate([spd, sweep_v]),
+                      np.concatenate([sd, np.zeros(n_s)]), np.concatenate([tp, np.zeros(n_s)]),
+                      np.concatenate([np.repeat(np.arange(g), per), np.full(n_s, -1)]).astype(np.int64),
+                      rows[:, [COL_TARGET, COL_POCKET]].astype(np.int64))
 
 
 def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
                 rng: np.random.Generator | None = None, windows: dict | None = None,
-                playable: Callable[[list[tuple[float, float, float, float, str]]],
-                                   list[tuple[float, float, float, float, str]]] | None = None
-                ) -> tuple[float, float, Outcome]:
+                playable: Any = None, judge: Judge | None = None) -> tuple[float, float, Outcome]:
     """Simulate candidate shots with the exact solver (in batches: one compiled call for all candidates, one for
     the noisy re-runs of the best) and pick the best.
 
@@ -296,62 +419,62 @@ def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
     foul. The ``top_k`` best totals are re-simulated ``robust_samples`` times under the shot noise (the env's, or the
     small ``robust_*`` defaults), and the shot with the best mean total (the unperturbed run counted as one sample)
     is played; in an env without shot noise the unperturbed total comes first and the mean only breaks ties.
-    Returns ``(angle, speed, outcome)``; the outcome holds the tip offsets. ``windows``: a pocket-window cache for
-    :func:`next_shot_ease` (one per table, kept by the player across its decisions). ``playable``: maps
-    the candidates to the shots an action type can express (see :func:`playable_shots`), so the search values what
-    will be played.
+    Returns ``(angle, speed, outcome)``; the outcome holds the tip offsets. ``playable``: maps the candidates to the
+    shots an action type can express (:func:`playable_shots`), so the search values what will be played.
+    ``judge``: the rules' verdicts of this decision so far (:class:`Judge`, shared by the searches of one decision).
+    ``windows``: not used (kept for callers that pass a cache).
     """
     st = settings or SearchSettings()
     rng = rng or np.random.default_rng(0)
     lo, hi = ctx.speed_range
     spin = ctx.physics.friction == "spin"
-    cands = _candidates(ctx, st)
+    tm = table_model(ctx.table, ctx.physics)
+    c = _candidates(ctx, st, tm)
     if playable is not None:
-        cands = playable(cands)
-    c_arr = np.array([c[:4] for c in cands], dtype=float)
-    pots, scratch, hit, values, res, nxt, nxt_targets = _simulate_judged(ctx, c_arr[:, 0], c_arr[:, 1],
-                                                                         c_arr[:, 2], c_arr[:, 3])
-    windows = {} if windows is None else windows
+        c.angle, c.speed, c.side, c.top = _play(playable, c)
+    if ctx.game is not None and judge is None:
+        judge = Judge(ctx)
+    j = _simulate_judged(ctx, c.angle, c.speed, c.side, c.top, judge)
+    values = j.values
     # Position terms move a total by less than the gap between outcome classes (win 10 > kept 1-1.9 + 2 >
     # missed 0 - 1 > foul -3): only the best class's candidates need them.
     near = np.flatnonzero(values >= values.max() - 0.95)
-    term, ease = _positions(ctx, st, res, values, nxt, nxt_targets, near, windows)
+    term, ease = _positions(ctx, st, j, near, tm)
     totals = values + term
     order = np.argsort(-totals, kind="stable")
     shortlist: list[Outcome] = []
     for k in order:
-        angle, speed, side, top, src = cands[k]
+        angle, speed, side, top = float(c.angle[k]), float(c.speed[k]), float(c.side[k]), float(c.top[k])
         if all(abs(angle - q.angle) > 1e-3 or abs(speed - q.speed) > 0.05 or side != q.side or top != q.top
                for q in shortlist):
-            shortlist.append(Outcome(angle, speed, int(pots[k]), bool(scratch[k]), bool(hit[k]), float(values[k]),
-                                     position=float(ease[k]), side=side, top=top, source=src,
-                                     total=float(totals[k])))
+            shortlist.append(Outcome(angle, speed, int(j.pots[k]), bool(j.scratch[k]), bool(j.hit[k]),
+                                     float(values[k]), position=float(ease[k]), side=side, top=top,
+                                     source=c.name(k), total=float(totals[k])))
         if len(shortlist) >= st.top_k:
             break
     sa = ctx.angle_noise if ctx.angle_noise > 0 else st.robust_angle
     ss = ctx.speed_noise if ctx.speed_noise > 0 else st.robust_speed
     stn = (ctx.tip_noise if ctx.tip_noise > 0 else st.robust_tip) if spin else 0.0
     # Robustness: the noisy re-runs of the whole shortlist in one batch (drawn in the order of a loop).
-    noisy = []
-    for o in shortlist:
-        for _ in range(st.robust_samples):
-            a = o.angle + rng.normal(0.0, sa)
-            v = min(max(float(o.speed * (1.0 + rng.normal(0.0, ss))), lo), hi)
-            sd, tp = o.side, o.top
-            if stn > 0.0:
-                sd, tp = _tip_inside(sd + rng.normal(0.0, stn), tp + rng.normal(0.0, stn))
-            noisy.append((a, v, sd, tp))
-    if noisy:
-        n_arr = np.array(noisy, dtype=float)
-        _, _, _, n_values, n_res, n_nxt, n_targets = _simulate_judged(ctx, n_arr[:, 0], n_arr[:, 1], n_arr[:, 2],
-                                                                      n_arr[:, 3])
-        n_term, _ = _positions(ctx, st, n_res, n_values, n_nxt, n_targets, np.arange(len(noisy)), windows)
-        n_totals = n_values + n_term
+    m = st.robust_samples
+    if shortlist and m > 0:
+        per = 4 if stn > 0.0 else 2
+        z = rng.standard_normal(len(shortlist) * m * per).reshape(len(shortlist) * m, per)
+        base = np.array([[o.angle, o.speed, o.side, o.top] for o in shortlist]).repeat(m, axis=0)
+        n_a = base[:, 0] + (0.0 + sa * z[:, 0])
+        n_v = np.minimum(np.maximum(base[:, 1] * (1.0 + (0.0 + ss * z[:, 1])), lo), hi)
+        n_sd, n_tp = base[:, 2].copy(), base[:, 3].copy()
+        if stn > 0.0:
+            for i in range(len(base)):
+                n_sd[i], n_tp[i] = _tip_inside(n_sd[i] + (0.0 + stn * z[i, 2]), n_tp[i] + (0.0 + stn * z[i, 3]))
+        nj = _simulate_judged(ctx, n_a, n_v, n_sd, n_tp, judge)
+        n_term, _ = _positions(ctx, st, nj, np.arange(len(n_a)), tm)
+        n_totals = nj.values + n_term
         # Without shot noise in the env the unperturbed outcome is what happens: the noisy runs only break ties
         # (towards shots with margin); with noise, every run is a sample of what may happen.
         exact = ctx.angle_noise == 0.0 and ctx.speed_noise == 0.0 and (not spin or ctx.tip_noise == 0.0)
         for q, o in enumerate(shortlist):
-            block = n_totals[q * st.robust_samples:(q + 1) * st.robust_samples]
+            block = n_totals[q * m:(q + 1) * m]
             mean = float((o.total + block.sum()) / (1 + len(block)))
             o.robust = o.total + 0.5 * mean if exact else mean
     else:
@@ -376,33 +499,30 @@ def placement_candidates(ctx: ShotContext, n: int, backs: tuple[float, ...] = (0
                          sigma: float = 0.002) -> list[tuple[float, float]]:
     """Ball in hand: up to ``n`` legal places (at least a ball apart) that leave the easiest shot, best first. The
     places tried: ``backs`` metres behind the ghost ball of every legal ball and pocket, straight in and at the
-    ``cuts`` (for position after the pot), moved to the nearest legal point; each scored by :func:`next_shot_ease`."""
-    u = ctx.table_state
+    ``cuts`` (for position after the pot), moved to the nearest legal point (off the balls and the pockets' capture
+    circles, in ``ctx.place_area``); each scored by :func:`next_shot_ease`. Two compiled calls
+    (:func:`billiards_env.players.geometry.search_places`, :func:`~billiards_env.players.geometry.places_ease`)."""
+    from billiards_env.physics.errors import SceneError
+
     b = ctx.balls
     r = float(b.radius[ctx.cue])
-    x0, x1, y0, y1 = ctx.place_area
-    places: list[tuple[float, float]] = []
-    for j in ctx.targets:
-        obj = b.pos[j]
-        for p in range(ctx.table.n_pockets):
-            win = pocket_window(obj, float(b.radius[j]), ctx.table, p)
-            if win is None:
-                continue
-            ghost = ghost_ball_position(obj, win[0], r + float(b.radius[j]))
-            for back in backs:
-                for cut in cuts:
-                    x, y = ghost - back * direction_vector(win[0] + cut)
-                    places.append(u.legal_cue_position(min(max(x, x0), x1), min(max(y, y0), y1)))
-    if not places:
-        return [u.legal_cue_position(0.5 * (x0 + x1), 0.5 * (y0 + y1))]
-    pos = np.repeat(b.pos[None], len(places), axis=0)
-    pos[:, ctx.cue] = places
-    on = np.repeat(b.on_table[None], len(places), axis=0)
-    on[:, ctx.cue] = True
-    ease = next_shot_ease(ctx.table, b.radius, pos, on, ctx.cue, [ctx.targets] * len(places), sigma)
+    tm = table_model(ctx.table, ctx.physics)
+    pos = np.ascontiguousarray(b.pos, dtype=np.float64)
+    on = np.ascontiguousarray(b.on_table, dtype=np.bool_)
+    radius = np.ascontiguousarray(b.radius, dtype=np.float64)
+    targets = np.asarray(ctx.targets, dtype=np.int64)
+    places, status = search_places(pos, on, radius, int(ctx.cue), targets, *tm,
+                                   np.asarray(ctx.place_area, dtype=np.float64), np.asarray(backs, dtype=np.float64),
+                                   np.asarray(cuts, dtype=np.float64))
+    if status == 2:
+        raise SceneError(f"no legal point for ball row {ctx.cue} in the area {ctx.place_area}: it is covered by "
+                         "other balls")
+    if status == 1:  # no window anywhere: the middle of the area
+        return [(float(places[0, 0]), float(places[0, 1]))]
+    ease = places_ease(places, pos, on, radius, int(ctx.cue), targets, *tm, float(sigma), MAX_CUT)
     out: list[tuple[float, float]] = []
     for k in np.argsort(-ease, kind="stable"):
-        p = places[k]
+        p = (float(places[k, 0]), float(places[k, 1]))
         if all(math.hypot(p[0] - q[0], p[1] - q[1]) > 2.0 * r for q in out):
             out.append(p)
         if len(out) >= n:
@@ -410,30 +530,79 @@ def placement_candidates(ctx: ShotContext, n: int, backs: tuple[float, ...] = (0
     return out
 
 
-def playable_shots(state: Any, codec: Any, place: tuple[float, float] | None = None
-                   ) -> Callable[[list[tuple[float, float, float, float, str]]],
-                                 list[tuple[float, float, float, float, str]]] | None:
+# --- what an action type can play ----------------------------------------------------------------------------------
+
+class Playable:
+    """The map of candidate shots to the shots their actions play: through an action type (``codec``) and back,
+    float32 as every action is (see :func:`playable_shots`). Call it on a list of ``(angle, speed, side, top,
+    source)`` tuples, or :meth:`arrays` on arrays; :meth:`action_for` gives the action of a shot it returned. An
+    action type that maps arrays itself (``round_trip_arrays``: the plain absolute aim) is asked once for all."""
+
+    def __init__(self, state: Any, codec: Any, place: tuple[float, float] | None = None) -> None:
+        self.state = state
+        self.codec = codec
+        self.place = place
+        self.actions: dict[tuple[float, float, float, float], np.ndarray] = {}
+        self._fast = bool(getattr(codec, "plain_absolute", False))
+        self._last: tuple[np.ndarray, ...] | None = None
+
+    def __call__(self, cands: list[tuple[float, float, float, float, str]]
+                 ) -> list[tuple[float, float, float, float, str]]:
+        if not cands:
+            return []
+        arr = np.array([c[:4] for c in cands], dtype=np.float64)
+        a, v, sd, tp = self.arrays(arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3])
+        return [(float(a[k]), float(v[k]), float(sd[k]), float(tp[k]), c[4]) for k, c in enumerate(cands)]
+
+    def arrays(self, angles: np.ndarray, speeds: np.ndarray, sides: np.ndarray, tops: np.ndarray
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The played ``(angles, speeds, sides, tops)`` of candidate arrays."""
+        if self._fast:
+            angle, speed, side, top, dims = self.codec.round_trip_arrays(angles, speeds, sides, tops)
+            self._last = (angle, speed, side, top, dims)
+            return angle, speed, side, top
+        codec, state = self.codec, self.state
+        out = np.empty((len(angles), 4))
+        for k in range(len(angles)):
+            action = to_action(codec, state, float(angles[k]), float(speeds[k]), place=self.place,
+                               side=float(sides[k]), top=float(tops[k]))
+            s = codec.shot(state, action)
+            out[k] = (s.angle, s.speed, s.side, s.top)
+            self.actions[(s.angle, s.speed, s.side, s.top)] = action
+        return out[:, 0], out[:, 1], out[:, 2], out[:, 3]
+
+    def action_for(self, angle: float, speed: float, side: float, top: float) -> np.ndarray | None:
+        """The action (its shot dims at least) of a shot :meth:`arrays` returned, None if it returned none such."""
+        if not self._fast:
+            return self.actions.get((angle, speed, side, top))
+        if self._last is None:
+            return None
+        a, v, sd, tp, dims = self._last
+        hit = np.flatnonzero((a == angle) & (v == speed) & (sd == side) & (tp == top))
+        return dims[hit[-1]] if len(hit) else None
+
+
+def _play(playable: Any, c: Candidates) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The played shots of candidates ``c`` through ``playable`` (a :class:`Playable`, or a function on lists of
+    ``(angle, speed, side, top, source)``)."""
+    if hasattr(playable, "arrays"):
+        return playable.arrays(c.angle, c.speed, c.side, c.top)
+    out = playable([(float(c.angle[k]), float(c.speed[k]), float(c.side[k]), float(c.top[k]), c.name(k))
+                    for k in range(len(c.angle))])
+    arr = np.array([o[:4] for o in out], dtype=np.float64).reshape(-1, 4)
+    return arr[:, 0], arr[:, 1], arr[:, 2], arr[:, 3]
+
+
+def playable_shots(state: Any, codec: Any, place: tuple[float, float] | None = None) -> Playable | None:
     """The map of candidates ``(angle, speed, side, top, source)`` to the shots their actions play: through the
-    env's action type and back, float32 as every action is. The search then values exactly what the env will
+    action type ``codec`` and back, float32 as every action is. The search then values exactly what the env will
     play: a break or a hard shot through a cluster is chaotic (a 1e-8 rad change of the cue angle, the float32
     rounding of an action, can drop the 8), and an action type may not express every direction (``ghost`` aim:
-    only direct hits, within ``ghost_max_angle``). ``codec``: the action type played in (None: no round trip)."""
+    only direct hits, within ``ghost_max_angle``). The plain absolute aim is mapped on arrays, every other type
+    shot by shot. None without an action type."""
     if codec is None:
         return None
-
-    def play(cands: list[tuple[float, float, float, float, str]]) -> list[tuple[float, float, float, float, str]]:
-        out = []
-        for angle, speed, side, top, src in cands:
-            action = to_action(codec, state, angle, speed, place=place, side=side, top=top)
-            s = codec.shot(state, action)
-            out.append((s.angle, s.speed, s.side, s.top, src))
-            play.actions[(s.angle, s.speed, s.side, s.top)] = action
-        return out
-
-    #: The action of every shot returned (a round trip is not always exact: near a full hit the ghost aim's
-    #: float32 resolution is finer than its inverse), so the player plays the very action it searched.
-    play.actions = {}  # type: ignore[attr-defined]
-    return play
+    return Playable(state, codec, place)
 
 
 class SearchPlayer:
@@ -446,13 +615,10 @@ class SearchPlayer:
         self.settings = settings or SearchSettings()
         self.rng = np.random.default_rng(seed)
         self.last: Outcome | None = None
-        self._windows: dict = {}
-        self._table: Any = None
 
     def reset(self, seed: int | None = None) -> None:
         if seed is not None:
             self.rng = np.random.default_rng(seed)
-        self._windows = {}
 
     def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
         """The action (in ``codec``, an action type; default the env's) of the best shot found on ``source`` (a
@@ -465,17 +631,16 @@ class SearchPlayer:
             place, angle, speed = break_shot(ctx)
             self.last = None
             return to_action(codec, state, angle, speed, place=place)
-        if ctx.table is not self._table or len(self._windows) > 50_000:
-            self._table, self._windows = ctx.table, {}
         places: list[Any] = [None]
         if ctx.place_area is not None:
             sigma = max(ctx.angle_noise, self.settings.ease_noise)
             places = placement_candidates(ctx, max(self.settings.placements, 1), sigma=sigma)
-        best: tuple[Any, float, float, Outcome] | None = None
+        judge = Judge(ctx) if ctx.game is not None else None  # one game state: the verdicts are shared
+        best: tuple[Any, float, float, Outcome, Any] | None = None
         for place in places:
             play = playable_shots(state, codec, place)
             with state.cue_moved_to(place):
-                angle, speed, out = search_shot(ctx, self.settings, self.rng, self._windows, play)
+                angle, speed, out = search_shot(ctx, self.settings, self.rng, None, play, judge)
             if best is None or out.robust > best[3].robust:
                 best = (place, angle, speed, out, play)
         assert best is not None
@@ -484,7 +649,7 @@ class SearchPlayer:
             pocket = self._called_pocket(ctx, angle, speed, self.last)
         action = to_action(codec, state, angle, speed, place=place, pocket=pocket, side=self.last.side,
                            top=self.last.top)
-        searched = None if play is None else play.actions.get((angle, speed, self.last.side, self.last.top))
+        searched = None if play is None else play.action_for(angle, speed, self.last.side, self.last.top)
         if searched is not None:  # the shot dims of the very action searched (the call and place stay)
             shot_dims = 4 if codec.spin else 2
             action[:shot_dims] = searched[:shot_dims]
@@ -502,5 +667,5 @@ class SearchPlayer:
         return k if k >= 0 else None
 
 
-__all__ = ["Outcome", "SearchSettings", "search_shot", "SearchPlayer", "playable_shots", "next_shot_ease",
-           "placement_candidates", "SPIN_VARIANTS"]
+__all__ = ["Outcome", "SearchSettings", "search_shot", "SearchPlayer", "playable_shots", "Playable", "next_shot_ease",
+           "placement_candidates", "shot_keys", "Judge", "SPIN_VARIANTS"]

@@ -7,8 +7,9 @@ of the window of directions along which the object ball enters the capture circl
 corner and side pockets approached at a shallow angle are aimed correctly (or rejected when the window is empty).
 
 Every formula (rays, pocket windows, ghost ball, cut, clear paths, the collision, the cue ball's path) is
-:mod:`billiards_env.physics.aim`'s and the motion law :mod:`billiards_env.physics.motion`'s; this module holds the
-players' choices: which shots to consider, how hard to hit them, how to score them.
+:mod:`billiards_env.physics.aim`'s and the motion law :mod:`billiards_env.physics.motion`'s; the players' choices
+(which shots to consider, how hard to hit them, how to score them) are compiled in :mod:`.geometry`, one call per
+table; this module gives them as :class:`ShotCandidate` objects.
 
 All angles are radians (0 = +x, counter-clockwise), speeds m/s, distances m.
 """
@@ -20,13 +21,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from billiards_env.physics import Balls, Physics, Table
-from billiards_env.physics.aim import (aim_angle, cut_angle, cut_cosine, deflected_cue_velocity, direction_vector,
-                                       ghost_ball_position, object_ball_speed, path_enters_pocket, pocket_window,
-                                       segment_blocked)
-from billiards_env.physics.motion import launch_speed, speed_after_distance, stop_distance
+from billiards_env.physics.aim import aim_angle, pocket_window, segment_blocked  # noqa: F401 (re-exported)
+from billiards_env.physics.motion import launch_speed, stop_distance
 
-#: Default largest cut angle the aimer accepts (beyond it the shot is too thin to be reliable).
-MAX_CUT = math.radians(80.0)
+from .geometry import (COL_ANGLE, COL_CLEAR, COL_CUT, COL_D_CUE, COL_D_OBJ, COL_NEED, COL_OBJ_ANGLE, COL_POCKET,
+                       COL_REACH, COL_RISK, COL_SCORE, COL_SPEED, COL_TARGET, COL_TOL, COL_WINDOW, MAX_CUT,
+                       ghost_shots, table_model)
 
 
 @dataclass(frozen=True)
@@ -83,79 +83,28 @@ def ghost_ball_shots(
     deflected path (with cushion bounces) runs into a pocket. The cue speed gets the object ball to the capture
     circle still moving at ``arrive_speed`` under the table's friction law; if the cue ball would then follow into
     a pocket, the arrival speed is scaled by the next of ``speed_factors`` until one is safe.
+
+    One compiled call for the whole table (:func:`billiards_env.players.geometry.ghost_shots`); this wraps its rows
+    as :class:`ShotCandidate` objects.
     """
     on = balls.on_table
     if targets is None:
         targets = [i for i in range(len(balls)) if i != cue and on[i]]
-    C = balls.pos[cue]
-    rc = float(balls.radius[cue])
-    mc = float(balls.mass[cue])
-    e = physics.ball_restitution
-    lo, hi = speed_range
-    out: list[ShotCandidate] = []
-    for j in targets:
-        if not on[j] or j == cue:
-            continue
-        O = balls.pos[j]
-        ro = float(balls.radius[j])
-        mo = float(balls.mass[j])
-        others_c = [k for k in range(len(balls)) if on[k] and k not in (cue, j)]
-        opos = balls.pos[others_c] if others_c else np.zeros((0, 2))
-        orad = balls.radius[others_c] if others_c else np.zeros(0)
-        for p in range(table.n_pockets):
-            win = pocket_window(O, ro, table, p)
-            if win is None:
-                continue
-            obj_angle, half, d_obj = win
-            u = direction_vector(obj_angle)
-            G = ghost_ball_position(O, obj_angle, rc + ro)
-            cg = G - C
-            d_cue = float(np.hypot(*cg))
-            if d_cue < 1e-9:
-                continue
-            cue_dir = cg / d_cue
-            cos_cut = cut_cosine(cue_dir, u)
-            cut = cut_angle(cue_dir, u)
-            if cut > max_cut:
-                continue
-            # The ghost position must be on the table.
-            if not (rc <= G[0] <= table.length - rc and rc <= G[1] <= table.width - rc):
-                continue
-            clear = not segment_blocked(C, G, opos, orad + rc) and \
-                not segment_blocked(O, O + u * d_obj, opos, orad + ro)
-            transfer = object_ball_speed(1.0, cos_cut, e, mc, mo)  # object ball speed per unit impact speed
-            speed, v0, risk, reachable = hi, math.inf, True, False
-            # Softest arrival that leaves the cue ball out of the pockets (tried in order).
-            for factor in speed_factors:
-                v_obj = speed_to_travel(d_obj, arrive_speed * factor, physics)
-                v_impact = v_obj / max(transfer, 1e-6)
-                v_need = speed_to_travel(d_cue, v_impact, physics)
-                if v_need > hi:
-                    if not reachable and factor == speed_factors[0]:
-                        v0 = v_need
-                    continue
-                s_try = float(max(v_need, lo))
-                v_imp = max(speed_after_distance(s_try, d_cue, *physics.path_args), 1e-6)
-                r_try = check_scratch and path_enters_pocket(
-                    G, deflected_cue_velocity(v_imp * cue_dir, u, e, mc, mo), rc, table, physics)
-                if not reachable or (risk and not r_try):
-                    speed, v0, risk, reachable = s_try, v_need, r_try, True
-                if not risk:
-                    break
-            if not reachable:
-                speed = float(hi)
-            tol = half * (rc + ro) * cos_cut / (d_cue + rc + ro)
-            score = tol
-            if not clear:
-                score /= 10.0
-            if not reachable:
-                score /= 3.0
-            if risk:
-                score /= 2.0
-            out.append(ShotCandidate(j, p, float(aim_angle(C, G)), speed, float(v0), obj_angle, cut,
-                                     d_cue, d_obj, half, tol, clear, reachable, risk, score))
-    out.sort(key=lambda s: -s.score)
-    return out
+    rows = ghost_shots(np.ascontiguousarray(balls.pos, dtype=np.float64), np.ascontiguousarray(on, dtype=np.bool_),
+                       np.ascontiguousarray(balls.radius, dtype=np.float64),
+                       np.ascontiguousarray(balls.mass, dtype=np.float64), int(cue),
+                       np.asarray(targets, dtype=np.int64).reshape(-1), *table_model(table, physics),
+                       float(speed_range[0]), float(speed_range[1]), float(max_cut), float(arrive_speed),
+                       np.asarray(speed_factors, dtype=np.float64).reshape(-1), bool(check_scratch))
+    return [candidate_of(r) for r in rows]
+
+
+def candidate_of(row: np.ndarray) -> ShotCandidate:
+    """The :class:`ShotCandidate` of a shot row of :mod:`billiards_env.players.geometry`."""
+    r = row.tolist()
+    return ShotCandidate(int(r[COL_TARGET]), int(r[COL_POCKET]), r[COL_ANGLE], r[COL_SPEED], r[COL_NEED],
+                         r[COL_OBJ_ANGLE], r[COL_CUT], r[COL_D_CUE], r[COL_D_OBJ], r[COL_WINDOW], r[COL_TOL],
+                         r[COL_CLEAR] != 0.0, r[COL_REACH] != 0.0, r[COL_RISK] != 0.0, r[COL_SCORE])
 
 
 def direct_hit(balls: Balls, cue: int = 0, targets: list[int] | None = None) -> tuple[float, int]:

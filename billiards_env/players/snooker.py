@@ -34,11 +34,13 @@ from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.rules.snooker import (COLOUR_VALUES, VALUE_NAMES, Snooker, SnookerState, ball_on_mask,
                                          judge_batch)
 
-from .search import WINDOW_GRID
 from .shots import MAX_CUT, ghost_ball_shots, pot_probability, speed_to_travel
 
 #: Default speed range of snooker shots (m/s).
 SPEED_RANGE = (0.2, 7.0)
+#: Grid (m) of the object-ball positions whose pocket windows the next-pot chances cache: a window is the same to
+#: well within the noise for balls less than a millimetre apart.
+WINDOW_GRID = 5e-4
 
 
 @dataclass(frozen=True)

@@ -142,6 +142,76 @@ def test_pocket_window_straight_above_the_side_pocket_and_inside_it():
     assert aim.pocket_window((1.0, 0.5), R, hidden, 0) is None
 
 
+def _sampled_window(obj, radius, table, pocket, samples=aim.WINDOW_SAMPLES):
+    """The window as it was computed before the closed form: every one of ``samples`` directions ray-tested
+    (numpy.linspace across the capture circle's angular size), the widest run of good ones."""
+    obj = np.asarray(obj, dtype=float)
+    c = table.pocket_xy[pocket]
+    pr = float(table.pocket_radius[pocket])
+    dist = float(np.hypot(*(c - obj)))
+    theta_c = aim.aim_angle(obj, c)
+    if dist <= pr:
+        return float(theta_c), math.pi / 2, 0.0
+    half = aim.angular_radius(pr, dist)
+    angles = theta_c + np.linspace(-half, half, samples)
+    ux, uy = np.cos(angles), np.sin(angles)
+    t_in = aim.ray_circle_entries(obj[0], obj[1], ux, uy, c[0], c[1], pr)
+    t_wall = aim.ray_cushion_distances(obj[0], obj[1], ux, uy, table.length, table.width, radius)
+    ok = list(np.isfinite(t_in) & (t_in <= t_wall + 1e-9)) + [False]
+    best_len, best_start, run_start = 0, 0, None
+    for k, flag in enumerate(ok):
+        if flag and run_start is None:
+            run_start = k
+        elif not flag and run_start is not None:
+            if k - run_start > best_len:
+                best_len, best_start = k - run_start, run_start
+            run_start = None
+    if best_len == 0:
+        return None
+    lo, hi = best_start, best_start + best_len - 1
+    step = 2.0 * half / (samples - 1)
+    centre = 0.5 * (angles[lo] + angles[hi])
+    d_in = aim.ray_circle_entry(obj[0], obj[1], math.cos(centre), math.sin(centre), c[0], c[1], pr)
+    return float(centre), float(0.5 * ((hi - lo) * step + step)), float(d_in if math.isfinite(d_in) else dist)
+
+
+def test_closed_form_window_is_the_sampled_window():
+    # The compiled window ray-tests only the samples next to where the capture circle crosses a cushion line; it
+    # must equal ray-testing all of them, bit for bit: on random balls (some frozen on a cushion, some next to or
+    # inside a pocket), on the standard table, a small one and one with odd pockets (one behind a cushion line,
+    # one inside the playing area), with 41, 7 and 2 samples.
+    rng = np.random.default_rng(11)
+    tables = (TABLE, Table(length=2.24, width=1.12),
+              Table(pocket_xy=[[1.0, -0.01], [2.0, 1.3], [0.5, 0.6], [L / 2, -0.03]],
+                    pocket_radius=[0.05, 0.04, 0.03, 0.05]))
+    checked = found = 0
+    for table in tables:
+        for n in range(1500):
+            p = rng.uniform([R, R], [table.length - R, table.width - R])
+            if n % 5 == 0:  # frozen on a cushion line
+                axis = int(rng.integers(2))
+                p[axis] = R if rng.random() < 0.5 else (table.length, table.width)[axis] - R
+            elif n % 5 == 1:  # next to a pocket
+                k = int(rng.integers(table.n_pockets))
+                p = np.clip(table.pocket_xy[k] + rng.normal(0.0, 0.06, 2), R, [table.length - R, table.width - R])
+            for k in range(table.n_pockets):
+                for samples in ((41,) if n % 7 else (41, 7, 2)):
+                    expected = _sampled_window(p, R, table, k, samples)
+                    assert aim.pocket_window(p, R, table, k, samples) == expected
+                    checked += 1
+                    found += expected is not None
+    assert checked > 20000 and 0.5 * checked < found < checked  # windows and blocked pockets both exercised
+
+
+def test_dot2_rounds_as_numpy_dot_and_cut_cosine_clips():
+    rng = np.random.default_rng(3)
+    a, b = rng.normal(size=(2000, 2)), rng.normal(size=(2000, 2))
+    assert [aim.dot2(x[0], x[1], y[0], y[1]) for x, y in zip(a, b)] == [float(np.dot(x, y)) for x, y in zip(a, b)]
+    u = _unit(20.0)
+    assert aim.cut_cosine(u, u * (1.0 + 1e-15)) == 1.0  # clipped into [-1, 1]
+    assert aim.cut_cosine(u, -u) == pytest.approx(-1.0)
+
+
 def test_pocket_bearings_and_mouth_axes():
     axes = aim.pocket_mouth_axes(TABLE)
     s = 1 / math.sqrt(2)

@@ -1,0 +1,814 @@
+"""The players' geometry, compiled: every ghost-ball shot of a table in one call, on plain arrays.
+
+A decision of the geometric player (and the candidate lists of the ``candidates`` types, the search player's
+candidates and position terms) needs, for every legal ball and pocket: the pocket's entry window, the ghost ball,
+the cut, whether the paths are clear, the cue speed under the table's motion law, whether the cue ball would follow
+into a pocket, and the shot's ease. These kernels compute them for a whole table in one compiled call (numba,
+cached), on arrays: the balls ``pos`` (B, 2), ``on`` (B,), ``radius`` (B,), ``mass`` (B,), the legal ``targets``
+(rows) and a :class:`TableModel` (the table and the motion law as plain values). Nothing here reads an env.
+
+The formulas are :mod:`billiards_env.physics.aim`'s (windows, ghost ball, cut, clear paths, the collision, a lone
+ball's path) and :mod:`billiards_env.physics.motion`'s (how fast, how far); this module holds the players' choices:
+which shots, how hard, how they rank, where to put the cue ball. Each kernel reproduces the Python it replaced
+(:func:`billiards_env.players.shots.ghost_ball_shots`, ``choose_placement``, ``GeometricPlayer.act``) choice for
+choice: the same shots, the same floating-point operations in the same order (tests/players/test_geometry.py).
+
+A shot is a row of :data:`N_COLS` floats (columns ``COL_*``), ranked easiest first.
+"""
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numba import njit
+
+from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between, dot2, ghost_point,
+                                       lone_path_pocket, pocket_windows, segment_blocked_by,
+                                       segment_touched_by)
+from billiards_env.physics.motion import launch_speed, speed_after_distance
+
+#: Columns of a shot row.
+COL_TARGET, COL_POCKET, COL_ANGLE, COL_SPEED, COL_NEED, COL_OBJ_ANGLE, COL_CUT, COL_D_CUE, COL_D_OBJ, COL_WINDOW, \
+    COL_TOL, COL_CLEAR, COL_REACH, COL_RISK, COL_SCORE, COL_CLEAR_OBJ = range(16)
+N_COLS = 16
+#: Columns of a window row (:func:`target_windows`): centre direction, half-width, distance, found (1.0 / 0.0).
+WIN_ANGLE, WIN_HALF, WIN_DIST, WIN_FOUND = range(4)
+
+#: The geometric player's cut limits: the easiest shot up to ``MAX_CUT``, else up to ``FALLBACK_CUT``.
+MAX_CUT = math.radians(80.0)
+FALLBACK_CUT = math.radians(88.0)
+#: Object-ball speed (m/s) a shot leaves at the pocket's capture circle, and the factors tried on it (in order)
+#: until the cue ball does not follow into a pocket.
+ARRIVE_SPEED = 0.35
+SPEED_FACTORS = (1.0, 0.6, 0.3, 1.8, 3.0)
+#: The speed of the fallback full-ball hit when there is no pot (clipped to the speed range).
+DIRECT_HIT_SPEED = 2.0
+#: Ball in hand: the cue ball is tried these distances (m) straight behind each ghost ball.
+PLACE_BACKS = (0.25, 0.5)
+#: Cushion bounces followed when checking whether the cue ball runs into a pocket.
+SCRATCH_BOUNCES = 4
+
+
+class Model(NamedTuple):
+    """The table and the motion law as the compiled code reads them (built inside it by :func:`model`)."""
+
+    length: float
+    width: float
+    cushion_e: float  #: cushion restitution
+    pocket_xy: np.ndarray  #: (K, 2) capture-circle centres
+    pocket_r: np.ndarray  #: (K,) capture radii
+    law: int  #: the distance-domain motion law (:attr:`billiards_env.physics.Physics.path_args`)
+    decel: float
+    k: float
+    v_min: float  #: the speed below which a ball stops
+    ball_e: float  #: ball-ball restitution
+
+
+class TableModel(NamedTuple):
+    """The table and the motion law as plain arrays, what the compiled functions take (:func:`table_model`):
+    ``pocket_xy`` (K, 2), ``pocket_r`` (K,) and ``params`` = ``(length, width, cushion restitution, law, a, k,
+    min speed, ball restitution)`` (``law, a, k``: :attr:`billiards_env.physics.Physics.path_args`). Three arrays,
+    so that a call costs no more than passing three arrays."""
+
+    pocket_xy: np.ndarray
+    pocket_r: np.ndarray
+    params: np.ndarray
+
+
+def table_model(table, physics) -> TableModel:
+    """The :class:`TableModel` of a :class:`~billiards_env.physics.Table` and a
+    :class:`~billiards_env.physics.Physics`."""
+    law, a, k = physics.path_args
+    params = np.array([table.length, table.width, table.cushion_restitution, law, a, k, physics.min_speed,
+                       physics.ball_restitution], dtype=np.float64)
+    # Copies: writeable arrays (the table's are read-only), so every caller hits the same compiled signature.
+    return TableModel(np.array(table.pocket_xy, dtype=np.float64), np.array(table.pocket_radius, dtype=np.float64),
+                      params)
+
+
+@njit(cache=True)
+def model(pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray) -> Model:
+    """The :class:`Model` of a :class:`TableModel`'s arrays."""
+    return Model(params[0], params[1], params[2], pocket_xy, pocket_r, int(params[3]), params[4], params[5],
+                 params[6], params[7])
+
+
+# --- windows ----------------------------------------------------------------------------------------------------
+
+@njit(cache=True)
+def windows_of(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Model,
+               samples: int = WINDOW_SAMPLES) -> np.ndarray:
+    """The pocket windows of every target: ``(T, K, 4)`` rows ``(centre, half-width, distance, found)``
+    (:func:`billiards_env.physics.aim.pocket_windows`)."""
+    k_p = tm.pocket_r.shape[0]
+    out = np.zeros((targets.shape[0], k_p, 4))
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width, samples,
+                       out[t])
+    return out
+
+
+@njit(cache=True)
+def target_windows(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, pocket_xy: np.ndarray,
+                   pocket_r: np.ndarray, params: np.ndarray) -> np.ndarray:
+    """:func:`windows_of` on a :class:`TableModel`'s arrays (41 samples)."""
+    return windows_of(pos, radius, targets, model(pocket_xy, pocket_r, params))
+
+
+# --- one ghost-ball shot ----------------------------------------------------------------------------------------
+
+@njit(cache=True)
+def _speed_to_travel(d: float, v_end: float, tm: Model) -> float:
+    """Launch speed to roll ``d`` and still move at ``v_end`` (raised to just above the stopping speed)."""
+    v_end = max(v_end, tm.v_min * 1.05 + 1e-6)
+    return launch_speed(d, v_end, tm.law, tm.decel, tm.k)
+
+
+@njit(cache=True)
+def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: float, w_half: float, w_dist: float,
+             pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, tm: Model,
+             lo: float, hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool,
+             scratch: np.ndarray, floor: float = -math.inf) -> bool:
+    """The ghost-ball shot from the cue ball at ``(cx, cy)`` sending ball ``j`` into pocket ``p`` through its
+    window ``(w_angle, w_half, w_dist)``, written into ``out`` (a row of :data:`N_COLS`); False (and ``out``
+    untouched) when there is none: the ghost ball on the cue ball, a cut beyond ``max_cut``, or the ghost ball off
+    the table.
+
+    The cue speed gets the object ball to the capture circle still moving at ``arrive`` under the motion law; if
+    the cue ball would then follow into a pocket (its deflected path with up to :data:`SCRATCH_BOUNCES` cushion
+    bounces, ``check_scratch``), the arrival speed is scaled by the next of ``factors`` until one is safe. The
+    ease (``COL_TOL``): the pocket window seen from the ball scaled by ``(rc + ro) cos(cut) / (d_cue + rc + ro)``;
+    the score divides it by 10 when a path is blocked, by 3 when the speed is out of range and by 2 for the
+    scratch risk. ``scratch``: a (2, 2) work array. ``floor``: skip (return False) a shot whose ease cannot
+    beat it (the score is at most the tolerance), before its paths and speeds are worked out."""
+    rc = radius[cue]
+    mc = mass[cue]
+    ox = pos[j, 0]
+    oy = pos[j, 1]
+    ro = radius[j]
+    mo = mass[j]
+    e = tm.ball_e
+    ux = math.cos(w_angle)
+    uy = math.sin(w_angle)
+    gx, gy = ghost_point(ox, oy, w_angle, rc + ro)
+    cgx = gx - cx
+    cgy = gy - cy
+    d_cue = math.hypot(cgx, cgy)
+    if d_cue < 1e-9:
+        return False
+    cdx = cgx / d_cue
+    cdy = cgy / d_cue
+    cos_cut = cos_between(cdx, cdy, ux, uy)
+    cut = math.acos(cos_cut)
+    if cut > max_cut:
+        return False
+    if not (rc <= gx <= tm.length - rc and rc <= gy <= tm.width - rc):
+        return False
+    tol = w_half * (rc + ro) * cos_cut / (d_cue + rc + ro)
+    if tol <= floor:
+        return False
+    clear_obj = not segment_blocked_by(ox, oy, ox + ux * w_dist, oy + uy * w_dist, pos, on, radius, cue, j, ro)
+    clear = clear_obj and not segment_blocked_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc)
+    collide_into(scratch, 1.0 * cos_cut, 0.0, 0.0, 0.0, -1.0, 0.0, mc, mo, e)
+    transfer = scratch[1, 0]  # object ball speed per unit impact speed
+    speed = hi
+    v0 = math.inf
+    risk = True
+    reachable = False
+    for f in range(factors.shape[0]):
+        v_obj = _speed_to_travel(w_dist, arrive * factors[f], tm)
+        v_impact = v_obj / max(transfer, 1e-6)
+        v_need = _speed_to_travel(d_cue, v_impact, tm)
+        if v_need > hi:
+            if not reachable and factors[f] == factors[0]:
+                v0 = v_need
+            continue
+        s_try = max(v_need, lo)
+        v_imp = max(speed_after_distance(s_try, d_cue, tm.law, tm.decel, tm.k), 1e-6)
+        r_try = False
+        if check_scratch:
+            collide_into(scratch, v_imp * cdx, v_imp * cdy, 0.0, 0.0, -ux, -uy, mc, mo, e)
+            r_try = lone_path_pocket(gx, gy, scratch[0, 0], scratch[0, 1], rc, tm.length, tm.width, tm.cushion_e,
+                                     tm.pocket_xy, tm.pocket_r, tm.law, tm.decel, tm.k, tm.v_min,
+                                     SCRATCH_BOUNCES) >= 0
+        if not reachable or (risk and not r_try):
+            speed = s_try
+            v0 = v_need
+            risk = r_try
+            reachable = True
+        if not risk:
+            break
+    if not reachable:
+        speed = hi
+    score = tol
+    if not clear:
+        score /= 10.0
+    if not reachable:
+        score /= 3.0
+    if risk:
+        score /= 2.0
+    out[COL_TARGET] = j
+    out[COL_POCKET] = p
+    out[COL_ANGLE] = math.atan2(gy - cy, gx - cx)
+    out[COL_SPEED] = speed
+    out[COL_NEED] = v0
+    out[COL_OBJ_ANGLE] = w_angle
+    out[COL_CUT] = cut
+    out[COL_D_CUE] = d_cue
+    out[COL_D_OBJ] = w_dist
+    out[COL_WINDOW] = w_half
+    out[COL_TOL] = tol
+    out[COL_CLEAR] = 1.0 if clear else 0.0
+    out[COL_REACH] = 1.0 if reachable else 0.0
+    out[COL_RISK] = 1.0 if risk else 0.0
+    out[COL_SCORE] = score
+    out[COL_CLEAR_OBJ] = 1.0 if clear_obj else 0.0
+    return True
+
+
+@njit(cache=True)
+def rank_rows(rows: np.ndarray) -> np.ndarray:
+    """``rows`` sorted by score, highest first; equal scores keep their order (a stable sort)."""
+    order = np.argsort(-rows[:, COL_SCORE], kind="mergesort")
+    return rows[order]
+
+
+# --- every shot of a table ---------------------------------------------------------------------------------------
+
+@njit(cache=True)
+def ghost_shots_from(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray,
+                     cue: int, targets: np.ndarray, windows: np.ndarray, tm: Model, lo: float, hi: float,
+                     max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool) -> np.ndarray:
+    """Every ghost-ball shot (:func:`shot_row`) from the cue ball at ``(cx, cy)`` at every ball of ``targets`` on
+    the table (``windows``: theirs, :func:`target_windows`) into every pocket, easiest first: ``(M, N_COLS)``."""
+    k_p = tm.pocket_r.shape[0]
+    out = np.empty((targets.shape[0] * k_p, N_COLS))
+    scratch = np.empty((2, 2))
+    n = 0
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if not on[j] or j == cue:
+            continue
+        for p in range(k_p):
+            w = windows[t, p]
+            if w[WIN_FOUND] == 0.0:
+                continue
+            if shot_row(out[n], cx, cy, j, p, w[WIN_ANGLE], w[WIN_HALF], w[WIN_DIST], pos, on, radius, mass, cue,
+                        tm, lo, hi, max_cut, arrive, factors, check_scratch, scratch):
+                n += 1
+    return rank_rows(out[:n])
+
+
+@njit(cache=True)
+def ghost_shots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float,
+                hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool) -> np.ndarray:
+    """Every ghost-ball shot of the table (a :class:`TableModel`'s arrays) from where the cue ball lies
+    (:func:`ghost_shots_from`), easiest first, windows included: :func:`billiards_env.players.shots.ghost_ball_shots`
+    as rows."""
+    tm = model(pocket_xy, pocket_r, params)
+    windows = windows_of(pos, radius, targets, tm)
+    return ghost_shots_from(pos[cue, 0], pos[cue, 1], pos, on, radius, mass, cue, targets, windows, tm, lo, hi,
+                            max_cut, arrive, factors, check_scratch)
+
+
+@njit(cache=True)
+def best_shot_row(rows: np.ndarray, max_cut: float, fallback_cut: float) -> int:
+    """The geometric player's shot among ranked ``rows``: the first with a cut up to ``max_cut``, else the first
+    up to ``fallback_cut``; -1 if none."""
+    for i in range(rows.shape[0]):
+        if rows[i, COL_CUT] <= max_cut:
+            return i
+    for i in range(rows.shape[0]):
+        if rows[i, COL_CUT] <= fallback_cut:
+            return i
+    return -1
+
+
+@njit(cache=True)
+def nearest_target(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, cue: int, targets: np.ndarray) -> int:
+    """The ball of ``targets`` on the table (not the cue ball) nearest to ``(cx, cy)`` (the first of equals);
+    -1 if none."""
+    best = -1
+    best_d = math.inf
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if not on[j] or j == cue:
+            continue
+        d = math.hypot(pos[j, 0] - cx, pos[j, 1] - cy)
+        if d < best_d:
+            best = j
+            best_d = d
+    return best
+
+
+# --- ball in hand: the nearest legal point --------------------------------------------------------------------------
+
+@njit(cache=True)
+def _split(x: float) -> tuple:
+    t = x * 134217729.0  # Veltkamp's constant, 2^27 + 1
+    hi = t - (t - x)
+    return hi, x - hi
+
+
+@njit(cache=True)
+def _exact_product(x: float, y: float) -> tuple:
+    xh, xl = _split(x)
+    yh, yl = _split(y)
+    p = xh * yh
+    q = xh * yl + xl * yh
+    z = p + q
+    return z, p - z + q + xl * yl
+
+
+@njit(cache=True)
+def py_hypot(x: float, y: float) -> float:
+    """``math.hypot(x, y)`` exactly as CPython 3.11 computes it (a scaled, compensated sum and one correction
+    step: correctly rounded in nearly all cases), so compiled code agrees with Python code that uses it."""
+    ax = abs(x)
+    ay = abs(y)
+    mx = max(ax, ay)
+    if math.isinf(mx):
+        return mx
+    if math.isnan(x) or math.isnan(y):
+        return math.nan
+    if mx == 0.0:
+        return mx
+    _, e = math.frexp(mx)
+    if e < -1023:  # subnormal: the hardware's hypot (the last bit may differ from CPython's)
+        return math.hypot(x, y)
+    scale = math.ldexp(1.0, -e)
+    csum = 1.0
+    frac1 = 0.0
+    frac2 = 0.0
+    for v in (ax, ay):
+        v = v * scale
+        ph, pl = _exact_product(v, v)
+        s = csum + ph
+        frac2 += (csum - s) + ph
+        csum = s
+        frac1 += pl
+    h = math.sqrt(csum - 1.0 + (frac1 + frac2))
+    ph, pl = _exact_product(-h, h)
+    s = csum + ph
+    frac2 += (csum - s) + ph
+    csum = s
+    frac1 += pl
+    h += (csum - 1.0 + (frac1 + frac2)) / (2.0 * h)
+    return h / scale
+
+
+@njit(cache=True)
+def free_discs(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, row: int, holes: np.ndarray,
+               clearance: float) -> np.ndarray:
+    """The forbidden discs ``(D, 3)`` (x, y, radius) for ball ``row``: every other ball on the table (the two
+    radii and ``clearance``), then each hole of ``holes`` (rows x, y, r: the pockets' capture circles) widened by
+    ``clearance`` (see :func:`billiards_env.physics.layout.nearest_free_point`)."""
+    n_on = 0
+    for k in range(pos.shape[0]):
+        if on[k] and k != row:
+            n_on += 1
+    out = np.empty((n_on + holes.shape[0], 3))
+    d = 0
+    for k in range(pos.shape[0]):
+        if on[k] and k != row:
+            out[d, 0] = pos[k, 0]
+            out[d, 1] = pos[k, 1]
+            out[d, 2] = radius[row] + radius[k] + clearance
+            d += 1
+    for h in range(holes.shape[0]):
+        out[d, 0] = holes[h, 0]
+        out[d, 1] = holes[h, 1]
+        out[d, 2] = holes[h, 2] + clearance
+        d += 1
+    return out
+
+
+@njit(cache=True)
+def _legal(px: float, py: float, discs: np.ndarray, x0: float, x1: float, y0: float, y1: float) -> bool:
+    if not (x0 <= px <= x1 and y0 <= py <= y1):
+        return False
+    for d in range(discs.shape[0]):
+        rr = discs[d, 2] * (1.0 - 1e-12)
+        if (px - discs[d, 0]) ** 2 + (py - discs[d, 1]) ** 2 < rr ** 2:
+            return False
+    return True
+
+
+@njit(cache=True)
+def _consider(qx: float, qy: float, px: float, py: float, discs: np.ndarray, x0: float, x1: float, y0: float,
+              y1: float, best: np.ndarray) -> None:
+    qx = min(max(qx, x0), x1)
+    qy = min(max(qy, y0), y1)
+    d2 = (qx - px) ** 2 + (qy - py) ** 2
+    if d2 < best[2] and _legal(qx, qy, discs, x0, x1, y0, y1):  # the nearer test first: it is the cheap one
+        best[0] = qx
+        best[1] = qy
+        best[2] = d2
+
+
+@njit(cache=True)
+def nearest_free(x: float, y: float, discs: np.ndarray, x0: float, x1: float, y0: float, y1: float) -> tuple:
+    """The legal point nearest to ``(x, y)``: inside ``[x0, x1] x [y0, y1]`` and outside every disc of ``discs``
+    (:func:`free_discs`). Returns ``(x, y, found)``. The exact nearest point of the rectangle minus the discs, as
+    :func:`billiards_env.physics.layout.nearest_free_point` finds it (the same candidates, in the same order: the
+    clipped point, its projections onto the discs, the disc/disc and disc/edge crossings, the corners)."""
+    px = min(max(x, x0), x1)
+    py = min(max(y, y0), y1)
+    if _legal(px, py, discs, x0, x1, y0, y1):
+        return px, py, True
+    best = np.array([0.0, 0.0, math.inf])
+    nd = discs.shape[0]
+    for a in range(nd):  # projections onto each disc's boundary
+        cx, cy, rr = discs[a, 0], discs[a, 1], discs[a, 2]
+        dx = px - cx
+        dy = py - cy
+        d = py_hypot(dx, dy)
+        ux, uy = (dx / d, dy / d) if d > 0.0 else (1.0, 0.0)
+        _consider(cx + ux * rr, cy + uy * rr, px, py, discs, x0, x1, y0, y1, best)
+    for a in range(nd):  # disc/disc intersections
+        ax, ay, ar = discs[a, 0], discs[a, 1], discs[a, 2]
+        for b in range(a + 1, nd):
+            bx, by, br = discs[b, 0], discs[b, 1], discs[b, 2]
+            d = py_hypot(bx - ax, by - ay)
+            if d == 0.0 or d > ar + br or d < abs(ar - br):
+                continue
+            along = (ar * ar - br * br + d * d) / (2.0 * d)
+            h = math.sqrt(max(ar * ar - along * along, 0.0))
+            mx = ax + along * (bx - ax) / d
+            my = ay + along * (by - ay) / d
+            _consider(mx - h * (by - ay) / d, my + h * (bx - ax) / d, px, py, discs, x0, x1, y0, y1, best)
+            _consider(mx + h * (by - ay) / d, my - h * (bx - ax) / d, px, py, discs, x0, x1, y0, y1, best)
+    for a in range(nd):  # disc/edge intersections
+        cx, cy, rr = discs[a, 0], discs[a, 1], discs[a, 2]
+        for ex in (x0, x1):
+            h2 = rr * rr - (ex - cx) ** 2
+            if h2 >= 0.0:
+                _consider(ex, cy + math.sqrt(h2), px, py, discs, x0, x1, y0, y1, best)
+                _consider(ex, cy - math.sqrt(h2), px, py, discs, x0, x1, y0, y1, best)
+        for ey in (y0, y1):
+            h2 = rr * rr - (ey - cy) ** 2
+            if h2 >= 0.0:
+                _consider(cx + math.sqrt(h2), ey, px, py, discs, x0, x1, y0, y1, best)
+                _consider(cx - math.sqrt(h2), ey, px, py, discs, x0, x1, y0, y1, best)
+    for qx, qy in ((x0, y0), (x0, y1), (x1, y0), (x1, y1)):
+        _consider(qx, qy, px, py, discs, x0, x1, y0, y1, best)
+    if best[2] == math.inf:
+        return px, py, False
+    return best[0], best[1], True
+
+
+@njit(cache=True)
+def pocket_holes(tm: Model) -> np.ndarray:
+    """The pockets' capture circles as holes ``(K, 3)`` (x, y, r) for :func:`free_discs`."""
+    k_p = tm.pocket_r.shape[0]
+    out = np.empty((k_p, 3))
+    for p in range(k_p):
+        out[p, 0] = tm.pocket_xy[p, 0]
+        out[p, 1] = tm.pocket_xy[p, 1]
+        out[p, 2] = tm.pocket_r[p]
+    return out
+
+
+# --- ball in hand: where to put the cue ball -------------------------------------------------------------------------
+
+@njit(cache=True)
+def place_for_shot(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                   targets: np.ndarray, windows: np.ndarray, tm: Model, lo: float, hi: float, max_cut: float,
+                   area: np.ndarray, backs: np.ndarray, arrive: float, factors: np.ndarray) -> tuple:
+    """Ball in hand: the legal cue position (in ``area`` = (x0, x1, y0, y1), off the other balls and the pockets'
+    capture circles) that leaves the easiest ghost-ball shot. The places tried: ``backs`` metres straight behind
+    the ghost ball of every target and pocket with a window, moved to the nearest legal point; each scored by the
+    best ghost-ball shot at that target from there (:func:`shot_row`; the first best wins). Without any window: the
+    middle of the area. Returns ``(x, y, found)`` (found False: no legal point at all)."""
+    x0, x1, y0, y1 = area[0], area[1], area[2], area[3]
+    discs = free_discs(pos, on, radius, cue, pocket_holes(tm), 1e-6)
+    k_p = tm.pocket_r.shape[0]
+    row = np.empty(N_COLS)
+    scratch = np.empty((2, 2))
+    best_x = 0.0
+    best_y = 0.0
+    best_score = -1.0
+    have = False
+    r = radius[cue]
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        contact = r + radius[j]
+        for p in range(k_p):
+            w = windows[t, p]
+            if w[WIN_FOUND] == 0.0:
+                continue
+            gx, gy = ghost_point(pos[j, 0], pos[j, 1], w[WIN_ANGLE], contact)
+            for b in range(backs.shape[0]):
+                x = gx - backs[b] * math.cos(w[WIN_ANGLE])
+                y = gy - backs[b] * math.sin(w[WIN_ANGLE])
+                px, py, ok = nearest_free(min(max(x, x0), x1), min(max(y, y0), y1), discs, x0, x1, y0, y1)
+                if not ok:
+                    return px, py, False
+                score = -1.0
+                if on[j] and j != cue:
+                    for q in range(k_p):
+                        wq = windows[t, q]
+                        # A shot whose ease cannot beat the best place so far, nor this place's best shot, cannot
+                        # change the choice: skipped before its paths and speeds.
+                        if wq[WIN_FOUND] != 0.0 and shot_row(row, px, py, j, q, wq[WIN_ANGLE], wq[WIN_HALF],
+                                                             wq[WIN_DIST], pos, on, radius, mass, cue, tm, lo, hi,
+                                                             max_cut, arrive, factors, True, scratch,
+                                                             max(best_score, score)):
+                            if row[COL_SCORE] > score:
+                                score = row[COL_SCORE]
+                if score < 0.0:
+                    score = 0.0
+                if score > best_score:
+                    best_x, best_y, best_score, have = px, py, score, True
+    if not have:
+        return nearest_free(0.5 * (x0 + x1), 0.5 * (y0 + y1), discs, x0, x1, y0, y1)
+    return best_x, best_y, True
+
+
+@njit(cache=True)
+def choose_place(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                 targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float,
+                 hi: float, max_cut: float, area: np.ndarray, backs: np.ndarray) -> tuple:
+    """:func:`place_for_shot` on a :class:`TableModel`'s arrays (the default arrival speed and factors)."""
+    tm = model(pocket_xy, pocket_r, params)
+    return place_for_shot(pos, on, radius, mass, cue, targets, windows_of(pos, radius, targets, tm), tm, lo, hi,
+                          max_cut, area, backs, ARRIVE_SPEED, np.array(SPEED_FACTORS))
+
+
+# --- the geometric player's decision ---------------------------------------------------------------------------
+
+@njit(cache=True)
+def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                              targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray,
+                              lo: float, hi: float, area: np.ndarray, in_hand: bool, is_break: bool,
+                              max_cut: float) -> tuple:
+    """The geometric player's shot (see :func:`geometric_decision`) as
+    ``(place_x, place_y, placed, angle, speed, shot_row, rows, status)``: ``placed`` whether the cue ball is placed
+    (ball in hand), ``rows`` the ranked ghost-ball shots from where it is played (cut up to
+    ``max(max_cut, 88 deg)``), ``shot_row`` the index of the one played (-1: the break or the fallback direct hit),
+    ``status`` 0, or 1 when ball in hand found no legal point."""
+    tm = model(pocket_xy, pocket_r, params)
+    factors = np.array(SPEED_FACTORS)
+    empty = np.empty((0, N_COLS))
+    px = 0.0
+    py = 0.0
+    if is_break:
+        if in_hand:
+            px = min(max(0.25 * tm.length, area[0]), area[1])
+            py = min(max(0.5 * tm.width, area[2]), area[3])
+            cx, cy = px, py
+        else:
+            cx, cy = pos[cue, 0], pos[cue, 1]
+        j = -1
+        best_d = math.inf
+        for t in range(targets.shape[0]):
+            d = math.hypot(pos[targets[t], 0] - cx, pos[targets[t], 1] - cy)
+            if d < best_d:
+                j = targets[t]
+                best_d = d
+        if j < 0:
+            j = cue
+        return px, py, in_hand, math.atan2(pos[j, 1] - cy, pos[j, 0] - cx), hi, -1, empty, 0
+    windows = windows_of(pos, radius, targets, tm)
+    if in_hand:
+        backs = np.array(PLACE_BACKS)
+        px, py, ok = place_for_shot(pos, on, radius, mass, cue, targets, windows, tm, lo, hi, max_cut, area, backs,
+                                  ARRIVE_SPEED, factors)
+        if not ok:
+            return px, py, in_hand, 0.0, hi, -1, empty, 1
+        cx, cy = px, py
+        on2 = on.copy()
+        on2[cue] = True
+    else:
+        cx, cy = pos[cue, 0], pos[cue, 1]
+        on2 = on
+    rows = ghost_shots_from(cx, cy, pos, on2, radius, mass, cue, targets, windows, tm, lo, hi,
+                            max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+    k = best_shot_row(rows, max_cut, FALLBACK_CUT)
+    if k >= 0:
+        return px, py, in_hand, rows[k, COL_ANGLE], rows[k, COL_SPEED], k, rows, 0
+    angle = 0.0
+    j = nearest_target(cx, cy, pos, on2, cue, targets)
+    if j >= 0:
+        angle = math.atan2(pos[j, 1] - cy, pos[j, 0] - cx)
+    return px, py, in_hand, angle, min(max(DIRECT_HIT_SPEED, lo), hi), -1, rows, 0
+
+
+# --- the ease of the next shot (the search player's position term) ------------------------------------------------
+
+@njit(cache=True)
+def _ball_windows(j: int, pos: np.ndarray, radius: np.ndarray, tm: Model, base_pos: np.ndarray,
+                  base_win: np.ndarray, base_have: np.ndarray, fresh: np.ndarray) -> np.ndarray:
+    """Ball ``j``'s pocket windows ``(K, 4)``: those of the base table (``base_win[j]``, worked out on first use)
+    when it has not moved from ``base_pos[j]``, else worked out into ``fresh``."""
+    if pos[j, 0] == base_pos[j, 0] and pos[j, 1] == base_pos[j, 1]:
+        if not base_have[j]:
+            pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
+                           WINDOW_SAMPLES, base_win[j])
+            base_have[j] = True
+        return base_win[j]
+    pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width, WINDOW_SAMPLES,
+                   fresh)
+    return fresh
+
+
+@njit(cache=True)
+def layout_tolerance(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int,
+                     targets: np.ndarray, tm: Model, cos_max: float, base_pos: np.ndarray, base_win: np.ndarray,
+                     base_have: np.ndarray, fresh: np.ndarray) -> float:
+    """The easiest ghost-ball shot's cue-angle tolerance from the cue ball at ``(cx, cy)`` on the layout ``pos``,
+    ``on`` at a ball of ``targets``: the pocket window seen from the ball scaled by ``(rc + ro) cos(cut) /
+    (d_cue + rc + ro)``, divided by 10 when the cue ball's or the ball's path is blocked; cuts with a cosine below
+    ``cos_max`` and ghost balls off the table do not count (0 if nothing counts). No speeds: the position term of
+    the search player; a ball touching a path blocks it (:func:`~billiards_env.physics.aim.segment_touched_by`).
+    Windows of balls still where they were on the base table come from ``base_win``."""
+    rc = radius[cue]
+    best = 0.0
+    if not on[cue]:
+        return best
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if not on[j] or j == cue:
+            continue
+        rj = radius[j]
+        contact = rc + rj
+        ox = pos[j, 0]
+        oy = pos[j, 1]
+        wins = _ball_windows(j, pos, radius, tm, base_pos, base_win, base_have, fresh)
+        for p in range(wins.shape[0]):
+            if wins[p, WIN_FOUND] == 0.0:
+                continue
+            wa = wins[p, WIN_ANGLE]
+            gx, gy = ghost_point(ox, oy, wa, contact)
+            if not (rc <= gx <= tm.length - rc and rc <= gy <= tm.width - rc):
+                continue
+            ux = math.cos(wa)
+            uy = math.sin(wa)
+            vx = gx - cx
+            vy = gy - cy
+            d = math.hypot(vx, vy)
+            cos_cut = dot2(vx, vy, ux, uy) / max(d, 1e-12)
+            if cos_cut < cos_max:
+                continue
+            tol = wins[p, WIN_HALF] * contact * cos_cut / (d + contact)
+            if tol <= best:  # a blocked path only lowers it
+                continue
+            wd = wins[p, WIN_DIST]
+            if segment_touched_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc) or \
+                    segment_touched_by(ox, oy, ox + ux * wd, oy + uy * wd, pos, on, radius, cue, j, rj):
+                tol /= 10.0
+            if tol > best:
+                best = tol
+    return best
+
+
+@njit(cache=True)
+def pot_chance(tolerance: float, sigma: float) -> float:
+    """The chance a shot with cue-angle ``tolerance`` pots when the cue angle errs by a normal spread ``sigma``:
+    ``erf(tolerance / (sqrt(2) sigma))`` (:func:`billiards_env.players.shots.pot_probability`)."""
+    return math.erf(max(tolerance, 0.0) / (math.sqrt(2.0) * max(sigma, 1e-12)))
+
+
+@njit(cache=True)
+def layouts_ease(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int, rows: np.ndarray,
+                 group: np.ndarray, t_flat: np.ndarray, t_off: np.ndarray, pocket_xy: np.ndarray,
+                 pocket_r: np.ndarray, params: np.ndarray, sigma: float, max_cut: float,
+                 base_pos: np.ndarray) -> np.ndarray:
+    """For the layouts ``rows`` of ``pos`` (N, B, 2) / ``on`` (N, B) (e.g. the final tables of a batch of shots),
+    the chance of potting the easiest next shot (:func:`layout_tolerance` through :func:`pot_chance`) at one of
+    that layout's targets: ``t_flat[t_off[g]:t_off[g + 1]]`` for its group ``g = group[k]``. Windows are worked out
+    once per ball for balls still at ``base_pos`` (the table the shots were played from)."""
+    tm = model(pocket_xy, pocket_r, params)
+    nb = radius.shape[0]
+    base_win = np.zeros((nb, pocket_r.shape[0], 4))
+    base_have = np.zeros(nb, np.bool_)
+    fresh = np.zeros((pocket_r.shape[0], 4))
+    cos_max = math.cos(max_cut)
+    out = np.zeros(rows.shape[0])
+    for i in range(rows.shape[0]):
+        k = rows[i]
+        g = group[k]
+        tol = layout_tolerance(pos[k, cue, 0], pos[k, cue, 1], pos[k], on[k], radius, cue,
+                               t_flat[t_off[g]:t_off[g + 1]], tm, cos_max, base_pos, base_win, base_have, fresh)
+        out[i] = pot_chance(tol, sigma)
+    return out
+
+
+@njit(cache=True)
+def places_ease(places: np.ndarray, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int,
+                targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, sigma: float,
+                max_cut: float) -> np.ndarray:
+    """:func:`layouts_ease` for one table with the cue ball put at each of ``places`` (M, 2) in turn."""
+    tm = model(pocket_xy, pocket_r, params)
+    nb = radius.shape[0]
+    base_win = np.zeros((nb, pocket_r.shape[0], 4))
+    base_have = np.zeros(nb, np.bool_)
+    fresh = np.zeros((pocket_r.shape[0], 4))
+    on2 = on.copy()
+    on2[cue] = True
+    cos_max = math.cos(max_cut)
+    out = np.zeros(places.shape[0])
+    for i in range(places.shape[0]):
+        tol = layout_tolerance(places[i, 0], places[i, 1], pos, on2, radius, cue, targets, tm, cos_max, pos,
+                               base_win, base_have, fresh)
+        out[i] = pot_chance(tol, sigma)
+    return out
+
+
+@njit(cache=True)
+def search_places(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int, targets: np.ndarray,
+                  pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, area: np.ndarray,
+                  backs: np.ndarray, cuts: np.ndarray) -> tuple:
+    """Ball in hand, the places the search player tries: ``backs`` metres behind the ghost ball of every target
+    and pocket with a window, straight in and turned by each of ``cuts``, moved to the nearest legal point (off the
+    balls and the pockets' capture circles, in ``area``). Returns ``(places (M, 2), status)``: 0, or 1 when there
+    is no window (the one place is then the middle of the area, moved to the nearest legal point), or 2 when the
+    area has no legal point."""
+    tm = model(pocket_xy, pocket_r, params)
+    x0, x1, y0, y1 = area[0], area[1], area[2], area[3]
+    discs = free_discs(pos, on, radius, cue, pocket_holes(tm), 1e-6)
+    windows = windows_of(pos, radius, targets, tm)
+    k_p = pocket_r.shape[0]
+    out = np.empty((targets.shape[0] * k_p * backs.shape[0] * cuts.shape[0] + 1, 2))
+    n = 0
+    r = radius[cue]
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        for p in range(k_p):
+            w = windows[t, p]
+            if w[WIN_FOUND] == 0.0:
+                continue
+            gx, gy = ghost_point(pos[j, 0], pos[j, 1], w[WIN_ANGLE], r + radius[j])
+            for b in range(backs.shape[0]):
+                for c in range(cuts.shape[0]):
+                    a = w[WIN_ANGLE] + cuts[c]
+                    x = gx - backs[b] * math.cos(a)
+                    y = gy - backs[b] * math.sin(a)
+                    px, py, ok = nearest_free(min(max(x, x0), x1), min(max(y, y0), y1), discs, x0, x1, y0, y1)
+                    if not ok:
+                        return out[:0], 2
+                    out[n, 0] = px
+                    out[n, 1] = py
+                    n += 1
+    if n == 0:
+        px, py, ok = nearest_free(0.5 * (x0 + x1), 0.5 * (y0 + y1), discs, x0, x1, y0, y1)
+        out[0, 0] = px
+        out[0, 1] = py
+        return out[:1], 1 if ok else 2
+    return out[:n], 0
+
+
+class Decision(NamedTuple):
+    """A geometric decision: strike at ``angle``, ``speed`` from ``place`` (ball in hand, else None); ``pocket``:
+    the pocket of the ghost-ball shot played (-1: none: the break or the direct hit); ``shot``: its row in ``rows``
+    (the ranked ghost-ball shots, :data:`N_COLS` columns), or -1."""
+
+    place: tuple[float, float] | None
+    angle: float
+    speed: float
+    pocket: int
+    shot: int
+    rows: np.ndarray
+
+
+def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray,
+                       targets: np.ndarray, tm: TableModel, speed_range: tuple[float, float],
+                       place_area: tuple[float, float, float, float] | None = None, is_break: bool = False,
+                       max_cut: float = MAX_CUT, cue: int = 0) -> Decision:
+    """The geometric player's shot on a table given as arrays, in one compiled call.
+
+    - the break (``is_break``): the cue ball on the head spot moved into ``place_area`` (if in hand), struck at
+      the top of ``speed_range`` at the nearest of ``targets``;
+    - ball in hand (``place_area`` given): the place that leaves the easiest ghost-ball shot (:func:`choose_place`);
+    - the easiest ghost-ball shot (:func:`ghost_shots_from`) with a cut up to ``max_cut``, else up to 88 deg;
+    - else a firm full-ball hit (2 m/s, within the range) on the nearest target.
+
+    ``targets``: the rows the shooter may hit first, on the table (a game's legal balls). Raises
+    :class:`~billiards_env.physics.SceneError` when ball in hand finds no legal point in the area."""
+    from billiards_env.physics.errors import SceneError
+
+    in_hand = place_area is not None
+    area = np.asarray(place_area if in_hand else (0.0, 0.0, 0.0, 0.0), dtype=np.float64)
+    px, py, placed, angle, speed, k, rows, status = geometric_decision_arrays(
+        np.ascontiguousarray(pos, dtype=np.float64), np.ascontiguousarray(on, dtype=np.bool_),
+        np.ascontiguousarray(radius, dtype=np.float64), np.ascontiguousarray(mass, dtype=np.float64), int(cue),
+        np.ascontiguousarray(targets, dtype=np.int64), tm.pocket_xy, tm.pocket_r, tm.params, float(speed_range[0]),
+        float(speed_range[1]), area, in_hand, bool(is_break), float(max_cut))
+    if status == 1:
+        raise SceneError(f"no legal point for ball row {cue} in the area {tuple(place_area)}: it is covered by "
+                         "other balls")
+    pocket = int(rows[k, COL_POCKET]) if k >= 0 else -1
+    return Decision((float(px), float(py)) if placed else None, float(angle), float(speed), pocket, int(k), rows)
+
+
+__all__ = ["Model", "TableModel", "table_model", "model", "windows_of", "target_windows", "shot_row", "rank_rows",
+           "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
+           "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "pot_chance",
+           "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",
+           "Decision", "N_COLS", "MAX_CUT", "FALLBACK_CUT", "ARRIVE_SPEED", "SPEED_FACTORS", "DIRECT_HIT_SPEED",
+           "PLACE_BACKS", "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE",
+           "COL_CUT", "COL_D_CUE", "COL_D_OBJ", "COL_WINDOW", "COL_TOL", "COL_CLEAR", "COL_REACH", "COL_RISK",
+           "COL_SCORE", "COL_CLEAR_OBJ", "WIN_ANGLE", "WIN_HALF", "WIN_DIST", "WIN_FOUND"]

@@ -1,0 +1,205 @@
+"""The compiled players' geometry (players/geometry.py) chooses what the Python it replaced chose.
+
+Reference: today's Python players, kept verbatim in ``reference.py``. On fixed tables (9-ball and 8-ball games after
+breaks and play, random layouts, ball in hand and not, rolling, drag and spin physics) the compiled code must give
+the same ghost-ball shot lists (every field), and the geometric player the same decision (place, target, pocket,
+angle, speed), bit for bit.
+"""
+from __future__ import annotations
+
+import contextlib
+import math
+
+import gymnasium as gym
+import numpy as np
+import pytest
+
+import billiards_env  # noqa: F401  (registers the ids)
+from billiards_env.physics import BALL_RADIUS, Balls, Physics, Simulator, Table
+from billiards_env.physics.layout import nearest_free_point
+from billiards_env.players import GeometricPlayer, ShotContext, ghost_ball_shots, shot_context
+from billiards_env.players.geometric import choose_placement, geometric_shot
+from billiards_env.players.geometry import (COL_POCKET, COL_SCORE, COL_TARGET, free_discs, geometric_decision,
+                                            ghost_shots, nearest_free, pocket_holes, model, py_hypot, table_model)
+
+from billiards_env.players import _reference as reference
+
+R = BALL_RADIUS
+
+
+def _game_tables(env_id: str, seeds: range, steps: int, **kw):
+    """The env at every decision of seeded games (the agent plays the reference geometric player's shot, or a seeded
+    random action one time in four; the built-in opponent plays its own turns)."""
+    env = gym.make(env_id, **kw)
+    env.action_space.seed(seeds.start)
+    rng = np.random.default_rng(seeds.start)
+    try:
+        for seed in seeds:
+            obs, _ = env.reset(seed=seed)
+            for _ in range(steps):
+                yield env
+                if rng.random() < 0.25:
+                    action = env.action_space.sample()
+                else:
+                    place, angle, speed, cand = reference.reference_geometric_act(env)
+                    u = env.unwrapped
+                    action = reference.to_action(env, angle, speed, place=place,
+                                                 pocket=cand.pocket if cand is not None else None)
+                obs, _, term, trunc, _ = env.step(action)
+                if term or trunc:
+                    break
+    finally:
+        env.close()
+
+
+def _check_env(env) -> tuple[int, bool]:
+    """Compare reference and compiled on the env's table now; returns (1, ball in hand)."""
+    ctx = shot_context(env)
+    if ctx.targets:
+        ref = reference.ghost_ball_shots(ctx.balls, ctx.table, ctx.physics, ctx.cue, ctx.targets, ctx.speed_range)
+        new = ghost_ball_shots(ctx.balls, ctx.table, ctx.physics, ctx.cue, ctx.targets, ctx.speed_range)
+        assert new == ref  # every field of every shot, in the same order
+    place, angle, speed, cand = reference.reference_geometric_act(env)
+    player = GeometricPlayer()
+    d = player.decide(ctx)
+    assert d.place == place
+    assert (d.angle, d.speed) == (angle, speed)  # bit-identical
+    assert player.last == cand
+    assert d.pocket == (cand.pocket if cand is not None else -1)
+    return 1, ctx.place_area is not None
+
+
+@pytest.mark.parametrize("env_id, friction, seeds, steps", [
+    ("Billiards9Ball-v0", "rolling", range(0, 6), 12),
+    ("Billiards8Ball-v0", "rolling", range(100, 103), 10),
+    ("Billiards8Ball-v0", "drag", range(200, 206), 8),
+    ("Billiards9Ball-v0", "spin", range(300, 304), 8),
+])
+def test_geometric_player_same_choices_in_games(env_id, friction, seeds, steps):
+    checked = in_hand = 0
+    for env in _game_tables(env_id, seeds, steps, friction=friction):
+        n, bih = _check_env(env)
+        checked += n
+        in_hand += bih
+    assert checked >= len(seeds) + 2 and in_hand >= 1  # breaks, ball in hand and shots from where the cue lies
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("env_id, friction", [("Billiards9Ball-v0", "rolling"), ("Billiards8Ball-v0", "rolling"),
+                                              ("Billiards9Ball-v0", "drag"), ("Billiards8Ball-v0", "spin")])
+def test_geometric_player_same_choices_in_many_games(env_id, friction):
+    checked = sum(_check_env(env)[0] for env in _game_tables(env_id, range(1000, 1040), 30, friction=friction))
+    assert checked >= 100
+
+
+class _Layout:
+    """Just enough of an env for the reference's ball-in-hand code: ``legal_cue_position`` and ``cue_moved_to``."""
+
+    def __init__(self, ctx: ShotContext):
+        self.ctx = ctx
+        self.unwrapped = self
+
+    def legal_cue_position(self, x: float, y: float) -> tuple[float, float]:
+        b, t = self.ctx.balls, self.ctx.table
+        return nearest_free_point(x, y, b.pos, b.on_table, b.radius, 0, self.ctx.place_area,
+                                  holes=np.column_stack([t.pocket_xy, t.pocket_radius]))
+
+    @contextlib.contextmanager
+    def cue_moved_to(self, place):
+        b = self.ctx.balls
+        saved, on = b.pos[0].copy(), bool(b.on_table[0])
+        b.pos[0] = place
+        b.on_table[0] = True
+        try:
+            yield
+        finally:
+            b.pos[0] = saved
+            b.on_table[0] = on
+
+
+PHYSICS = {"rolling": Physics(), "drag": Physics(friction="drag", drag_k=0.4, min_speed=0.02),
+           "spin": Physics(friction="spin")}
+
+
+def _random_layout(rng: np.random.Generator, n: int, table: Table) -> np.ndarray:
+    pts: list[np.ndarray] = []
+    while len(pts) < n:
+        p = rng.uniform([R, R], [table.length - R, table.width - R])
+        if rng.random() < 0.15:  # some balls frozen on a cushion
+            p[rng.integers(2)] = R
+        if all(np.hypot(*(p - q)) >= 2 * R for q in pts):
+            pts.append(p)
+    return np.array(pts)
+
+
+@pytest.mark.parametrize("law", ["rolling", "drag", "spin"])
+def test_random_layouts_same_shots_and_placements(law):
+    rng = np.random.default_rng({"rolling": 1, "drag": 2, "spin": 3}[law])
+    physics = PHYSICS[law]
+    tables = (Table(), Table(length=2.24, width=1.12, cushion_restitution=0.7))
+    for k in range(40):
+        table = tables[k % 2]
+        n = int(rng.integers(2, 12))
+        balls = Balls.from_positions(_random_layout(rng, n, table))
+        targets = [int(j) for j in rng.permutation(np.arange(1, n))[:int(rng.integers(1, n))]]
+        speed_range = (float(rng.uniform(0.05, 1.0)), float(rng.uniform(3.0, 7.0)))
+        area = (R, table.length / 4, R, table.width - R) if k % 3 == 0 else (R, table.length - R, R, table.width - R)
+        ctx = ShotContext(balls, table, physics, Simulator(table, physics), 0, targets, speed_range, place_area=area)
+        cut = math.radians(float(rng.choice([60.0, 80.0, 85.0])))
+        assert ghost_ball_shots(balls, table, physics, 0, targets, speed_range, cut) == \
+            reference.ghost_ball_shots(balls, table, physics, 0, targets, speed_range, cut)
+        assert geometric_shot(ctx, cut) == reference.geometric_shot(ctx, cut)
+        env = _Layout(ctx)
+        place = reference.choose_placement(env, ctx, cut)
+        assert choose_placement(ctx, cut) == place
+        with env.cue_moved_to(place):
+            expected = reference.geometric_shot(ctx, cut)
+        d = geometric_decision(balls.pos, balls.on_table, balls.radius, balls.mass, np.array(targets),
+                               table_model(table, physics), speed_range, area, max_cut=cut)
+        assert d.place == place and (d.angle, d.speed) == expected[:2]
+
+
+def test_ghost_shots_rows_are_ranked_and_complete():
+    # Every (ball, pocket) with a window and a cut under the limit is a row; rows are ranked by score, ties in
+    # (ball, pocket) order.
+    table, physics = Table(), Physics()
+    balls = Balls.from_positions([[0.6, 0.6], [1.27, 0.635], [1.9, 0.3], [2.0, 1.0]])
+    tm = table_model(table, physics)
+    rows = ghost_shots(balls.pos, balls.on_table, balls.radius, balls.mass, 0, np.array([1, 2, 3]), *tm, 0.5, 5.0,
+                       math.radians(89.0), 0.35, np.array([1.0, 0.6, 0.3, 1.8, 3.0]), True)
+    assert len(rows) >= 6
+    assert np.all(np.diff(rows[:, COL_SCORE]) <= 0.0)
+    keys = [(int(r[COL_TARGET]), int(r[COL_POCKET])) for r in rows]
+    assert len(set(keys)) == len(keys)
+
+
+def test_py_hypot_is_pythons_hypot():
+    rng = np.random.default_rng(0)
+    for scale in (1e-6, 1e-2, 1.0, 3.0):
+        xs = rng.normal(size=20000) * scale
+        ys = rng.normal(size=20000) * scale * rng.uniform(0.0, 1.0, 20000)
+        assert [py_hypot(x, y) for x, y in zip(xs.tolist(), ys.tolist())] == \
+            [math.hypot(x, y) for x, y in zip(xs.tolist(), ys.tolist())]
+    assert py_hypot(0.0, 0.0) == 0.0 and py_hypot(-3.0, 4.0) == 5.0 and math.isinf(py_hypot(math.inf, 1.0))
+
+
+def test_nearest_free_is_layouts_nearest_free_point():
+    rng = np.random.default_rng(5)
+    table = Table()
+    tm = table_model(table, Physics())
+    holes = pocket_holes(model(*tm))
+    moved = 0
+    for k in range(300):
+        pos = _random_layout(rng, int(rng.integers(2, 16)), table)
+        on = rng.random(len(pos)) < 0.9
+        radius = np.full(len(pos), R)
+        area = (R, table.length / 4, R, table.width - R) if k % 2 else (R, table.length - R, R, table.width - R)
+        # Aim at a ball, a pocket or anywhere: the asked point is often illegal.
+        x, y = (pos[int(rng.integers(len(pos)))] + rng.normal(0, R, 2)) if k % 3 else rng.uniform(-0.1, 2.6, 2)
+        expected = nearest_free_point(x, y, pos, on, radius, 0, area, holes=np.column_stack(
+            [table.pocket_xy, table.pocket_radius]))
+        got = nearest_free(min(max(x, area[0]), area[1]), min(max(y, area[2]), area[3]),
+                           free_discs(pos, on, radius, 0, holes, 1e-6), *area)
+        assert got[2] and (got[0], got[1]) == expected
+        moved += expected != (min(max(x, area[0]), area[1]), min(max(y, area[2]), area[3]))
+    assert moved >= 50  # the sample exercises the moves, not only legal points
