@@ -142,7 +142,7 @@ def run_outs(game: str, player: tuple[str, Any], racks: int, seed: int, env_kwar
                                                              or raw.truncations["player_0"]):
                 env.step(timed.act(raw.game_env, env.observe("player_0")))
             balls += before - int(raw.game_env.balls.on_table[1:].sum())
-            wins += raw.game_state.winner == 0
+            wins += raw.task.session.winner == 0
     finally:
         env.close()
     return RunOutResult(player[0], racks, wins, balls / max(racks, 1), timed.ms_per_decision,

@@ -26,8 +26,11 @@ import numpy as np
 
 from billiards_env.physics.balls import Balls, validate_balls
 from billiards_env.physics.errors import SceneError
-from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_positions, foot_spot, head_spot,
-                                          head_string_x, place_random, rack_rows, triangle_positions)
+from billiards_env.games import GAMES
+from billiards_env.games.session import GameSession
+from billiards_env.physics.layout import (CAROM_IDS, DIAMOND_ORDER, RACK_ORDER, carom_start_positions,
+                                          diamond_positions, foot_spot, head_spot, head_string_x, place_random,
+                                          rack_rows, snooker_balls, triangle_positions)
 from billiards_env.physics.model import Physics
 from billiards_env.physics.simulate import Simulator
 from billiards_env.physics.table import Table
@@ -76,7 +79,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.metadata = {**type(self).metadata, "render_fps": c.render_fps}
 
         n = c.n_object_balls + 1
-        ids = ("cue",) + tuple(str(k) for k in range(1, n))
+        game = GAMES.get(c.task)
+        ids, numbers = (game.session_class if game is not None else GameSession).ball_set(c.n_object_balls)
         balls = Balls.from_positions(np.zeros((n, 2)), ids=ids, radius=c.ball_radius, mass=c.ball_mass)
         simulator = Simulator(c.table, c.physics, solver=c.solver.name, dt=c.solver.dt, contact=c.solver.contact,
                               max_time=c.max_time, max_events=c.max_events)
@@ -85,7 +89,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                                 float(c.tip_noise), spin and bool(c.spin_action), float(c.max_tip_offset),
                                 c.speed_noise_mode == "absolute")
         #: The table state every part reads (see the class docstring).
-        self.state = TableState(balls, c.table, c.physics, simulator, tuple(range(n)), settings)
+        self.state = TableState(balls, c.table, c.physics, simulator, numbers, settings)
         self.shots = 0
         self.last_shot: tuple[float, float, float, float] | None = None
         #: Tip offsets ``(side, top)`` of the last shot (fractions of R; spin model).
@@ -202,9 +206,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         played = self._play(shot, "agent")
         view = self._shot_view
         self.shots += 1
+        ids = self.ball_ids  # as the shot saw them (a game may reorder the rows when the turn passes)
         reward, terminated, truncated, info = self.task.on_shot(self.state, played, self.shots, self._driver)
         o = played.outcome
-        ids = self.ball_ids
         info.update(shot_info(tuple(ids[i] for i in o.pocketed), o.scratch,
                               ids[o.first_contact] if o.first_contact >= 0 else None, o.n_events, o.sim_time,
                               o.status, self.shots, played.shot, self.action_type.spin))
@@ -224,7 +228,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.last_shot = (played.start[0], played.start[1], p.angle, p.speed)
         self.last_tip = (p.side, p.top)
         if self._record:  # drawn with this shot's animation: its cue and tip, a game's HUD before the call
-            self._shot_view = self.render_data(orientations=False)
+            self._shot_view = {**self.render_data(orientations=False), "numbers": self.ball_numbers}
             if by == "opponent" and played.trajectory is not None:
                 self._animations.append((played.trajectory, self._shot_view))
         return played
@@ -382,6 +386,11 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             for slot, number in enumerate(DIAMOND_ORDER):
                 rows.append(number)
                 pts.append((float(dia[slot, 0]), float(dia[slot, 1])))
+        if c.placement in ("snooker", "carom"):  # every ball on its spot, by id
+            spots = snooker_balls(self.table, radius=c.ball_radius).pos if c.placement == "snooker" else \
+                np.array([carom_start_positions(self.table)[i] for i in CAROM_IDS])
+            rows = list(range(len(spots)))
+            pts = [(float(x), float(y)) for x, y in spots]
         return rows, np.array(pts, dtype=float).reshape(-1, 2)
 
     def _check_layout(self) -> None:
@@ -502,7 +511,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         if orientations is not None:
             data["orientations"] = orientations
         draw = r.draw if surface else r.render_array
-        return draw(pos, on, self.ball_numbers, **data)
+        numbers = data.pop("numbers", self.ball_numbers)  # an animated shot's rows as it saw them
+        return draw(pos, on, numbers, **data)
 
     def animation_times(self, duration: float) -> np.ndarray:
         """Simulated instants (s) drawn for a shot lasting ``duration`` s: ``frame_times(duration, render_fps)``

@@ -46,7 +46,7 @@ from .observations import OBSERVATION_TYPES as _OBSERVATION_TYPES
 #: Directory of the packaged scene files (one per registered id).
 SCENES_DIR = Path(__file__).resolve().parent / "scenes"
 
-PLACEMENTS = ("random", "rack", "diamond")
+PLACEMENTS = ("random", "rack", "diamond", "snooker", "carom")
 CUE_PLACEMENTS = ("random", "kitchen", "head_spot")
 #: The action and observation types' names (each type registers itself in its module's dict).
 ACTION_TYPES = tuple(_ACTION_TYPES)
@@ -96,8 +96,9 @@ class EnvConfig:
     placement: str = _doc("How object balls start: 'random' (uniform, non-overlapping, clear of cushions and "
                           "pockets, drawn from the env's np_random at every reset), 'rack' (a touching triangle "
                           "at the foot spot, apex towards the cue; the standard 15-ball order when n = 15; the games "
-                          "shuffle it as the rules say) or 'diamond' (the 9-ball diamond: 1 at the apex, 9 in the "
-                          "middle).", default="random")
+                          "shuffle it as the rules say), 'diamond' (the 9-ball diamond: 1 at the apex, 9 in the "
+                          "middle), 'snooker' (the reds' triangle and the colours on their spots, the cue ball in "
+                          "the D) or 'carom' (the three-cushion start position).", default="random")
     cue_placement: str = _doc("Where the cue ball starts: 'random' (anywhere, like the object balls), 'kitchen' "
                               "(random behind the head string, x < length/4) or 'head_spot' (length/4, width/2).",
                               default="random")
@@ -487,7 +488,8 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     for key, kind in (("table", Table), ("physics", Physics), ("solver", SolverSettings)):
         _require(isinstance(getattr(cfg, key), kind), key, f"expected a {kind.__name__} or a mapping of its fields")
     n = cfg.n_object_balls
-    _require(1 <= n <= MAX_OBJECT_BALLS, "n_object_balls", f"must be 1..{MAX_OBJECT_BALLS}, got {n}")
+    _require(1 <= n <= MAX_OBJECT_BALLS or cfg.task in GAMES, "n_object_balls",
+             f"must be 1..{MAX_OBJECT_BALLS}, got {n}")
     _choice(cfg, "placement", PLACEMENTS)
     _choice(cfg, "cue_placement", CUE_PLACEMENTS)
     _choice(cfg, "action_type", ACTION_TYPES)
@@ -550,6 +552,9 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     if cfg.placement == "random":
         free = min(t.length, t.width) - 2 * (r + cfg.cushion_margin)
         _require(free > 0, "cushion_margin", f"{cfg.cushion_margin} m leaves no room on the table; lower it")
+    elif cfg.placement in ("snooker", "carom"):
+        want = {"snooker": 21, "carom": 2}[cfg.placement]
+        _require(n == want, "placement", f"{cfg.placement!r} places {want} object balls, got n_object_balls {n}")
     elif cfg.placement == "diamond":
         _require(n == 9, "placement", f"'diamond' racks 9 object balls, got n_object_balls {n}")
         _require(rack_fits(t, 15, r, cfg.rack_gap), "rack_gap",

@@ -62,6 +62,7 @@ class GameTask(Task):
         self.name = spec.name
         self.session: GameSession = spec.session_class(spec, config.rules, state)
         self.declarations = self.session.declarations
+        self.has_ball_in_hand = self.session.ball_in_hand
         self.n_features = self.session.n_features
         self.option_keys = self.session.option_keys
         self.agent = 0
@@ -252,16 +253,17 @@ class GameTask(Task):
             shot = driver.opponent_shot()
             self.before_shot(shot)
             played = driver.play(shot, "opponent")
-            turns.append(self._turn_info(self._judge(s.table, played), played))
+            ids = s.table.ids  # as the shot saw them (a game may reorder the rows when the turn passes)
+            turns.append(self._turn_info(self._judge(s.table, played), played, ids))
         if not s.game_over and s.shooter != self.agent:  # pragma: no cover - a stuck opponent
             raise RuntimeError(f"the opponent took {cap} shots in one turn without the game ending or the turn "
                                "passing; raise max_shots if its game allows longer turns")
         return turns
 
-    def _turn_info(self, v: Verdict, played: PlayedShot) -> dict[str, Any]:
-        """What one opponent shot did (an entry of ``info["opponent_turns"]``)."""
+    def _turn_info(self, v: Verdict, played: PlayedShot, ids: tuple[str, ...]) -> dict[str, Any]:
+        """What one opponent shot did (an entry of ``info["opponent_turns"]``; ``ids``: the rows' ids when it was
+        played)."""
         o = played.outcome
-        ids = self.session.table.ids
         return {
             "shooter": v.shooter,
             "pocketed": tuple(ids[i] for i in o.pocketed),

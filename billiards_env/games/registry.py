@@ -73,5 +73,10 @@ register_game(GameSpec("nine_ball", "9-ball", "Billiards9Ball-v0", "billiards_en
                        "nine_ball", "nine_ball_v0", 9, "billiards_env.games.pool:NineBallSession"))
 register_game(GameSpec("eight_ball", "8-ball", "Billiards8Ball-v0", "billiards_env.envs.eight_ball:EightBallEnv",
                        "eight_ball", "eight_ball_v0", 15, "billiards_env.games.pool:EightBallSession"))
+register_game(GameSpec("snooker", "snooker", "BilliardsSnooker-v0", "billiards_env.envs.snooker:SnookerEnv",
+                       "snooker", "snooker_v0", 21, "billiards_env.games.snooker:SnookerSession"))
+register_game(GameSpec("three_cushion", "three-cushion", "BilliardsThreeCushion-v0",
+                       "billiards_env.envs.three_cushion:ThreeCushionEnv", "three_cushion", "three_cushion_v0", 2,
+                       "billiards_env.games.carom:CaromSession"))
 
 __all__ = ["GameSpec", "GAMES", "register_game", "game_spec", "game_of_env"]

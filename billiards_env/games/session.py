@@ -56,6 +56,8 @@ class GameSession(ABC):
     n_features: ClassVar[int] = 0
     #: Reset options a table set up by hand reads besides ``positions`` and ``pocketed``.
     option_keys: ClassVar[tuple[str, ...]] = ()
+    #: Whether a shooter can get the cue ball in hand (the action then has the placement dims).
+    ball_in_hand: ClassVar[bool] = True
     #: The env's ``opening`` values this game plays (``"break"`` always).
     openings: ClassVar[tuple[str, ...]] = ("break",)
     #: The built-in players by name: ``module:Class`` of each (a class taking ``seed``, with ``act(state, obs,

@@ -25,9 +25,9 @@ PettingZoo is a dependency; Gymnasium's registry does not list these (PettingZoo
 """
 from __future__ import annotations
 
-from . import eight_ball_v0, nine_ball_v0
+from . import eight_ball_v0, nine_ball_v0, snooker_v0, three_cushion_v0
 from .aec import AGENTS, BilliardsGameAEC
 from .match import GameRecord, MatchResult, play_match
 
-__all__ = ["nine_ball_v0", "eight_ball_v0", "BilliardsGameAEC", "AGENTS", "play_match", "MatchResult",
+__all__ = ["nine_ball_v0", "eight_ball_v0", "snooker_v0", "three_cushion_v0", "BilliardsGameAEC", "AGENTS", "play_match", "MatchResult",
            "GameRecord"]

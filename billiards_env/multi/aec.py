@@ -156,7 +156,7 @@ class BilliardsGameAEC(AECEnv, EzPickle):
         self.truncations = {a: False for a in self.agents}
         self.infos = self._infos(info, shot_by=-1)
         self._skip_agent_selection = None
-        self.agent_selection = self.possible_agents[self.task.state.shooter]
+        self.agent_selection = self.possible_agents[self.task.session.shooter]
 
     def step(self, action: Any) -> None:
         """Play ``action`` as the shot of ``agent_selection`` (or remove it if its game is over: action None)."""
@@ -170,8 +170,8 @@ class BilliardsGameAEC(AECEnv, EzPickle):
             raise ValueError(f"action: None is only for an agent whose game is over; {agent} is to shoot: give an "
                              f"action of env.action_space({agent!r})")
         player = self.agent_index[agent]
-        if self.task.state.shooter != player:  # pragma: no cover - agent_selection always follows the state
-            raise RuntimeError(f"{agent} selected but player {self.task.state.shooter} is to shoot")
+        if self.task.session.shooter != player:  # pragma: no cover - agent_selection always follows the state
+            raise RuntimeError(f"{agent} selected but player {self.task.session.shooter} is to shoot")
         self._cumulative_rewards[agent] = 0.0
         _, _, terminated, truncated, info = self.game_env.step(action)
         verdict = self.task.verdict
@@ -181,7 +181,7 @@ class BilliardsGameAEC(AECEnv, EzPickle):
             self.terminations = {a: bool(terminated) for a in self.agents}
             self.truncations = {a: bool(truncated) for a in self.agents}
         self.infos = self._infos(info, shot_by=player)
-        self.agent_selection = self.possible_agents[self.task.state.shooter]
+        self.agent_selection = self.possible_agents[self.task.session.shooter]
         self._accumulate_rewards()
 
     def render(self) -> np.ndarray | list[np.ndarray] | None:
@@ -194,14 +194,18 @@ class BilliardsGameAEC(AECEnv, EzPickle):
 
     # --- the game -------------------------------------------------------------------------------------------------
     @property
-    def game_state(self) -> GameState:
-        """The rules' state: shooter, ball in hand, groups, fouls in a row, game over and winner."""
+    def game_state(self) -> Any:
+        """The rules' state (its shooter, and the game's own fields: 9-ball's ball in hand, snooker's score...)."""
         return self.task.state
 
     @property
+    def game_over(self) -> bool:
+        return self.task.session.game_over
+
+    @property
     def winner(self) -> str | None:
-        """The agent who won the game, or None (it goes on, or was truncated)."""
-        w = self.task.state.winner
+        """The agent who won the game, or None (it goes on, was drawn, or was truncated)."""
+        w = self.task.session.winner
         return None if w is None else self.possible_agents[w]
 
     # --- helpers --------------------------------------------------------------------------------------------------
@@ -219,7 +223,7 @@ class BilliardsGameAEC(AECEnv, EzPickle):
 
     def _infos(self, info: dict[str, Any], shot_by: int) -> dict[str, dict[str, Any]]:
         common = {k: v for k, v in info.items() if k not in _SINGLE_AGENT_KEYS}
-        s = self.task.state
+        s = self.task.session
         return {a: {**common, "player": k, "shot_by": shot_by, "is_success": bool(s.game_over and s.winner == k)}
                 for a, k in self.agent_index.items()}
 

@@ -91,9 +91,11 @@ def play_match(env_fn: Callable[[], AECEnv] | AECEnv, policies: Sequence[Any], n
                 who = seats[raw.agent_index[agent]]
                 env.step(acts[who](game_env, obs))
                 shots[who] += 1
-            state = raw.game_state
-            winner = -1 if state.winner is None else seats[state.winner]
-            reason = raw.task.last_call.reason if state.game_over and raw.task.last_call is not None else "max_shots"
+            over = raw.game_over
+            w = raw.task.session.winner
+            winner = -1 if (not over or w is None) else seats[w]
+            verdict = raw.task.verdict
+            reason = verdict.reason if over and verdict is not None else "max_shots"
             games.append(GameRecord(seed + k, seats, winner, reason, (shots[0], shots[1])))
     finally:
         if made:

@@ -21,6 +21,7 @@ direction, speed and tip offsets, where to place the cue ball when it is in hand
 from __future__ import annotations
 
 import math
+from typing import Any
 from dataclasses import dataclass
 
 import numpy as np
@@ -504,5 +505,71 @@ def _first_row(b: Balls, sim: Simulator, cue: int, shot: np.ndarray) -> int:
     return int(res.first_contact[0])
 
 
-__all__ = ["SPEED_RANGE", "SnookerShot", "target_rows", "pot_chances", "d_placements", "snooker_geometric_shot",
+
+# --- as players of the env (state in, action out) --------------------------------------------------------------------
+
+class _SnookerPlayer:
+    """A snooker decision function as a player: ``act(state, obs, codec)`` (or ``act(env, obs)``) reads the frame
+    from the table state's game session and returns the action of its shot in ``codec``."""
+
+    name = "snooker"
+
+    def __init__(self, seed: int | None = 0) -> None:
+        self.rng = np.random.default_rng(seed)
+        self.last: SnookerShot | None = None
+
+    def reset(self, seed: int | None = None) -> None:
+        if seed is not None:
+            self.rng = np.random.default_rng(seed)
+
+    def _shot(self, state: Any, session: Any, snookered_now: bool) -> SnookerShot:
+        raise NotImplementedError
+
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+        from billiards_env.rules.snooker import snookered
+
+        from .context import player_inputs, to_action
+
+        state, codec = player_inputs(source, codec)
+        session = state.game
+        s = session.state
+        b = state.balls
+        snk = bool(not s.ball_in_hand and snookered(b.pos, b.on_table, b.radius, session.values, s.on, 0))
+        self.last = shot = self._shot(state, session, snk)
+        return to_action(codec, state, shot.angle, shot.speed, place=shot.place, side=shot.side, top=shot.top)
+
+
+class SnookerGeometricPlayer(_SnookerPlayer):
+    """:func:`snooker_geometric_shot` as a player."""
+
+    name = "geometric"
+
+    def _shot(self, state: Any, session: Any, snookered_now: bool) -> SnookerShot:
+        st = state.settings
+        return snooker_geometric_shot(state.balls, state.simulator, session.state, session.values, st.speed_range,
+                                      snookered_now, session.rules, max(st.angle_noise, 0.003))
+
+
+class SnookerSearchPlayer(_SnookerPlayer):
+    """:func:`snooker_search_shot` as a player (its pocket windows cached per table)."""
+
+    name = "search"
+
+    def __init__(self, seed: int | None = 0, settings: SnookerSearchSettings | None = None) -> None:
+        super().__init__(seed)
+        self.settings = settings
+        self._windows: dict = {}
+
+    def reset(self, seed: int | None = None) -> None:
+        super().reset(seed)
+        self._windows = {}
+
+    def _shot(self, state: Any, session: Any, snookered_now: bool) -> SnookerShot:
+        st = state.settings
+        return snooker_search_shot(state.balls, state.simulator, session.state, session.values, self.settings,
+                                   st.speed_range, snookered_now, session.rules, st.angle_noise, st.speed_noise,
+                                   st.tip_noise, self.rng, self._windows)
+
+
+__all__ = ["SPEED_RANGE", "SnookerGeometricPlayer", "SnookerSearchPlayer", "SnookerShot", "target_rows", "pot_chances", "d_placements", "snooker_geometric_shot",
            "SnookerSearchSettings", "snooker_search_shot"]

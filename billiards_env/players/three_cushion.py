@@ -25,6 +25,7 @@ Decision functions over plain physics objects (a simulator and the balls), no en
 from __future__ import annotations
 
 import math
+from typing import Any
 from dataclasses import dataclass
 
 import numpy as np
@@ -283,4 +284,58 @@ def three_cushion_geometric_shot(balls: Balls, table: Table, physics: Physics, c
     return CaromShot(float(angle), float(speed), 0.0, top, True, run / cuts, int(cushions), 0)
 
 
-__all__ = ["CaromSearchSettings", "CaromShot", "three_cushion_shot", "three_cushion_geometric_shot"]
+# --- as players of the env (state in, action out) --------------------------------------------------------------------
+
+class _CaromPlayer:
+    """A three-cushion decision function as a player: ``act(state, obs, codec)`` (or ``act(env, obs)``) plays the
+    table state's row 0 (the shooter's cue ball) against rows 1 (the opponent's) and 2 (the red) and returns the
+    action of its shot in ``codec``."""
+
+    name = "carom"
+
+    def __init__(self, seed: int | None = 0) -> None:
+        self.last: CaromShot | None = None
+
+    def reset(self, seed: int | None = None) -> None:
+        self.last = None
+
+    def _shot(self, state: Any, opening: bool) -> CaromShot:
+        raise NotImplementedError
+
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+        from .context import player_inputs, to_action
+
+        state, codec = player_inputs(source, codec)
+        session = state.game
+        opening = bool(session.state.break_shot and session.rules.options.break_red_first)
+        self.last = shot = self._shot(state, opening)
+        return to_action(codec, state, shot.angle, shot.speed, side=shot.side, top=shot.top)
+
+
+class CaromSearchPlayer(_CaromPlayer):
+    """:func:`three_cushion_shot` (search over spin shots) as a player."""
+
+    name = "search"
+
+    def __init__(self, seed: int | None = 0, settings: CaromSearchSettings | None = None) -> None:
+        super().__init__(seed)
+        self.settings = settings
+
+    def _shot(self, state: Any, opening: bool) -> CaromShot:
+        st = state.settings
+        return three_cushion_shot(state.simulator, state.balls, 0, 1, 2, self.settings, st.speed_range,
+                                  st.angle_noise, st.speed_noise, st.tip_noise, opening)
+
+
+class CaromGeometricPlayer(_CaromPlayer):
+    """:func:`three_cushion_geometric_shot` (straight lines off the cushions) as a player."""
+
+    name = "geometric"
+
+    def _shot(self, state: Any, opening: bool) -> CaromShot:
+        return three_cushion_geometric_shot(state.balls, state.table, state.physics, 0, 1, 2,
+                                            state.settings.speed_range, red_first=opening)
+
+
+__all__ = ["CaromSearchSettings", "CaromShot", "three_cushion_shot", "three_cushion_geometric_shot",
+           "CaromSearchPlayer", "CaromGeometricPlayer"]

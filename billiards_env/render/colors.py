@@ -1,7 +1,9 @@
-"""Colours of the pool table and of the standard 16-ball set (RGB 0-255 tuples).
+"""Colours of the table and of the balls (RGB 0-255 tuples).
 
-Ball numbers follow the usual American pool set: 0 is the cue ball, 1-7 solids, 8 the black,
-9-15 stripes that repeat the colours of 1-7 on a white ball.
+Ball numbers 0-15 follow the usual American pool set: 0 is the cue ball, 1-7 solids, 8 the black, 9-15 stripes
+that repeat the colours of 1-7 on a white ball. Numbers 16-25 are plain balls without a number: snooker's red
+(16) and colours (17 yellow .. 22 black, in the order of their values), and the carom set (23 white, 24 yellow,
+25 red).
 """
 from __future__ import annotations
 
@@ -25,7 +27,21 @@ _SOLIDS: tuple[RGB, ...] = (
     (124, 22, 32),  # 7 maroon
     (16, 16, 18),  # 8 black
 )
-MAX_BALL_NUMBER = 15
+MAX_BALL_NUMBER = 15  #: the numbered pool balls are 1..15
+#: Plain balls (no number, no stripe) by drawing number: snooker's, then carom's.
+PLAIN_BALLS: dict[int, RGB] = {
+    16: (196, 22, 28),  # snooker red
+    17: (250, 204, 20),  # yellow
+    18: (0, 120, 64),  # green
+    19: (120, 70, 30),  # brown
+    20: (22, 70, 180),  # blue
+    21: (244, 140, 170),  # pink
+    22: (18, 18, 20),  # black
+    23: (248, 246, 238),  # carom white
+    24: (250, 214, 40),  # carom yellow
+    25: (204, 26, 30),  # carom red
+}
+MAX_DRAW_NUMBER = max(PLAIN_BALLS)
 
 # --- table -------------------------------------------------------------------------------------------------
 CLOTH: RGB = (26, 122, 66)  #: playing surface (the nominal colour; the renderer adds a soft light falloff)
@@ -46,14 +62,24 @@ def is_stripe(number: int) -> bool:
     return 9 <= int(number) <= MAX_BALL_NUMBER
 
 
+def is_numbered(number: int) -> bool:
+    """True for the numbered pool balls 1-15 (they carry a number disc)."""
+    _check_number(number)
+    return 1 <= int(number) <= MAX_BALL_NUMBER
+
+
 def ball_colour(number: int) -> RGB:
-    """Main colour of ball ``number`` (0 = cue ball; for stripes 9-15 the colour of the stripe band)."""
+    """Main colour of ball ``number`` (0 = cue ball; for stripes 9-15 the colour of the stripe band; 16-25 the plain
+    balls of snooker and carom)."""
     _check_number(number)
     n = int(number)
+    if n in PLAIN_BALLS:
+        return PLAIN_BALLS[n]
     return _SOLIDS[n - 8] if n > 8 else _SOLIDS[n]
 
 
 def _check_number(number: int) -> None:
-    """Reject numbers outside the 0-15 ball set with a message that says what is allowed."""
-    if isinstance(number, bool) or int(number) != number or not 0 <= int(number) <= MAX_BALL_NUMBER:
-        raise ValueError(f"ball number must be an integer 0-{MAX_BALL_NUMBER} (0 = cue ball), got {number!r}")
+    """Reject numbers outside the drawn sets with a message that says what is allowed."""
+    if isinstance(number, bool) or int(number) != number or not 0 <= int(number) <= MAX_DRAW_NUMBER:
+        raise ValueError(f"ball number must be an integer 0-{MAX_DRAW_NUMBER} (0 = cue ball, 1-15 the pool balls, "
+                         f"16-25 the plain balls of snooker and carom), got {number!r}")

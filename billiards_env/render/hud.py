@@ -12,7 +12,9 @@ The env hands the renderer plain data, a mapping (``Task.hud(env)``; None for ta
 - ``call``: the last call in words (``"FOUL: scratch"``); ``foul``: it was a foul; ``winner``: 0, 1 or None;
 - ``wins``: games won by each player; ``pocketed``: the balls each player pocketed in this game;
 - ``targets``: ball numbers ringed on the table (the legal target); ``call_pocket``: a pocket must be called now
-  (the pockets are numbered on the rail); ``called_pocket``: the pocket called (ringed), or None.
+  (the pockets are numbered on the rail); ``called_pocket``: the pocket called (ringed), or None;
+- ``scores``: each player's points as text, shown where 8-ball shows the groups (snooker, three-cushion);
+  ``note``: a word on the game now (``"on red, break 12"``), after the status.
 """
 from __future__ import annotations
 
@@ -79,8 +81,9 @@ def draw_panel(surface: pygame.Surface, rect: pygame.Rect, hud: Mapping[str, Any
         colour = WIN if winner == p else (NAME if turn else IDLE)
         text(surface, str(names[p]), size, colour, (x, y), max_width=0.17 * w - x + rect.left)
         text(surface, f"won {int(wins[p])}", size, colour, (rect.left + 0.18 * w, y), max_width=0.075 * w)
-        if groups is not None:
-            text(surface, str(groups[p]), size, colour, (rect.left + 0.26 * w, y), max_width=0.08 * w)
+        labels = hud.get("scores") or groups  # a game's points (snooker, carom), else 8-ball's groups
+        if labels is not None:
+            text(surface, str(labels[p]), size, colour, (rect.left + 0.26 * w, y), max_width=0.08 * w)
         _draw_balls(surface, pocketed[p], rect.left + 0.345 * w, rect.left + left_w, y, 0.19 * h, ball_icon)
     right = rect.left + left_w + pad
     room = rect.right - pad - right
@@ -103,6 +106,8 @@ def _status(hud: Mapping[str, Any], names: tuple[str, ...], shooter: int | None)
         out += ", in hand" + (" (kitchen)" if bih == "kitchen" else "")
     if hud.get("call_pocket"):
         out += ", call a pocket"
+    if hud.get("note"):
+        out += f"; {hud['note']}"
     return out
 
 

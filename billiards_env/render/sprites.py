@@ -69,7 +69,7 @@ class _Markings:
     """The markings of the 16 balls as arrays indexed by ball number (built once)."""
 
     def __init__(self) -> None:
-        n = C.MAX_BALL_NUMBER + 1
+        n = C.MAX_DRAW_NUMBER + 1  # the plain balls (16..) keep a zero disc axis: no disc, no number
         self.main = np.array([C.ball_colour(k) for k in range(n)], dtype=float)
         self.stripe = np.array([C.is_stripe(k) for k in range(n)])
         self.disc_dir = np.zeros((n, 3))
@@ -79,12 +79,13 @@ class _Markings:
         self.scale = np.ones(n)
         self.gh = np.zeros(n, dtype=int)
         self.gw = np.zeros(n, dtype=int)
-        glyphs = {k: _glyph(str(k)) for k in range(1, n)}
+        numbered = range(1, C.MAX_BALL_NUMBER + 1)
+        glyphs = {k: _glyph(str(k)) for k in numbered}
         gh_max = max(g.shape[0] for g in glyphs.values())
         gw_max = max(g.shape[1] for g in glyphs.values())
         self.atlas = np.zeros((n, gh_max, gw_max))
         disc_r = math.sin(DISC_ANGLE)
-        for k in range(1, n):
+        for k in numbered:
             phi = k * GOLDEN_ANGLE + 0.35
             toward = np.array([math.cos(phi), math.sin(phi), 0.0])  # screen direction the disc is turned to
             disc = np.array([toward[0] * math.sin(DISC_TILT), toward[1] * math.sin(DISC_TILT), math.cos(DISC_TILT)])

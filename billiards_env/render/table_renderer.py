@@ -249,7 +249,7 @@ class TableRenderer:
         flags = np.asarray(on_table).reshape(-1).astype(bool)
         raw = list(numbers)
         for num in set(raw):
-            C.ball_colour(num)  # raises on anything but an integer 0-15
+            C.ball_colour(num)  # raises on anything but a drawing number (0-25)
         nums = np.asarray(raw, dtype=int).reshape(-1)
         if len(flags) != n or len(nums) != n:
             raise ValueError(f"{n} positions but {len(flags)} on_table flags and {len(nums)} numbers")

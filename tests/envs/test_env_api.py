@@ -30,8 +30,11 @@ def test_spaces_and_types(env_id):
     env = gym.make(env_id)
     n = env.unwrapped.n_balls
     game = env_id in GAME_IDS
-    n_act = {"Billiards9Ball-v0": 4, "Billiards8Ball-v0": 5}.get(env_id, 2)  # aim, power (+ place, + pocket)
-    n_obs = 3 * n + (11 if game else 0)  # positions, pocketed flags (+ the game features)
+    # aim, power (+ place, + pocket; three-cushion: + side, top, no place)
+    n_act = {"Billiards9Ball-v0": 4, "Billiards8Ball-v0": 5, "BilliardsSnooker-v0": 4,
+             "BilliardsThreeCushion-v0": 4}.get(env_id, 2)
+    n_obs = 3 * n + (env.unwrapped.task.n_features if game else 0)  # positions, pocketed flags (+ the game's)
+    assert (env.unwrapped.task.n_features > 0) == game
     assert env.action_space == gym.spaces.Box(-1, 1, (n_act,), np.float32)
     assert env.observation_space == gym.spaces.Box(0, 1, (n_obs,), np.float32)
     obs, info = env.reset(seed=3)

@@ -134,8 +134,8 @@ def test_pocketed_ball_goes_to_the_tray(renderer: TableRenderer) -> None:
 def test_bad_state_is_rejected(renderer: TableRenderer) -> None:
     with pytest.raises(ValueError, match="numbers"):
         renderer.draw(POSITIONS, np.ones(4, bool), [0, 1, 2])
-    with pytest.raises(ValueError, match="0-15"):
-        renderer.draw(POSITIONS, np.ones(4, bool), [0, 1, 2, 16])
+    with pytest.raises(ValueError, match="0-25"):
+        renderer.draw(POSITIONS, np.ones(4, bool), [0, 1, 2, 26])
     with pytest.raises(ValueError, match="shape"):
         renderer.draw(np.zeros((4, 3)), np.ones(4, bool), NUMBERS)
 
@@ -172,7 +172,7 @@ def test_colours_of_the_ball_set() -> None:
     assert all(ball_colour(n + 8) == ball_colour(n) for n in range(1, 8))
     assert len({ball_colour(n) for n in range(9)}) == 9
     with pytest.raises(ValueError):
-        ball_colour(16)
+        ball_colour(26)
 
 
 # --- time sampling --------------------------------------------------------------------------------------
