@@ -71,7 +71,7 @@ def load_player(spec: str, seed: int = 0, game: str = "nine_ball") -> tuple[str,
     """``(name, policy)`` for a baseline name or a trained policy (SB3 run folder or zip, RLlib checkpoint or run
     folder: a :class:`agents.games.TrainedPlayer`)."""
     if spec in BASELINES:
-        return spec, make_player(spec, seed=seed)
+        return spec, make_player(spec, seed=seed, game=game)
     from .games import trained_player
 
     p = trained_player(spec, game)

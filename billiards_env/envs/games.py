@@ -15,7 +15,6 @@ Reward (the agent's): ``+win_reward`` for a won game, ``-loss_penalty`` for a lo
 """
 from __future__ import annotations
 
-import importlib
 import inspect
 from typing import TYPE_CHECKING, Any, Callable
 
@@ -24,6 +23,7 @@ import numpy as np
 from billiards_env.games import GameSpec, game_spec
 from billiards_env.games.session import GameSession, Verdict
 from billiards_env.physics.aim import aim_angle
+from billiards_env.players import make_player
 from billiards_env.shot_path import CueShot, PlayedShot
 from billiards_env.table_state import TableState
 
@@ -38,17 +38,6 @@ if TYPE_CHECKING:  # pragma: no cover
 MAX_TURN_SHOTS = 60
 #: Racks drawn at most at reset when the opponent breaks and wins before the agent shoots.
 MAX_RERACKS = 20
-
-
-def make_game_player(session_class: Any, name: str, seed: int | None = 0) -> Any:
-    """The built-in player ``name`` of a game (its session's ``players``), e.g. ``"geometric"``."""
-    try:
-        path = session_class.players[name]
-    except KeyError:
-        raise ValueError(f"unknown player {name!r} for this game; use one of "
-                         f"{', '.join(session_class.players)}") from None
-    module, _, attr = path.partition(":")
-    return getattr(importlib.import_module(module), attr)(seed=seed)
 
 
 class GameTask(Task):
@@ -112,7 +101,7 @@ class GameTask(Task):
         ``"search"``, ``"random"``) makes that player of this game. Anything else raises ``TypeError`` now, not at
         the next step."""
         if isinstance(policy, str):
-            policy = make_game_player(self.spec.session_class, policy)
+            policy = make_player(policy, seed=0, game=self.spec.name)
         if policy is not None and not (hasattr(policy, "act") or hasattr(policy, "predict") or callable(policy)):
             raise TypeError(f"opponent: expected a player (act), a model (predict), a callable obs -> action, a "
                             f"player's name or None; got {type(policy).__name__}")
@@ -335,4 +324,4 @@ def task_factory(config: "EnvConfig", state: TableState) -> Task:
     return GameTask(config, state, game_spec(config.task))
 
 
-__all__ = ["GameTask", "MAX_TURN_SHOTS", "MAX_RERACKS", "as_policy", "task_factory", "make_game_player"]
+__all__ = ["GameTask", "MAX_TURN_SHOTS", "MAX_RERACKS", "as_policy", "task_factory"]

@@ -56,8 +56,20 @@ PLAYERS: dict[str, Callable[..., Any]] = {
 }
 
 
-def make_player(name: str, seed: int | None = 0, **kwargs: Any) -> Any:
-    """A baseline player by name: ``random``, ``geometric`` or ``search``."""
+def make_player(name: str, seed: int | None = 0, game: str | None = None, **kwargs: Any) -> Any:
+    """A baseline player by name: ``random``, ``geometric`` or ``search``; of ``game`` (a registered game's name,
+    e.g. ``"snooker"``: that game's players, :attr:`GameSession.players <billiards_env.games.session.GameSession>`)
+    or of pool (the default: the players of the pot scenes, 9-ball and 8-ball)."""
+    if game is not None:
+        import importlib
+
+        from billiards_env.games import game_spec
+
+        players = game_spec(game).session_class.players
+        if name not in players:
+            raise ValueError(f"unknown player {name!r} for {game}; use one of {', '.join(players)}")
+        module, _, attr = players[name].partition(":")
+        return getattr(importlib.import_module(module), attr)(seed=seed, **kwargs)
     try:
         cls = PLAYERS[name]
     except KeyError:

@@ -91,8 +91,11 @@ def run_player(env_id: str, player: str, steps: int, seed: int, **kwargs: Any) -
     """A player's actions and the env's answers: the player's choices are part of the hash."""
     from billiards_env.players import make_player
 
+    from billiards_env.games import game_of_env
+
     env = gym.make(env_id, **kwargs)
-    p = make_player(player, seed=seed)
+    game = game_of_env(env_id)
+    p = make_player(player, seed=seed, game=game.name if game is not None else None)
     d = Digest()
     obs, info = env.reset(seed=seed)
     p.reset(seed)
@@ -129,7 +132,9 @@ def run_aec(module: str, steps: int, seed: int, players: tuple[str, str] | None 
     env = importlib.import_module(f"billiards_env.multi.{module}").env(**kwargs)
     env.reset(seed=seed)
     rng = np.random.default_rng(seed + 3000)
-    pl = None if players is None else {a: make_player(p, seed=seed) for a, p in zip(env.possible_agents, players)}
+    game = env.unwrapped.task.name
+    pl = None if players is None else {a: make_player(p, seed=seed, game=game)
+                                       for a, p in zip(env.possible_agents, players)}
     d = Digest()
     n = 0
     for agent in env.agent_iter():
@@ -212,6 +217,12 @@ def cases() -> Iterator[tuple[str, Callable[[], str]]]:
         yield c(f"players/{env_id}/search-opponent", run_single, env_id, 2, 38, opponent="search")
     yield c("players/Billiards9Ball-v0/geometric-spin", run_player, "Billiards9Ball-v0", "geometric", 3, 39,
             friction="spin", spin_action=True, opponent=None, opening="ball_in_hand")
+    # Snooker and three-cushion (added with the games).
+    for env_id in ("BilliardsSnooker-v0", "BilliardsThreeCushion-v0"):
+        yield c(f"games/{env_id}/default", run_single, env_id, 3, 61)
+        yield c(f"games/{env_id}/alone-noise", run_single, env_id, 6, 62, opponent=None, noise="olympiad")
+        yield c(f"players/{env_id}/geometric", run_player, env_id, "geometric", 3, 63, opponent=None)
+    yield c("players/BilliardsSnooker-v0/search", run_player, "BilliardsSnooker-v0", "search", 2, 64, opponent=None)
     # Vector envs (native and one-by-one).
     for env_id in POT:
         yield c(f"vector/{env_id}", run_vector, env_id, 8, 6, 41)
@@ -222,7 +233,7 @@ def cases() -> Iterator[tuple[str, Callable[[], str]]]:
     for env_id in GAMES:
         yield c(f"vector/{env_id}", run_vector, env_id, 3, 2, 44, opponent="random")
     # Two players.
-    for module in ("nine_ball_v0", "eight_ball_v0"):
+    for module in ("nine_ball_v0", "eight_ball_v0", "snooker_v0", "three_cushion_v0"):
         yield c(f"aec/{module}/random", run_aec, module, 12, 51)
         yield c(f"aec/{module}/geometric", run_aec, module, 8, 52, players=("geometric", "search"))
 
