@@ -586,15 +586,19 @@ def SKIP_KEYS(pg: Any) -> tuple[int, ...]:  # noqa: N802 - a constant that needs
     return (pg.K_SPACE, pg.K_s)
 
 
-def call_turn(call: Any) -> dict[str, Any]:
-    """A referee's :class:`~billiards_env.rules.Call` (or the session's verdict on it) as a turn-log entry (the keys
-    of the env's ``info["opponent_turns"]``, plus ``turn_over``, ``game_over``, ``winner`` and ``push_out``)."""
-    call = getattr(call, "call", call)  # a session's Verdict holds the ruleset's call
+def call_turn(verdict: Any) -> dict[str, Any]:
+    """A session's :class:`~billiards_env.games.session.Verdict` (or a pool :class:`~billiards_env.rules.Call`) as a
+    turn-log entry (the keys of the env's ``info["opponent_turns"]``, plus ``turn_over``, ``game_over``, ``winner``
+    and ``push_out``); the balls kept down where the game pockets balls."""
+    call = getattr(verdict, "call", verdict)
+    over = getattr(verdict, "game_over", getattr(call, "game_over", False))
+    respot = getattr(call, "respot", ())
     return {
-        "pocketed": tuple(n for n in call.pocketed if n not in call.respot),
+        "pocketed": tuple(n for n in getattr(call, "pocketed", ()) if n not in respot),
         "foul": bool(call.foul), "foul_reason": call.reason if call.foul else None, "call": call.reason,
-        "scratch": bool(call.cue_pocketed), "shooter": int(call.shooter), "turn_over": bool(call.turn_over),
-        "game_over": bool(call.game_over), "winner": call.winner, "push_out": bool(call.push_out),
+        "scratch": bool(getattr(call, "cue_pocketed", False)), "shooter": int(call.shooter),
+        "turn_over": bool(call.turn_over), "game_over": bool(over), "winner": call.winner,
+        "push_out": bool(getattr(call, "push_out", False)),
     }
 
 

@@ -516,6 +516,9 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
             spec.session_class.options(cfg.rules)
         except (RulesError, TypeError) as exc:
             raise ConfigError(f"rules: {exc}") from None
+        openings = spec.session_class.openings
+        _require(cfg.opening in openings, "opening",
+                 f"{cfg.task} opens with {' or '.join(map(repr, openings))}, got {cfg.opening!r}")
     else:
         _require(not cfg.rules, "rules", f"only the games (task {' or '.join(map(repr, GAMES))}) have rules")
     for key in ("cushion_margin", "pocket_margin", "ball_gap", "rack_gap", "angle_noise", "speed_noise", "tip_noise",
