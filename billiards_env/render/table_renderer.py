@@ -234,10 +234,6 @@ class TableRenderer:
         ``draw``'s keywords (``orientations``, ``tip``, ``hud``)."""
         return surface_to_array(self.draw(positions, on_table, numbers, cue, **extras))
 
-    def background(self) -> pygame.Surface:
-        """A copy of the static table without balls."""
-        return self._background.copy()
-
     def _check_state(
         self, positions: np.ndarray, on_table: np.ndarray, numbers: Sequence[int]
     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

@@ -18,8 +18,6 @@ import numpy as np
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 import pygame  # noqa: E402
 
-#: Unread events kept for ``take_events`` (older ones are dropped so an unread queue cannot grow forever).
-_MAX_KEPT_EVENTS = 256
 #: SDL video drivers that draw into memory and show nothing.
 HEADLESS_DRIVERS = ("offscreen", "dummy")
 #: Environment variable that allows an invisible window (``1``/``true``/``yes``) where there is no display.
@@ -146,7 +144,6 @@ class HumanWindow:
         #: Whether frames are paced at ``fps``: not in an invisible window, where nobody watches the animation.
         self.paced = pygame.display.get_driver() not in HEADLESS_DRIVERS
         self._closed = False
-        self._events: list[pygame.event.Event] = []
 
     @property
     def closed(self) -> bool:
@@ -172,11 +169,6 @@ class HumanWindow:
         if fps and self.paced:
             self._clock.tick(fps)
 
-    def take_events(self) -> list[pygame.event.Event]:
-        """Window events (keys, mouse; not QUIT) received since the last call, for interactive callers."""
-        events, self._events = self._events, []
-        return events
-
     def close(self) -> None:
         """Close the window and shut the display down; safe to call more than once."""
         if not self._closed:
@@ -184,11 +176,9 @@ class HumanWindow:
             pygame.display.quit()
 
     def _pump(self) -> bool:
-        """Drain window events (kept for ``take_events``); False (and closes) if the user closed the window."""
+        """Drain window events; False (and closes) if the user closed the window."""
         events = pygame.event.get()
-        kept = [e for e in events if e.type != pygame.QUIT]
-        self._events = (self._events + kept)[-_MAX_KEPT_EVENTS:]
-        if len(kept) != len(events):
+        if any(e.type == pygame.QUIT for e in events):
             self.close()
             return False
         return True
