@@ -260,8 +260,8 @@ def pot_step(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, poc
     for k in range(pos.shape[0]):
         if active[k]:
             _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
-            res = simulate_exact(pos[k], vel[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params, max_events,
-                                 False)
+            res = simulate_exact(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
+                                 max_events, False)
             ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
     return ok
 

@@ -23,9 +23,9 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPI
                     MS_ROLLING, MS_SLIDING, MS_SPINNING, MS_STATIONARY, STATUS_EVENT_CAP, STATUS_REST,
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS
-from .exact import _count_burst
-from .kernel_io import KernelResult
-from .kernel_logs import append_event, internal, pocket_holding, reserve_states
+from .kernel_io import N_STATE_COLS_SPIN, KernelResult
+from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
+                          reserve_states)
 from .roots import first_entry, quadratic_roots_in
 from .spin_collide import (is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
                            settle_on_cushion, wall_normal)
@@ -41,8 +41,6 @@ T0, X, Y, VX, VY, WX, WY, WZ, AX, AY, DWX, DWY, ALPHA, TEND = range(14)
 N_COLS = 14
 #: The ball's own next event is its motion transition (internal kind; logged as roll, spin or stop).
 _TRANSITION = 100
-#: Columns of the logged states (``sc_state``): x, y, vx, vy, on_table, then wx, wy, wz, motion state.
-N_STATE_COLS = 9
 
 
 @internal
@@ -270,22 +268,13 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
     n = bs.shape[0]
     length = prm.length
     width = prm.width
-    member = np.zeros(n, np.bool_)
-    member[seed] = True
-    involved[0] = seed
-    count = 1
-    head = 0
-    while head < count:
-        q = involved[head]
-        head += 1
-        xq, yq, _, _, _, _, _ = _state_at(bs, q, t)
-        for m in range(n):
-            if on_table[m] and not member[m]:
-                xm, ym, _, _, _, _, _ = _state_at(bs, m, t)
-                if math.hypot(xq - xm, yq - ym) <= radius[q] + radius[m] + 1e-9:
-                    member[m] = True
-                    involved[count] = m
-                    count += 1
+    pxy = np.empty((2, n))
+    px = pxy[0]
+    py = pxy[1]
+    for m in range(n):
+        if on_table[m]:
+            px[m], py[m], _, _, _, _, _ = _state_at(bs, m, t)
+    count = contact_cluster(seed, px, py, radius, on_table, involved)
     total = 0.0
     mom_x = 0.0
     mom_y = 0.0
@@ -417,7 +406,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     sc_cap = 4 * n + 16 if record else 1
     sc_t = np.empty(sc_cap)
     sc_ball = np.empty(sc_cap, np.int64)
-    sc_state = np.empty((sc_cap, N_STATE_COLS))
+    sc_state = np.empty((sc_cap, N_STATE_COLS_SPIN))
     n_sc = 0
     if record:
         for i in range(n):
@@ -432,23 +421,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     n_events = 0
     status = STATUS_REST
     while True:
-        best = math.inf
-        kind = -1
-        bi = -1
-        bj = -1
-        for i in range(n):
-            if ball_t[i] < best:
-                best = ball_t[i]
-                kind = ball_kind[i]
-                bi = i
-                bj = ball_other[i]
-        for i in range(n):
-            for j in range(i + 1, n):
-                if pair_t[i, j] < best:
-                    best = pair_t[i, j]
-                    kind = EV_COLLISION
-                    bi = i
-                    bj = j
+        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, pair_t)
         if not best <= max_time:
             moving = False
             for i in range(n):
@@ -473,7 +446,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
             dx = bs[bi, X] - bs[bj, X]
             dy = bs[bi, Y] - bs[bj, Y]
             dist = math.hypot(dx, dy)
-            clustered = _count_burst(bi, t, t_hit, burst) | _count_burst(bj, t, t_hit, burst)
+            clustered = count_burst(bi, t, t_hit, burst) | count_burst(bj, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS or burst[bj] > JAM_EVENTS:
                 n_inv = _jam_cluster(bi, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin,
                                      involved)
@@ -523,7 +496,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 bs[bi, Y] = r
             else:
                 bs[bi, Y] = width - r
-            _count_burst(bi, t, t_hit, burst)
+            count_burst(bi, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS:
                 n_inv = _jam_cluster(bi, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin,
                                      involved)

@@ -19,6 +19,11 @@ if TYPE_CHECKING:  # pragma: no cover
 #: Separation-speed floor of the inelastic-collapse guard (m/s), see :mod:`.collide`.
 CONTACT_SPEED_FLOOR = 1e-3
 
+#: Columns of the state logs (``sc_state``): ``x, y, vx, vy, on_table``; the spin model's add ``wx, wy, wz,
+#: motion_state``.
+N_STATE_COLS = 5
+N_STATE_COLS_SPIN = 9
+
 #: The parameter record the kernels read. Fields a model does not use are ignored by its kernel.
 PARAMS_DTYPE = np.dtype(
     [
@@ -82,4 +87,4 @@ class KernelResult(NamedTuple):
     n_tunnelled: int  #: pairs that passed through each other within a step (step solver)
 
 
-__all__ = ["PARAMS_DTYPE", "CONTACT_SPEED_FLOOR", "kernel_params", "KernelResult"]
+__all__ = ["N_STATE_COLS", "N_STATE_COLS_SPIN", "PARAMS_DTYPE", "CONTACT_SPEED_FLOOR", "kernel_params", "KernelResult"]
