@@ -34,7 +34,7 @@ from .codes import EVENT_KINDS
 from .errors import SceneError
 from .result import EventLog
 from .simulate import Simulator
-from .spin_collide import MAX_TIP_OFFSET, strike_spin
+from .spin_collide import MAX_TIP_OFFSET, strike_ball
 
 #: Event kinds counted per row (the columns of :attr:`BatchResult.event_counts`, see :data:`.codes.EVENT_KINDS`).
 N_KINDS = len(EVENT_KINDS)
@@ -87,9 +87,10 @@ class BatchResult(NamedTuple):
 
 @njit(cache=True)
 def _strike_rows(pos, vel, on, ang, base_pos, base_vel, base_on, base_ang, ball, angles, speeds, side, top,
-                 radius, spin):
+                 radius, mass, spin, squirt, end_mass):
     """Fill every row with the base state and strike ``ball``: ``vel = speed (cos a, sin a)`` as
-    :meth:`.Balls.strike` does, and under the spin model the tip offsets' angular velocity (zero without)."""
+    :meth:`.Balls.strike` does, and under the spin model the tip offsets' angular velocity (zero without) and the
+    squirt (``squirt``: its throttle)."""
     for k in range(pos.shape[0]):
         pos[k] = base_pos
         vel[k] = base_vel
@@ -101,7 +102,9 @@ def _strike_rows(pos, vel, on, ang, base_pos, base_vel, base_on, base_ang, ball,
         if spin:
             ang[k] = base_ang
             if side[k] != 0.0 or top[k] != 0.0:
-                _, _, wx, wy, wz = strike_spin(a, s, side[k], top[k], radius[ball])
+                vx, vy, wx, wy, wz = strike_ball(a, s, side[k], top[k], radius[ball], mass[ball], squirt, end_mass)
+                vel[k, ball, 0] = vx
+                vel[k, ball, 1] = vy
                 ang[k, ball, 0] = wx
                 ang[k, ball, 1] = wy
                 ang[k, ball, 2] = wz
@@ -228,6 +231,7 @@ def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int =
     spin = _check_simulator(sim)
     if validate:
         validate_balls(balls, sim.table, allow_spin=spin)
+        sim.physics.check_cushion_height(balls.radius)
     row = balls.index(ball)
     if not balls.on_table[row]:
         raise SceneError(f"ball: ball {balls.ids[row]!r} is pocketed and cannot be struck")
@@ -260,7 +264,7 @@ def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int =
     on = np.empty((n, nb), np.bool_)
     ang = np.empty((n, nb, 3)) if spin else np.empty((1, nb, 3))
     _strike_rows(pos, vel, on, ang, base_pos, base_vel, base_on, base_ang, row, ang_k, spd_k, sd, tp, radius[0],
-                 spin)
+                 mass[0], spin, float(sim.physics.squirt), float(sim.physics.cue_end_mass))
     struck = np.full(n, row, np.int64)
     return _simulate_rows(sim, pos, vel, ang, on, radius, mass, struck, events, threads, spin)
 

@@ -27,8 +27,8 @@ from .kernel_io import N_STATE_COLS_SPIN, KernelResult
 from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
                           reserve_states)
 from .roots import first_entry, quadratic_roots_in
-from .spin_collide import (is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
-                           settle_on_cushion, wall_normal)
+from .cushion_models import cushion_hit
+from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, wall_normal
 from .spin_motion import advance, classify, piece_of, reach, roll_on, slide_end, spin_decay_rate, transition
 
 #: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
@@ -357,9 +357,6 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     f_roll = prm.mu_roll * g
     f_spin = prm.mu_spin * g
     e_c = prm.e_cushion
-    e_b = prm.e_ball
-    mu_b = prm.ball_friction
-    mu_c = prm.cushion_friction
     max_time = prm.max_time
     floor = prm.speed_floor
     length = prm.length
@@ -416,6 +413,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     # Scratch rows for the collision laws, which work on (N, 2) / (N, 3) arrays.
     cv = np.zeros((2, 2))
     cw = np.zeros((2, 3))
+    scratch = np.zeros(10)  # for the cushion laws that integrate
     involved = np.empty(n, np.int64)
     t = 0.0
     n_events = 0
@@ -462,8 +460,8 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                     cw[q, 2] = bs[m, WZ]
                 merged = False
                 if dist > 0.0:
-                    speed = resolve_ball_ball_spin(cv, cw, _ROW0, _ROW1, dx / dist, dy / dist, mass[bi], mass[bj],
-                                                   radius[bi], radius[bj], e_b, mu_b, floor, clustered)
+                    speed = ball_hit(cv, cw, _ROW0, _ROW1, dx / dist, dy / dist, mass[bi], mass[bj], radius[bi],
+                                     radius[bj], prm, floor, clustered)
                     pushing = _slow_run(bi, bj, speed < floor, slow_with, slow_runs) > JAM_EVENTS
                     if pushing or is_pressed_pair(cv, cw, _ROW0, _ROW1, dx, dy, radius[bi], radius[bj], f_slide, f_roll,
                                                   f_spin, floor):
@@ -508,7 +506,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 cw[0, 0] = bs[bi, WX]
                 cw[0, 1] = bs[bi, WY]
                 cw[0, 2] = bs[bi, WZ]
-                speed = resolve_cushion_spin(cv, cw, _ROW0, bj, r, e_c, mu_c)
+                speed = cushion_hit(cv, cw, _ROW0, bj, r, mass[bi], e_c, prm, scratch)
                 bs[bi, VX] = cv[0, 0]
                 bs[bi, VY] = cv[0, 1]
                 bs[bi, WX] = cw[0, 0]

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
+from .codes import BALL_BALL_MODELS, CUSHION_MODELS
 from .model import G
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -43,6 +44,15 @@ PARAMS_DTYPE = np.dtype(
         ("mu_spin", np.float64),  # spin model: spinning friction
         ("ball_friction", np.float64),  # spin model: ball-ball friction (throw)
         ("cushion_friction", np.float64),  # spin model: cushion friction
+        ("ball_ball", np.int64),  # spin model: ball-ball model code (codes.BB_*)
+        ("alciatore_a", np.float64),  # ball_ball alciatore: mu(v) = a + b exp(-c v)
+        ("alciatore_b", np.float64),
+        ("alciatore_c", np.float64),
+        ("cushion", np.int64),  # spin model: cushion model code (codes.CU_*)
+        ("cushion_height", np.float64),  # the cushion nose's height (m); -1: at each ball's equator
+        ("omega_ratio", np.float64),  # cushion stronge: tangential / normal frequency ratio
+        ("squirt", np.float64),  # squirt throttle of the strike (0: none)
+        ("cue_end_mass", np.float64),  # the cue tip's end mass (kg) in the squirt angle
     ],
     align=True,
 )
@@ -64,8 +74,12 @@ def kernel_params(table: "Table", physics: "Physics", max_time: float) -> np.nda
     r["speed_floor"] = CONTACT_SPEED_FLOOR
     r["g"] = G
     r["mu_roll"] = physics.mu_roll
-    for name in ("mu_slide", "mu_spin", "ball_friction", "cushion_friction"):
-        r[name] = getattr(physics, name, 0.0)
+    for name in ("mu_slide", "mu_spin", "ball_friction", "cushion_friction", "alciatore_a", "alciatore_b",
+                 "alciatore_c", "omega_ratio", "squirt", "cue_end_mass"):
+        r[name] = getattr(physics, name)
+    r["ball_ball"] = BALL_BALL_MODELS.index(physics.ball_ball)
+    r["cushion"] = CUSHION_MODELS.index(physics.cushion)
+    r["cushion_height"] = -1.0 if physics.cushion_height is None else physics.cushion_height
     return p
 
 

@@ -21,8 +21,11 @@ from .table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, Table, default_pock
 
 TABLE_FIELDS = {"length", "width", "cushion_restitution", "pockets", "corner_pocket_radius", "side_pocket_radius"}
 POCKET_FIELDS = {"x", "y", "radius"}
-#: The physics section's fields are :class:`Physics`'s: one set of names and defaults for scenes and envs.
-PHYSICS_FIELDS = {f.name for f in fields(Physics)}
+#: The physics section's fields are :class:`Physics`'s (one set of names and defaults for scenes and envs), and
+#: ``preset``: a named set of them (:data:`.model.PRESETS`) that the fields given override.
+PHYSICS_FIELDS = {f.name for f in fields(Physics)} | {"preset"}
+#: Physics fields that may be null (None: see :class:`Physics`).
+NULLABLE_PHYSICS_FIELDS = {"cushion_height"}
 BALL_FIELDS = {"id", "x", "y", "vx", "vy", "wx", "wy", "wz", "radius", "mass"}
 SHOT_FIELDS = {"ball", "angle", "speed", "side", "top"}
 SOLVER_FIELDS = {"name", "dt", "contact"}
@@ -64,7 +67,7 @@ class Scene:
         if self.shot is None:
             return self.balls.copy()
         return self.balls.strike(self.shot.ball, self.shot.angle, self.shot.speed, side=self.shot.side,
-                                 top=self.shot.top)
+                                 top=self.shot.top, physics=self.physics)
 
     def run(self, solver: str | None = None, dt: float | None = None, contact: str | None = None,
             record: bool = False) -> ShotResult:
@@ -107,6 +110,7 @@ class Scene:
             raise SceneError("scene: missing 'balls'; give a list of balls, e.g. [{\"id\": \"cue\", \"x\": 0.6, \"y\": 0.6}]")
         balls = _balls(d["balls"])
         validate_balls(balls, table, allow_spin=physics.friction == "spin")
+        physics.check_cushion_height(balls.radius)
         shot = _shot(d["shot"], balls, physics) if d.get("shot") is not None else None
         solver = parse_solver(d.get("solver", {}))
         max_time = check_positive("max_time", d.get("max_time", DEFAULT_MAX_TIME))
@@ -173,15 +177,21 @@ def parse_table(value: Any, where: str = "table") -> Table:
 
 
 def parse_physics(value: Any, where: str = "physics") -> Physics:
-    """A :class:`Physics` from a scene's (or an env config's) ``physics`` section (fields: those of Physics)."""
+    """A :class:`Physics` from a scene's (or an env config's) ``physics`` section: the fields of Physics, and
+    ``preset`` (a name of :data:`.model.PRESETS`, e.g. ``"pooltool"``), whose values the fields given override."""
     p = _mapping(where, value, PHYSICS_FIELDS)
     kw: dict[str, Any] = {}
     for f in fields(Physics):
         if f.name in p:
-            if f.type in ("str", str):
+            if f.name in NULLABLE_PHYSICS_FIELDS and p[f.name] is None:
+                kw[f.name] = None
+            elif f.type in ("str", str):
                 kw[f.name] = _string(f"{where}.{f.name}", p[f.name])
             else:
                 kw[f.name] = check_number(f"{where}.{f.name}", p[f.name])
+    preset = p.get("preset")
+    if preset is not None:
+        return Physics.from_preset(_string(f"{where}.preset", preset), **kw)
     return Physics(**kw)
 
 

@@ -99,6 +99,7 @@ class Simulator:
         """Simulate from ``balls`` (not modified) until rest or a cap. ``record`` keeps the trajectory."""
         if validate:
             validate_balls(balls, self.table, allow_spin=self._spin)
+            self.physics.check_cushion_height(balls.radius)
         out = balls.copy()
         pos = np.ascontiguousarray(out.pos, dtype=float)
         vel = np.ascontiguousarray(out.vel, dtype=float)

@@ -28,8 +28,8 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_POCKET, EV_ROLL, EV_SPIN, EV_ST
 from .kernel_io import N_STATE_COLS_SPIN, KernelResult
 from .kernel_logs import (cushion_overshoot, internal, keep_on_table, pocket_holding, put_event, reserve_events,
                           rewind_time, snapshot, tunnelled)
-from .spin_collide import (acceleration, is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
-                           settle_on_cushion, wall_normal)
+from .cushion_models import cushion_hit
+from .spin_collide import acceleration, ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, wall_normal
 from .spin_motion import classify, roll_on, slip, spin_decay_rate, wz_after
 
 
@@ -97,15 +97,13 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
     f_roll = prm.mu_roll * g
     f_spin = prm.mu_spin * g
     e_c = prm.e_cushion
-    e_b = prm.e_ball
-    mu_b = prm.ball_friction
-    mu_c = prm.cushion_friction
     length = prm.length
     width = prm.width
     max_time = prm.max_time
     floor = prm.speed_floor
     max_steps = int(math.ceil(max_time / dt - 1e-9))
 
+    scratch = np.zeros(10)  # for the cushion laws that integrate
     code = np.full(n, MS_POCKETED, np.int64)
     alpha = np.empty(n)
     for i in range(n):
@@ -178,7 +176,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
             for cush in range(4):
                 axis, lim, over = cushion_overshoot(pos, i, cush, r, length, width)
                 if over > 0.0:
-                    speed = resolve_cushion_spin(vel, ang, i, cush, r, e_c, mu_c)
+                    speed = cushion_hit(vel, ang, i, cush, r, mass[i], e_c, prm, scratch)
                     if contact == 1 and speed > 0.0:
                         pos[i, axis] = lim + (over if cush % 2 == 0 else -over) * e_c
                     else:
@@ -232,8 +230,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                 dist = math.hypot(dx, dy)
                 nx = dx / dist if dist > 0.0 else 1.0
                 ny = dy / dist if dist > 0.0 else 0.0
-                speed = resolve_ball_ball_spin(vel, ang, i, j, nx, ny, mass[i], mass[j], radius[i], radius[j], e_b,
-                                               mu_b, floor, False)
+                speed = ball_hit(vel, ang, i, j, nx, ny, mass[i], mass[j], radius[i], radius[j], prm, floor, False)
                 merged = is_pressed_pair(vel, ang, i, j, dx, dy, radius[i], radius[j], f_slide, f_roll, f_spin,
                                          floor)
                 if merged:
