@@ -1,11 +1,12 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch] [--out docs/bench]``,
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|ladder] [--out docs/bench]``,
 from the repository root.
 
 Without ``--only`` every part runs: the accuracy suite (speed against error, ``speed_vs_error.md/.json/.png``),
 then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``), then the
 spin model's speed (against pooltool) and speed against error (``spin.md/.json``), then the batch API, the native
 vector env, the search player, the single env and the first call against the targets of issue 12
-(``batch.md/.json``).
+(``batch.md/.json``), then the model ladder: how often each model, from drag to the ``pooltool`` preset, plays a
+shot as the preset does, and at what cost (``ladder.md/.json``).
 ``--quick`` runs a small configuration of everything (about a minute); the full run takes about four minutes on
 two cores. ``--only env`` also prints a table of ``env.step`` throughput per id (``--env-seconds``,
 ``--env-ids``, ``--env-compare``).
@@ -16,7 +17,7 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "ladder")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -47,7 +48,7 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, batch, speed, spin
+    from . import accuracy, batch, ladder, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -63,6 +64,8 @@ def main(argv: list[str] | None = None) -> int:
             spin.render(args.out)
         if (args.out / "batch.json").exists():
             batch.render(args.out)
+        if (args.out / "ladder.json").exists():
+            ladder.render(args.out)
         log(f"[bench] re-rendered the reports in {args.out}")
         return 0
     if "accuracy" in only:
@@ -78,6 +81,8 @@ def main(argv: list[str] | None = None) -> int:
     if "batch" in only:
         batch.main(args.out, quick=args.quick, pooltool_python=args.pooltool_python,
                    allow_setup=not args.no_pooltool_setup)
+    if "ladder" in only:
+        ladder.main(args.out, quick=args.quick)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; outputs in {args.out}")
     return 0
 
