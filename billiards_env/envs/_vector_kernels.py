@@ -28,7 +28,7 @@ from billiards_env.physics.batch import store_row
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import place_random_rows, spot_cue_row
-from billiards_env.physics.spin_collide import strike_spin
+from billiards_env.physics.spin_collide import strike_ball
 
 from ._kernels import observation
 from .actions import (AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, aim_to_angle, noisy_shot, power_to_speed,
@@ -75,7 +75,8 @@ def _target(on):
 
 # Constants of a pot env, packed in one float array (``cfg``) and one int array (``icfg``) by :func:`pack_config`.
 C_SPEED_LO, C_SPEED_SPAN, C_MAX_TIP, C_ANGLE_NOISE, C_SPEED_NOISE, C_TIP_NOISE, C_MAX_GHOST, C_BALL_RADIUS, \
-    C_HEAD_X, C_HEAD_Y, C_WIDTH, C_POT_REWARD, C_SCRATCH_PENALTY, C_MISS_PENALTY, C_STEP_PENALTY, C_SX, C_SY = range(17)
+    C_HEAD_X, C_HEAD_Y, C_WIDTH, C_POT_REWARD, C_SCRATCH_PENALTY, C_MISS_PENALTY, C_STEP_PENALTY, C_SX, C_SY, \
+    C_BALL_MASS, C_SQUIRT, C_CUE_END_MASS = range(20)
 I_AIM, I_SPIN_ACTION, I_SPIN_MODEL, I_SINGLE_SHOT, I_MAX_SHOTS, I_POSITIONS_OBS = range(6)
 # Columns of the per-table float outputs (``fout``) and int outputs (``iout``).
 F_REWARD, F_ANGLE, F_SPEED, F_SIDE, F_TOP, F_START_X, F_START_Y = range(7)
@@ -89,7 +90,7 @@ def pack_config(env) -> tuple[np.ndarray, np.ndarray]:
     c = env.config
     a = env.action_type
     hx, hy = head_spot(env.table)
-    cfg = np.zeros(17)
+    cfg = np.zeros(20)
     cfg[C_SPEED_LO] = a.speed_lo
     cfg[C_SPEED_SPAN] = a.speed_span
     cfg[C_MAX_TIP] = a.max_tip
@@ -107,6 +108,9 @@ def pack_config(env) -> tuple[np.ndarray, np.ndarray]:
     cfg[C_STEP_PENALTY] = c.step_penalty
     cfg[C_SX] = 1.0 / env.table.length
     cfg[C_SY] = 1.0 / env.table.width
+    cfg[C_BALL_MASS] = c.ball_mass
+    cfg[C_SQUIRT] = env.physics.squirt
+    cfg[C_CUE_END_MASS] = env.physics.cue_end_mass
     icfg = np.zeros(6, np.int64)
     icfg[I_AIM] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
     icfg[I_SPIN_ACTION] = int(a.spin)
@@ -165,8 +169,11 @@ def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
     fout[k, F_START_Y] = p[0, 1]
     vel[k, 0, 0] = speed * math.cos(angle)
     vel[k, 0, 1] = speed * math.sin(angle)
-    if icfg[I_SPIN_MODEL]:
-        _, _, wx, wy, wz = strike_spin(angle, speed, side, top, radius[0])
+    if icfg[I_SPIN_MODEL]:  # the tip offsets' spin, and the squirt of the physics
+        vx, vy, wx, wy, wz = strike_ball(angle, speed, side, top, radius[0], cfg[C_BALL_MASS], cfg[C_SQUIRT],
+                                         cfg[C_CUE_END_MASS])
+        vel[k, 0, 0] = vx
+        vel[k, 0, 1] = vy
         ang[k, 0, 0] = wx
         ang[k, 0, 1] = wy
         ang[k, 0, 2] = wz

@@ -28,7 +28,7 @@ from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_pos
                                           head_string_x, nearest_free_point, place_random, rack_rows,
                                           triangle_positions)
 from billiards_env.physics.simulate import Simulator
-from billiards_env.physics.spin_collide import strike_spin
+from billiards_env.physics.spin_collide import strike_ball
 
 from ._pot_fast import pot_fast_step
 from ._seeding import np_random
@@ -202,8 +202,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         x0, y0 = float(b.pos[0, 0]), float(b.pos[0, 1])
         b.vel[0, 0] = speed * math.cos(angle)
         b.vel[0, 1] = speed * math.sin(angle)
-        if self._spin:
-            b.ang[0] = strike_spin(angle, speed, side, top, float(b.radius[0]))[2:]
+        if self._spin:  # the tip offsets' spin, and the squirt of the physics
+            p = self.physics
+            b.vel[0, 0], b.vel[0, 1], b.ang[0, 0], b.ang[0, 1], b.ang[0, 2] = strike_ball(
+                angle, speed, side, top, float(b.radius[0]), float(b.mass[0]), p.squirt, p.cue_end_mass)
         self.last_shot = (x0, y0, angle, speed)
         self.last_tip = (side, top)
         if self._record:  # drawn with this shot's animation: its cue and tip, a game's HUD before the call

@@ -75,29 +75,12 @@ class Scene:
         return self.simulator(solver, dt, contact).run(self.initial_balls(), record=record)
 
     @classmethod
-    def load(cls, path: str | Path) -> "Scene":
-        """Read a scene from a JSON (or YAML, by extension) file."""
-        p = Path(path)
-        try:
-            text = p.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise SceneError(f"{path}: cannot read the scene file ({exc.strerror})") from None
-        except UnicodeDecodeError:
-            raise SceneError(f"{path}: not UTF-8 text; save the scene as UTF-8 JSON or YAML") from None
-        if p.suffix.lower() in (".yaml", ".yml"):
-            import yaml
-
-            try:
-                data = yaml.safe_load(text)
-            except yaml.YAMLError as exc:
-                raise SceneError(f"{path}: not valid YAML ({exc})") from None
-        else:
-            try:
-                data = json.loads(text)
-            except json.JSONDecodeError as exc:
-                raise SceneError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno} column {exc.colno}") from None
-            except ValueError as exc:  # e.g. an integer literal longer than Python's digit limit
-                raise SceneError(f"{path}: not valid JSON: {exc}") from None
+    def load(cls, path: str | Path, preset: str | None = None) -> "Scene":
+        """Read a scene from a JSON (or YAML, by extension) file. ``preset``: play it under this physics preset
+        (:data:`.model.PRESETS`) instead of the file's physics section."""
+        data = read_scene_file(path)
+        if preset is not None and isinstance(data, Mapping):
+            data = {**data, "physics": {"preset": preset}}
         return cls.from_dict(data)
 
     @classmethod
@@ -123,6 +106,32 @@ class Scene:
         if shot is not None:
             scene.initial_balls()  # checks the shot (e.g. the tip offset's miscue limit)
         return scene
+
+
+def read_scene_file(path: str | Path) -> Any:
+    """The parsed document of a scene file (JSON, or YAML by extension), unchecked."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"{path}: cannot read the scene file ({exc.strerror})") from None
+    except UnicodeDecodeError:
+        raise SceneError(f"{path}: not UTF-8 text; save the scene as UTF-8 JSON or YAML") from None
+    if p.suffix.lower() in (".yaml", ".yml"):
+        import yaml
+
+        try:
+            data = yaml.safe_load(text)
+        except yaml.YAMLError as exc:
+            raise SceneError(f"{path}: not valid YAML ({exc})") from None
+    else:
+        try:
+            data = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise SceneError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno} column {exc.colno}") from None
+        except ValueError as exc:  # e.g. an integer literal longer than Python's digit limit
+            raise SceneError(f"{path}: not valid JSON: {exc}") from None
+    return data
 
 
 def _mapping(name: str, value: Any, allowed: set[str]) -> Mapping[str, Any]:

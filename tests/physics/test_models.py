@@ -305,3 +305,24 @@ def test_cushion_height_outside_the_ball_is_refused():
     sim = Simulator(Table(), Physics.from_preset("pooltool", cushion_height=0.06))
     with pytest.raises(SceneError, match=r"cushion_height.*\[R, 2R\)"):
         sim.run(Balls.from_positions([[1.0, 0.6]]).strike("cue", 0.0, 1.0))
+
+
+def test_billiards_sim_takes_a_preset(tmp_path, capsys):
+    """``billiards-sim SCENE --preset pooltool`` plays the scene under the preset instead of its physics section;
+    an unknown preset is refused by the parser (exit status 2)."""
+    import json
+
+    from billiards_env.sim import main
+
+    scene = {"table": {"pockets": []}, "physics": {"friction": "rolling"},
+             "balls": [{"x": 0.6, "y": 0.5}, {"x": 1.5, "y": 0.62}],
+             "shot": {"angle": 0.15, "speed": 2.0}}
+    path = tmp_path / "s.json"
+    path.write_text(json.dumps(scene))
+    assert main([str(path), "--preset", "pooltool", "--indent", "0"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    ref = Scene.from_dict({**scene, "physics": {"preset": "pooltool"}}).run()
+    assert [b["x"] for b in out["balls"]] == ref.balls.pos[:, 0].tolist()
+    with pytest.raises(SystemExit) as exc:
+        main([str(path), "--preset", "pooltol"])
+    assert exc.value.code == 2
