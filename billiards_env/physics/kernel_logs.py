@@ -16,6 +16,9 @@ from .collide import CONTACT_TIME
 #: Compile options of kernel helpers: called only from compiled code, so they need no Python entry wrappers
 #: (which would be compiled, optimised and cached for each of them: a good part of a cold compile).
 internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
+#: The same, inlined into the caller by numba (in its own IR): for small helpers of the kernels' hot loops, which
+#: a call would slow down.
+inlined = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 
 
 @internal
@@ -128,7 +131,7 @@ def snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on, code, only):
     return n_sc, sc_t, sc_ball, sc_state
 
 
-@internal
+@inlined
 def next_event(ball_t, ball_kind, ball_other, pair_t):
     """The earliest pending event of the exact solvers: ``(time, kind, ball, other)``. Ties go to ball events (by
     row) before pair events (by ``(i, j)``, ``i < j``): the fixed order of simultaneous events. ``time`` is ``inf``
