@@ -112,6 +112,41 @@ def _wall_time(c2, c1, c0, window, tol):
 
 
 @internal
+def _segment_distance(px, py, x0, y0, x1, y1):
+    """Distance from the point ``p`` to the segment from ``(x0, y0)`` to ``(x1, y1)``."""
+    ex = x1 - x0
+    ey = y1 - y0
+    ee = ex * ex + ey * ey
+    s = 0.0
+    if ee > 0.0:
+        s = min(max(((px - x0) * ex + (py - y0) * ey) / ee, 0.0), 1.0)
+    return math.hypot(px - x0 - s * ex, py - y0 - s * ey)
+
+
+@internal
+def _path_clear_of(cx, cy, r, x, y, vx, vy, ax, ay, window):
+    """Whether a ball's centre on ``p + v t + a t^2 / 2``, ``t`` in ``[0, window]``, stays farther than ``r`` (and a
+    margin far above round-off) from ``c``: then the pocket's quartic has no root and need not be solved. The path
+    is a quadratic Bezier curve, inside the triangle of its control points ``p``, ``p + v T / 2`` and its end
+    (``T = window``); the test is the distance from ``c`` to that triangle (0 if ``c`` is inside)."""
+    if not window < math.inf:
+        return False
+    x1 = x + 0.5 * vx * window
+    y1 = y + 0.5 * vy * window
+    x2 = x + window * (vx + 0.5 * ax * window)
+    y2 = y + window * (vy + 0.5 * ay * window)
+    # Inside the triangle (or on its edge): the same side of all three edges.
+    d0 = (x1 - x) * (cy - y) - (y1 - y) * (cx - x)
+    d1 = (x2 - x1) * (cy - y1) - (y2 - y1) * (cx - x1)
+    d2 = (x - x2) * (cy - y2) - (y - y2) * (cx - x2)
+    if (d0 >= 0.0 and d1 >= 0.0 and d2 >= 0.0) or (d0 <= 0.0 and d1 <= 0.0 and d2 <= 0.0):
+        return False
+    d = min(_segment_distance(cx, cy, x, y, x1, y1), _segment_distance(cx, cy, x1, y1, x2, y2),
+            _segment_distance(cx, cy, x, y, x2, y2))
+    return d > r * (1.0 + 1e-9) + 1e-9
+
+
+@internal
 def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time):
     """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
     t0 = bs[i, T0]
@@ -143,6 +178,8 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
         if c0 <= 0.0:
             tau = 0.0
         elif math.sqrt(dx * dx + dy * dy) - pocket_r[q] > far:
+            continue
+        elif _path_clear_of(pocket_xy[q, 0], pocket_xy[q, 1], pocket_r[q], x, y, vx, vy, ax, ay, window):
             continue
         else:
             tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
