@@ -7,6 +7,8 @@ import math
 from dataclasses import dataclass, fields, replace
 from typing import Any
 
+import numpy as np
+
 from .codes import BALL_BALL_MODELS, CUSHION_MODELS, DRAG, FRICTION_LAWS, ROLLING, SPIN
 from .errors import SceneError, check_finite, check_non_negative, check_positive, check_unit_interval
 
@@ -152,7 +154,7 @@ class Physics:
         h = self.cushion_height
         if h is None:
             return
-        for r in (float(x) for x in radius):
+        for r in np.asarray(radius, dtype=float).tolist():
             if not r <= h < 2.0 * r:
                 raise SceneError(f"physics.cushion_height: {h} m puts the cushion's nose outside [R, 2R) = "
                                  f"[{r}, {2 * r}) m for a ball of radius {r} m; give a height between the ball's "
