@@ -13,8 +13,9 @@ Models (rungs), each a :class:`~billiards_env.physics.Physics`:
   squirt);
 - ``pooltool``: the preset (and squirt on the strike): the reference.
 
-Scenes (shots), each struck at the centre of the cue ball and with english: ``one ball`` (the one-ball env's table: cue and object ball at random places, the cue aimed by the
-ghost ball to pot it in the pocket of the smallest cut, random speed and tip offset), ``9-ball break`` (the
+Scenes (shots), each struck at the centre of the cue ball and with english: ``one ball`` (the one-ball env's
+table: cue and object ball at random places, the cue aimed by the ghost ball to pot it in the pocket of the smallest
+cut, random speed and tip offset), ``9-ball break`` (the
 diamond at the foot spot, the cue ball on the head string, struck at the 1 at 7-9 m/s), ``9-ball run-out`` (2 to 9
 balls at random places, the lowest one potted as in ``one ball``), ``off cushions`` (two object balls, the cue ball
 struck at random and meeting at least three cushions under the preset). Every rung plays the same shot: the same
@@ -252,7 +253,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
 
     lines = ["# The model ladder", "",
              "How often each model plays a shot to the same outcome as the `pooltool` preset, and what a shot costs. "
-             "Command: `python -m benchmarks --only ladder`. Every scene's shots are played twice: struck at the centre "
+             "Command: `python -m benchmarks --only ladder`. Every scene's shots are played twice: struck at the "
+             "centre "
              "of the cue ball (what the envs without spin actions play) and with english (tip offsets anywhere in "
              f"the disc of radius {TIP} R; `drag` and `rolling` have no spin and play those as centre-ball shots).",
              "", f"Same outcome as the preset: the same balls pocketed and every ball left on the table within "

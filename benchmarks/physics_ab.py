@@ -145,7 +145,8 @@ def main(argv: list[str] | None = None) -> int:
                 for which, fn in (order if r % 2 == 0 else order[::-1]):
                     times[name][which].append(_timed(fn, args.min_time))
     print(f"physics A/B: this tree vs {args.base} ({rounds} interleaved rounds; times per group run)")
-    print(f"{'group':34s} {'before':>10s} {'after':>10s} {'after/before':>13s}  (CPU time per run: median; ratio of minima)")
+    print(f"{'group':34s} {'before':>10s} {'after':>10s} {'after/before':>13s}  "
+          "(CPU time per run: median; ratio of minima)")
     worst = 0.0
     for name, tt in times.items():
         ratio = min(tt["after"]) / min(tt["before"])
