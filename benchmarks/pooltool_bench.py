@@ -11,8 +11,9 @@ Protocol (one JSON document per line):
 
 - in: the spec: table size and, per kind of shot, its shots: the balls' centres (metres, in billiards_env's
   frame: x along the table's length), the struck ball's row, the cue angle (rad, 0 = +x) and speed (m/s), and
-  optionally the tip offsets ``side`` and ``top`` (fractions of R; pooltool's ``a = -side``, ``b = top``;
-  without them pooltool's default tip, ``a = 0``, ``b = 0.25``).
+  optionally the tip offsets ``side`` and ``top`` (fractions of R; pooltool's ``a = side`` in its mirrored frame,
+  ``b = top``, and the cue speed that gives the ball ``speed``; without them the cue speed is ``speed`` and the tip
+  pooltool's default, ``a = 0``, ``b = 0.25``).
   pooltool's table has its length along y, so a point ``(x, y)`` becomes ``(y, x)`` and an angle ``a``
   becomes ``90 - degrees(a)`` degrees.
 - out: ``{"ready": true, "import_s", "first_shot_s", "first_call_s": {kind: s}, versions}`` after importing
@@ -50,8 +51,14 @@ def main() -> int:
         balls = {bid: pt.Ball.create(bid, xy=(y, x)) for bid, (x, y) in zip(ids, shot["pos"])}
         s = pt.System(cue=pt.Cue(cue_ball_id=ids[shot["ball"]]), table=table, balls=balls)
         s.strike(V0=shot["speed"], phi=(90.0 - math.degrees(shot["angle"])) % 360.0)
-        if "side" in shot:  # spin shots: pooltool's frame is ours mirrored (x <-> y): our right english is its left
-            s.strike(a=-shot["side"], b=shot["top"])
+        if "side" in shot:
+            # Spin shots: pooltool's frame is ours mirrored (x <-> y), so our right english is its left (a > 0),
+            # and the cue speed is the one that gives the ball our speed (TP A-30: v = 2 V0 / (1 + m/M + 5/2 (a^2 +
+            # b^2)), with pooltool's ball and cue masses).
+            a, b = shot["side"], shot["top"]
+            ball = next(iter(s.balls.values()))
+            v0 = shot["speed"] * (1.0 + ball.params.m / s.cue.specs.M + 2.5 * (a * a + b * b)) / 2.0
+            s.strike(V0=v0, a=a, b=b)
         return s
 
     def run(shot: dict) -> tuple[float, int, int]:

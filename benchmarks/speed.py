@@ -56,8 +56,8 @@ def _sizes(quick: bool) -> dict[str, int]:
 
 def _kernel_call(sim: Simulator, balls) -> Any:
     """A callable running only the numba kernel on fresh copies of the arrays (what ``run`` wraps)."""
-    from billiards_env.physics.exact import simulate_exact
     from billiards_env.physics.kernel_io import kernel_params
+    from billiards_env.physics.kernels import kernels_for
 
     prm = kernel_params(sim.table, sim.physics, sim.max_time)
     pxy = np.ascontiguousarray(sim.table.pocket_xy, dtype=float)
@@ -65,9 +65,11 @@ def _kernel_call(sim: Simulator, balls) -> Any:
     pos, vel = np.ascontiguousarray(balls.pos, float), np.ascontiguousarray(balls.vel, float)
     rad, mass = np.ascontiguousarray(balls.radius, float), np.ascontiguousarray(balls.mass, float)
     on = np.ascontiguousarray(balls.on_table, np.bool_)
+    ang = np.ascontiguousarray(balls.ang, float)
+    exact = kernels_for(sim.physics).exact
 
     def call():
-        return simulate_exact(pos.copy(), vel.copy(), rad, mass, on.copy(), pxy, pr, prm, sim.max_events, False)
+        return exact(pos.copy(), vel.copy(), ang.copy(), rad, mass, on.copy(), pxy, pr, prm, sim.max_events, False)
     return call
 
 

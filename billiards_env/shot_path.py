@@ -18,7 +18,7 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics.outcome import ShotOutcome
-from billiards_env.physics.spin_collide import strike_spin
+from billiards_env.physics.spin_collide import strike_ball
 from billiards_env.table_state import ShotSettings, TableState
 
 #: The largest tip offset a noisy shot keeps (the miscue limit 0.5 R, less a hair).
@@ -100,9 +100,11 @@ def play_shot(state: TableState, shot: CueShot, rng: np.random.Generator, record
     start = (float(b.pos[0, 0]), float(b.pos[0, 1]))
     b.vel[0, 0] = speed * math.cos(angle)
     b.vel[0, 1] = speed * math.sin(angle)
-    spin = state.physics.friction == "spin"
-    if spin:
-        b.ang[0] = strike_spin(angle, speed, side, top, float(b.radius[0]))[2:]
+    p = state.physics
+    spin = p.friction == "spin"
+    if spin:  # the tip offsets' spin, and the squirt of the physics
+        b.vel[0, 0], b.vel[0, 1], b.ang[0, 0], b.ang[0, 1], b.ang[0, 2] = strike_ball(
+            angle, speed, side, top, float(b.radius[0]), float(b.mass[0]), p.squirt, p.cue_end_mass)
     sim = state.simulator
     trajectory = None
     if sim.solver == "exact" and not record:

@@ -1,6 +1,7 @@
-"""billiards-sim SCENE.json [--solver exact|step] [--dt S]: simulate a scene file and print the result JSON.
+"""billiards-sim SCENE.json [--solver exact|step] [--dt S] [--preset NAME]: simulate a scene file and print the result JSON.
 
---dt and --contact set the step solver; with the exact solver (the default, unless --solver or the scene says
+--preset NAME plays the scene under a physics preset (pooltool: pooltool 0.6.0's default physics) instead of the
+physics section of the file. --dt and --contact set the step solver; with the exact solver (the default, unless --solver or the scene says
 step) they are refused with exit status 2 rather than silently ignored. A bad scene exits 2 with one line.
 Output piped into a program that stops reading early (billiards-sim ... | head) ends quietly with status 1.
 """
@@ -12,6 +13,7 @@ import os
 import sys
 
 from .physics.errors import SceneError
+from .physics.model import PRESETS
 from .physics.scene import Scene
 from .physics.simulate import SOLVERS
 from .physics.step import CONTACT_MODES
@@ -26,6 +28,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--dt", type=float, help="time step of the step solver (s); needs --solver step (or a step scene)")
     p.add_argument("--contact", choices=CONTACT_MODES,
                    help="contact treatment of the step solver; needs --solver step (or a step scene)")
+    p.add_argument("--preset", choices=tuple(PRESETS),
+                   help="play the scene under this physics preset instead of the file's physics section")
     p.add_argument("--events", action="store_true", help="include the event list in the output")
     p.add_argument("--indent", type=int, default=2, help="JSON indent (0 for one line)")
     return p
@@ -34,7 +38,7 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
-        scene = Scene.load(args.scene)
+        scene = Scene.load(args.scene, preset=args.preset)
         solver = args.solver or scene.solver
         step_only = [flag for flag, v in (("--dt", args.dt), ("--contact", args.contact)) if v is not None]
         if step_only and solver != "step":

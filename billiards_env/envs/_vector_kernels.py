@@ -30,7 +30,7 @@ from billiards_env.physics.batch import store_row
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import place_random_rows, spot_cue_row
-from billiards_env.physics.spin_collide import strike_spin
+from billiards_env.physics.spin_collide import strike_ball
 
 from ._kernels import observation
 from billiards_env.shot_path import noisy_shot
@@ -78,7 +78,8 @@ def _target(on):
 
 # Constants of a pot env, packed in one float array (``cfg``) and one int array (``icfg``) by :func:`pack_config`.
 C_SPEED_LO, C_SPEED_SPAN, C_MAX_TIP, C_ANGLE_NOISE, C_SPEED_NOISE, C_TIP_NOISE, C_MAX_GHOST, C_BALL_RADIUS, \
-    C_HEAD_X, C_HEAD_Y, C_WIDTH, C_POT_REWARD, C_SCRATCH_PENALTY, C_MISS_PENALTY, C_STEP_PENALTY, C_SX, C_SY = range(17)
+    C_HEAD_X, C_HEAD_Y, C_WIDTH, C_POT_REWARD, C_SCRATCH_PENALTY, C_MISS_PENALTY, C_STEP_PENALTY, C_SX, C_SY, \
+    C_BALL_MASS, C_SQUIRT, C_CUE_END_MASS = range(20)
 I_AIM, I_SPIN_ACTION, I_SPIN_MODEL, I_SINGLE_SHOT, I_MAX_SHOTS, I_POSITIONS_OBS, I_SPEED_NOISE_ABS = range(7)
 # Columns of the per-table float outputs (``fout``) and int outputs (``iout``).
 F_REWARD, F_ANGLE, F_SPEED, F_SIDE, F_TOP, F_START_X, F_START_Y = range(7)
@@ -92,7 +93,7 @@ def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.ndarray, np.n
 
     table = c.table
     hx, hy = head_spot(table)
-    cfg = np.zeros(17)
+    cfg = np.zeros(20)
     cfg[C_SPEED_LO] = a.speed_lo
     cfg[C_SPEED_SPAN] = a.speed_span
     cfg[C_MAX_TIP] = a.max_tip
@@ -110,6 +111,9 @@ def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.ndarray, np.n
     cfg[C_STEP_PENALTY] = c.step_penalty
     cfg[C_SX] = 1.0 / table.length
     cfg[C_SY] = 1.0 / table.width
+    cfg[C_BALL_MASS] = c.ball_mass
+    cfg[C_SQUIRT] = c.physics.squirt
+    cfg[C_CUE_END_MASS] = c.physics.cue_end_mass
     icfg = np.zeros(7, np.int64)
     icfg[I_AIM] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
     icfg[I_SPIN_ACTION] = int(a.spin)
@@ -169,8 +173,11 @@ def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
     fout[k, F_START_Y] = p[0, 1]
     vel[k, 0, 0] = speed * math.cos(angle)
     vel[k, 0, 1] = speed * math.sin(angle)
-    if icfg[I_SPIN_MODEL]:
-        _, _, wx, wy, wz = strike_spin(angle, speed, side, top, radius[0])
+    if icfg[I_SPIN_MODEL]:  # the tip offsets' spin, and the squirt of the physics
+        vx, vy, wx, wy, wz = strike_ball(angle, speed, side, top, radius[0], cfg[C_BALL_MASS], cfg[C_SQUIRT],
+                                         cfg[C_CUE_END_MASS])
+        vel[k, 0, 0] = vx
+        vel[k, 0, 1] = vy
         ang[k, 0, 0] = wx
         ang[k, 0, 1] = wy
         ang[k, 0, 2] = wz
@@ -264,8 +271,8 @@ def pot_step(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, poc
     for k in range(pos.shape[0]):
         if active[k]:
             _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
-            res = simulate_exact(pos[k], vel[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params, max_events,
-                                 False)
+            res = simulate_exact(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
+                                 max_events, False)
             ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
     return ok
 

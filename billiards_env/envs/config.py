@@ -392,7 +392,7 @@ def _merge(raw: dict[str, Any], layer: Mapping[str, Any], source: str) -> None:
         key = str(key)
         if key in SECTIONS:
             section = _section_input(key, value, source)
-            if key == "table" and "preset" in section:  # a named table replaces the table so far
+            if key in ("table", "physics") and "preset" in section:  # a preset starts the section afresh
                 raw[key] = {}
             elif key == "table" and ({"corner_pocket_radius", "side_pocket_radius", "pockets"} & set(section)):
                 raw[key] = {k: v for k, v in raw[key].items()
@@ -409,6 +409,8 @@ def _merge(raw: dict[str, Any], layer: Mapping[str, Any], source: str) -> None:
             hint = f"did you mean {close[0]!r}? " if close else ""
             raise ConfigError(f"unknown config key {key!r} (from {source}); {hint}valid keys: "
                               f"{', '.join(_FIELDS)} (and the physics fields {', '.join(sorted(PHYSICS_FIELDS))})")
+    if "preset" in flat_physics and "physics" not in layer:
+        raw["physics"] = {}
     for key, value in flat_physics.items():
         if key in layer.get("physics", {}):
             raise ConfigError(f"{key}: given twice in {source}, on its own and in the physics section; keep one")

@@ -1,7 +1,9 @@
 """The fuzz command: run random shots in worker processes, check every one, summarise, save the failing cases.
 
-``python -m billiards_env.fuzz --shots 100000 [--seed S] [--solver exact|step|both] [--spin P] [--workers 2]
-[--out DIR]`` (``--spin``: the share of spin-model shots, 0 by default; 1 for spin only);
+``python -m billiards_env.fuzz --shots 100000 [--seed S] [--solver exact|step|both] [--spin P] [--models P]
+[--preset NAME] [--workers 2] [--out DIR]`` (``--spin``: the share of spin-model shots, 0 by default; 1 for spin
+only; ``--models``: the share of those that draw the optional collision models too; ``--preset pooltool``: every
+shot under that physics preset);
 ``--check FILE`` runs one scene file and prints its violations; ``--shrink FILE`` prints a smaller scene that
 still fails. A failing case is saved as a scene file under ``--out`` (so that ``billiards-sim FILE --events``
 reproduces it) and listed with its violations in ``--out/violations.jsonl``.
@@ -19,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..physics.model import PRESETS
 from ..physics.invariants import (CONTACT_TOL, CONTINUITY_TOL, ENERGY_REL_TOL, EXACT_OVERLAP_TOL, INVARIANTS,
                                   MOMENTUM_REL_TOL, STEP_OVERLAP_ABS, STEP_OVERLAP_FACTOR, ZENO_BURST, Report,
                                   run_case)
@@ -100,13 +103,13 @@ class Stats:
 
 
 def _run_chunk(args: tuple) -> Stats:
-    seed, lo, hi, mode, max_time, max_events, keep, spin = args
+    seed, lo, hi, mode, max_time, max_events, keep, spin, models, preset = args
     stats = Stats()
     for idx in range(lo, hi):
         rng = shot_rng(seed, idx)
         solver = _solver_for(mode, rng)
         scene_dict = random_scene(NumpySource(rng), solver=solver, max_time=max_time, max_events=max_events,
-                                  spin=spin)
+                                  spin=spin, models=models, preset=preset)
         rep, _ = run_case(scene_dict)
         stats.add(rep, scene_dict, f"seed{seed}-shot{idx}", keep_failure=len(stats.failures) < keep)
     return stats
@@ -117,7 +120,7 @@ def _warm_up() -> None:
     rng = shot_rng(0, 0)
     for solver in ("exact", "step"):
         for spin in (0.0, 1.0):
-            run_case(random_scene(NumpySource(rng), solver=solver, max_time=1.0, spin=spin))
+            run_case(random_scene(NumpySource(rng), solver=solver, max_time=1.0, spin=spin, models=spin))
 
 
 def format_summary(stats: Stats, wall: float) -> str:
@@ -167,6 +170,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--spin", type=float, default=0.0,
                    help="share of shots under the spin model (0 by default: rolling and drag only, the same shots "
                         "as before the spin model for a given seed; 1: spin only)")
+    p.add_argument("--models", type=float, default=0.0,
+                   help="share of the spin-model shots that also draw the optional collision models (alciatore "
+                        "ball-ball friction, stronge/mathavan cushions, a raised cushion nose, squirt); default 0")
+    p.add_argument("--preset", default=None,
+                   help="every shot under this physics preset (e.g. pooltool; the tip offsets drawn), instead of "
+                        "drawn friction laws and constants")
     p.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
     p.add_argument("--out", default="fuzz-failures", help="folder for failing cases (scene files)")
     p.add_argument("--max-time", type=float, default=None,
@@ -202,11 +211,15 @@ def main(argv: list[str] | None = None) -> int:
         print(f"status {rep.status}, {rep.n_events} events; no violations")
         return 0
     out = Path(args.out)
-    if not 0.0 <= args.spin <= 1.0:
-        print("fuzz: --spin is a share of the shots, in [0, 1]", file=sys.stderr)
+    if not 0.0 <= args.spin <= 1.0 or not 0.0 <= args.models <= 1.0:
+        print("fuzz: --spin and --models are shares of the shots, in [0, 1]", file=sys.stderr)
+        return 2
+    if args.preset is not None and args.preset not in PRESETS:
+        print(f"fuzz: --preset: unknown preset {args.preset!r}; use one of {', '.join(PRESETS)}", file=sys.stderr)
         return 2
     chunks = [(args.seed, lo, min(lo + args.chunk, args.start + args.shots), args.solver, args.max_time,
-               args.max_events, args.keep, args.spin) for lo in range(args.start, args.start + args.shots, args.chunk)]
+               args.max_events, args.keep, args.spin, args.models, args.preset)
+              for lo in range(args.start, args.start + args.shots, args.chunk)]
     total = Stats()
     _warm_up()
     t0 = time.perf_counter()
@@ -234,7 +247,8 @@ def main(argv: list[str] | None = None) -> int:
             pool.close()
             pool.join()
     wall = time.perf_counter() - t0
-    print(f"fuzz: seed {args.seed}, solver {args.solver}, spin share {args.spin:g}, workers {args.workers}")
+    what = f"preset {args.preset}" if args.preset else f"spin share {args.spin:g}, models share {args.models:g}"
+    print(f"fuzz: seed {args.seed}, solver {args.solver}, {what}, workers {args.workers}")
     print(format_summary(total, wall))
     if saved:
         print(f"failing cases: {len(saved)} scene files under {out}/ (index: {out}/violations.jsonl); "

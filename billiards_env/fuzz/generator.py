@@ -134,12 +134,17 @@ def _rack(src: Source, n: int, r: float, length: float, width: float) -> list[tu
 
 
 def random_scene(src: Source, solver: str | None = None, max_time: float | None = None,
-                 max_events: int = DEFAULT_MAX_EVENTS, spin: float = 0.0) -> dict[str, Any]:
+                 max_events: int = DEFAULT_MAX_EVENTS, spin: float = 0.0, models: float = 0.0,
+                 preset: str | None = None) -> dict[str, Any]:
     """A random scene dict in the scene-file format, with a shot and solver settings.
 
     ``solver``: ``"exact"``, ``"step"`` or None (drawn). The cue is ball 0 (id ``"cue"``). ``spin``: the chance
     that the scene uses the spin model (:func:`spin_physics`); its draws come after all the others, so with the
-    default 0 a seed gives the same rolling/drag scenes as before the spin model existed.
+    default 0 a seed gives the same rolling/drag scenes as before the spin model existed. ``models``: the chance
+    that a spin-model scene also draws the optional collision models (:func:`model_physics`). ``preset``: every
+    scene uses the spin model with this physics preset (``{"preset": name}``; the tip offsets and spinning balls
+    drawn as for the spin model). The draws of ``models`` and ``preset`` come last too: without them a seed gives
+    the same scenes as before they existed.
     """
     length, width, r = L_DEFAULT, W_DEFAULT, R_DEFAULT
     # table
@@ -200,9 +205,35 @@ def random_scene(src: Source, solver: str | None = None, max_time: float | None 
     scene = {"table": table, "physics": physics, "balls": balls,
              "shot": {"ball": "cue", "angle": float(angle), "speed": float(speed)},
              "solver": solver_d, "max_time": float(max_time), "max_events": int(max_events)}
-    if spin >= 1.0 or (spin > 0.0 and src.chance(spin)):
+    if preset is not None:
         spin_physics(src, scene)
+        scene["physics"] = {"preset": preset}
+    elif spin >= 1.0 or (spin > 0.0 and src.chance(spin)):
+        spin_physics(src, scene)
+        if models >= 1.0 or (models > 0.0 and src.chance(models)):
+            model_physics(src, scene)
     return scene
+
+
+def model_physics(src: Source, scene: dict[str, Any]) -> None:
+    """Add the spin model's optional collision models to a spin-model ``scene``, in place: ball-ball friction
+    ``frictionless`` or ``alciatore`` (its constants near Alciatore's or random), cushion ``impulse``, ``stronge``
+    or ``mathavan``, the cushion nose at the equator or anywhere in ``[R, 2R)``, Stronge's frequency ratio anywhere
+    in (1, 2), squirt off, full or partial."""
+    ph = scene["physics"]
+    if src.chance(0.6):
+        ph["ball_ball"] = "alciatore"
+        ph["ball_friction"] = 0.0
+        if src.chance(0.5):
+            ph["alciatore_a"] = src.uniform(0.0, 0.1)
+            ph["alciatore_b"] = src.uniform(0.0, 0.5)
+            ph["alciatore_c"] = src.uniform(0.0, 5.0)
+    ph["cushion"] = src.choice(("impulse", "stronge", "stronge", "mathavan"))
+    if src.chance(0.7):
+        ph["cushion_height"] = float(src.choice((0.036576, R_DEFAULT, src.uniform(R_DEFAULT, 1.999 * R_DEFAULT))))
+    if src.chance(0.5):
+        ph["omega_ratio"] = src.uniform(1.001, 1.999)
+    ph["squirt"] = float(src.choice((0.0, 1.0, src.uniform(0.0, 1.0))))
 
 
 def spin_physics(src: Source, scene: dict[str, Any]) -> None:

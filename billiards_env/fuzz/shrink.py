@@ -45,6 +45,9 @@ def shrink_case(scene_dict: dict[str, Any], invariant: str | None = None, max_ro
                            ("physics", "drag_k", (0.0, 1.0)), ("physics", "ball_restitution", (1.0, 0.0, 0.5)),
                            ("physics", "mu_slide", (0.2,)), ("physics", "mu_spin", (0.0127,)),
                            ("physics", "ball_friction", (0.0, 0.06)), ("physics", "cushion_friction", (0.2, 0.0)),
+                           ("physics", "squirt", (0.0,)), ("physics", "cushion_height", (None,)),
+                           ("physics", "omega_ratio", (1.8,)), ("physics", "cushion", ("impulse", "stronge")),
+                           ("physics", "ball_ball", ("frictionless",)),
                            ("max_events", None, (2000,)), ("max_time", None, (10.0,))]
         for sec, key, values in simplifications:
             if (sec, key) in done:

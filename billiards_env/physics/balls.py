@@ -4,14 +4,17 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 from numba import njit
 
 from .errors import SceneError
-from .spin_collide import MAX_TIP_OFFSET, strike_spin
+from .spin_collide import MAX_TIP_OFFSET, strike_ball, strike_spin
 from .table import Table
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .model import Physics
 
 BALL_RADIUS = 0.028575  #: pool ball radius (m)
 BALL_MASS = 0.17  #: pool ball mass (kg)
@@ -85,13 +88,15 @@ class Balls:
             raise SceneError(f"unknown ball id {ball_id!r}; the scene's balls are {', '.join(self.ids)}") from None
 
     def strike(self, ball_id: str | int, angle: float, speed: float, side: float = 0.0,
-               top: float = 0.0) -> "Balls":
+               top: float = 0.0, physics: "Physics | None" = None) -> "Balls":
         """A copy with ball ``ball_id`` given speed ``speed`` (m/s) in direction ``angle`` (rad, 0 = +x, CCW).
 
         ``side`` and ``top`` (spin model) are the cue tip's offsets from the ball's centre in fractions of its
         radius: ``side > 0`` right english (spins counter-clockwise seen from above), ``top > 0`` follow,
         ``top < 0`` draw, ``top = 0.4`` natural roll; ``side^2 + top^2 <= 0.25`` (beyond, the cue miscues).
         The struck ball's angular velocity becomes ``wz = 5 side v / 2R``, ``(wx, wy) = 5 top v / 2R (z^ x d^)``.
+        ``physics``: the model the shot is played in; its ``squirt`` turns the ball's path off ``angle`` when it
+        has side english (:func:`.spin_collide.strike_ball`; the cue's direction, and so the spin, stay ``angle``).
         """
         i = self.index(ball_id)
         for name, v in (("shot.angle", angle), ("shot.speed", speed), ("shot.side", side), ("shot.top", top)):
@@ -108,7 +113,15 @@ class Balls:
         out = self.copy()
         out.vel[i] = (speed * math.cos(angle), speed * math.sin(angle))
         if side != 0.0 or top != 0.0:
-            out.ang[i] = strike_spin(float(angle), float(speed), float(side), float(top), float(self.radius[i]))[2:]
+            if physics is not None and physics.squirt != 0.0:
+                vx, vy, wx, wy, wz = strike_ball(float(angle), float(speed), float(side), float(top),
+                                                 float(self.radius[i]), float(self.mass[i]), float(physics.squirt),
+                                                 float(physics.cue_end_mass))
+                out.vel[i] = (vx, vy)
+                out.ang[i] = (wx, wy, wz)
+            else:
+                out.ang[i] = strike_spin(float(angle), float(speed), float(side), float(top),
+                                         float(self.radius[i]))[2:]
         else:
             out.ang[i] = 0.0
         return out

@@ -7,8 +7,8 @@ Two shapes, one engine:
 - :func:`run_tables`: ``N`` independent tables (ball arrays ``(N, B, ...)``), each simulated from its own state
   in place, for vector environments.
 
-Each row runs the very kernel :meth:`.Simulator.run` runs (``simulate_exact``, or ``simulate_exact_spin`` for the
-spin model: the dispatch is on the physics model), on the same inputs, so row ``k`` is bit-identical to the
+Each row runs the very kernel :meth:`.Simulator.run` runs (the model's exact kernel, from the table of
+:mod:`.kernels`), on the same inputs, so row ``k`` is bit-identical to the
 single shot. Rows are independent, so the result does not depend on how many threads run them. The results are
 arrays (:class:`BatchResult`): final state, status, pockets and when, the first ball the struck ball hit, cushion
 hits (and which balls reached a cushion after that first contact, as the rules of pool ask), event counts by
@@ -26,16 +26,15 @@ from contextlib import contextmanager
 from typing import Iterator, NamedTuple
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from .balls import Balls, validate_balls
-from .codes import EV_COLLISION, EV_CUSHION, EVENT_KINDS, SPIN, STATUS_NAMES
+from .batch_rows import store_row
+from .codes import EVENT_KINDS
 from .errors import SceneError
-from .exact import simulate_exact
-from .exact_spin import simulate_exact_spin
 from .result import EventLog
 from .simulate import Simulator
-from .spin_collide import MAX_TIP_OFFSET, strike_spin
+from .spin_collide import MAX_TIP_OFFSET, strike_ball
 
 #: Event kinds counted per row (the columns of :attr:`BatchResult.event_counts`, see :data:`.codes.EVENT_KINDS`).
 N_KINDS = len(EVENT_KINDS)
@@ -77,10 +76,6 @@ class BatchResult(NamedTuple):
     ang: np.ndarray | None = None  #: (N, B, 3) final angular velocities (spin model; None otherwise)
     events: EventBatch | None = None  #: every row's event log (``events=True``)
 
-    def status_name(self, k: int) -> str:
-        """Row ``k``'s status as :meth:`.Simulator.run` names it (``rest``, ``time_cap``, ``event_cap``)."""
-        return STATUS_NAMES[int(self.status[k])]
-
     @property
     def pocketed(self) -> np.ndarray:
         """(N, B) bool: the ball was pocketed by the shot."""
@@ -88,125 +83,14 @@ class BatchResult(NamedTuple):
 
 
 # ------------------------------------------------------------------------------------------------ kernels
-# One pair of drivers per model (serial, and parallel over rows), so that a process compiles only the kernels of
-# the models it runs. ``out`` is the tuple of result arrays filled row by row (see :func:`store_row`); ``radius`` and
-# ``mass`` have one row per table or one row for all. The serial drivers also keep the event logs on request.
-
-@njit(cache=True)
-def store_row(k, res, struck, out):
-    """Row ``k`` of the result arrays ``out`` from kernel result ``res`` (``struck``: the ball whose first contact
-    counts): status, time, event count, pockets, first contact, cushion hits (and after the first contact), and
-    events by kind."""
-    status, time, n_events, pocket, pocketed_at, first, cushions, rail, counts = out
-    status[k] = res.status
-    time[k] = res.time
-    n_events[k] = res.n_events
-    for i in range(pocket.shape[1]):
-        pocket[k, i] = res.pocket[i]
-        pocketed_at[k, i] = res.pocketed_at[i]
-        cushions[k, i] = 0
-        rail[k, i] = False
-    for c in range(counts.shape[1]):
-        counts[k, c] = 0
-    hit = -1
-    ev = res.ev_int
-    for e in range(res.n_events):
-        kind = ev[e, 0]
-        b = ev[e, 1]
-        counts[k, kind] += 1
-        if kind == EV_COLLISION:
-            if hit < 0 and (b == struck or ev[e, 2] == struck):
-                hit = ev[e, 2] if b == struck else b
-        elif kind == EV_CUSHION:
-            cushions[k, b] += 1
-            if hit >= 0:
-                rail[k, b] = True
-    first[k] = hit
-
-
-@njit(cache=True)
-def _append_log(k, res, log):
-    """Append kernel result ``res``'s events as row ``k`` of the concatenated log ``(offsets, time, kind, ball,
-    other, speed)``, growing its arrays when full; returns the log."""
-    offsets, ev_t, ev_k, ev_b, ev_o, ev_s = log
-    m = offsets[k]
-    ne = res.n_events
-    if m + ne > ev_t.shape[0]:
-        cap = max(m + ne, 2 * ev_t.shape[0])
-        grown_t = np.empty(cap)
-        grown_s = np.empty(cap)
-        grown_i = np.empty((3, cap), np.int64)
-        grown_t[:m] = ev_t[:m]
-        grown_s[:m] = ev_s[:m]
-        grown_i[0, :m] = ev_k[:m]
-        grown_i[1, :m] = ev_b[:m]
-        grown_i[2, :m] = ev_o[:m]
-        ev_t, ev_k, ev_b, ev_o, ev_s = grown_t, grown_i[0], grown_i[1], grown_i[2], grown_s
-    for e in range(ne):
-        ev_t[m + e] = res.ev_time[e]
-        ev_k[m + e] = res.ev_int[e, 0]
-        ev_b[m + e] = res.ev_int[e, 1]
-        ev_o[m + e] = res.ev_int[e, 2]
-        ev_s[m + e] = res.ev_speed[e]
-    offsets[k + 1] = m + ne
-    return offsets, ev_t, ev_k, ev_b, ev_o, ev_s
-
-
-@njit(cache=True)
-def _rows_exact(pos, vel, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out, keep, log):
-    """Rows one after the other (``keep``: append each row's events to ``log``, returned)."""
-    shared = radius.shape[0] == 1
-    for k in range(pos.shape[0]):
-        r = 0 if shared else k
-        res = simulate_exact(pos[k], vel[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params, max_events,
-                             False)
-        store_row(k, res, struck[k], out)
-        if keep:
-            log = _append_log(k, res, log)
-    return log
-
-
-@njit(cache=True, parallel=True)
-def _rows_exact_parallel(pos, vel, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out):
-    """Rows spread over numba's threads (each row on one thread: the result does not depend on their number)."""
-    shared = radius.shape[0] == 1
-    for k in prange(pos.shape[0]):
-        r = np.int64(0) if shared else np.int64(k)  # (a prange index may be unsigned: keep r an int64)
-        res = simulate_exact(pos[k], vel[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params, max_events,
-                             False)
-        store_row(k, res, struck[k], out)
-
-
-@njit(cache=True)
-def _rows_spin(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out, keep, log):
-    """:func:`_rows_exact` for the spin model (angular velocities ``ang`` updated in place too)."""
-    shared = radius.shape[0] == 1
-    for k in range(pos.shape[0]):
-        r = 0 if shared else k
-        res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                                  max_events, False)
-        store_row(k, res, struck[k], out)
-        if keep:
-            log = _append_log(k, res, log)
-    return log
-
-
-@njit(cache=True, parallel=True)
-def _rows_spin_parallel(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out):
-    """:func:`_rows_exact_parallel` for the spin model."""
-    shared = radius.shape[0] == 1
-    for k in prange(pos.shape[0]):
-        r = np.int64(0) if shared else np.int64(k)
-        res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                                  max_events, False)
-        store_row(k, res, struck[k], out)
-
+# The row drivers are compiled per model (:mod:`.batch_rows`); :mod:`.kernels` says which model runs which.
 
 @njit(cache=True)
 def _strike_rows(pos, vel, on, ang, base_pos, base_vel, base_on, base_ang, ball, angles, speeds, side, top,
-                 radius, spin):
+                 radius, mass, spin, squirt, end_mass):
     """Fill every row with the base state and strike ``ball``: ``vel = speed (cos a, sin a)`` as
-    :meth:`.Balls.strike` does, and under the spin model the tip offsets' angular velocity (zero without)."""
+    :meth:`.Balls.strike` does, and under the spin model the tip offsets' angular velocity (zero without) and the
+    squirt (``squirt``: its throttle)."""
     for k in range(pos.shape[0]):
         pos[k] = base_pos
         vel[k] = base_vel
@@ -218,7 +102,9 @@ def _strike_rows(pos, vel, on, ang, base_pos, base_vel, base_on, base_ang, ball,
         if spin:
             ang[k] = base_ang
             if side[k] != 0.0 or top[k] != 0.0:
-                _, _, wx, wy, wz = strike_spin(a, s, side[k], top[k], radius[ball])
+                vx, vy, wx, wy, wz = strike_ball(a, s, side[k], top[k], radius[ball], mass[ball], squirt, end_mass)
+                vel[k, ball, 0] = vx
+                vel[k, ball, 1] = vy
                 ang[k, ball, 0] = wx
                 ang[k, ball, 1] = wy
                 ang[k, ball, 2] = wz
@@ -231,11 +117,11 @@ def _strike_rows(pos, vel, on, ang, base_pos, base_vel, base_on, base_ang, ball,
 # ------------------------------------------------------------------------------------------------ Python API
 
 def _check_simulator(sim: Simulator) -> bool:
-    """True for the spin model; a clear error for a solver the batch does not run."""
+    """Whether the model has spin; a clear error for a solver the batch does not run."""
     if sim.solver != "exact":
         raise SceneError(f"solver.name: batches run the exact solver, got {sim.solver!r}; make the Simulator "
                          "with solver='exact' (or loop over Simulator.run for the step solver)")
-    return sim.physics.law_code == SPIN
+    return sim._kernels.spin
 
 
 def _as_rows(name: str, values, n: int | None, dtype=float) -> np.ndarray:
@@ -307,18 +193,13 @@ def simulate_into(sim: Simulator, pos: np.ndarray, vel: np.ndarray, on: np.ndarr
     """The hot loop of :func:`run_tables` without its checks and allocations, for callers that keep their arrays
     (a vector env): simulate every row in place into ``out`` (from :func:`new_outputs`). ``radius``/``mass``:
     ``(1, B)`` or ``(N, B)``; ``ang``: ``(N, B, 3)`` (read only under the spin model); ``struck``: ``(N,)`` int64."""
-    spin = sim._spin
+    ks = sim._kernels
     common = (radius, mass, sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), struck, out)
     if use_parallel(pos.shape[0], threads):
         with _thread_count(threads):
-            if spin:
-                _rows_spin_parallel(pos, vel, ang, on, *common)
-            else:
-                _rows_exact_parallel(pos, vel, on, *common)
-    elif spin:
-        _rows_spin(pos, vel, ang, on, *common, False, _NO_LOG)
+            ks.rows_parallel(pos, vel, ang, on, *common)
     else:
-        _rows_exact(pos, vel, on, *common, False, _NO_LOG)
+        ks.rows(pos, vel, ang, on, *common, False, _NO_LOG)
 
 
 def _simulate_rows(sim: Simulator, pos, vel, ang, on, radius, mass, struck, events: bool,
@@ -329,10 +210,7 @@ def _simulate_rows(sim: Simulator, pos, vel, ang, on, radius, mass, struck, even
     if events:
         common = (radius, mass, sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), struck, out)
         empty = _empty_log(n, 16 * n + 16)
-        if spin:
-            raw = _rows_spin(pos, vel, ang, on, *common, True, empty)
-        else:
-            raw = _rows_exact(pos, vel, on, *common, True, empty)
+        raw = sim._kernels.rows(pos, vel, ang, on, *common, True, empty)
         m = int(raw[0][n])
         log = EventBatch(raw[0], *(a[:m] for a in raw[1:]))
     else:
@@ -353,6 +231,7 @@ def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int =
     spin = _check_simulator(sim)
     if validate:
         validate_balls(balls, sim.table, allow_spin=spin)
+        sim.physics.check_cushion_height(balls.radius)
     row = balls.index(ball)
     if not balls.on_table[row]:
         raise SceneError(f"ball: ball {balls.ids[row]!r} is pocketed and cannot be struck")
@@ -385,7 +264,7 @@ def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int =
     on = np.empty((n, nb), np.bool_)
     ang = np.empty((n, nb, 3)) if spin else np.empty((1, nb, 3))
     _strike_rows(pos, vel, on, ang, base_pos, base_vel, base_on, base_ang, row, ang_k, spd_k, sd, tp, radius[0],
-                 spin)
+                 mass[0], spin, float(sim.physics.squirt), float(sim.physics.cue_end_mass))
     struck = np.full(n, row, np.int64)
     return _simulate_rows(sim, pos, vel, ang, on, radius, mass, struck, events, threads, spin)
 

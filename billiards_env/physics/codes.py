@@ -1,5 +1,5 @@
 """Named codes shared by the compiled kernels and their Python callers: event kinds, shot status, ball motion
-states and friction laws.
+states, friction laws and the spin model's collision models.
 
 The kernels use the plain ``int`` constants (numba reads module globals as compile-time constants); Python code
 may use the :class:`enum.IntEnum` views, which compare equal to the same ints. This module is the one home of
@@ -53,6 +53,15 @@ DRAG = 1  #: ``dv/dt = -k v``
 SPIN = 2  #: the spin model: sliding, rolling and spinning balls (see :mod:`.spin_motion`)
 FRICTION_LAWS = ("rolling", "drag", "spin")
 
+# --- collision models of the spin model (see :mod:`.model`) ------------------------------------------------------
+BB_FRICTIONLESS = 0  #: ball-ball: the normal impulse (plus the constant Coulomb friction ``ball_friction`` if > 0)
+BB_ALCIATORE = 1  #: ball-ball: friction mu(v) = a + b exp(-c v) of the contact points' slip speed v (pooltool's)
+BALL_BALL_MODELS = ("frictionless", "alciatore")
+CU_IMPULSE = 0  #: cushion: one frictional impulse (restitution, Coulomb friction capped at no-slip)
+CU_STRONGE = 1  #: cushion: Stronge's compliant frictional impact (pooltool's StrongeCompliant)
+CU_MATHAVAN = 2  #: cushion: Mathavan et al. (2010), integrated over the impulse
+CUSHION_MODELS = ("impulse", "stronge", "mathavan")
+
 # --- ball motion states (spin model; the same numbers as pooltool's) --------------------------------------------
 MS_STATIONARY = 0  #: at rest
 MS_SPINNING = 1  #: not moving, spinning about the vertical
@@ -68,6 +77,7 @@ CUSHION_NAMES = ("left", "right", "bottom", "top")
 __all__ = [
     "EV_COLLISION", "EV_CUSHION", "EV_POCKET", "EV_STOP", "EV_JAM", "EVENT_KINDS", "EventKind",
     "EV_ROLL", "EV_SPIN", "STATUS_REST", "STATUS_TIME_CAP", "STATUS_EVENT_CAP", "STATUS_NAMES", "Status",
-    "ROLLING", "DRAG", "SPIN", "FRICTION_LAWS", "CUSHION_NAMES",
+    "ROLLING", "DRAG", "SPIN", "FRICTION_LAWS", "CUSHION_NAMES", "BB_FRICTIONLESS", "BB_ALCIATORE",
+    "BALL_BALL_MODELS", "CU_IMPULSE", "CU_STRONGE", "CU_MATHAVAN", "CUSHION_MODELS",
     "MS_STATIONARY", "MS_SPINNING", "MS_SLIDING", "MS_ROLLING", "MS_POCKETED", "MOTION_STATES",
 ]

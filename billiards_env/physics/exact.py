@@ -20,15 +20,15 @@ from numba import njit
 from .aim import ray_circle_entry, ray_cushion_hit
 from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLING, STATUS_EVENT_CAP, STATUS_REST,
                     STATUS_TIME_CAP)
-from .collide import CONTACT_TIME, JAM_EVENTS, resolve_ball_ball, resolve_cushion
+from .collide import JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
-from .kernel_logs import append_event, internal, pocket_holding, reserve_states
+from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
+                          reserve_states)
 from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
 from .roots import first_entry
 
-#: Typed (non-literal) integer initial values: a literal -1 or 0 passed on to a compiled helper would make numba
-#: compile a second specialisation of it for the literal.
-_NONE = np.int64(-1)
+#: A typed (non-literal) integer initial value: a literal 0 passed on to a compiled helper would make numba compile
+#: a second specialisation of it for the literal.
 _ZERO = np.int64(0)
 
 
@@ -200,15 +200,6 @@ def _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
 
 
 @internal
-def _count_burst(i, t, t_hit, burst):
-    """Record a collision of ball ``i`` at ``t``; True if it follows its previous one within ``CONTACT_TIME``."""
-    clustered = t - t_hit[i] <= CONTACT_TIME
-    burst[i] = burst[i] + 1 if clustered else 0
-    t_hit[i] = t
-    return clustered
-
-
-@internal
 def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved):
     """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
@@ -223,22 +214,7 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     for m in range(n):
         if on_table[m]:
             px[m], py[m], _, _ = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
-    member = np.empty(n, np.int64)  # 1: in the cluster
-    for m in range(n):
-        member[m] = 0
-    member[seed] = 1
-    involved[0] = seed
-    count = 1
-    head = 0
-    while head < count:
-        q = involved[head]
-        head += 1
-        for m in range(n):
-            if on_table[m] and member[m] == 0:
-                if math.hypot(px[q] - px[m], py[q] - py[m]) <= radius[q] + radius[m] + 1e-9:
-                    member[m] = 1
-                    involved[count] = m
-                    count += 1
+    count = contact_cluster(seed, px, py, radius, on_table, involved)
     total = 0.0
     mom_x = 0.0
     mom_y = 0.0
@@ -278,8 +254,11 @@ def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table):
 
 
 @njit(cache=True)
-def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params, max_events, record):
+def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, params, max_events, record):
     """Simulate one shot from ``pos``/``vel`` (updated in place to the final state) until rest or a cap.
+
+    ``ang`` (angular velocities) is not read: the rolling and drag laws have no spin; it is there so that every
+    exact kernel takes the same arguments (:mod:`.kernels`).
 
     ``params``: the parameter record (:mod:`.kernel_io`). Returns a :class:`~.kernel_io.KernelResult`: the
     event log (time; kind, ball, other; impact speed) and, when ``record``, the log of state changes (time,
@@ -359,23 +338,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params
     n_events = 0
     status = STATUS_REST
     while True:
-        best = math.inf
-        kind = _NONE
-        bi = _NONE
-        bj = _NONE
-        for i in range(n):
-            if ball_t[i] < best:
-                best = ball_t[i]
-                kind = ball_kind[i]
-                bi = i
-                bj = ball_other[i]
-        for i in range(n):
-            for j in range(i + 1, n):
-                if pair_t[i, j] < best:
-                    best = pair_t[i, j]
-                    kind = EV_COLLISION
-                    bi = i
-                    bj = j
+        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, pair_t)
         if not best <= max_time:
             moving = False
             for i in range(n):
@@ -400,7 +363,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params
             dx = p0[bi, 0] - p0[bj, 0]
             dy = p0[bi, 1] - p0[bj, 1]
             dist = math.hypot(dx, dy)
-            clustered = _count_burst(bi, t, t_hit, burst) | _count_burst(bj, t, t_hit, burst)
+            clustered = count_burst(bi, t, t_hit, burst) | count_burst(bj, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS or burst[bj] > JAM_EVENTS:
                 n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
                 kind = EV_JAM
@@ -424,7 +387,7 @@ def simulate_exact(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params
                 p0[bi, 1] = r
             else:
                 p0[bi, 1] = prm.width - r
-            _count_burst(bi, t, t_hit, burst)
+            count_burst(bi, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS:
                 n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
                 kind = EV_JAM

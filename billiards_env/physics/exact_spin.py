@@ -23,12 +23,12 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPI
                     MS_ROLLING, MS_SLIDING, MS_SPINNING, MS_STATIONARY, STATUS_EVENT_CAP, STATUS_REST,
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS
-from .exact import _count_burst
-from .kernel_io import KernelResult
-from .kernel_logs import append_event, internal, pocket_holding, reserve_states
+from .kernel_io import N_STATE_COLS_SPIN, KernelResult
+from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
+                          reserve_states)
 from .roots import first_entry, quadratic_roots_in
-from .spin_collide import (is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
-                           settle_on_cushion, wall_normal)
+from .cushion_models import cushion_hit
+from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, wall_normal
 from .spin_motion import advance, classify, piece_of, reach, roll_on, slide_end, spin_decay_rate, transition
 
 #: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
@@ -41,8 +41,6 @@ T0, X, Y, VX, VY, WX, WY, WZ, AX, AY, DWX, DWY, ALPHA, TEND = range(14)
 N_COLS = 14
 #: The ball's own next event is its motion transition (internal kind; logged as roll, spin or stop).
 _TRANSITION = 100
-#: Columns of the logged states (``sc_state``): x, y, vx, vy, on_table, then wx, wy, wz, motion state.
-N_STATE_COLS = 9
 
 
 @internal
@@ -114,6 +112,41 @@ def _wall_time(c2, c1, c0, window, tol):
 
 
 @internal
+def _segment_distance(px, py, x0, y0, x1, y1):
+    """Distance from the point ``p`` to the segment from ``(x0, y0)`` to ``(x1, y1)``."""
+    ex = x1 - x0
+    ey = y1 - y0
+    ee = ex * ex + ey * ey
+    s = 0.0
+    if ee > 0.0:
+        s = min(max(((px - x0) * ex + (py - y0) * ey) / ee, 0.0), 1.0)
+    return math.hypot(px - x0 - s * ex, py - y0 - s * ey)
+
+
+@internal
+def _path_clear_of(cx, cy, r, x, y, vx, vy, ax, ay, window):
+    """Whether a ball's centre on ``p + v t + a t^2 / 2``, ``t`` in ``[0, window]``, stays farther than ``r`` (and a
+    margin far above round-off) from ``c``: then the pocket's quartic has no root and need not be solved. The path
+    is a quadratic Bezier curve, inside the triangle of its control points ``p``, ``p + v T / 2`` and its end
+    (``T = window``); the test is the distance from ``c`` to that triangle (0 if ``c`` is inside)."""
+    if not window < math.inf:
+        return False
+    x1 = x + 0.5 * vx * window
+    y1 = y + 0.5 * vy * window
+    x2 = x + window * (vx + 0.5 * ax * window)
+    y2 = y + window * (vy + 0.5 * ay * window)
+    # Inside the triangle (or on its edge): the same side of all three edges.
+    d0 = (x1 - x) * (cy - y) - (y1 - y) * (cx - x)
+    d1 = (x2 - x1) * (cy - y1) - (y2 - y1) * (cx - x1)
+    d2 = (x - x2) * (cy - y2) - (y - y2) * (cx - x2)
+    if (d0 >= 0.0 and d1 >= 0.0 and d2 >= 0.0) or (d0 <= 0.0 and d1 <= 0.0 and d2 <= 0.0):
+        return False
+    d = min(_segment_distance(cx, cy, x, y, x1, y1), _segment_distance(cx, cy, x1, y1, x2, y2),
+            _segment_distance(cx, cy, x, y, x2, y2))
+    return d > r * (1.0 + 1e-9) + 1e-9
+
+
+@internal
 def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time):
     """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
     t0 = bs[i, T0]
@@ -145,6 +178,8 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
         if c0 <= 0.0:
             tau = 0.0
         elif math.sqrt(dx * dx + dy * dy) - pocket_r[q] > far:
+            continue
+        elif _path_clear_of(pocket_xy[q, 0], pocket_xy[q, 1], pocket_r[q], x, y, vx, vy, ax, ay, window):
             continue
         else:
             tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
@@ -270,22 +305,13 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
     n = bs.shape[0]
     length = prm.length
     width = prm.width
-    member = np.zeros(n, np.bool_)
-    member[seed] = True
-    involved[0] = seed
-    count = 1
-    head = 0
-    while head < count:
-        q = involved[head]
-        head += 1
-        xq, yq, _, _, _, _, _ = _state_at(bs, q, t)
-        for m in range(n):
-            if on_table[m] and not member[m]:
-                xm, ym, _, _, _, _, _ = _state_at(bs, m, t)
-                if math.hypot(xq - xm, yq - ym) <= radius[q] + radius[m] + 1e-9:
-                    member[m] = True
-                    involved[count] = m
-                    count += 1
+    pxy = np.empty((2, n))
+    px = pxy[0]
+    py = pxy[1]
+    for m in range(n):
+        if on_table[m]:
+            px[m], py[m], _, _, _, _, _ = _state_at(bs, m, t)
+    count = contact_cluster(seed, px, py, radius, on_table, involved)
     total = 0.0
     mom_x = 0.0
     mom_y = 0.0
@@ -368,9 +394,6 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     f_roll = prm.mu_roll * g
     f_spin = prm.mu_spin * g
     e_c = prm.e_cushion
-    e_b = prm.e_ball
-    mu_b = prm.ball_friction
-    mu_c = prm.cushion_friction
     max_time = prm.max_time
     floor = prm.speed_floor
     length = prm.length
@@ -417,7 +440,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     sc_cap = 4 * n + 16 if record else 1
     sc_t = np.empty(sc_cap)
     sc_ball = np.empty(sc_cap, np.int64)
-    sc_state = np.empty((sc_cap, N_STATE_COLS))
+    sc_state = np.empty((sc_cap, N_STATE_COLS_SPIN))
     n_sc = 0
     if record:
         for i in range(n):
@@ -427,28 +450,13 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     # Scratch rows for the collision laws, which work on (N, 2) / (N, 3) arrays.
     cv = np.zeros((2, 2))
     cw = np.zeros((2, 3))
+    scratch = np.zeros(10)  # for the cushion laws that integrate
     involved = np.empty(n, np.int64)
     t = 0.0
     n_events = 0
     status = STATUS_REST
     while True:
-        best = math.inf
-        kind = -1
-        bi = -1
-        bj = -1
-        for i in range(n):
-            if ball_t[i] < best:
-                best = ball_t[i]
-                kind = ball_kind[i]
-                bi = i
-                bj = ball_other[i]
-        for i in range(n):
-            for j in range(i + 1, n):
-                if pair_t[i, j] < best:
-                    best = pair_t[i, j]
-                    kind = EV_COLLISION
-                    bi = i
-                    bj = j
+        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, pair_t)
         if not best <= max_time:
             moving = False
             for i in range(n):
@@ -473,7 +481,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
             dx = bs[bi, X] - bs[bj, X]
             dy = bs[bi, Y] - bs[bj, Y]
             dist = math.hypot(dx, dy)
-            clustered = _count_burst(bi, t, t_hit, burst) | _count_burst(bj, t, t_hit, burst)
+            clustered = count_burst(bi, t, t_hit, burst) | count_burst(bj, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS or burst[bj] > JAM_EVENTS:
                 n_inv = _jam_cluster(bi, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin,
                                      involved)
@@ -489,8 +497,8 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                     cw[q, 2] = bs[m, WZ]
                 merged = False
                 if dist > 0.0:
-                    speed = resolve_ball_ball_spin(cv, cw, _ROW0, _ROW1, dx / dist, dy / dist, mass[bi], mass[bj],
-                                                   radius[bi], radius[bj], e_b, mu_b, floor, clustered)
+                    speed = ball_hit(cv, cw, _ROW0, _ROW1, dx / dist, dy / dist, mass[bi], mass[bj], radius[bi],
+                                     radius[bj], prm, floor, clustered)
                     pushing = _slow_run(bi, bj, speed < floor, slow_with, slow_runs) > JAM_EVENTS
                     if pushing or is_pressed_pair(cv, cw, _ROW0, _ROW1, dx, dy, radius[bi], radius[bj], f_slide, f_roll,
                                                   f_spin, floor):
@@ -523,7 +531,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 bs[bi, Y] = r
             else:
                 bs[bi, Y] = width - r
-            _count_burst(bi, t, t_hit, burst)
+            count_burst(bi, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS:
                 n_inv = _jam_cluster(bi, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin,
                                      involved)
@@ -535,7 +543,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 cw[0, 0] = bs[bi, WX]
                 cw[0, 1] = bs[bi, WY]
                 cw[0, 2] = bs[bi, WZ]
-                speed = resolve_cushion_spin(cv, cw, _ROW0, bj, r, e_c, mu_c)
+                speed = cushion_hit(cv, cw, _ROW0, bj, r, mass[bi], e_c, prm, scratch)
                 bs[bi, VX] = cv[0, 0]
                 bs[bi, VY] = cv[0, 1]
                 bs[bi, WX] = cw[0, 0]

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
+from .codes import BALL_BALL_MODELS, CUSHION_MODELS
 from .model import G
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -18,6 +19,11 @@ if TYPE_CHECKING:  # pragma: no cover
 
 #: Separation-speed floor of the inelastic-collapse guard (m/s), see :mod:`.collide`.
 CONTACT_SPEED_FLOOR = 1e-3
+
+#: Columns of the state logs (``sc_state``): ``x, y, vx, vy, on_table``; the spin model's add ``wx, wy, wz,
+#: motion_state``.
+N_STATE_COLS = 5
+N_STATE_COLS_SPIN = 9
 
 #: The parameter record the kernels read. Fields a model does not use are ignored by its kernel.
 PARAMS_DTYPE = np.dtype(
@@ -38,6 +44,15 @@ PARAMS_DTYPE = np.dtype(
         ("mu_spin", np.float64),  # spin model: spinning friction
         ("ball_friction", np.float64),  # spin model: ball-ball friction (throw)
         ("cushion_friction", np.float64),  # spin model: cushion friction
+        ("ball_ball", np.int64),  # spin model: ball-ball model code (codes.BB_*)
+        ("alciatore_a", np.float64),  # ball_ball alciatore: mu(v) = a + b exp(-c v)
+        ("alciatore_b", np.float64),
+        ("alciatore_c", np.float64),
+        ("cushion", np.int64),  # spin model: cushion model code (codes.CU_*)
+        ("cushion_height", np.float64),  # the cushion nose's height (m); -1: at each ball's equator
+        ("omega_ratio", np.float64),  # cushion stronge: tangential / normal frequency ratio
+        ("squirt", np.float64),  # squirt throttle of the strike (0: none)
+        ("cue_end_mass", np.float64),  # the cue tip's end mass (kg) in the squirt angle
     ],
     align=True,
 )
@@ -59,8 +74,12 @@ def kernel_params(table: "Table", physics: "Physics", max_time: float) -> np.nda
     r["speed_floor"] = CONTACT_SPEED_FLOOR
     r["g"] = G
     r["mu_roll"] = physics.mu_roll
-    for name in ("mu_slide", "mu_spin", "ball_friction", "cushion_friction"):
-        r[name] = getattr(physics, name, 0.0)
+    for name in ("mu_slide", "mu_spin", "ball_friction", "cushion_friction", "alciatore_a", "alciatore_b",
+                 "alciatore_c", "omega_ratio", "squirt", "cue_end_mass"):
+        r[name] = getattr(physics, name)
+    r["ball_ball"] = BALL_BALL_MODELS.index(physics.ball_ball)
+    r["cushion"] = CUSHION_MODELS.index(physics.cushion)
+    r["cushion_height"] = -1.0 if physics.cushion_height is None else physics.cushion_height
     return p
 
 
@@ -82,4 +101,4 @@ class KernelResult(NamedTuple):
     n_tunnelled: int  #: pairs that passed through each other within a step (step solver)
 
 
-__all__ = ["PARAMS_DTYPE", "CONTACT_SPEED_FLOOR", "kernel_params", "KernelResult"]
+__all__ = ["N_STATE_COLS", "N_STATE_COLS_SPIN", "PARAMS_DTYPE", "CONTACT_SPEED_FLOOR", "kernel_params", "KernelResult"]

@@ -22,8 +22,11 @@ from .table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, TABLE_PRESETS, Tabl
 TABLE_FIELDS = {"preset", "length", "width", "cushion_restitution", "pockets", "corner_pocket_radius",
                 "side_pocket_radius"}
 POCKET_FIELDS = {"x", "y", "radius"}
-#: The physics section's fields are :class:`Physics`'s: one set of names and defaults for scenes and envs.
-PHYSICS_FIELDS = {f.name for f in fields(Physics)}
+#: The physics section's fields are :class:`Physics`'s (one set of names and defaults for scenes and envs), and
+#: ``preset``: a named set of them (:data:`.model.PRESETS`) that the fields given override.
+PHYSICS_FIELDS = {f.name for f in fields(Physics)} | {"preset"}
+#: Physics fields that may be null (None: see :class:`Physics`).
+NULLABLE_PHYSICS_FIELDS = {"cushion_height"}
 BALL_FIELDS = {"id", "x", "y", "vx", "vy", "wx", "wy", "wz", "radius", "mass"}
 SHOT_FIELDS = {"ball", "angle", "speed", "side", "top"}
 SOLVER_FIELDS = {"name", "dt", "contact"}
@@ -65,7 +68,7 @@ class Scene:
         if self.shot is None:
             return self.balls.copy()
         return self.balls.strike(self.shot.ball, self.shot.angle, self.shot.speed, side=self.shot.side,
-                                 top=self.shot.top)
+                                 top=self.shot.top, physics=self.physics)
 
     def run(self, solver: str | None = None, dt: float | None = None, contact: str | None = None,
             record: bool = False) -> ShotResult:
@@ -73,29 +76,12 @@ class Scene:
         return self.simulator(solver, dt, contact).run(self.initial_balls(), record=record)
 
     @classmethod
-    def load(cls, path: str | Path) -> "Scene":
-        """Read a scene from a JSON (or YAML, by extension) file."""
-        p = Path(path)
-        try:
-            text = p.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise SceneError(f"{path}: cannot read the scene file ({exc.strerror})") from None
-        except UnicodeDecodeError:
-            raise SceneError(f"{path}: not UTF-8 text; save the scene as UTF-8 JSON or YAML") from None
-        if p.suffix.lower() in (".yaml", ".yml"):
-            import yaml
-
-            try:
-                data = yaml.safe_load(text)
-            except yaml.YAMLError as exc:
-                raise SceneError(f"{path}: not valid YAML ({exc})") from None
-        else:
-            try:
-                data = json.loads(text)
-            except json.JSONDecodeError as exc:
-                raise SceneError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno} column {exc.colno}") from None
-            except ValueError as exc:  # e.g. an integer literal longer than Python's digit limit
-                raise SceneError(f"{path}: not valid JSON: {exc}") from None
+    def load(cls, path: str | Path, preset: str | None = None) -> "Scene":
+        """Read a scene from a JSON (or YAML, by extension) file. ``preset``: play it under this physics preset
+        (:data:`.model.PRESETS`) instead of the file's physics section."""
+        data = read_scene_file(path)
+        if preset is not None and isinstance(data, Mapping):
+            data = {**data, "physics": {"preset": preset}}
         return cls.from_dict(data)
 
     @classmethod
@@ -108,6 +94,7 @@ class Scene:
             raise SceneError("scene: missing 'balls'; give a list of balls, e.g. [{\"id\": \"cue\", \"x\": 0.6, \"y\": 0.6}]")
         balls = _balls(d["balls"])
         validate_balls(balls, table, allow_spin=physics.friction == "spin")
+        physics.check_cushion_height(balls.radius)
         shot = _shot(d["shot"], balls, physics) if d.get("shot") is not None else None
         solver = parse_solver(d.get("solver", {}))
         max_time = check_positive("max_time", d.get("max_time", DEFAULT_MAX_TIME))
@@ -120,6 +107,32 @@ class Scene:
         if shot is not None:
             scene.initial_balls()  # checks the shot (e.g. the tip offset's miscue limit)
         return scene
+
+
+def read_scene_file(path: str | Path) -> Any:
+    """The parsed document of a scene file (JSON, or YAML by extension), unchecked."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"{path}: cannot read the scene file ({exc.strerror})") from None
+    except UnicodeDecodeError:
+        raise SceneError(f"{path}: not UTF-8 text; save the scene as UTF-8 JSON or YAML") from None
+    if p.suffix.lower() in (".yaml", ".yml"):
+        import yaml
+
+        try:
+            data = yaml.safe_load(text)
+        except yaml.YAMLError as exc:
+            raise SceneError(f"{path}: not valid YAML ({exc})") from None
+    else:
+        try:
+            data = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise SceneError(f"{path}: not valid JSON: {exc.msg} at line {exc.lineno} column {exc.colno}") from None
+        except ValueError as exc:  # e.g. an integer literal longer than Python's digit limit
+            raise SceneError(f"{path}: not valid JSON: {exc}") from None
+    return data
 
 
 def _mapping(name: str, value: Any, allowed: set[str]) -> Mapping[str, Any]:
@@ -183,15 +196,21 @@ def parse_table(value: Any, where: str = "table") -> Table:
 
 
 def parse_physics(value: Any, where: str = "physics") -> Physics:
-    """A :class:`Physics` from a scene's (or an env config's) ``physics`` section (fields: those of Physics)."""
+    """A :class:`Physics` from a scene's (or an env config's) ``physics`` section: the fields of Physics, and
+    ``preset`` (a name of :data:`.model.PRESETS`, e.g. ``"pooltool"``), whose values the fields given override."""
     p = _mapping(where, value, PHYSICS_FIELDS)
     kw: dict[str, Any] = {}
     for f in fields(Physics):
         if f.name in p:
-            if f.type in ("str", str):
+            if f.name in NULLABLE_PHYSICS_FIELDS and p[f.name] is None:
+                kw[f.name] = None
+            elif f.type in ("str", str):
                 kw[f.name] = _string(f"{where}.{f.name}", p[f.name])
             else:
                 kw[f.name] = check_number(f"{where}.{f.name}", p[f.name])
+    preset = p.get("preset")
+    if preset is not None:
+        return Physics.from_preset(_string(f"{where}.preset", preset), **kw)
     return Physics(**kw)
 
 

@@ -6,16 +6,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from .balls import Balls, validate_balls
-from .codes import SPIN, STATUS_NAMES
+from .codes import STATUS_NAMES
 from .errors import SceneError, check_positive
-from .exact import simulate_exact
-from .exact_spin import simulate_exact_spin
 from .kernel_io import kernel_params
+from .kernels import kernels_for
 from .model import G, Physics
 from .result import EventLog, ShotResult
-from .step import CONTACT_MODES, simulate_step
 from .spin_motion import classify_all
-from .step_spin import simulate_step_spin
+from .step import CONTACT_MODES
 from .table import Table
 from .trajectory import Trajectory
 
@@ -71,7 +69,8 @@ class Simulator:
         self._params = kernel_params(self.table, self.physics, self.max_time)
         self._pocket_xy = np.ascontiguousarray(self.table.pocket_xy, dtype=float)
         self._pocket_r = np.ascontiguousarray(self.table.pocket_radius, dtype=float)
-        self._spin = self.physics.law_code == SPIN  # the spin model runs its own kernels
+        self._kernels = kernels_for(self.physics)
+        self._spin = self._kernels.spin  # balls carry spin (the spin model's kernels)
 
     @property
     def name(self) -> str:
@@ -91,18 +90,16 @@ class Simulator:
             balls.ang[...] = res.balls.ang
             ev = res.events
             return res.status, res.time, res.n_events, res.pocket, np.stack([ev.kind, ev.ball, ev.other], axis=1)
-        if self._spin:  # the angular velocities ``balls.ang`` (C-contiguous float64) are updated too
-            out = simulate_exact_spin(balls.pos, balls.vel, balls.ang, balls.radius, balls.mass, balls.on_table,
-                                      self._pocket_xy, self._pocket_r, self._params, self.max_events, False)
-            return STATUS_NAMES[out.status], out.time, out.n_events, out.pocket, out.ev_int
-        out = simulate_exact(balls.pos, balls.vel, balls.radius, balls.mass, balls.on_table, self._pocket_xy,
-                             self._pocket_r, self._params, self.max_events, False)
+        # Under the spin model the angular velocities ``balls.ang`` (C-contiguous float64) are updated too.
+        out = self._kernels.exact(balls.pos, balls.vel, balls.ang, balls.radius, balls.mass, balls.on_table,
+                                  self._pocket_xy, self._pocket_r, self._params, self.max_events, False)
         return STATUS_NAMES[out.status], out.time, out.n_events, out.pocket, out.ev_int
 
     def run(self, balls: Balls, record: bool = False, validate: bool = True) -> ShotResult:
         """Simulate from ``balls`` (not modified) until rest or a cap. ``record`` keeps the trajectory."""
         if validate:
             validate_balls(balls, self.table, allow_spin=self._spin)
+            self.physics.check_cushion_height(balls.radius)
         out = balls.copy()
         pos = np.ascontiguousarray(out.pos, dtype=float)
         vel = np.ascontiguousarray(out.vel, dtype=float)
@@ -110,19 +107,12 @@ class Simulator:
         radius = np.ascontiguousarray(out.radius, dtype=float)
         mass = np.ascontiguousarray(out.mass, dtype=float)
         ang = np.ascontiguousarray(out.ang, dtype=float)
-        if self._spin and self.solver == "exact":
-            k = simulate_exact_spin(pos, vel, ang, radius, mass, on, self._pocket_xy, self._pocket_r, self._params,
+        if self.solver == "exact":
+            k = self._kernels.exact(pos, vel, ang, radius, mass, on, self._pocket_xy, self._pocket_r, self._params,
                                     self.max_events, record)
-        elif self._spin:
-            k = simulate_step_spin(pos, vel, ang, radius, mass, on, self._pocket_xy, self._pocket_r, self._params,
-                                   self.dt, CONTACT_MODES.index(self.contact), 1.0 / 240.0 if record else 0.0)
-        elif self.solver == "exact":
-            k = simulate_exact(pos, vel, radius, mass, on, self._pocket_xy, self._pocket_r, self._params,
-                               self.max_events, record)
         else:
-            record_dt = 1.0 / 240.0 if record else 0.0
-            k = simulate_step(pos, vel, radius, mass, on, self._pocket_xy, self._pocket_r, self._params, self.dt,
-                              CONTACT_MODES.index(self.contact), record_dt)
+            k = self._kernels.step(pos, vel, ang, radius, mass, on, self._pocket_xy, self._pocket_r, self._params,
+                                   self.dt, CONTACT_MODES.index(self.contact), 1.0 / 240.0 if record else 0.0)
         final = Balls(out.ids, pos, vel, radius, mass, on, ang)
         traj = None
         if record:

@@ -37,6 +37,7 @@ import math
 
 from numba import njit
 
+from .codes import BB_ALCIATORE
 from .spin_motion import classify, piece_of
 
 #: Largest tip offset from the ball's centre, as a fraction of R: beyond it the cue miscues.
@@ -144,30 +145,124 @@ def resolve_ball_ball_spin(vel, ang, i: int, j: int, nx: float, ny: float, mi: f
         ss = math.sqrt(sx * sx + sy * sy + sz * sz)
         if ss > 0.0:
             size = min(mu_b * jn, (2.0 / 7.0) * ss / (1.0 / mi + 1.0 / mj))
-            px = -size * sx / ss
-            py = -size * sy / ss
-            pz = -size * sz / ss
-            vel[i, 0] += px / mi
-            vel[i, 1] += py / mi
-            vel[j, 0] -= px / mj
-            vel[j, 1] -= py / mj
-            # Torques: dw_i = (-R_i n) x P / I_i, dw_j = (R_j n) x (-P) / I_j; both -(5 / 2 m R) n x P.
-            cx = ny * pz
-            cy = -nx * pz
-            cz = nx * py - ny * px
-            ki = -2.5 / (mi * ri)
-            kj = -2.5 / (mj * rj)
-            ang[i, 0] += ki * cx
-            ang[i, 1] += ki * cy
-            ang[i, 2] += ki * cz
-            ang[j, 0] += kj * cx
-            ang[j, 1] += kj * cy
-            ang[j, 2] += kj * cz
+            _friction_impulse(vel, ang, i, j, nx, ny, mi, mj, ri, rj, sx, sy, sz, ss, size)
     vel[i, 0] += jn / mi * nx
     vel[i, 1] += jn / mi * ny
     vel[j, 0] -= jn / mj * nx
     vel[j, 1] -= jn / mj * ny
     return v_close
+
+
+@njit(cache=True)
+def _contact_slip(vel, ang, i, j, nx, ny, ri, rj):
+    """Relative slip of the contact points of balls ``i`` and ``j`` (normal ``n`` from ``j`` to ``i``; the normal
+    impulse does not change it): ``s = (v_i - v_j)_t + w_i x (-R_i n) - w_j x (R_j n)``, with
+    ``w x n = (-wz ny, wz nx, wx ny - wy nx)``. Returns ``(sx, sy, sz, |s|)``."""
+    rvx = vel[i, 0] - vel[j, 0]
+    rvy = vel[i, 1] - vel[j, 1]
+    rvn = rvx * nx + rvy * ny
+    sx = rvx - rvn * nx + (ri * ang[i, 2] + rj * ang[j, 2]) * ny
+    sy = rvy - rvn * ny - (ri * ang[i, 2] + rj * ang[j, 2]) * nx
+    sz = -(ri * (ang[i, 0] * ny - ang[i, 1] * nx) + rj * (ang[j, 0] * ny - ang[j, 1] * nx))
+    return sx, sy, sz, math.sqrt(sx * sx + sy * sy + sz * sz)
+
+
+@njit(cache=True)
+def _friction_impulse(vel, ang, i, j, nx, ny, mi, mj, ri, rj, sx, sy, sz, ss, size):
+    """Apply the friction impulse ``P`` of magnitude ``size`` against the slip ``s`` (``|s| = ss > 0``) to balls
+    ``i`` (``+P``) and ``j`` (``-P``): velocities without its vertical part, and spins by its torques."""
+    px = -size * sx / ss
+    py = -size * sy / ss
+    pz = -size * sz / ss
+    vel[i, 0] += px / mi
+    vel[i, 1] += py / mi
+    vel[j, 0] -= px / mj
+    vel[j, 1] -= py / mj
+    # Torques: dw_i = (-R_i n) x P / I_i, dw_j = (R_j n) x (-P) / I_j; both -(5 / 2 m R) n x P.
+    cx = ny * pz
+    cy = -nx * pz
+    cz = nx * py - ny * px
+    ki = -2.5 / (mi * ri)
+    kj = -2.5 / (mj * rj)
+    ang[i, 0] += ki * cx
+    ang[i, 1] += ki * cy
+    ang[i, 2] += ki * cz
+    ang[j, 0] += kj * cx
+    ang[j, 1] += kj * cy
+    ang[j, 2] += kj * cz
+
+
+@njit(cache=True)
+def resolve_ball_ball_alciatore(vel, ang, i: int, j: int, nx: float, ny: float, mi: float, mj: float, ri: float,
+                                rj: float, e: float, a: float, b: float, c: float, speed_floor: float,
+                                clustered: bool) -> float:
+    """The ``alciatore`` ball-ball law (pooltool's ``FrictionalInelastic`` with Alciatore's friction): the normal
+    impulse of :func:`resolve_ball_ball_spin`, and a friction impulse against the contact points' slip ``s`` of
+    size ``min(mu 2 m_r v_sep, (2/7) |s| / (1/m_i + 1/m_j))``, with ``mu = a + b exp(-c |s|)`` (TP A-14's fit),
+    ``v_sep`` the separation speed and ``m_r`` the reduced mass: for equal balls ``mu v_sep`` per unit mass, as
+    pooltool scales its Coulomb limit.
+
+    Returns the closing speed before the hit (0 if the pair was not closing: then nothing changes).
+    """
+    rvx = vel[i, 0] - vel[j, 0]
+    rvy = vel[i, 1] - vel[j, 1]
+    v_close = -(rvx * nx + rvy * ny)
+    if not v_close > 0.0:
+        return 0.0
+    v_sep = e * v_close
+    if clustered and v_sep < speed_floor:
+        v_sep = min(v_close, speed_floor)
+    m_r = mi * mj / (mi + mj)
+    jn = m_r * (v_close + v_sep)
+    sx, sy, sz, ss = _contact_slip(vel, ang, i, j, nx, ny, ri, rj)
+    if ss > 0.0:
+        mu = a + b * math.exp(-c * ss)
+        size = min(mu * 2.0 * m_r * v_sep, (2.0 / 7.0) * ss / (1.0 / mi + 1.0 / mj))
+        _friction_impulse(vel, ang, i, j, nx, ny, mi, mj, ri, rj, sx, sy, sz, ss, size)
+    vel[i, 0] += jn / mi * nx
+    vel[i, 1] += jn / mi * ny
+    vel[j, 0] -= jn / mj * nx
+    vel[j, 1] -= jn / mj * ny
+    return v_close
+
+
+@njit(cache=True)
+def ball_hit(vel, ang, i: int, j: int, nx: float, ny: float, mi: float, mj: float, ri: float, rj: float, prm,
+             speed_floor: float, clustered: bool) -> float:
+    """Collide balls ``i`` and ``j`` under the ball-ball law of the parameter record ``prm`` (:mod:`.kernel_io`):
+    :func:`resolve_ball_ball_spin` or :func:`resolve_ball_ball_alciatore`. Returns the closing speed before the hit."""
+    if prm.ball_ball == BB_ALCIATORE:
+        return resolve_ball_ball_alciatore(vel, ang, i, j, nx, ny, mi, mj, ri, rj, prm.e_ball, prm.alciatore_a,
+                                           prm.alciatore_b, prm.alciatore_c, speed_floor, clustered)
+    return resolve_ball_ball_spin(vel, ang, i, j, nx, ny, mi, mj, ri, rj, prm.e_ball, prm.ball_friction, speed_floor,
+                                  clustered)
+
+
+@njit(cache=True)
+def squirt_angle(side: float, ball_mass: float, end_mass: float, throttle: float) -> float:
+    """The squirt of a level strike with side english ``side`` (fraction of R; > 0 right english): the angle (rad,
+    counter-clockwise) between the cue ball's path and the cue, ``throttle`` times TP A-31's
+    ``atan(5/2 a sqrt(1 - a^2) / (1 + m_ball / m_end + 5/2 (1 - a^2)))`` with ``a = side`` and ``m_end`` the
+    cue tip's end mass. Right english squirts the ball to the left (positive), left english to the right."""
+    if throttle == 0.0 or side == 0.0:
+        return 0.0
+    a2 = 1.0 - side * side
+    return throttle * math.atan2(2.5 * side * math.sqrt(a2), 1.0 + ball_mass / end_mass + 2.5 * a2)
+
+
+@njit(cache=True)
+def strike_ball(angle: float, speed: float, side: float, top: float, r: float, m: float, squirt: float,
+                end_mass: float) -> tuple:
+    """Velocity and angular velocity of a ball (radius ``r``, mass ``m``) struck with a cue along ``angle`` at
+    ``speed`` with tip offsets ``side`` and ``top`` (:func:`strike_spin`), the path turned by the squirt
+    (:func:`squirt_angle`; its spin is the cue's: the squirt turns the path, not the spin axis, as pooltool's
+    ``InstantaneousPoint``): ``(vx, vy, wx, wy, wz)``. Without squirt it is :func:`strike_spin`."""
+    vx, vy, wx, wy, wz = strike_spin(angle, speed, side, top, r)
+    if squirt != 0.0 and side != 0.0:
+        path = angle + squirt_angle(side, m, end_mass, squirt)
+        vx = speed * math.cos(path)
+        vy = speed * math.sin(path)
+    return vx, vy, wx, wy, wz
 
 
 @njit(cache=True)

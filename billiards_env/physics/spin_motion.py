@@ -163,28 +163,6 @@ def transition(state: int, vx: float, vy: float, wz: float) -> int:
 
 
 @njit(cache=True)
-def evolve(t: float, x: float, y: float, vx: float, vy: float, wx: float, wy: float, wz: float, r: float,
-           f_slide: float, f_roll: float, f_spin: float) -> tuple:
-    """The state of a free ball ``t`` seconds on, through every transition on the way (no collisions).
-
-    Returns ``(state, x, y, vx, vy, wx, wy, wz)``. This is the whole closed form of one ball; the solvers
-    evaluate it piece by piece (each transition is one of their events).
-    """
-    alpha = spin_decay_rate(r, f_spin)
-    # The state lives in an array: numba cannot type scalars carried round a loop through calls.
-    q = np.array([x, y, vx, vy, wx, wy, wz])
-    state = classify(vx, vy, wx, wy, wz, r)
-    while True:
-        c = piece_of(state, q[2], q[3], q[4], q[5], q[6], r, f_slide, f_roll, f_spin)
-        dur = c[9]
-        q[:] = advance(min(t, dur), q[0], q[1], c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], alpha)
-        if t <= dur:
-            return state, q[0], q[1], q[2], q[3], q[4], q[5], q[6]
-        t -= dur
-        state = transition(state, q[2], q[3], q[6])
-
-
-@njit(cache=True)
 def reach(t: float, vx: float, vy: float, ax: float, ay: float) -> float:
     """An upper bound of how far a ball on a piece moves in ``t`` seconds: ``|v| t + |a| t^2 / 2``."""
     return t * (math.hypot(vx, vy) + 0.5 * math.hypot(ax, ay) * t)

@@ -23,44 +23,20 @@ from numba import njit
 
 from .collide import resolve_ball_ball, resolve_cushion
 from .codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, ROLLING, STATUS_REST, STATUS_TIME_CAP
-from .kernel_logs import keep_on_table, pocket_holding, reserve_events, reserve_states
-from .kernel_io import KernelResult
+from .kernel_io import N_STATE_COLS, KernelResult
+from .kernel_logs import (cushion_overshoot, keep_on_table, pocket_holding, put_event, reserve_events, rewind_time,
+                          snapshot, tunnelled)
 
 CONTACT_MODES = ("lecture", "rewind")
 LECTURE, REWIND = 0, 1
 
 
 @njit(cache=True)
-def _put_event(ev_t, ev_int, ev_speed, n_ev, t, kind, i, j, speed):
-    """Write event ``n_ev`` (capacity is reserved once per step, so the hot loops never reallocate)."""
-    ev_t[n_ev] = t
-    ev_int[n_ev, 0] = kind
-    ev_int[n_ev, 1] = i
-    ev_int[n_ev, 2] = j
-    ev_speed[n_ev] = speed
-
-
-@njit(cache=True)
-def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on, only):
-    n = pos.shape[0]
-    for i in range(n):
-        if only >= 0 and i != only:
-            continue
-        sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
-        sc_t[n_sc] = t
-        sc_ball[n_sc] = i
-        sc_state[n_sc, 0] = pos[i, 0]
-        sc_state[n_sc, 1] = pos[i, 1]
-        sc_state[n_sc, 2] = vel[i, 0]
-        sc_state[n_sc, 3] = vel[i, 1]
-        sc_state[n_sc, 4] = 1.0 if on[i] else 0.0
-        n_sc += 1
-    return n_sc, sc_t, sc_ball, sc_state
-
-
-@njit(cache=True)
-def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params, dt, contact, record_dt):
+def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, params, dt, contact, record_dt):
     """Run the per-frame algorithm from ``pos``/``vel`` (updated in place) until rest or ``max_time``.
+
+    ``ang`` (angular velocities) is not read: the rolling and drag laws have no spin; it is there so that every
+    step kernel takes the same arguments (:mod:`.kernels`).
 
     ``params``: the parameter record (:mod:`.kernel_io`). Returns a :class:`~.kernel_io.KernelResult` like
     ``simulate_exact`` (snapshots every ``record_dt`` s as the state log when ``record_dt > 0``), with
@@ -90,10 +66,12 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
     record = record_dt > 0.0
     sc_t = np.empty(4 * n + 16)
     sc_ball = np.empty(4 * n + 16, np.int64)
-    sc_state = np.empty((4 * n + 16, 5))
+    sc_state = np.empty((4 * n + 16, N_STATE_COLS))
     n_sc = 0
+    no_code = np.empty(0, np.int64)  # (motion-state codes: the spin model's; not logged here)
     if record:
-        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, 0.0, pos, vel, on_table, -1)
+        n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, 0.0, pos, vel, ang, on_table, no_code,
+                                                 -1)
     next_record = record_dt
 
     for i in range(n):
@@ -138,7 +116,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
             if s_new <= v_min or s_new == 0.0:
                 vel[i, 0] = 0.0
                 vel[i, 1] = 0.0
-                _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_STOP, i, -1, 0.0)
+                put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_STOP, i, -1, 0.0)
                 n_ev += 1
                 continue
             vel[i, 0] *= f
@@ -152,9 +130,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
                 continue
             r = radius[i]
             for cush in range(4):
-                axis = 0 if cush < 2 else 1
-                lim = r if cush % 2 == 0 else (length if axis == 0 else width) - r
-                over = (lim - pos[i, axis]) if cush % 2 == 0 else (pos[i, axis] - lim)
+                axis, lim, over = cushion_overshoot(pos, i, cush, r, length, width)
                 if over > 0.0:
                     speed = resolve_cushion(vel, i, cush, e_c)
                     if contact == 1 and speed > 0.0:
@@ -162,7 +138,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
                     else:
                         pos[i, axis] = lim
                     if speed > 0.0:
-                        _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, cush, speed)
+                        put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, cush, speed)
                         n_ev += 1
 
         # 4. ball pairs in (i, j) order.
@@ -177,16 +153,8 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
                 dc = radius[i] + radius[j]
                 dist2 = dx * dx + dy * dy
                 if dist2 >= dc * dc:
-                    # Tunnelling check: closest approach along this step's straight-line relative motion.
-                    bx = vel[i, 0] - vel[j, 0]
-                    by = vel[i, 1] - vel[j, 1]
-                    bb = bx * bx + by * by
-                    if bb > 0.0:
-                        s_min = min(max((dx * bx + dy * by) / bb, 0.0), dt)  # seconds back from now
-                        mx = dx - bx * s_min
-                        my = dy - by * s_min
-                        if 0.0 < s_min < dt and mx * mx + my * my < dc * dc:
-                            n_tunnelled += 1
+                    if tunnelled(dx, dy, vel[i, 0] - vel[j, 0], vel[i, 1] - vel[j, 1], dc, dt):
+                        n_tunnelled += 1
                     continue
                 dist = math.sqrt(dist2)
                 if dist == 0.0:
@@ -195,17 +163,8 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
                     nx = dx / dist
                     ny = dy / dist
                 back = -1.0
-                if contact == 1:
-                    # Rewind to the time of impact: |d - b s| = dc for the smallest s >= 0 going back.
-                    bx = vel[i, 0] - vel[j, 0]
-                    by = vel[i, 1] - vel[j, 1]
-                    bb = bx * bx + by * by
-                    db = dx * bx + dy * by
-                    if bb > 0.0:
-                        disc = db * db - bb * (dist2 - dc * dc)
-                        s_hit = (db + math.sqrt(max(disc, 0.0))) / bb
-                        if 0.0 <= s_hit <= dt:
-                            back = s_hit
+                if contact == 1:  # rewind to the time of impact
+                    back = rewind_time(dx, dy, vel[i, 0] - vel[j, 0], vel[i, 1] - vel[j, 1], dc, dt)
                 if back >= 0.0:
                     pos[i, 0] -= vel[i, 0] * back
                     pos[i, 1] -= vel[i, 1] * back
@@ -231,7 +190,7 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
                 if speed > 0.0:
                     moving[i] = True
                     moving[j] = True
-                    _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_COLLISION, i, j, speed)
+                    put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_COLLISION, i, j, speed)
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
@@ -249,17 +208,18 @@ def simulate_step(pos, vel, radius, mass, on_table, pocket_xy, pocket_r, params,
                 vel[i, 1] = 0.0
                 pocket_of[i] = p
                 pocket_time[i] = t
-                _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, p, speed)
+                put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, p, speed)
                 n_ev += 1
                 if record:
-                    n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on_table,
-                                                              i)
+                    n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table,
+                                                             no_code, i)
 
         if record and t >= next_record - 1e-12:
-            n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on_table, -1)
+            n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table, no_code,
+                                                     -1)
             next_record += record_dt
 
     if record:
-        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, on_table, -1)
+        n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table, no_code, -1)
     return KernelResult(status, t, n_ev, pocket_of, pocket_time, ev_t[:n_ev], ev_int[:n_ev], ev_speed[:n_ev],
                         sc_t[:n_sc], sc_ball[:n_sc], sc_state[:n_sc], step, n_tunnelled)

@@ -25,37 +25,14 @@ from numba import njit
 
 from .codes import (EV_COLLISION, EV_CUSHION, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP, MS_POCKETED, MS_ROLLING,
                     MS_SLIDING, MS_SPINNING, MS_STATIONARY, STATUS_REST, STATUS_TIME_CAP)
-from .kernel_logs import internal, keep_on_table, pocket_holding, reserve_events, reserve_states
-from .exact_spin import N_STATE_COLS
-from .kernel_io import KernelResult
-from .spin_collide import (acceleration, is_pressed_pair, merge_pair, resolve_ball_ball_spin, resolve_cushion_spin,
-                           settle_on_cushion, wall_normal)
+from .kernel_io import N_STATE_COLS_SPIN, KernelResult
+from .kernel_logs import (cushion_overshoot, internal, keep_on_table, pocket_holding, put_event, reserve_events,
+                          rewind_time, snapshot, tunnelled)
+from .cushion_models import cushion_hit
+from .spin_collide import acceleration, ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, wall_normal
 from .spin_motion import classify, roll_on, slip, spin_decay_rate, wz_after
-from .step import _put_event
 
 
-
-
-@internal
-def _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on, code, only):
-    n = pos.shape[0]
-    for i in range(n):
-        if only >= 0 and i != only:
-            continue
-        sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
-        sc_t[n_sc] = t
-        sc_ball[n_sc] = i
-        sc_state[n_sc, 0] = pos[i, 0]
-        sc_state[n_sc, 1] = pos[i, 1]
-        sc_state[n_sc, 2] = vel[i, 0]
-        sc_state[n_sc, 3] = vel[i, 1]
-        sc_state[n_sc, 4] = 1.0 if on[i] else 0.0
-        sc_state[n_sc, 5] = ang[i, 0]
-        sc_state[n_sc, 6] = ang[i, 1]
-        sc_state[n_sc, 7] = ang[i, 2]
-        sc_state[n_sc, 8] = code[i]
-        n_sc += 1
-    return n_sc, sc_t, sc_ball, sc_state
 
 
 @internal
@@ -120,15 +97,13 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
     f_roll = prm.mu_roll * g
     f_spin = prm.mu_spin * g
     e_c = prm.e_cushion
-    e_b = prm.e_ball
-    mu_b = prm.ball_friction
-    mu_c = prm.cushion_friction
     length = prm.length
     width = prm.width
     max_time = prm.max_time
     floor = prm.speed_floor
     max_steps = int(math.ceil(max_time / dt - 1e-9))
 
+    scratch = np.zeros(10)  # for the cushion laws that integrate
     code = np.full(n, MS_POCKETED, np.int64)
     alpha = np.empty(n)
     for i in range(n):
@@ -150,10 +125,10 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
     record = record_dt > 0.0
     sc_t = np.empty(4 * n + 16)
     sc_ball = np.empty(4 * n + 16, np.int64)
-    sc_state = np.empty((4 * n + 16, N_STATE_COLS))
+    sc_state = np.empty((4 * n + 16, N_STATE_COLS_SPIN))
     n_sc = 0
     if record:
-        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, 0.0, pos, vel, ang, on_table,
+        n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, 0.0, pos, vel, ang, on_table,
                                                   code, -1)
     next_record = record_dt
 
@@ -188,7 +163,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
             code[i] = after
             if after != before and (after == MS_ROLLING or after == MS_SPINNING or after == MS_STATIONARY):
                 kind = EV_ROLL if after == MS_ROLLING else (EV_SPIN if after == MS_SPINNING else EV_STOP)
-                _put_event(ev_t, ev_int, ev_speed, n_ev, t, kind, i, -1, 0.0)
+                put_event(ev_t, ev_int, ev_speed, n_ev, t, kind, i, -1, 0.0)
                 n_ev += 1
             pos[i, 0] += vel[i, 0] * dt
             pos[i, 1] += vel[i, 1] * dt
@@ -199,11 +174,9 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                 continue
             r = radius[i]
             for cush in range(4):
-                axis = 0 if cush < 2 else 1
-                lim = r if cush % 2 == 0 else (length if axis == 0 else width) - r
-                over = (lim - pos[i, axis]) if cush % 2 == 0 else (pos[i, axis] - lim)
+                axis, lim, over = cushion_overshoot(pos, i, cush, r, length, width)
                 if over > 0.0:
-                    speed = resolve_cushion_spin(vel, ang, i, cush, r, e_c, mu_c)
+                    speed = cushion_hit(vel, ang, i, cush, r, mass[i], e_c, prm, scratch)
                     if contact == 1 and speed > 0.0:
                         pos[i, axis] = lim + (over if cush % 2 == 0 else -over) * e_c
                     else:
@@ -216,7 +189,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                             settle_on_cushion(vel, ang, i, cush)
                     code[i] = classify(vel[i, 0], vel[i, 1], ang[i, 0], ang[i, 1], ang[i, 2], r)
                     if speed > 0.0:
-                        _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, cush, speed)
+                        put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, cush, speed)
                         n_ev += 1
 
         # 4. ball pairs in (i, j) order.
@@ -232,25 +205,14 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                 dist2 = dx * dx + dy * dy
                 bx = vel[i, 0] - vel[j, 0]
                 by = vel[i, 1] - vel[j, 1]
-                bb = bx * bx + by * by
                 if dist2 >= dc * dc:
-                    # Tunnelling check: closest approach along this step's straight-line relative motion.
-                    if bb > 0.0:
-                        s_min = min(max((dx * bx + dy * by) / bb, 0.0), dt)  # seconds back from now
-                        mx = dx - bx * s_min
-                        my = dy - by * s_min
-                        if 0.0 < s_min < dt and mx * mx + my * my < dc * dc:
-                            n_tunnelled += 1
+                    if tunnelled(dx, dy, bx, by, dc, dt):
+                        n_tunnelled += 1
                     continue
                 dist = math.sqrt(dist2)
                 back = -1.0
-                if contact == 1 and bb > 0.0:
-                    # Rewind to the time of impact: |d - b s| = dc for the smallest s >= 0 going back.
-                    db = dx * bx + dy * by
-                    disc = db * db - bb * (dist2 - dc * dc)
-                    s_hit = (db + math.sqrt(max(disc, 0.0))) / bb
-                    if 0.0 <= s_hit <= dt:
-                        back = s_hit
+                if contact == 1:  # rewind to the time of impact
+                    back = rewind_time(dx, dy, bx, by, dc, dt)
                 if back >= 0.0:
                     for m in (i, j):
                         pos[m, 0] -= vel[m, 0] * back
@@ -268,8 +230,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                 dist = math.hypot(dx, dy)
                 nx = dx / dist if dist > 0.0 else 1.0
                 ny = dy / dist if dist > 0.0 else 0.0
-                speed = resolve_ball_ball_spin(vel, ang, i, j, nx, ny, mass[i], mass[j], radius[i], radius[j], e_b,
-                                               mu_b, floor, False)
+                speed = ball_hit(vel, ang, i, j, nx, ny, mass[i], mass[j], radius[i], radius[j], prm, floor, False)
                 merged = is_pressed_pair(vel, ang, i, j, dx, dy, radius[i], radius[j], f_slide, f_roll, f_spin,
                                          floor)
                 if merged:
@@ -283,7 +244,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                         moving[m] = True
                         code[m] = classify(vel[m, 0], vel[m, 1], ang[m, 0], ang[m, 1], ang[m, 2], radius[m])
                 if speed > 0.0:
-                    _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_COLLISION, i, j, speed)
+                    put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_COLLISION, i, j, speed)
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
@@ -305,19 +266,19 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                 code[i] = MS_POCKETED
                 pocket_of[i] = q
                 pocket_time[i] = t
-                _put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, q, speed)
+                put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, q, speed)
                 n_ev += 1
                 if record:
-                    n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang,
+                    n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang,
                                                               on_table, code, i)
 
         if record and t >= next_record - 1e-12:
-            n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table,
+            n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table,
                                                       code, -1)
             next_record += record_dt
 
     if record:
-        n_sc, sc_t, sc_ball, sc_state = _snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table, code,
+        n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table, code,
                                                   -1)
     return KernelResult(status, t, n_ev, pocket_of, pocket_time, ev_t[:n_ev], ev_int[:n_ev], ev_speed[:n_ev],
                         sc_t[:n_sc], sc_ball[:n_sc], sc_state[:n_sc], step, n_tunnelled)

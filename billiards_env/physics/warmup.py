@@ -18,9 +18,11 @@ def warm_up() -> float:
     start = time.perf_counter()
     plain = Balls.from_positions([[0.5, 0.5], [1.0, 0.5]]).strike(0, 0.0, 1.0)
     spin = Balls.from_positions([[0.5, 0.5], [1.0, 0.5]]).strike(0, 0.0, 1.0, side=0.2, top=-0.2)
+    preset = Physics.from_preset("pooltool")
+    squirted = Balls.from_positions([[0.5, 0.5], [1.0, 0.5]]).strike(0, 0.0, 1.0, side=0.2, top=-0.2, physics=preset)
     table = Table()
     for physics, balls in ((Physics(), plain), (Physics(friction="drag", drag_k=0.5, min_speed=0.01), plain),
-                           (Physics(friction="spin"), spin)):
+                           (Physics(friction="spin"), spin), (preset, squirted)):
         for solver, contact in (("exact", "lecture"), ("step", "lecture"), ("step", "rewind")):
             sim = Simulator(table, physics, solver=solver, contact=contact, dt=0.01, max_time=5.0)
             for record in (False, True):

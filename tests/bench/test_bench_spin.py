@@ -26,7 +26,8 @@ def test_speed_rows(doc):
     assert not doc["speed"]["pooltool"]["available"] and "pooltool" in doc["speed"]["pooltool"]["note"]
     for r in rows:
         assert r["ours_s"] > 0 and r["ours_novalidate_s"] > 0 and r["ours_events"] >= 1
-        assert r["ours_status"] == "rest" and "speedup" not in r
+        assert r["preset_s"] > 0 and r["preset_events"] >= 1
+        assert r["ours_status"] == "rest" and "speedup" not in r and "preset_speedup" not in r
     assert max(r["ours_events"] for r in rows) == next(r for r in rows if "break" in r["shot"])["ours_events"]
 
 
