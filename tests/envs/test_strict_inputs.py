@@ -21,7 +21,7 @@ def test_set_opponent_takes_a_name_and_refuses_nonsense_at_once():
     env, u = _nine_ball()
     u.set_opponent("search")
     assert u.task.opponent.name == "search"
-    with pytest.raises(ValueError, match="unknown player 'serch' for this game; use one of random, geometric"):
+    with pytest.raises(ValueError, match="unknown player 'serch' for nine_ball; use one of random, geometric"):
         u.set_opponent("serch")
     with pytest.raises(TypeError, match="expected a player"):
         u.set_opponent(42)
