@@ -1,0 +1,130 @@
+"""Before/after env rates: this tree's envs against another commit's, in interleaved rounds.
+
+    python -m benchmarks.env_ab --base 22b30d2            # the commit before the env-layer redesign
+    python -m benchmarks.env_ab --base main --seconds 1   # quicker
+
+The base commit is checked out (``git worktree add --detach``) into a temporary directory; each round runs one child
+process per tree (alternating which goes first) that times, for every id both trees have, ``env.step`` with random
+actions on the single env (seeded resets at episode ends), a seeded ``reset`` + ``step`` episode on the one-ball
+env, and the native vector env (256 tables) of the pot scenes. The table gives, per measurement, each tree's best
+rate over the rounds (the run least disturbed by other work on a shared machine) and their ratio (after / before).
+Not part of the default benchmark run.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+REPO = Path(__file__).resolve().parents[1]
+POT = ("BilliardsOneBall-v0", "BilliardsThreeBalls-v0", "BilliardsRack-v0")
+GAMES = ("Billiards9Ball-v0", "Billiards8Ball-v0")
+
+
+def _rate(fn: Any, seconds: float) -> float:
+    """Calls of ``fn`` per second over ``seconds`` (after one warm-up call); ``fn`` returns how many it counts."""
+    fn()
+    n, t0 = 0, time.perf_counter()
+    while time.perf_counter() - t0 < seconds:
+        n += fn()
+    return n / (time.perf_counter() - t0)
+
+
+def child(seconds: float) -> dict[str, float]:
+    """The measurements of the tree this process imports (printed as JSON by ``--child``)."""
+    import gymnasium as gym
+    import numpy as np
+
+    import billiards_env  # noqa: F401
+
+    out: dict[str, float] = {}
+    rng = np.random.default_rng(0)
+    for env_id in POT + GAMES:
+        env = gym.make(env_id)
+        env.reset(seed=0)
+        seed = [1]
+
+        def step() -> int:
+            *_, term, trunc, _ = env.step(rng.uniform(-1, 1, env.action_space.shape).astype(np.float32))
+            if term or trunc:
+                env.reset(seed=seed[0])
+                seed[0] += 1
+            return 1
+
+        out[f"step {env_id}"] = _rate(step, seconds)
+        env.close()
+    env = gym.make("BilliardsOneBall-v0")
+    acts = rng.uniform(-1, 1, (1024, 2)).astype(np.float32)
+    k = [0]
+
+    def episode() -> int:
+        env.reset(seed=k[0])
+        env.step(acts[k[0] % 1024])
+        k[0] += 1
+        return 1
+
+    out["episode BilliardsOneBall-v0 (seeded reset + step)"] = _rate(episode, seconds)
+    for env_id in POT:
+        vec = gym.make_vec(env_id, 256, vectorization_mode="vector_entry_point", threads=1)
+        vec.reset(seed=0)
+        acts_v = rng.uniform(-1, 1, (256,) + vec.single_action_space.shape).astype(np.float32)
+
+        def vstep() -> int:
+            vec.step(acts_v)
+            return 256
+
+        out[f"vector 256 {env_id} (1 thread)"] = _rate(vstep, seconds)
+        vec.close()
+    return out
+
+
+def _run(tree: Path, seconds: float) -> dict[str, float]:
+    env = {**os.environ, "PYTHONPATH": str(tree), "SDL_VIDEODRIVER": "dummy"}
+    res = subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {str(tree)!r}); "
+                          f"from benchmarks.env_ab import child; import json; print(json.dumps(child({seconds})))"],
+                         cwd=str(tree), env=env, capture_output=True, text=True, check=True)
+    return json.loads(res.stdout.strip().splitlines()[-1])
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(prog="python -m benchmarks.env_ab", description=__doc__.split("\n")[0])
+    p.add_argument("--base", default="HEAD", help="the commit to compare with (default HEAD)")
+    p.add_argument("--rounds", type=int, default=3)
+    p.add_argument("--seconds", type=float, default=2.0, help="timing per measurement and round")
+    args = p.parse_args(argv)
+    with tempfile.TemporaryDirectory() as tmp:
+        base = Path(tmp) / "base"
+        subprocess.run(["git", "-C", str(REPO), "worktree", "add", "--detach", "-q", str(base), args.base], check=True)
+        (base / "benchmarks" / "env_ab.py").write_text(Path(__file__).read_text())  # the same timing code
+        try:
+            print(f"[env_ab] warming up the base tree {args.base} (its kernels compile once)", file=sys.stderr)
+            subprocess.run([sys.executable, "-m", "billiards_env.warmup"], cwd=str(base), check=True,
+                           env={**os.environ, "PYTHONPATH": str(base)}, capture_output=True)
+            best: dict[str, dict[str, float]] = {"before": {}, "after": {}}
+            for r in range(args.rounds):
+                order = [("before", base), ("after", REPO)] if r % 2 == 0 else [("after", REPO), ("before", base)]
+                for name, tree in order:
+                    got = _run(tree, args.seconds)
+                    for key, rate in got.items():
+                        best[name][key] = max(best[name].get(key, 0.0), rate)
+                print(f"[env_ab] round {r + 1}/{args.rounds} done", file=sys.stderr)
+        finally:
+            subprocess.run(["git", "-C", str(REPO), "worktree", "remove", "--force", str(base)], check=False)
+    print(f"env rates, best of {args.rounds} interleaved rounds of {args.seconds:g} s (base {args.base}):\n")
+    print("| measurement | before (/s) | after (/s) | after / before |")
+    print("|---|---:|---:|---:|")
+    for key in best["after"]:
+        if key in best["before"]:
+            b, a = best["before"][key], best["after"][key]
+            print(f"| {key} | {b:,.0f} | {a:,.0f} | {a / b:.2f} |")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
