@@ -469,8 +469,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         if self._renderer is None:
             from billiards_env.render import TableRenderer
 
+            game = self.state.game
             self._renderer = TableRenderer(self.table, self.config.ball_radius, width_px=self.config.render_width,
-                                           hud=self.task.hud() is not None)
+                                           hud=self.task.hud() is not None,
+                                           markings=game.markings() if game is not None else None)
         return self._renderer
 
     def _cue_overlay(self) -> tuple[float, float, float] | None:

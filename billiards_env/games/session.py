@@ -205,6 +205,11 @@ class GameSession(ABC):
         now and what the call said."""
         return {}
 
+    def markings(self) -> dict[str, Any] | None:
+        """Lines the table carries for this game, as plain data in metres (``lines``, ``arcs``: see
+        :class:`billiards_env.render.TableRenderer`); None: none."""
+        return None
+
     @abstractmethod
     def hud(self, names: tuple[str, str]) -> dict[str, Any]:
         """The HUD of the game now (keys: :mod:`billiards_env.render.hud`)."""

@@ -184,6 +184,12 @@ class SnookerSession(GameSession):
                 "score": tuple(int(x) for x in s.score), "on": s.on, "break": int(s.break_points),
                 "ball_in_hand": s.ball_in_hand if not s.frame_over else False}
 
+    def markings(self) -> dict[str, Any]:
+        """The baulk line and the D."""
+        cx, cy, r = d_geometry(self.table.table)
+        return {"lines": [((cx, 0.0), (cx, self.table.table.width))],
+                "arcs": [(cx, cy, r, 0.5 * np.pi, 1.5 * np.pi)]}
+
     def hud(self, names: tuple[str, str]) -> dict[str, Any]:
         """The HUD: the common keys, each player's points, the ball on and the break, the D when in hand, the colour
         on ringed."""

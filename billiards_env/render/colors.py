@@ -54,6 +54,7 @@ DIAMOND: RGB = (232, 226, 206)  #: mother-of-pearl sights on the rails
 TRAY: RGB = (34, 24, 18)  #: strip below the table that holds pocketed balls
 BACKGROUND: RGB = (22, 22, 24)  #: around the table
 AIM_LINE: RGB = (236, 240, 232)  #: the aim line from the cue ball (drawn semi-transparent)
+MARKING: RGB = (210, 226, 214)  #: chalk lines on the cloth (snooker's baulk line and D)
 
 
 def is_stripe(number: int) -> bool:

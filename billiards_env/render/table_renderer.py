@@ -82,7 +82,7 @@ class TableRenderer:
 
     def __init__(
         self, table: "Table", ball_radius: float | np.ndarray, width_px: int = 800, tray: bool = True,
-        hud: bool = False,
+        hud: bool = False, markings: dict[str, Any] | None = None,
     ) -> None:
         if int(width_px) < 64:
             raise ValueError(f"width_px must be at least 64, got {width_px!r}")
@@ -109,6 +109,9 @@ class TableRenderer:
         self._panel_cache: tuple[str, pygame.Surface] | None = None
         self._shadows: dict[int, tuple[pygame.Surface, int]] = {}
         self._overlay: pygame.Surface | None = None
+        #: Lines drawn on the cloth, as plain data in metres: ``{"lines": [((x0, y0), (x1, y1)), ...], "arcs":
+        #: [(cx, cy, r, start_rad, end_rad), ...]}`` (a snooker table's baulk line and D).
+        self.markings = dict(markings or {})
         self._background = self._paint_background()
 
     # --- coordinates ------------------------------------------------------------------------------------
@@ -411,12 +414,26 @@ class TableRenderer:
         pygame.surfarray.blit_array(surface, np.clip(np.rint(image), 0, 255).astype(np.uint8).transpose(1, 0, 2))
         self._paint_pocket_liners(surface)
         self._paint_cloth(surface)
+        self._paint_markings(surface)
         self._paint_cushions(surface)
         self._paint_pockets(surface)
         self._paint_sights(surface)
         if self.tray_height_px:
             self._paint_tray(surface)
         return surface
+
+    def _paint_markings(self, surface: pygame.Surface) -> None:
+        """The chalk lines of :attr:`markings` on the cloth."""
+        colour = C.MARKING
+        width = max(1, int(round(0.0025 * self.pixels_per_metre)))
+        for a, b in self.markings.get("lines", ()):
+            p = self.to_pixels_float(np.array([a, b], dtype=float))
+            pygame.draw.line(surface, colour, p[0], p[1], width)
+        for cx, cy, r, a0, a1 in self.markings.get("arcs", ()):
+            n = 48
+            t = np.linspace(a0, a1, n)
+            pts = self.to_pixels_float(np.column_stack([cx + r * np.cos(t), cy + r * np.sin(t)]))
+            pygame.draw.lines(surface, colour, False, [tuple(q) for q in pts], width)
 
     def _paint_rails(self, image: np.ndarray) -> None:
         """Wooden rails with grain along each rail, mitred corners, rounded outer corners and a soft bevel.
