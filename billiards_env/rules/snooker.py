@@ -40,6 +40,7 @@ from numba import njit
 
 from ..physics.codes import EV_COLLISION, EV_POCKET
 from ..physics.layout import SNOOKER_COLOURS
+from ..physics.outcome import first_contact_row
 from .errors import RulesError
 
 SNOOKER = "snooker"
@@ -226,20 +227,6 @@ def judge_batch(first_row, pocket, values, cue, on, nominated, free_ball, reds, 
         out_i[7, k] = ca
         frame_end[k] = end
     return (out_i[0], out_i[1], out_i[2], out_i[3], out_i[4], out_i[5], out_i[6], out_i[7], frame_end)
-
-
-@njit(cache=True)
-def _first_contact(events, cue):
-    """Row of the first ball the cue ball collided with in an ``(M, 3)`` event array, -1 if none."""
-    for k in range(events.shape[0]):
-        if events[k, 0] == EV_COLLISION:
-            b = events[k, 1]
-            o = events[k, 2]
-            if b == cue:
-                return o
-            if o == cue:
-                return b
-    return -1
 
 
 # --- the referee's look at the table ---------------------------------------------------------------------------------
@@ -522,7 +509,7 @@ def summarize_snooker(events: np.ndarray, pocket: np.ndarray, values: np.ndarray
     if len(cues) != 1:
         raise RulesError("values: exactly one row must be the cue ball (value 0)")
     cue = int(cues[0])
-    f = int(_first_contact(ev, cue))
+    f = int(first_contact_row(ev, cue))
     down = [int(b) for b in np.flatnonzero(pk >= 0)]
     order = {int(b): k for k, b in enumerate(ev[ev[:, 0] == EV_POCKET, 1].tolist())}  # pocket events in time order
     down.sort(key=lambda b: order.get(b, len(order) + b))
