@@ -18,7 +18,8 @@ A shot is a row of :data:`N_COLS` floats (columns ``COL_*``), ranked easiest fir
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+import weakref
+from typing import Any, NamedTuple
 
 import numpy as np
 from numba import njit
@@ -85,6 +86,18 @@ def table_model(table, physics) -> TableModel:
     # Copies: writeable arrays (the table's are read-only), so every caller hits the same compiled signature.
     return TableModel(np.array(table.pocket_xy, dtype=np.float64), np.array(table.pocket_radius, dtype=np.float64),
                       params)
+
+
+_MODELS: "weakref.WeakKeyDictionary[Any, tuple[Any, Any, TableModel]]" = weakref.WeakKeyDictionary()
+
+
+def state_model(state: Any) -> TableModel:
+    """The :class:`TableModel` of a table state (``state.table``, ``state.physics``), made once per state and kept
+    while its table and physics stay the same objects: a decision on a table pays no conversion."""
+    got = _MODELS.get(state)
+    if got is None or got[0] is not state.table or got[1] is not state.physics:
+        got = _MODELS[state] = (state.table, state.physics, table_model(state.table, state.physics))
+    return got[2]
 
 
 @njit(cache=True)
@@ -804,7 +817,7 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
     return Decision((float(px), float(py)) if placed else None, float(angle), float(speed), pocket, int(k), rows)
 
 
-__all__ = ["Model", "TableModel", "table_model", "model", "windows_of", "target_windows", "shot_row", "rank_rows",
+__all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "target_windows", "shot_row", "rank_rows",
            "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "pot_chance",
            "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",
