@@ -31,12 +31,16 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+from numba import njit
 
 from billiards_env.physics.aim import ghost_ball_position
 from billiards_env.physics.batch import run_shots
-from billiards_env.players.geometry import COL_CLEAR, COL_CLEAR_OBJ, state_model
+from billiards_env.players.geometry import (COL_ANGLE, COL_CLEAR, COL_CLEAR_OBJ, COL_D_CUE, COL_D_OBJ, COL_OBJ_ANGLE,
+                                            COL_POCKET, COL_REACH, COL_RISK, COL_SPEED, COL_TARGET, COL_TOL, N_COLS,
+                                            state_model)
 from billiards_env.players.shots import ShotCandidate, candidate_of
-from billiards_env.players.slots import in_hand_slots, kick_candidates, shot_slots
+from billiards_env.players.slots import (HAND_CLEAR, HAND_D_OBJ, HAND_HALF, HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET,
+                                         in_hand_slots, kick_candidates, shot_slots)
 from billiards_env.players.slots import next_shot_ease as _next_shot_ease
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -78,17 +82,36 @@ class Slot:
         return ghost_ball_position(pos[self.target], self.obj_angle, contact)
 
 
-@dataclass(frozen=True)
 class Slots:
     """The candidate list of one table state: the pots ``slots`` (best first, at most ``n - 1``), the ``kick``,
     whether the cue ball is in hand (``in_hand``), whether the shot is a break (``break_shot``), and the legal balls
-    (rows, ``targets``)."""
+    (rows, ``targets``). ``rows``: the pots as the compiled lists' rows (shot rows of
+    :mod:`billiards_env.players.geometry`, or with the cue ball in hand the ``HAND_*`` rows of
+    :mod:`billiards_env.players.slots`), from which the observation is made; the :class:`Slot` objects are made from
+    them on first use."""
 
-    slots: tuple[Slot, ...]
-    in_hand: bool
-    break_shot: bool
-    targets: tuple[int, ...]
-    kick: Slot | None = None  #: the kick slot (the last of ``n``), if there is a kick
+    __slots__ = ("in_hand", "break_shot", "targets", "kick", "rows", "_slots")
+
+    def __init__(self, slots: tuple[Slot, ...] | None, in_hand: bool, break_shot: bool, targets: tuple[int, ...],
+                 kick: Slot | None = None, rows: np.ndarray | None = None) -> None:
+        self._slots = None if slots is None else tuple(slots)
+        self.in_hand = in_hand
+        self.break_shot = break_shot
+        self.targets = targets
+        self.kick = kick  #: the kick slot (the last of ``n``), if there is a kick
+        self.rows = rows
+
+    @property
+    def slots(self) -> tuple[Slot, ...]:
+        if self._slots is None:
+            rows = self.rows if self.rows is not None else np.zeros((0, N_COLS))
+            self._slots = tuple(_hand_slot(r) for r in rows.tolist()) if self.in_hand else \
+                tuple(_pot_slot(r) for r in rows)
+        return self._slots
+
+    def __repr__(self) -> str:
+        return (f"Slots(slots={self.slots!r}, in_hand={self.in_hand}, break_shot={self.break_shot}, "
+                f"targets={self.targets}, kick={self.kick!r})")
 
 
 def _targets(state: "TableState") -> np.ndarray:
@@ -116,20 +139,23 @@ def candidate_slots(state: "TableState", n: int, speed_range: tuple[float, float
         return cached
     kick: Slot | None = None
     keep = max(n - 1, 1)
-    if brk:
-        slots: tuple[Slot, ...] = ()
-    elif area is not None:
-        rows = in_hand_slots(b.pos, b.on_table, b.radius, _targets(state), *state_model(state))
-        slots = tuple(Slot(int(r[0]), int(r[1]), r[2], r[3], r[4], r[5] != 0.0) for r in rows[:keep].tolist())
-    else:
+    rows = None
+    if area is not None and not brk:
+        rows = in_hand_slots(b.pos, b.on_table, b.radius, _targets(state), *state_model(state))[:keep]
+    elif not brk:
         lo, hi = float(speed_range[0]), float(speed_range[1])
         rows = shot_slots(b.pos, b.on_table, b.radius, b.mass, _targets(state), *state_model(state), lo, hi)[:keep]
-        slots = tuple(_pot_slot(r) for r in rows)
         if n > 1 and not rows[:, COL_CLEAR].any():
             kick = _kick_slot(state, lo, hi)
-    out = Slots(slots, area is not None, brk, targets, kick)
+    out = Slots(() if brk else None, area is not None, brk, targets, kick, rows)
     view.memo[key] = out
     return out
+
+
+def _hand_slot(r: list[float]) -> Slot:
+    """The slot of an in-hand row of :func:`billiards_env.players.slots.in_hand_slots` (as a list)."""
+    return Slot(int(r[HAND_TARGET]), int(r[HAND_POCKET]), r[HAND_OBJ_ANGLE], r[HAND_HALF], r[HAND_D_OBJ],
+                r[HAND_CLEAR] != 0.0)
 
 
 def _pot_slot(row: np.ndarray) -> Slot:
@@ -173,5 +199,89 @@ def next_shot_ease(state: "TableState", n: int) -> float:
                                  float(lo), float(hi), max(state.settings.angle_noise, EASE_SPREAD)))
 
 
-__all__ = ["Slot", "Slots", "candidate_slots", "next_shot_ease", "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL",
+# --- the ``candidates`` observation's values ------------------------------------------------------------------------
+
+#: Values per slot of the ``candidates`` observation.
+SLOT_FEATURES = 12
+#: Tolerance (rad of cue angle) that reads 1 in the ``candidates`` observation (an easy shot).
+EASY_TOLERANCE = 0.02
+
+
+def slot_features(state: "TableState", cands: Slots, n_slots: int, speed_max: float) -> np.ndarray:
+    """The ``candidates`` observation's slot values of ``cands`` (``n_slots`` slots of :data:`SLOT_FEATURES` values,
+    float32, in [-1, 1]; see :class:`billiards_env.envs.observations.CandidateFeatures`), in one compiled call on the
+    slots' rows."""
+    rows = cands.rows if cands.rows is not None else _NO_ROWS
+    k = cands.kick
+    kick = (k.target, k.shot.d_cue, k.shot.speed) if k is not None else (-1, 0.0, 0.0)
+    tm = state_model(state)
+    return _slot_features(rows, cands.in_hand, kick[0], kick[1], kick[2], _numbers(state), tm.pocket_xy,
+                          float(tm.params[0]), float(tm.params[1]), float(speed_max), int(n_slots))
+
+
+_NO_ROWS = np.zeros((0, N_COLS))
+
+
+def _numbers(state: "TableState") -> np.ndarray:
+    memo = state.view.memo
+    got = memo.get("numbers_array")
+    if got is None:
+        got = memo["numbers_array"] = np.asarray(state.numbers, dtype=np.int64)
+    return got
+
+
+@njit(cache=True)
+def _wrap(angle: float) -> float:
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+@njit(cache=True)
+def _slot_features(rows: np.ndarray, in_hand: bool, kick_target: int, kick_length: float, kick_speed: float,
+                   numbers: np.ndarray, pocket_xy: np.ndarray, length: float, width: float, speed_max: float,
+                   n_slots: int) -> np.ndarray:
+    """:func:`slot_features` on arrays: ``rows`` the pots (shot rows, or ``HAND_*`` rows with ``in_hand``), the
+    kick's target (-1: none), path length and speed."""
+    out = np.zeros((n_slots, SLOT_FEATURES), np.float32)
+    if kick_target >= 0:
+        row = out[n_slots - 1]
+        row[0] = 1.0
+        row[1] = numbers[kick_target] / 15.0
+        row[2] = -1.0
+        row[3] = -1.0  # no pocket
+        row[5] = min(kick_length / length, 1.0)
+        row[8] = 1.0
+        row[9] = 1.0
+        row[11] = kick_speed / speed_max
+    for k in range(rows.shape[0]):
+        r = rows[k]
+        row = out[k]
+        row[0] = 1.0
+        if in_hand:
+            p = int(r[HAND_POCKET])
+            row[1] = numbers[int(r[HAND_TARGET])] / 15.0
+            row[2] = pocket_xy[p, 0] / length
+            row[3] = pocket_xy[p, 1] / width
+            row[6] = min(r[HAND_D_OBJ] / length, 1.0)
+            row[7] = min(r[HAND_HALF] / (math.pi / 8.0), 1.0)
+            row[8] = 1.0 if r[HAND_CLEAR] != 0.0 else 0.0
+            continue
+        p = int(r[COL_POCKET])
+        row[1] = numbers[int(r[COL_TARGET])] / 15.0
+        row[2] = pocket_xy[p, 0] / length
+        row[3] = pocket_xy[p, 1] / width
+        row[6] = min(r[COL_D_OBJ] / length, 1.0)
+        row[4] = _wrap(r[COL_OBJ_ANGLE] - r[COL_ANGLE]) / (math.pi / 2.0)
+        row[5] = min(r[COL_D_CUE] / length, 1.0)
+        row[7] = min(r[COL_TOL] / EASY_TOLERANCE, 1.0)
+        row[8] = 1.0 if r[COL_CLEAR] != 0.0 else 0.0
+        row[9] = 1.0 if r[COL_REACH] != 0.0 else 0.0
+        row[10] = 1.0 if r[COL_RISK] != 0.0 else 0.0
+        row[11] = r[COL_SPEED] / speed_max
+    flat = out.reshape(-1)
+    for i in range(flat.shape[0]):
+        flat[i] = min(max(flat[i], np.float32(-1.0)), np.float32(1.0))
+    return flat
+
+
+__all__ = ["Slot", "Slots", "candidate_slots", "next_shot_ease", "slot_features", "SLOT_FEATURES", "EASY_TOLERANCE", "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL",
            "KICK_MARGIN", "KICK_FAN"]
