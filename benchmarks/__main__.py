@@ -1,4 +1,5 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players] [--write | --out DIR]``,
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|games]
+[--write | --out DIR]``,
 from the repository root.
 
 It prints what it measured and nothing else; reports are written only when asked: ``--write`` updates the
@@ -9,7 +10,9 @@ Without ``--only`` every part runs: the accuracy suite (speed against error, ``s
 then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``), then the
 spin model's speed (against pooltool) and speed against error (``spin.md/.json``), then the batch API, the native
 vector env, the search player, the single env and the first call against the targets of issue 12
-(``batch.md/.json``).
+(``batch.md/.json``), then the players' decisions (``players.md/.json``) and the games at engine speed: shots per
+second with and without the opponent, the decisions, the native vector env, the 9-ball training job's envs before
+and after (``games.md/.json``).
 ``--quick`` runs a small configuration of everything (about a minute); the full run takes about four minutes on
 two cores. ``--only env`` also prints a table of ``env.step`` throughput per id (``--env-seconds``,
 ``--env-ids``, ``--env-compare``).
@@ -20,7 +23,7 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players", "games")
 #: Where ``--write`` puts the reports (the committed ones).
 DEFAULT_OUT = Path("docs/bench")
 
@@ -59,7 +62,7 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, batch, players, speed, spin
+    from . import accuracy, batch, games, players, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -78,6 +81,8 @@ def main(argv: list[str] | None = None) -> int:
             batch.render(out)
         if (out / "players.json").exists():
             players.render(out)
+        if (out / "games.json").exists():
+            games.render(out)
         log(f"[bench] re-rendered the reports in {out}")
         return 0
     acc = accuracy.main(out, quick=args.quick) if "accuracy" in only else None
@@ -95,6 +100,8 @@ def main(argv: list[str] | None = None) -> int:
                    allow_setup=not args.no_pooltool_setup)
     if "players" in only:
         players.main(out, quick=args.quick)
+    if "games" in only:
+        games.main(out, quick=args.quick)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; "
         + (f"reports in {out}" if out is not None else "no report written (--write or --out DIR to write them)"))
     return 0
