@@ -228,11 +228,6 @@ def place_random(rng: np.random.Generator, pos: np.ndarray, rows: Sequence[int],
 
 
 # --- re-spotting and ball in hand ----------------------------------------------------------------------------------
-def _others(pos: np.ndarray, on_table: np.ndarray, row: int) -> list[tuple[float, float]]:
-    return [(float(x), float(y)) for k, ((x, y), on) in enumerate(zip(pos.tolist(), on_table.tolist()))
-            if on and k != row]
-
-
 @njit(cache=True)
 def spot_cue_row(pos, on_table, radius, row, hx, hy, width):
     """The compiled core of :func:`spot_cue_ball` (also run by the native vector env): ball ``row`` on the point
@@ -270,24 +265,39 @@ def spot_cue_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: T
         raise SceneError("could not re-spot the cue ball: the head of the table is full")  # pragma: no cover
 
 
-def spot_object_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int) -> None:
-    """Re-spot ball ``row`` (rules: a ball pocketed on a foul): on the foot spot, or if that is taken on the long
-    string as close to it as possible behind it (towards the foot cushion), else in front of it. Sets
-    ``pos[row]`` and ``on_table[row]``."""
-    others = _others(pos, on_table, row)
+@njit(cache=True)
+def spot_object_row(pos, on_table, radius, row, fx, fy, length):
+    """The compiled core of :func:`spot_object_ball` (also run by the native vector env): ball ``row`` on the point
+    ``(fx, fy)`` (the foot spot) or the nearest free point of the line ``y = fy`` behind it (towards ``x =
+    length``, in steps of an eighth of a radius), else in front of it. Returns False if none is free."""
+    n = pos.shape[0]
     need2 = (2.0 * radius + 1e-6) ** 2
-    fx, fy = foot_spot(table)
     step = radius / 8.0
-    n_back = int((table.length - radius - fx) / step)
+    n_back = int((length - radius - fx) / step)
     n_front = int((fx - radius) / step)
-    candidates = [fx + k * step for k in range(n_back + 1)] + [fx - k * step for k in range(1, n_front + 1)]
-    for x in candidates:
-        if all((x - qx) * (x - qx) + (fy - qy) * (fy - qy) >= need2 for qx, qy in others):
+    for c in range(n_back + 1 + n_front):
+        x = fx + c * step if c <= n_back else fx - (c - n_back) * step
+        free = True
+        for q in range(n):
+            if q != row and on_table[q] and (x - pos[q, 0]) * (x - pos[q, 0]) + (fy - pos[q, 1]) * (
+                    fy - pos[q, 1]) < need2:
+                free = False
+                break
+        if free:
             pos[row, 0] = x
             pos[row, 1] = fy
             on_table[row] = True
-            return
-    raise SceneError("could not re-spot a ball: the long string is full")  # pragma: no cover
+            return True
+    return False
+
+
+def spot_object_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int) -> None:
+    """Re-spot ball ``row`` (rules: a ball pocketed on a foul): on the foot spot, or if that is taken on the long
+    string as close to it as possible behind it (towards the foot cushion), else in front of it
+    (:func:`spot_object_row`). Sets ``pos[row]`` and ``on_table[row]``."""
+    fx, fy = foot_spot(table)
+    if not spot_object_row(pos, on_table, float(radius), int(row), float(fx), float(fy), float(table.length)):
+        raise SceneError("could not re-spot a ball: the long string is full")  # pragma: no cover
 
 
 @njit(cache=True)
@@ -465,10 +475,9 @@ def nearest_free_point(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
     rad = radius if isinstance(radius, np.ndarray) and radius.dtype == np.float64 and radius.shape == (n,) else \
         np.ascontiguousarray(np.broadcast_to(np.asarray(radius, dtype=np.float64), (n,)))
     hole_rows = _NO_HOLES if holes is None else np.ascontiguousarray(holes, dtype=np.float64).reshape(-1, 3)
-    px, py, ok = _nearest_free_point(float(x), float(y), np.ascontiguousarray(pos, dtype=np.float64),
-                                     np.ascontiguousarray(on_table, dtype=np.bool_), np.ascontiguousarray(rad),
-                                     int(row), float(x0), float(x1), float(y0), float(y1), float(clearance),
-                                     hole_rows)
+    px, py, ok = nearest_free_xy(float(x), float(y), np.ascontiguousarray(pos, dtype=np.float64),
+                                 np.ascontiguousarray(on_table, dtype=np.bool_), np.ascontiguousarray(rad), int(row),
+                                 float(x0), float(x1), float(y0), float(y1), float(clearance), hole_rows)
     if not ok:
         raise SceneError(f"no legal point for ball row {row} in the area {area}: it is covered by other balls")
     return px, py
@@ -478,9 +487,9 @@ _NO_HOLES = np.zeros((0, 3))
 
 
 @njit(cache=True)
-def _nearest_free_point(x: float, y: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, row: int,
-                        x0: float, x1: float, y0: float, y1: float, clearance: float, holes: np.ndarray) -> tuple:
-    """:func:`nearest_free_point` in one compiled call: ``(x, y, found)``."""
+def nearest_free_xy(x: float, y: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, row: int, x0: float,
+                    x1: float, y0: float, y1: float, clearance: float, holes: np.ndarray) -> tuple:
+    """:func:`nearest_free_point` on arrays (for compiled callers): ``(x, y, found)``."""
     return nearest_free(min(max(x, x0), x1), min(max(y, y0), y1), free_discs(pos, on, radius, row, holes, clearance),
                         x0, x1, y0, y1)
 
@@ -736,6 +745,6 @@ __all__ = [
     "RACK_ORDER", "DIAMOND_ORDER", "head_string_x", "head_spot", "foot_spot", "rack_rows", "triangle_positions",
     "diamond_positions", "rack_balls", "rack_fits", "place_random", "place_random_rows", "place_rows", "place_row",
     "spot_cue_ball",
-    "spot_cue_row", "spot_object_ball",
-    "nearest_free_point", "nearest_free", "free_discs", "py_hypot",
+    "spot_cue_row", "spot_object_ball", "spot_object_row",
+    "nearest_free_point", "nearest_free", "nearest_free_xy", "free_discs", "py_hypot",
 ]

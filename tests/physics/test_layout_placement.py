@@ -165,3 +165,47 @@ def test_a_covered_or_empty_area_is_refused():
         nearest_free_point(0.5, 0.5, pos, np.ones(2, bool), R, 0, (0.5, 0.5, 0.5, 0.5))
     with pytest.raises(SceneError, match="empty"):
         nearest_free_point(0.5, 0.5, pos, np.ones(2, bool), R, 0, (0.6, 0.5, 0.5, 0.5))
+
+
+def python_spot_object_ball(pos, on_table, radius, table, row):
+    """``spot_object_ball`` as it was in Python (before issue 21), verbatim but for the helper inlined."""
+    from billiards_env.physics.layout import foot_spot
+
+    others = [(float(x), float(y)) for k, ((x, y), on) in enumerate(zip(pos.tolist(), on_table.tolist()))
+              if on and k != row]
+    need2 = (2.0 * radius + 1e-6) ** 2
+    fx, fy = foot_spot(table)
+    step = radius / 8.0
+    n_back = int((table.length - radius - fx) / step)
+    n_front = int((fx - radius) / step)
+    candidates = [fx + k * step for k in range(n_back + 1)] + [fx - k * step for k in range(1, n_front + 1)]
+    for x in candidates:
+        if all((x - qx) * (x - qx) + (fy - qy) * (fy - qy) >= need2 for qx, qy in others):
+            pos[row, 0] = x
+            pos[row, 1] = fy
+            on_table[row] = True
+            return
+    raise SceneError("could not re-spot a ball: the long string is full")
+
+
+def test_spot_object_ball_equals_the_python_it_replaced():
+    from billiards_env.physics.layout import foot_spot, spot_object_ball
+
+    rng = np.random.default_rng(2)
+    table = Table()
+    fx, fy = foot_spot(table)
+    moved = 0
+    for k in range(300):
+        pos = _random_layout(rng, 10, table)
+        # Crowd the long string around the foot spot: the spot is often taken.
+        for i in range(1, 1 + int(rng.integers(0, 5))):
+            pos[i] = (fx + rng.normal(0, 4 * R), fy + rng.normal(0, R))
+        on = rng.random(len(pos)) < 0.85
+        row = int(rng.integers(1, len(pos)))
+        on[row] = False
+        a_pos, a_on, b_pos, b_on = pos.copy(), on.copy(), pos.copy(), on.copy()
+        spot_object_ball(a_pos, a_on, R, table, row)
+        python_spot_object_ball(b_pos, b_on, R, table, row)
+        assert np.array_equal(a_pos, b_pos) and np.array_equal(a_on, b_on) and a_on[row]
+        moved += a_pos[row, 0] != fx
+    assert moved >= 20
