@@ -49,7 +49,7 @@ def clear_stale_cache() -> bool:
 def warm_up() -> float:
     """Physics kernels, the players' kernels (:func:`billiards_env.players.warmup.warm_up`), the placement of a ball
     in hand, then one reset and step of each registered env (and of a game with the ``candidates`` types) and of the
-    native vector env's paths; returns the seconds it took."""
+    native vector env's paths (the pot scenes' and the games'); returns the seconds it took."""
     start = time.perf_counter()
     clear_stale_cache()
     warm_up_physics()
@@ -78,6 +78,12 @@ def warm_up() -> float:
     for kwargs in ({"threads": 1}, {"threads": 2, "angle_noise": 0.01},
                    {"threads": 1, "physics": {"friction": "spin"}, "spin_action": True}):
         env = gym.make_vec("BilliardsThreeBalls-v0", 2, **kwargs)
+        env.reset(seed=0)
+        env.step(env.action_space.sample())
+        env.close()
+    # The games' tables (9-ball and 8-ball in compiled code), serial and parallel.
+    for threads in (1, 2):
+        env = gym.make_vec("Billiards9Ball-v0", 2, threads=threads)
         env.reset(seed=0)
         env.step(env.action_space.sample())
         env.close()

@@ -367,6 +367,40 @@ class GameTables:
         return float(self.reward[k]), bool(self.tout[k, gk.T_TERMINATED]), bool(self.tout[k, gk.T_TRUNCATED])
 
 
+def stack_infos(n: int, entries: list[tuple[int, dict[str, Any]]]) -> dict[str, Any]:
+    """The vector info of ``n`` sub-envs from their info dicts, ``entries`` ``(sub-env, info)`` in the order
+    Gymnasium's ``VectorEnv._add_info`` would take them (``final_obs`` and nested dicts included): the same arrays,
+    dtypes (each key's from its first value), masks and key order, built a key at a time."""
+    first: dict[str, Any] = {}
+    for _, info in entries:
+        for key, value in info.items():
+            if key not in first:
+                first[key] = value
+    out: dict[str, Any] = {}
+    for key, value in first.items():
+        rows = [(k, info[key]) for k, info in entries if key in info]
+        if key == "final_obs":
+            array: Any = np.full(n, None, dtype=object)
+            for k, v in rows:
+                array[k] = v
+        elif isinstance(value, dict):
+            array = stack_infos(n, rows)
+        else:
+            if type(value) in (int, float, bool) or issubclass(type(value), np.number):
+                array = np.zeros(n, dtype=type(value))
+            elif isinstance(value, np.ndarray):
+                array = np.zeros((n, *value.shape), dtype=value.dtype)
+            else:
+                array = np.full(n, None, dtype=object)
+            for k, v in rows:
+                array[k] = v
+        mask = np.zeros(n, dtype=np.bool_)
+        for k, _ in rows:
+            mask[k] = True
+        out[key], out[f"_{key}"] = array, mask
+    return out
+
+
 class _Played:
     """The shot as played, as ``shot_info`` reads it."""
 
@@ -391,4 +425,4 @@ class _TableGame:
         return out
 
 
-__all__ = ["GameTables", "native_games"]
+__all__ = ["GameTables", "native_games", "stack_infos"]

@@ -48,7 +48,7 @@ from billiards_env.table_state import TableState
 
 from ._pot_fast import compiled_action
 from ._seeding import np_random
-from ._vector_games import GameTables, native_games
+from ._vector_games import GameTables, native_games, stack_infos
 from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP,
                               I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
                               draw_noise, finish_shots, observe_positions, pack_config, place_tables, pot_step,
@@ -203,8 +203,7 @@ class BilliardsVectorEnv(VectorEnv):
         self._ever_reset = True
         infos: dict[str, Any] = {}
         if self.games is not None:  # the games' reset info, stacked as SyncVectorEnv stacks it
-            for k in rows.tolist():
-                infos = self._add_info(infos, self.games.reset_info(k), k)
+            infos = stack_infos(n, [(k, self.games.reset_info(k)) for k in rows.tolist()])
         return self._obs.copy(), infos
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
@@ -441,7 +440,7 @@ class BilliardsVectorEnv(VectorEnv):
         for k in stepped.tolist():
             reward[k], term[k], trunc[k] = g.outcome(k)
         done = term | trunc
-        infos: dict[str, Any] = {}
+        entries: list[tuple[int, dict[str, Any]]] = []
         if mode == AutoresetMode.SAME_STEP:
             step_infos = {k: g.step_info(k) for k in stepped.tolist()}
             ended = np.flatnonzero(done)
@@ -452,15 +451,14 @@ class BilliardsVectorEnv(VectorEnv):
             for k in range(n):
                 info = step_infos[k]
                 if done[k]:
-                    infos = self._add_info(infos, {"final_obs": final_obs[k], "final_info": info}, k)
+                    entries.append((k, {"final_obs": final_obs[k], "final_info": info}))
                     info = g.reset_info(k)
-                infos = self._add_info(infos, info, k)
+                entries.append((k, info))
             self._needs_reset[:] = False
         else:
-            for k in range(n):
-                infos = self._add_info(infos, g.reset_info(k) if resetting[k] else g.step_info(k), k)
+            entries = [(k, g.reset_info(k) if resetting[k] else g.step_info(k)) for k in range(n)]
             self._needs_reset = done
-        return self._obs.copy(), reward, term, trunc, infos
+        return self._obs.copy(), reward, term, trunc, stack_infos(n, entries)
 
     def _step_info(self, rows: np.ndarray, status, sim_time, n_events, first) -> dict[str, np.ndarray]:
         """The single env's step ``info`` of every table, as arrays (rows not in ``rows`` are filler)."""

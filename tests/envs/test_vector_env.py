@@ -290,3 +290,29 @@ def test_every_combination_vectorises_with_the_same_results(env_id, action_type,
     if spin:
         kwargs.update(physics={"friction": "spin"}, spin_action=True)
     _compare(env_id, AutoresetMode.NEXT_STEP, steps=3 if env_id in POT_IDS else 2, n=2, **kwargs)
+
+
+def test_game_infos_stack_as_gymnasiums_add_info():
+    """``stack_infos`` (the games' vector info, a key at a time) equals ``VectorEnv._add_info`` called sub-env by
+    sub-env: dtypes from each key's first value (a bool array when the first ``ball_in_hand`` is False), masks, nested
+    dicts, ``final_obs``, key order."""
+    from gymnasium.vector import VectorEnv
+
+    from billiards_env.envs._vector_games import stack_infos
+
+    class Stub(VectorEnv):
+        num_envs = 4
+
+    stub = Stub()
+    obs = np.arange(3, dtype=np.float32)
+    entries = [(0, {"ball_in_hand": False, "winner": -1, "turns": [], "groups": None}),
+               (1, {"final_obs": obs, "final_info": {"ball_in_hand": "anywhere", "call": "legal"}}),
+               (1, {"ball_in_hand": "kitchen", "winner": 1, "turns": [{"a": 1}], "call": "scratch", "x": 0.5}),
+               (3, {"groups": ("solids", "stripes"), "winner": 0, "x": np.float64(2.0)})]
+    want: dict = {}
+    for k, info in entries:
+        want = stub._add_info(want, info, k)
+    got = stack_infos(4, entries)
+    assert list(got) == list(want)
+    _same_info({k: v for k, v in got.items() if k != "final_obs"}, {k: v for k, v in want.items() if k != "final_obs"})
+    assert got["final_obs"][1] is obs and got["final_obs"][0] is None
