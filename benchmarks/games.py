@@ -15,8 +15,9 @@
 - the 9-ball training job's env (``configs/train/nine_ball_sac.yaml``, run-out practice, and
   ``nine_ball_sac_vs_geometric.yaml``, games against the geometric player): its ``n_envs`` single envs stepped in
   turn as SB3's DummyVecEnv steps them, random actions, shots per CPU-second. *Before*: the same envs with the Python
-  of before issue 21 swapped in (``players/_reference.py``: the candidate slot lists and the next shot's ease in
-  Python, and the geometric opponent of before, observed for at every shot); *after*: as they are.
+  of before issue 21 swapped in (``players/_reference.py``: the candidate slot lists, the ``candidates``
+  observation's loop and the next shot's ease in Python, and the geometric opponent of before, observed for at every
+  shot); *after*: as they are; and the native vector env of the same tables.
 
 Prints the figures (and the targets); writes ``games.json`` and ``games.md`` only with ``--write``/``--out``.
 """
@@ -182,7 +183,7 @@ def _stats(times: list[float]) -> dict[str, Any]:
 
 def vector_rate(env_id: str, n: int, seconds: float, **kwargs: Any) -> dict[str, Any]:
     """Agent steps per second of ``gymnasium.make_vec(env_id, n)`` with seeded uniform random actions (and shots,
-    from ``info["opponent_shots"]``)."""
+    from ``info["opponent_shots"]``); a table resetting (the step after its episode ended) counts no agent step."""
     import gymnasium as gym
 
     vec = gym.make_vec(env_id, n, **kwargs)
@@ -194,8 +195,9 @@ def vector_rate(env_id: str, n: int, seconds: float, **kwargs: Any) -> dict[str,
         t0, c0 = time.perf_counter(), time.process_time()
         while time.perf_counter() - t0 < seconds:
             _, _, _, _, info = vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))
-            steps += n
-            shots += n + int(np.sum(info.get("opponent_shots", 0)))
+            stepped = int(np.sum(info.get("_shots", np.ones(n, np.bool_))))  # (tables resetting took no shot)
+            steps += stepped
+            shots += stepped + int(np.sum(info.get("opponent_shots", 0)))
         wall, cpu = time.perf_counter() - t0, time.process_time() - c0
         native = bool(getattr(vec.unwrapped, "native", False))
     finally:
@@ -318,6 +320,32 @@ def before_issue_21() -> Iterator[None]:
         actions.candidate_slots, cf.features, games.next_shot_ease = saved  # type: ignore[method-assign]
 
 
+class _VectorStepper:
+    """A native vector env of ``n`` tables stepped with seeded uniform random actions (counts as :class:`_Stepper`;
+    a finished episode resets at the next step, as Gymnasium's default autoreset does)."""
+
+    def __init__(self, make: Callable[[], Any], seed: int = 0) -> None:
+        self.vec = make()
+        self.rng = np.random.default_rng(seed)
+        _, info = self.vec.reset(seed=seed)
+        self.steps = 0
+        self.shots = int(np.sum(info.get("opponent_shots", 0)))
+
+    def run(self, seconds: float) -> tuple[float, float]:
+        t0, c0 = time.perf_counter(), time.process_time()
+        vec = self.vec
+        while time.perf_counter() - t0 < seconds:
+            a = self.rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32)
+            _, _, _, _, info = vec.step(a)
+            stepped = info.get("_shots", np.ones(vec.num_envs, np.bool_))
+            self.steps += int(np.sum(stepped))
+            self.shots += int(np.sum(stepped)) + int(np.sum(info.get("opponent_shots", 0)))
+        return time.perf_counter() - t0, time.process_time() - c0
+
+    def close(self) -> None:
+        self.vec.close()
+
+
 class _SwitchedStepper(_Stepper):
     """A :class:`_Stepper` that runs inside :func:`before_issue_21` (its envs' opponents the reference player)."""
 
@@ -344,8 +372,11 @@ def training_job(sizes: dict[str, Any]) -> dict[str, Any]:
                 env.unwrapped.set_opponent(_ReferenceGeometric())
             return env
 
-        steppers = {"before": _SwitchedStepper(make_before, n_envs, 0),
-                    "after": _Stepper(lambda kwargs=kwargs, env_id=env_id: gym.make(env_id, **kwargs), n_envs, 0)}
+        steppers: dict[str, Any] = {
+            "before": _SwitchedStepper(make_before, n_envs, 0),
+            "after": _Stepper(lambda kwargs=kwargs, env_id=env_id: gym.make(env_id, **kwargs), n_envs, 0),
+            "native": _VectorStepper(lambda kwargs=kwargs, env_id=env_id: gym.make_vec(env_id, n_envs, threads=1,
+                                                                                       **kwargs))}
         for s in steppers.values():
             s.run(0.05)
         try:
@@ -353,8 +384,11 @@ def training_job(sizes: dict[str, Any]) -> dict[str, Any]:
         finally:
             for s in steppers.values():
                 s.close()
+        before = rates["before"]["shots_per_cpu_s"]
         out[path] = {"env_id": env_id, "n_envs": n_envs, "env_kwargs": kwargs, **rates,
-                     "speedup": rates["after"]["shots_per_cpu_s"] / rates["before"]["shots_per_cpu_s"]}
+                     "native_path": bool(steppers["native"].vec.unwrapped.native),
+                     "speedup": rates["after"]["shots_per_cpu_s"] / before,
+                     "speedup_native": rates["native"]["shots_per_cpu_s"] / before}
     return out
 
 
@@ -449,12 +483,16 @@ def render_markdown(doc: dict[str, Any]) -> str:
               "actions. Before: the Python of before issue 21 swapped in (`players/_reference.py`: the candidate "
               "slot lists, the next shot's ease, the geometric opponent, observed for at every shot); after: the "
               "envs as they are. Interleaved rounds in this one run.", "",
-              "| config | shots/CPU-s before | after | speed-up | agent steps/CPU-s before | after |",
-              "|---|---|---|---|---|---|"]
+              "The native vector env of the same `n_envs` tables (`gymnasium.make_vec`, one thread) is what SB3 would "
+              "step through `agents.vec.BilliardsVecEnv` once `agents/vec.py` lets games use it.", "",
+              "| config | shots/CPU-s before | after (single envs) | speed-up | native vector env | speed-up | "
+              "agent steps/CPU-s before | after | native |", "|---|---|---|---|---|---|---|---|---|"]
     for path, j in doc["job"].items():
-        b, a = j["before"], j["after"]
+        b, a, v = j["before"], j["after"], j["native"]
         lines.append(f"| `{path}` | {fmt_rate(b['shots_per_cpu_s'])} | {fmt_rate(a['shots_per_cpu_s'])} | "
-                     f"{j['speedup']:.2f}x | {fmt_rate(b['steps_per_cpu_s'])} | {fmt_rate(a['steps_per_cpu_s'])} |")
+                     f"{j['speedup']:.2f}x | {fmt_rate(v['shots_per_cpu_s'])} | {j['speedup_native']:.2f}x | "
+                     f"{fmt_rate(b['steps_per_cpu_s'])} | {fmt_rate(a['steps_per_cpu_s'])} | "
+                     f"{fmt_rate(v['steps_per_cpu_s'])} |")
     return "\n".join(lines) + "\n"
 
 
