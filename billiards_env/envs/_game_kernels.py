@@ -662,6 +662,13 @@ def observe_tables(rows, pos, on, gst, cfg, obs):
         _observe(rows[q], pos, on, gst, cfg, obs)
 
 
+@njit(cache=True)
+def legal_masks(gst: np.ndarray, out: np.ndarray) -> None:
+    """The legal balls (a mask of their numbers) of every table's game state into ``out``."""
+    for k in range(gst.shape[0]):
+        out[k] = legal_mask(gst[k])
+
+
 # --- N tables --------------------------------------------------------------------------------------------------------
 
 @njit(cache=True)
@@ -710,4 +717,5 @@ def reset_tables_parallel(rows, pos, vel, ang, on, shots, radius, mass, gens, gs
 
 
 __all__ = ["step_tables", "step_tables_parallel", "reset_tables", "reset_tables_parallel", "observe_tables",
+           "legal_masks",
            "features", "AIM_EXTERNAL", "N_K", "N_J", "N_R", "N_T"]

@@ -182,6 +182,8 @@ class GameTables:
         self._first = self.ids + (None,)
         self._radius = r
         self._reset_infos: dict[int, dict[str, Any] | None] = {}
+        self._numbers_of: dict[int, tuple[int, ...]] = {}
+        self.legal = np.zeros(n, np.int64)
 
     # --- what Python parts read --------------------------------------------------------------------------------------
     def view(self, k: int) -> ShotView:
@@ -295,6 +297,17 @@ class GameTables:
         raise RuntimeError(f"sub-env {k}: the opponent won every game before the agent's first shot")
 
     # --- info ----------------------------------------------------------------------------------------------------------
+    def prepare_infos(self) -> None:
+        """Work out what the info dicts of the tables read from their game states (their legal balls), in one call;
+        before :meth:`reset_info` and :meth:`step_info`."""
+        gk.legal_masks(self.gst, self.legal)
+
+    def _numbers(self, mask: int) -> tuple[int, ...]:
+        got = self._numbers_of.get(mask)
+        if got is None:
+            got = self._numbers_of[mask] = pj.numbers_of(mask)
+        return got
+
     def _ids(self, mask: int) -> tuple[str, ...]:
         got = self._ids_of.get(mask)
         if got is None:
@@ -337,7 +350,7 @@ class GameTables:
             "opponent_shots": n_opp,
             "opponent_turns": turns,
             "shooter": st[pj.S_SHOOTER],
-            "legal_targets": () if over else pj.numbers_of(pj.legal_mask(self.gst[k])),
+            "legal_targets": () if over else self._numbers(int(self.legal[k])),
             "ball_in_hand": False if over else pj.ball_in_hand_value(st[pj.S_BIH]),
             "groups": pj.groups_value(st[pj.S_GROUPS]),
         }

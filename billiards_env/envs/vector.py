@@ -203,6 +203,7 @@ class BilliardsVectorEnv(VectorEnv):
         self._ever_reset = True
         infos: dict[str, Any] = {}
         if self.games is not None:  # the games' reset info, stacked as SyncVectorEnv stacks it
+            self.games.prepare_infos()
             infos = stack_infos(n, [(k, self.games.reset_info(k)) for k in rows.tolist()])
         return self._obs.copy(), infos
 
@@ -441,6 +442,7 @@ class BilliardsVectorEnv(VectorEnv):
             reward[k], term[k], trunc[k] = g.outcome(k)
         done = term | trunc
         entries: list[tuple[int, dict[str, Any]]] = []
+        g.prepare_infos()
         if mode == AutoresetMode.SAME_STEP:
             step_infos = {k: g.step_info(k) for k in stepped.tolist()}
             ended = np.flatnonzero(done)
@@ -448,6 +450,7 @@ class BilliardsVectorEnv(VectorEnv):
             if ended.size:
                 self._reset_rows(ended, None)
                 self._observe(ended)
+                g.prepare_infos()
             for k in range(n):
                 info = step_infos[k]
                 if done[k]:
