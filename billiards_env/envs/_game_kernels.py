@@ -14,12 +14,15 @@ single env with the same seed and actions, bit for bit (``tests/envs/test_vector
   (:func:`~billiards_env.physics.layout.spot_object_row`, :func:`~billiards_env.physics.layout.spot_cue_row`);
 - the geometric opponent (:func:`billiards_env.players.geometry.geometric_decision_arrays`), its action in the
   acting action type and that action read back (``GameTask.opponent_action`` then ``ActionType.shot``);
-- the ``position_reward`` shaping (:func:`billiards_env.players.slots.next_shot_ease`), the positions observation
-  and the game features (``PoolSession.features``).
+- the ``candidates`` action and observation types (``CandidateShots.shot``, ``CandidateFeatures``: the slot lists
+  of :mod:`billiards_env.players.slots`, the kick verified by simulating its fan of aims on a copy of the table, kept
+  per table between the observation and the next action), the ``position_reward`` shaping
+  (:func:`billiards_env.players.slots.next_shot_ease`), the positions observation and the game features
+  (``PoolSession.features``).
 
 Random numbers come from each table's ``numpy.random.Generator`` in the single env's order. What is not compiled
-(the ``candidates`` action type's shot, other observation types, reset options, the info dicts) is done per table
-in Python by :mod:`._vector_games`, from the records these functions write (``R_*`` columns per shot).
+(the ``features`` observation type, reset options, the info dicts) is done per table in Python by
+:mod:`._vector_games`, from the records these functions write (``R_*`` columns per shot).
 """
 from __future__ import annotations
 
@@ -33,10 +36,12 @@ from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import (PLACE_BATCH, PLACE_TRIES, nearest_free_xy, place_random_rows, py_hypot,
                                           spot_cue_row, spot_object_row)
-from billiards_env.physics.outcome import scan_shot
+from billiards_env.physics.outcome import first_contact_row, scan_shot
 from billiards_env.physics.spin_collide import strike_spin
-from billiards_env.players.geometry import COL_POCKET, geometric_decision_arrays
-from billiards_env.players.slots import next_shot_ease
+from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_CLEAR, COL_POCKET, COL_SPEED, SPEED_FACTORS,
+                                            geometric_decision_arrays, ghost_shots)
+from billiards_env.players.slots import (HAND_D_OBJ, HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET, in_hand_slots,
+                                         kick_candidates, next_shot_ease, shot_slots)
 from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_KITCHEN, BIH_NO, C_FOUL, C_REASON, C_RESPOT, C_SHOOTER,
                                             C_TURN_OVER, GAME_EIGHT, GROUPS_OPEN, GROUPS_SOLIDS, N_CALL, N_STATE,
                                             S_BIH, S_BREAK, S_FOULS0, S_FOULS1, S_GAME, S_GROUPS, S_ON, S_OVER,
@@ -45,20 +50,26 @@ from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_KITCHEN, BIH_NO, C
 from billiards_env.shot_path import noisy_shot
 
 from ._kernels import observation
-from .actions import AIM_ABSOLUTE, AIM_RELATIVE, aim_to_angle, power_to_speed, square_to_disc
+from .actions import (AIM_ABSOLUTE, AIM_RELATIVE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, aim_to_angle,
+                      power_to_speed, square_to_disc)
+from .candidates import _FAN, _FAN_ORDER, _FAN_SORTED, KICK_ARRIVAL, KICK_MARGIN, _slot_features
 
-#: The agent's shot comes from Python (the ``candidates`` action type): the ``ext`` rows.
-AIM_EXTERNAL = 3
+#: The ``candidates`` action type (``J_AIM``).
+AIM_CANDIDATES = 4
 # Floats of a game env (``cfg``) and ints (``icfg``): see :func:`billiards_env.envs._vector_games.pack_game`.
 K_SPEED_LO, K_SPEED_SPAN, K_MAX_TIP, K_ANGLE_NOISE, K_SPEED_NOISE, K_TIP_NOISE, K_GHOST, K_ACT_GHOST, K_RADIUS, \
     K_LENGTH, K_WIDTH, K_KITCHEN_X, K_HEAD_X, K_HEAD_Y, K_FOOT_X, K_FOOT_Y, K_SPEED_MIN, K_SPEED_MAX, K_WIN, \
     K_LOSS, K_FOUL_PENALTY, K_POT_REWARD, K_POSITION_REWARD, K_EASE_SIGMA, K_SX, K_SY, K_POCKET_MARGIN, \
-    K_MIN_DIST, K_BREAK_SPEED, K_MAX_CUT = range(30)
-N_K = 30
+    K_MIN_DIST, K_BREAK_SPEED, K_MAX_CUT, K_CAND_LO, K_CAND_HI, K_LOG_FACTOR, K_OBS_LO, K_OBS_HI = range(35)
+N_K = 35
 J_AIM, J_ACT_AIM, J_SPIN_DIMS, J_SPIN_MODEL, J_N_ACT, J_PLACE_AT, J_POCKET_AT, J_PUSH_AT, J_N_POCKETS, J_OPPONENT, \
     J_FIRST, J_OPENING, J_MAX_SHOTS, J_TURN_CAP, J_RACK, J_POSITIONS_OBS, J_SPEED_NOISE_ABS, J_SLOTS, J_MAX_EVENTS, \
-    J_OPENING_RESPOT, J_MAX_RERACKS, J_GAME = range(22)
-N_J = 22
+    J_OPENING_RESPOT, J_MAX_RERACKS, J_GAME, J_CANDIDATES_OBS = range(23)
+N_J = 23
+#: The kick cache of a table (``kc`` rows): valid, a kick found, its target, angle, speed, path length, and the speed
+#: range it was worked out for.
+KC_VALID, KC_FOUND, KC_TARGET, KC_ANGLE, KC_SPEED, KC_LENGTH, KC_LO, KC_HI = range(8)
+N_KC = 8
 #: ``J_OPPONENT``: none (play alone) or the geometric player.
 OPP_NONE, OPP_GEOMETRIC = 0, 1
 #: ``J_FIRST``, ``J_OPENING``, ``J_RACK`` codes.
@@ -241,6 +252,224 @@ def _action_of_shot(code: int, max_ghost: float, angle: float, speed: float, pla
     return found
 
 
+# --- the ``candidates`` action and observation types -----------------------------------------------------------------
+
+_SPEED_FACTORS = np.array(SPEED_FACTORS)
+_PLACED_MAX_CUT = math.radians(89.0)
+
+
+@njit(cache=True)
+def _direct_hit(targets: np.ndarray, pos: np.ndarray, on: np.ndarray, cx: float, cy: float) -> float:
+    """``players.shots.direct_hit`` with the cue ball at ``(cx, cy)``: the direction of the nearest legal ball."""
+    best = math.inf
+    j = -1
+    for t in range(targets.shape[0]):
+        b = targets[t]
+        if on[b] and b != 0:
+            d = math.hypot(pos[b, 0] - cx, pos[b, 1] - cy)
+            if d < best:
+                best = d
+                j = b
+    if j < 0:
+        return 0.0
+    return math.atan2(pos[j, 1] - cy, pos[j, 0] - cx)
+
+
+@njit(cache=True)
+def _kick(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params,
+          kc):
+    """The kick of ``envs/candidates.py`` (``_kick_slot``) for table ``k`` with speeds in ``[lo, hi]``, from the
+    table's kick cache ``kc[k]`` when it holds it: its candidates shortest first, each simulated at the fan of aims
+    on a copy of the table until one hits its ball first without a scratch. Returns ``(found, target, angle,
+    speed, length)``."""
+    c = kc[k]
+    if c[KC_VALID] != 0.0 and c[KC_LO] == lo and c[KC_HI] == hi:
+        return c[KC_FOUND] != 0.0, int(c[KC_TARGET]), c[KC_ANGLE], c[KC_SPEED], c[KC_LENGTH]
+    rows = kick_candidates(pos, on, radius, targets, tm_xy, tm_r, tm_params, lo, hi, KICK_ARRIVAL, KICK_MARGIN)
+    nb = pos.shape[0]
+    nf = _FAN.shape[0]
+    p2 = np.empty((nb, 2))
+    v2 = np.empty((nb, 2))
+    a2 = np.empty((nb, 3))
+    o2 = np.empty(nb, np.bool_)
+    hits = np.empty(nf, np.bool_)
+    found, j, angle, speed, length = False, -1, 0.0, 0.0, 0.0
+    for r in range(rows.shape[0]):
+        d, target, a0, sp = rows[r, 0], int(rows[r, 1]), rows[r, 2], rows[r, 3]
+        for f in range(nf):
+            p2[:] = pos
+            v2[:] = 0.0
+            o2[:] = on
+            a = a0 + _FAN[f]
+            v2[0, 0] = sp * math.cos(a)
+            v2[0, 1] = sp * math.sin(a)
+            if icfg[J_SPIN_MODEL]:
+                a2[:] = 0.0
+                res = simulate_exact_spin(p2, v2, a2, radius, mass, o2, pocket_xy, pocket_r, params,
+                                          icfg[J_MAX_EVENTS], False)
+            else:
+                res = simulate_exact(p2, v2, radius, mass, o2, pocket_xy, pocket_r, params, icfg[J_MAX_EVENTS],
+                                     False)
+            hits[f] = first_contact_row(res.ev_int, 0) == target and res.pocket[0] < 0
+        n_ok = 0
+        for f in range(nf):
+            if hits[_FAN_ORDER[f]]:
+                n_ok += 1
+        if n_ok == 0:
+            continue
+        mid = n_ok // 2
+        for f in range(nf):
+            if hits[_FAN_ORDER[f]]:
+                if mid == 0:
+                    angle = a0 + _FAN_SORTED[f]
+                    break
+                mid -= 1
+        found, j, speed, length = True, target, sp, d
+        break
+    c[KC_VALID] = 1.0
+    c[KC_FOUND] = found
+    c[KC_TARGET] = j
+    c[KC_ANGLE] = angle
+    c[KC_SPEED] = speed
+    c[KC_LENGTH] = length
+    c[KC_LO] = lo
+    c[KC_HI] = hi
+    return found, j, angle, speed, length
+
+
+@njit(cache=True)
+def _cand_speed(base: float, a: float, cfg: np.ndarray) -> float:
+    """``CandidateShots._speed``: ``base`` times the speed factor to the power ``a``, within the type's range."""
+    return min(max(base * math.exp(a * cfg[K_LOG_FACTOR]), cfg[K_CAND_LO]), cfg[K_CAND_HI])
+
+
+@njit(cache=True)
+def _candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r,
+                     params, holes, area, kc):
+    """``CandidateShots.shot`` of table ``k``'s action ``a``: the chosen slot (a pot, the kick, the break, or the
+    direct hit when there is no pot), its speed scaled, the cue ball placed for it with ball in hand. Returns
+    ``_shot_of_action``'s tuple."""
+    found, angle, speed, side, top, placed, px, py, pocket, push = _shot_of_action(
+        a, AIM_ABSOLUTE, 0.0, st, pos, on, radius, cfg, icfg, holes, area)  # side, top, declarations, placement
+    if not found:
+        return found, angle, speed, side, top, placed, px, py, pocket, push
+    n_slots = icfg[J_SLOTS]
+    lo = cfg[K_CAND_LO]
+    hi = cfg[K_CAND_HI]
+    keep = max(n_slots - 1, 1)
+    targets = _targets(st, on)
+    in_hand = _area(st, cfg, area)
+    if st[S_BREAK] and not st[S_OVER]:
+        cx, cy = (px, py) if placed else (pos[0, 0], pos[0, 1])
+        if in_hand:
+            kp = icfg[J_PLACE_AT]
+            cx, cy, ok = _legal_place(area[1] - abs(a[kp]) * (area[1] - area[0]),
+                                      area[2] + 0.5 * (a[kp + 1] + 1.0) * (area[3] - area[2]), pos, on, radius, area,
+                                      holes)
+            if not ok:
+                return False, angle, speed, side, top, placed, px, py, pocket, push
+            placed, px, py = True, cx, cy
+        angle = _direct_hit(targets, pos, on, cx, cy)
+        sp = hi * math.exp(min(a[1], 0.0) * cfg[K_LOG_FACTOR])
+        return True, angle, max(sp, lo), side, top, placed, px, py, pocket, push
+    kicks = n_slots > 1 and int(abs(a[0]) * n_slots) >= n_slots - 1
+    cx, cy = (px, py) if placed else (pos[0, 0], pos[0, 1])
+    if not in_hand:
+        rows = shot_slots(pos, on, radius, mass, targets, tm_xy, tm_r, tm_params, lo, hi)[:keep]
+        if kicks:
+            clear = False
+            for i in range(rows.shape[0]):
+                if rows[i, COL_CLEAR] != 0.0:
+                    clear = True
+            if not clear:
+                got, _, k_angle, k_speed, _ = _kick(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy,
+                                                    tm_r, tm_params, pocket_xy, pocket_r, params, kc)
+                if got:
+                    return True, k_angle, k_speed, 0.0, 0.0, placed, px, py, pocket, push
+        n = rows.shape[0]
+        if n == 0:
+            return True, _direct_hit(targets, pos, on, cx, cy), _cand_speed(FALLBACK_SPEED, a[1], cfg), side, top, \
+                placed, px, py, pocket, push
+        row = rows[0 if kicks else min(int(abs(a[0]) * n_slots), n_slots - 1, n - 1)]
+        if icfg[J_POCKET_AT] >= 0:
+            pocket = int(row[COL_POCKET])
+        return True, row[COL_ANGLE], _cand_speed(row[COL_SPEED], a[1], cfg), side, top, placed, px, py, pocket, push
+    rows = in_hand_slots(pos, on, radius, targets, tm_xy, tm_r, tm_params)[:keep]
+    n = rows.shape[0]
+    if n == 0:
+        return True, _direct_hit(targets, pos, on, cx, cy), _cand_speed(FALLBACK_SPEED, a[1], cfg), side, top, \
+            placed, px, py, pocket, push
+    row = rows[0 if kicks else min(int(abs(a[0]) * n_slots), n_slots - 1, n - 1)]
+    j = int(row[HAND_TARGET])
+    p = int(row[HAND_POCKET])
+    oa = row[HAND_OBJ_ANGLE]
+    if icfg[J_POCKET_AT] >= 0:
+        pocket = p
+    # CandidateShots._place_for: behind the ghost ball, at the cut of place_y.
+    kp = icfg[J_PLACE_AT]
+    contact = radius[0] + radius[j]
+    gx = pos[j, 0] - contact * math.cos(oa)
+    gy = pos[j, 1] - contact * math.sin(oa)
+    back = PLACE_BACK[0] + 0.5 * (a[kp] + 1.0) * (PLACE_BACK[1] - PLACE_BACK[0])
+    d = oa + a[kp + 1] * PLACE_MAX_CUT
+    x = gx - back * math.cos(d)
+    y = gy - back * math.sin(d)
+    qx, qy, ok = _legal_place(min(max(x, area[0]), area[1]), min(max(y, area[2]), area[3]), pos, on, radius, area,
+                              holes)
+    if not ok:
+        return False, angle, speed, side, top, placed, px, py, pocket, push
+    # CandidateShots._placed_shot: the ghost-ball shot at that pocket from there, else a hit at the ghost ball.
+    p2 = pos.copy()
+    o2 = on.copy()
+    p2[0, 0] = qx
+    p2[0, 1] = qy
+    o2[0] = True
+    shots = ghost_shots(p2, o2, radius, mass, 0, np.array([j]), tm_xy, tm_r, tm_params, lo, hi, _PLACED_MAX_CUT,
+                        ARRIVE_SPEED, _SPEED_FACTORS, True)
+    base_angle = math.atan2(gy - qy, gx - qx)
+    base_speed = FALLBACK_SPEED
+    for i in range(shots.shape[0]):
+        if int(shots[i, COL_POCKET]) == p:
+            base_angle = shots[i, COL_ANGLE]
+            base_speed = shots[i, COL_SPEED]
+            break
+    return True, base_angle, _cand_speed(base_speed, a[1], cfg), side, top, True, qx, qy, pocket, push
+
+
+@njit(cache=True)
+def _candidates_features(k, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r,
+                         params, area, kc, out):
+    """The ``candidates`` observation's slot values of table ``k`` (``envs/candidates.py`` ``slot_features`` of
+    ``candidate_slots`` at the observation's speed range) into ``out``."""
+    n_slots = icfg[J_SLOTS]
+    lo = cfg[K_OBS_LO]
+    hi = cfg[K_OBS_HI]
+    keep = max(n_slots - 1, 1)
+    targets = _targets(st, on)
+    in_hand = _area(st, cfg, area)
+    kick_target, kick_length, kick_speed = -1, 0.0, 0.0
+    if st[S_BREAK] and not st[S_OVER]:
+        rows = np.zeros((0, 16))
+    elif in_hand:
+        rows = in_hand_slots(pos, on, radius, targets, tm_xy, tm_r, tm_params)[:keep]
+    else:
+        rows = shot_slots(pos, on, radius, mass, targets, tm_xy, tm_r, tm_params, lo, hi)[:keep]
+        clear = False
+        for i in range(rows.shape[0]):
+            if rows[i, COL_CLEAR] != 0.0:
+                clear = True
+        if n_slots > 1 and not clear:
+            got, j, _, sp, d = _kick(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_r, tm_params,
+                                     pocket_xy, pocket_r, params, kc)
+            if got:
+                kick_target, kick_length, kick_speed = j, d, sp
+    numbers = np.arange(pos.shape[0])
+    f = _slot_features(rows, in_hand, kick_target, kick_length, kick_speed, numbers, tm_xy, tm_params[0],
+                       tm_params[1], hi, n_slots)
+    for i in range(f.shape[0]):
+        out[i] = f[i]
+
+
 # --- one shot: played, judged, applied ---------------------------------------------------------------------------------
 
 @njit(cache=True)
@@ -386,7 +615,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
 # --- a step of one table ------------------------------------------------------------------------------------------------
 
 @njit(cache=True)
-def _step_table(k, act, ext, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
+def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
                 params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs):
     """One ``env.step`` of table ``k`` (see :func:`step_tables`)."""
     call = np.zeros(N_CALL, np.int64)
@@ -398,16 +627,17 @@ def _step_table(k, act, ext, pos, vel, ang, on, shots, radius, mass, gens, gst, 
     st = gst[k]
     tout[k, T_ERROR] = E_NONE
     tout[k, T_N_OPP] = 0
-    # The agent's shot: its action read by the env's type, or given (the candidates type, read in Python).
-    if icfg[J_AIM] == AIM_EXTERNAL:
-        e = ext[k]
-        found, angle, speed, side, top = True, e[0], e[1], e[2], e[3]
-        placed, px, py, pocket, push = e[4] != 0.0, e[5], e[6], int(e[7]), e[8] != 0.0
+    # The agent's shot: its action read by the env's type.
+    for i in range(a.shape[0]):
+        a[i] = act[k, i]
+    if icfg[J_AIM] == AIM_CANDIDATES:
+        found, angle, speed, side, top, placed, px, py, pocket, push = _candidates_shot(
+            k, a, st, pos[k], on[k], radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params,
+            holes, area, kc)
     else:
-        for i in range(a.shape[0]):
-            a[i] = act[k, i]
         found, angle, speed, side, top, placed, px, py, pocket, push = _shot_of_action(
             a, icfg[J_AIM], cfg[K_GHOST], st, pos[k], on[k], radius, cfg, icfg, holes, area)
+    kc[k, KC_VALID] = 0.0  # the table moves on
     if not found:
         tout[k, T_ERROR] = E_NO_PLACE
         return
@@ -453,8 +683,7 @@ def _step_table(k, act, ext, pos, vel, ang, on, shots, radius, mass, gens, gst, 
     tout[k, T_TERMINATED] = terminated
     tout[k, T_TRUNCATED] = not terminated and shots[k] >= icfg[J_MAX_SHOTS]
     tout[k, T_LAST] = tout[k, T_N_OPP]  # the last shot: the agent's (0) or the opponent's n-th
-    if icfg[J_POSITIONS_OBS]:
-        _observe(k, pos, on, gst, cfg, obs)
+    _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params, kc, obs)
 
 
 # --- a reset of one table --------------------------------------------------------------------------------------------
@@ -508,7 +737,7 @@ def _order_rack(k, g, pos, rack_slots, mode):
 @njit(cache=True)
 def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r, params,
                  tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets, rack_slots, full,
-                 rec_agent, rec_opp, tout, obs):
+                 rec_agent, rec_opp, tout, kc, obs):
     """One ``env.reset()`` of table ``k`` (no options; see :func:`reset_tables`)."""
     call = np.zeros(N_CALL, np.int64)
     after = np.zeros(N_STATE, np.int64)
@@ -521,6 +750,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
     tout[k, T_ERROR] = E_NONE
     tout[k, T_N_OPP] = 0
     tout[k, T_LAST] = -1
+    kc[k, KC_VALID] = 0.0
     vel[k] = 0.0
     ang[k] = 0.0
     on[k] = True
@@ -607,8 +837,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
         if attempt == icfg[J_MAX_RERACKS] - 1:
             tout[k, T_ERROR] = E_RERACKS
             return
-    if icfg[J_POSITIONS_OBS]:
-        _observe(k, pos, on, gst, cfg, obs)
+    _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params, kc, obs)
 
 
 # --- the observation -----------------------------------------------------------------------------------------------
@@ -646,20 +875,30 @@ def features(st: np.ndarray, out: np.ndarray) -> None:
 
 
 @njit(cache=True)
-def _observe(k, pos, on, gst, cfg, obs):
-    """The positions observation and the game features of table ``k`` into ``obs[k]``."""
+def _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params, kc, obs):
+    """Table ``k``'s observation into ``obs[k]`` when its type is compiled: the positions, the ``candidates`` slot
+    values for that type, the game features."""
+    if not (icfg[J_POSITIONS_OBS] or icfg[J_CANDIDATES_OBS]):
+        return
     p = observation(pos[k], on[k], cfg[K_SX], cfg[K_SY])
     n = p.shape[0]
     for i in range(n):
         obs[k, i] = p[i]
+    if icfg[J_CANDIDATES_OBS]:
+        m = 12 * icfg[J_SLOTS]
+        _candidates_features(k, gst[k], pos[k], on[k], radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy,
+                             pocket_r, params, np.zeros(4), kc, obs[k, n:n + m])
+        n += m
     features(gst[k], obs[k, n:])
 
 
 @njit(cache=True)
-def observe_tables(rows, pos, on, gst, cfg, obs):
+def observe_tables(rows, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params,
+                   kc, obs):
     """:func:`_observe` for tables ``rows``."""
     for q in range(rows.shape[0]):
-        _observe(rows[q], pos, on, gst, cfg, obs)
+        _observe(rows[q], pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params,
+                 kc, obs)
 
 
 @njit(cache=True)
@@ -672,50 +911,50 @@ def legal_masks(gst: np.ndarray, out: np.ndarray) -> None:
 # --- N tables --------------------------------------------------------------------------------------------------------
 
 @njit(cache=True)
-def step_tables(rows, act, ext, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
+def step_tables(rows, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                 pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs):
     """One step of tables ``rows``, one after the other: the agent's shot (``act``: the actions, float64 clipped;
-    ``ext``: the shots given instead, for the ``candidates`` type), its call and reward, the opponent's turn, the
+    ``kc``: the tables' kick caches, ``KC_*``, for the ``candidates`` types), its call and reward, the opponent's turn, the
     termination and truncation (``tout``), the records of every shot (``rec_agent``, ``rec_opp``) and, for the
-    positions observation type, ``obs``."""
+    positions and candidates observation types, ``obs``."""
     for q in range(rows.shape[0]):
-        _step_table(rows[q], act, ext, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
+        _step_table(rows[q], act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                     pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs)
 
 
 @njit(cache=True, parallel=True)
-def step_tables_parallel(rows, act, ext, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg,
+def step_tables_parallel(rows, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg,
                          pocket_xy, pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout,
                          obs):
     """:func:`step_tables` spread over numba's threads (one table per thread at a time)."""
     for q in prange(rows.shape[0]):
-        _step_table(rows[q], act, ext, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
+        _step_table(rows[q], act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                     pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs)
 
 
 @njit(cache=True)
 def reset_tables(rows, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
                  params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets, rack_slots,
-                 full, rec_agent, rec_opp, tout, obs):
+                 full, rec_agent, rec_opp, tout, kc, obs):
     """A reset of tables ``rows`` (the layout, the game's reset, the opponent's break when it breaks), one after the
     other."""
     for q in range(rows.shape[0]):
         _reset_table(rows[q], pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
                      params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets,
-                     rack_slots, full, rec_agent, rec_opp, tout, obs)
+                     rack_slots, full, rec_agent, rec_opp, tout, kc, obs)
 
 
 @njit(cache=True, parallel=True)
 def reset_tables_parallel(rows, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                           pocket_r, params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions,
-                          pockets, rack_slots, full, rec_agent, rec_opp, tout, obs):
+                          pockets, rack_slots, full, rec_agent, rec_opp, tout, kc, obs):
     """:func:`reset_tables` spread over numba's threads."""
     for q in prange(rows.shape[0]):
         _reset_table(rows[q], pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
                      params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets,
-                     rack_slots, full, rec_agent, rec_opp, tout, obs)
+                     rack_slots, full, rec_agent, rec_opp, tout, kc, obs)
 
 
 __all__ = ["step_tables", "step_tables_parallel", "reset_tables", "reset_tables_parallel", "observe_tables",
            "legal_masks",
-           "features", "AIM_EXTERNAL", "N_K", "N_J", "N_R", "N_T"]
+           "features", "AIM_CANDIDATES", "N_K", "N_J", "N_R", "N_T", "N_KC"]

@@ -1,6 +1,6 @@
-"""The native vector env's games: 9-ball and 8-ball tables reset and stepped in compiled code, opponents included
-(:mod:`._game_kernels`), and what stays in Python per table: the ``candidates`` action type's shot, the observation
-types other than positions, resets with options, and the info dicts.
+"""The native vector env's games: 9-ball and 8-ball tables reset and stepped in compiled code, opponents and the
+``candidates`` types included (:mod:`._game_kernels`), and what stays in Python per table: the ``features``
+observation type, resets with options, and the info dicts.
 
 :func:`native_games` says whether an env qualifies (9-ball or 8-ball on the exact solver, playing alone or against
 the geometric player, an action type of the envs' own, nothing drawn); :class:`GameTables` holds the tables' game
@@ -30,7 +30,7 @@ from .candidates import EASE_SPREAD
 from .config import ConfigError
 from .games import MAX_RERACKS, MAX_TURN_SHOTS, GameTask
 from .info import shot_info
-from .observations import Positions
+from .observations import CandidateFeatures, Positions
 
 if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
@@ -86,7 +86,6 @@ class GameTables:
         at = t.action_type
         acting = t._acting_type()
         self.action_type = at
-        self.external = type(at) is CandidateShots
         self.opts = pj.options_row(self.rules)
         self.full = pj.mask_of(self.rules.full_rack)
         rack, placement, order = _SESSIONS[type(session)]
@@ -122,9 +121,15 @@ class GameTables:
         cfg[gk.K_MIN_DIST] = 2.0 * c.ball_radius + c.ball_gap
         cfg[gk.K_BREAK_SPEED] = float(c.speed_max)
         cfg[gk.K_MAX_CUT] = MAX_CUT
+        if type(at) is CandidateShots:
+            cfg[gk.K_CAND_LO], cfg[gk.K_CAND_HI] = at.speed_range
+            cfg[gk.K_LOG_FACTOR] = at.log_factor
+        ot = t.observation_type
+        if type(ot) is CandidateFeatures:
+            cfg[gk.K_OBS_LO], cfg[gk.K_OBS_HI] = ot.speed_range
         self.cfg = cfg
         icfg = np.zeros(gk.N_J, np.int64)
-        icfg[gk.J_AIM] = gk.AIM_EXTERNAL if self.external else _AIM_CODES[type(at)]
+        icfg[gk.J_AIM] = gk.AIM_CANDIDATES if type(at) is CandidateShots else _AIM_CODES[type(at)]
         icfg[gk.J_ACT_AIM] = _AIM_CODES[type(acting)]
         icfg[gk.J_SPIN_DIMS] = at.spin
         icfg[gk.J_SPIN_MODEL] = t._spin
@@ -141,9 +146,13 @@ class GameTables:
         icfg[gk.J_MAX_SHOTS] = c.max_shots
         icfg[gk.J_TURN_CAP] = max(MAX_TURN_SHOTS, c.max_shots)
         icfg[gk.J_RACK] = rack if c.placement == placement else gk.RACK_NONE
-        ot = t.observation_type
         self.positions_obs = type(ot) is Positions and ot.n_extra == 0 and ot.n_game == session.n_features
+        cand_obs = type(ot) is CandidateFeatures and ot.n_game == session.n_features and \
+            ot.n_slots == c.candidate_slots
+        #: Whether the kernels make the observation (the positions and the candidates types).
+        self.compiled_obs = self.positions_obs or cand_obs
         icfg[gk.J_POSITIONS_OBS] = self.positions_obs
+        icfg[gk.J_CANDIDATES_OBS] = cand_obs
         icfg[gk.J_SPEED_NOISE_ABS] = c.speed_noise_mode == "absolute"
         icfg[gk.J_SLOTS] = c.candidate_slots
         icfg[gk.J_MAX_EVENTS] = t.simulator.max_events
@@ -168,7 +177,7 @@ class GameTables:
         self.rec_opp = np.zeros((n, self.cap, gk.N_R))
         self.reward = np.zeros(n)
         self.tout = np.zeros((n, gk.N_T), np.int64)
-        self.ext = np.zeros((n, 9))
+        self.kc = np.zeros((n, gk.N_KC))  # each table's kick cache (the candidates types)
         self.n_game = session.n_features
         # One table state per table (views of the batch arrays) for what stays in Python.
         self.states = []
@@ -223,7 +232,7 @@ class GameTables:
         with _thread_count(v.threads):
             kernel(rows, *self._args(), np.asarray(t._fixed_rows, np.int64),
                    np.ascontiguousarray(t._fixed_xy, dtype=float).reshape(-1, 2), v._rand_rows, v._regions,
-                   v._pockets, self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.tout, v._obs)
+                   v._pockets, self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.tout, self.kc, v._obs)
         self._check(rows)
         for k in rows.tolist():
             self.states[k].changed()
@@ -242,34 +251,30 @@ class GameTables:
         v.ang[k] = b.ang
         v.on_table[k] = b.on_table
         self.gst[k] = pj.state_row(t.task.session.state)
+        self.kc[k, gk.KC_VALID] = 0.0
         self.states[k].changed()
         self._reset_infos[k] = info
-        if self.positions_obs:
-            gk.observe_tables(np.array([k], np.int64), v.pos, v.on_table, self.gst, self.cfg, v._obs)
+        self._observe_compiled(np.array([k], np.int64))
+
+    def _observe_compiled(self, rows: np.ndarray) -> None:
+        v = self.venv
+        gk.observe_tables(rows, v.pos, v.on_table, *self.consts, self.gst, self.cfg, self.icfg, self.tables[3],
+                          self.tables[4], self.tables[5], *self.tables[:3], self.kc, v._obs)
 
     def step(self, rows: np.ndarray, act: np.ndarray) -> None:
         """One step of tables ``rows`` (``act``: the batch's actions, float64 clipped)."""
         v = self.venv
-        if self.external:
-            at = self.action_type
-            for k in rows.tolist():
-                s = at.shot(self.states[k], act[k])
-                e = self.ext[k]
-                e[0], e[1], e[2], e[3] = s.angle, s.speed, s.side, s.top
-                e[4] = s.place is not None
-                e[5], e[6] = s.place if s.place is not None else (0.0, 0.0)
-                e[7] = -1 if s.pocket is None else s.pocket
-                e[8] = s.push
         kernel = gk.step_tables_parallel if use_parallel(len(rows), v.threads) else gk.step_tables
         with _thread_count(v.threads):
-            kernel(rows, act, self.ext, *self._args(), self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs)
+            kernel(rows, act, self.kc, *self._args(), self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs)
         self._check(rows)
         for k in rows.tolist():
             self.states[k].changed()
 
     def observe(self, rows: np.ndarray) -> None:
-        """The observations of tables ``rows`` (already made in the kernels for the positions type)."""
-        if self.positions_obs:
+        """The observations of tables ``rows`` (already made in the kernels for the positions and candidates
+        types)."""
+        if self.compiled_obs:
             return
         v = self.venv
         ot = v.template.observation_type

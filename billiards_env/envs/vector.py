@@ -19,8 +19,8 @@ of all tables in compiled array code, and every table's shot in one call of the 
 ``numpy.random.Generator``, seeded as the single env is. 9-ball and 8-ball (``Billiards9Ball-v0``,
 ``Billiards8Ball-v0``) against the geometric opponent or alone run whole games per table in compiled code, the
 opponent's turns inside the step (:mod:`._vector_games`, :mod:`._game_kernels`: the rules compiled, the geometric
-player's decision on arrays); the ``candidates`` action type's shots, the observation types other than positions,
-reset options and the info dicts stay in Python per table. Other opponents, rendering and the ``step`` solver run
+player's decision on arrays, the ``candidates`` types); the ``features`` observation type, reset options and the
+info dicts stay in Python per table. Other opponents, rendering and the ``step`` solver run
 their sub-envs one by one (the same results, at single-env speed; ``not_native`` says why).
 
 Options (keyword arguments besides the env's own config keys): ``autoreset_mode`` (``"next_step"``, Gymnasium's

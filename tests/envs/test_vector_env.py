@@ -316,3 +316,33 @@ def test_game_infos_stack_as_gymnasiums_add_info():
     assert list(got) == list(want)
     _same_info({k: v for k, v in got.items() if k != "final_obs"}, {k: v for k, v in want.items() if k != "final_obs"})
     assert got["final_obs"][1] is obs and got["final_obs"][0] is None
+
+
+@pytest.mark.parametrize("spin", [False, True])
+def test_native_candidates_kicks(spin):
+    """The ``candidates`` types compiled in the native games: a hidden ball (every pot blocked) is kicked at, the
+    kick's values observed, as the single env does (a scene set by hand, then the kick slot and others)."""
+    kw = {"action_type": "candidates", "observation_type": "candidates", "opponent": None}
+    if spin:
+        kw.update(physics={"friction": "spin"}, spin_action=True)
+    vec = gym.make_vec("Billiards9Ball-v0", 3, autoreset_mode=AutoresetMode.DISABLED, **kw)
+    ref = SyncVectorEnv([lambda: python_path_env("Billiards9Ball-v0", **kw) for _ in range(3)],
+                        autoreset_mode=AutoresetMode.DISABLED)
+    pos = np.array([[0.5, 0.35], [1.5, 0.35], [1.0, 0.35]] + [[0.3 + 0.1 * k, 1.2] for k in range(7)])
+    off = np.array([False] * 3 + [True] * 7)
+    for env in (vec, ref):
+        env.reset(seed=0)
+    options = {"positions": pos, "pocketed": off, "reset_mask": np.ones(3, bool)}
+    obs, _ = vec.reset(options=dict(options))
+    obs_r, _ = ref.reset(options=dict(options))
+    assert np.array_equal(obs, obs_r)
+    kick_row = obs[0, 30 + 3 * 12:30 + 4 * 12]
+    assert kick_row[0] == 1.0 and kick_row[2] == kick_row[3] == -1.0  # the kick is observed
+    action = np.zeros(vec.action_space.shape, np.float32)
+    action[:, 0] = (-1.0, 0.2, 0.9)  # the kick, a blocked pot, the kick again
+    action[:, 1] = (0.5, -0.3, 0.0)
+    out, out_r = vec.step(action), ref.step(action)
+    for x, y in zip(out[:4], out_r[:4]):
+        assert np.array_equal(x, y)
+    _same_info(out[4], out_r[4])
+    assert out[4]["first_contact"][0] == "1"  # the kick hit the hidden ball
