@@ -455,7 +455,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
               "Seeded uniform random actions; a shot is the agent's or the opponent's (breaks included). Per "
               "CPU-second of the benchmark process, then per wall second; the configurations ran in interleaved "
               "rounds.", "",
-              "| game | configuration | shots/CPU-s | agent steps/CPU-s | shots/s | steps/s |", "|---|---|---|---|---|---|"]
+              "| game | configuration | shots/CPU-s | agent steps/CPU-s | shots/s | steps/s |",
+              "|---|---|---|---|---|---|"]
     for env_id, rates in doc["single"].items():
         for name, r in rates.items():
             lines.append(f"| {env_id} | {name} | {fmt_rate(r['shots_per_cpu_s'])} | {fmt_rate(r['steps_per_cpu_s'])} | "
@@ -473,8 +474,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
                 f"{s['shots']:.0f}") if s and s["wall"] is not None else "- | - | - | -"
         lines.append(f"| {env_id} | {fmt_time(g['median_s'])} / {fmt_time(g['worst_s'])} | "
                      f"{fmt_time(h['median_s'])} / {fmt_time(h['worst_s'])} | {srch} |")
-    lines += ["", "## Native vector env", "", "| game | tables | native | agent steps/s | shots/s | agent steps/CPU-s |",
-              "|---|---|---|---|---|---|"]
+    lines += ["", "## Native vector env", "",
+              "| game | tables | native | agent steps/s | shots/s | agent steps/CPU-s |", "|---|---|---|---|---|---|"]
     for env_id, v in doc["vector"].items():
         lines.append(f"| {env_id} | {v['tables']} | {'yes' if v['native'] else 'no'} | {fmt_rate(v['steps_per_s'])} | "
                      f"{fmt_rate(v['shots_per_s'])} | {fmt_rate(v['steps_per_cpu_s'])} |")

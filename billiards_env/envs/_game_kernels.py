@@ -470,7 +470,7 @@ def _candidates_features(k, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, t
         out[i] = f[i]
 
 
-# --- one shot: played, judged, applied ---------------------------------------------------------------------------------
+# --- one shot: played, judged, applied --------------------------------------------------------------------------------
 
 @njit(cache=True)
 def _play(k, angle, speed, side, top, placed, px, py, pos, vel, ang, on, radius, mass, gens, cfg, icfg, pocket_xy,
@@ -612,7 +612,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
     return n, E_NONE
 
 
-# --- a step of one table ------------------------------------------------------------------------------------------------
+# --- a step of one table ----------------------------------------------------------------------------------------------
 
 @njit(cache=True)
 def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
@@ -910,51 +910,30 @@ def legal_masks(gst: np.ndarray, out: np.ndarray) -> None:
 
 # --- N tables --------------------------------------------------------------------------------------------------------
 
-@njit(cache=True)
-def step_tables(rows, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
-                pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs):
-    """One step of tables ``rows``, one after the other: the agent's shot (``act``: the actions, float64 clipped;
-    ``kc``: the tables' kick caches, ``KC_*``, for the ``candidates`` types), its call and reward, the opponent's turn, the
-    termination and truncation (``tout``), the records of every shot (``rec_agent``, ``rec_opp``) and, for the
-    positions and candidates observation types, ``obs``."""
-    for q in range(rows.shape[0]):
-        _step_table(rows[q], act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
-                    pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs)
-
-
 @njit(cache=True, parallel=True)
-def step_tables_parallel(rows, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg,
-                         pocket_xy, pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout,
-                         obs):
-    """:func:`step_tables` spread over numba's threads (one table per thread at a time)."""
+def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
+                pocket_r, params, tm_xy, tm_r, tm_params, holes, layout, rack_slots, full, rec_agent, rec_opp, reward,
+                tout, obs):
+    """A step of tables ``rows``, or a reset of those whose ``resets`` is set, spread over numba's threads (one table
+    per thread at a time: the result does not depend on their number; one thread runs them one after the other).
+
+    A step: the agent's shot (``act``: the actions, float64 clipped; ``kc``: the tables' kick caches, ``KC_*``, for
+    the ``candidates`` types), its call and reward, the opponent's turn, the termination and truncation (``tout``).
+    A reset: the layout (``layout``: the fixed rows and their points, the random rows and their regions, the pocket
+    centres; ``rack_slots``, ``full``: the rack's slots and balls), the game's reset, the opponent's break when it
+    breaks. Both record every shot (``rec_agent``, ``rec_opp``) and, for the positions and candidates observation
+    types, write the observation (``obs``)."""
+    fixed_rows, fixed_xy, rand_rows, regions, pockets = layout
     for q in prange(rows.shape[0]):
-        _step_table(rows[q], act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
-                    pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs)
+        if resets[q]:
+            _reset_table(rows[q], pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
+                         pocket_r, params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions,
+                         pockets, rack_slots, full, rec_agent, rec_opp, tout, kc, obs)
+        else:
+            _step_table(rows[q], act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg,
+                        pocket_xy, pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout,
+                        obs)
 
 
-@njit(cache=True)
-def reset_tables(rows, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
-                 params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets, rack_slots,
-                 full, rec_agent, rec_opp, tout, kc, obs):
-    """A reset of tables ``rows`` (the layout, the game's reset, the opponent's break when it breaks), one after the
-    other."""
-    for q in range(rows.shape[0]):
-        _reset_table(rows[q], pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
-                     params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets,
-                     rack_slots, full, rec_agent, rec_opp, tout, kc, obs)
-
-
-@njit(cache=True, parallel=True)
-def reset_tables_parallel(rows, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
-                          pocket_r, params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions,
-                          pockets, rack_slots, full, rec_agent, rec_opp, tout, kc, obs):
-    """:func:`reset_tables` spread over numba's threads."""
-    for q in prange(rows.shape[0]):
-        _reset_table(rows[q], pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
-                     params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets,
-                     rack_slots, full, rec_agent, rec_opp, tout, kc, obs)
-
-
-__all__ = ["step_tables", "step_tables_parallel", "reset_tables", "reset_tables_parallel", "observe_tables",
-           "legal_masks",
-           "features", "AIM_CANDIDATES", "N_K", "N_J", "N_R", "N_T", "N_KC"]
+__all__ = ["play_tables", "observe_tables", "legal_masks", "features", "AIM_CANDIDATES", "N_K", "N_J", "N_R", "N_T",
+           "N_KC"]

@@ -171,6 +171,10 @@ class GameTables:
         fixed = {int(row): xy for row, xy in zip(t._fixed_rows, t._fixed_xy)}
         self.rack_slots = np.array([fixed[n] for n in order], dtype=np.float64).reshape(-1, 2) \
             if icfg[gk.J_RACK] != gk.RACK_NONE else np.zeros((0, 2))
+        self.layout = (np.asarray(t._fixed_rows, np.int64),
+                       np.ascontiguousarray(t._fixed_xy, dtype=float).reshape(-1, 2), venv._rand_rows, venv._regions,
+                       venv._pockets)
+        self._no_act = np.zeros((n, at.n))
         self.gst = np.zeros((n, pj.N_STATE), np.int64)
         self.cap = int(icfg[gk.J_TURN_CAP])
         self.rec_agent = np.zeros((n, gk.N_R))
@@ -215,27 +219,27 @@ class GameTables:
         return pj.game_state(self.gst[k])
 
     # --- reset and step ----------------------------------------------------------------------------------------------
-    def _args(self) -> tuple[Any, ...]:
+    def _play(self, rows: np.ndarray, resets: np.ndarray, act: np.ndarray) -> None:
+        """:func:`._game_kernels.play_tables` on tables ``rows`` (a reset where ``resets``), on one thread when the
+        batch or the machine says so (:func:`~billiards_env.physics.batch.use_parallel`)."""
         v = self.venv
-        return (v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts, v._gen_list(), self.gst, self.opts, self.cfg,
-                self.icfg, *self.tables)
+        threads = v.threads if use_parallel(len(rows), v.threads) else 1
+        with _thread_count(threads):
+            gk.play_tables(rows, resets, act, self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts,
+                           v._gen_list(), self.gst, self.opts, self.cfg, self.icfg, *self.tables, self.layout,
+                           self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs)
+        self._check(rows)
+        for k in rows.tolist():
+            self.states[k].changed()
 
     def reset(self, rows: np.ndarray, options: dict[str, Any] | None) -> None:
         """Reset tables ``rows`` (``options``: a scene set by hand, per table through the template env)."""
-        v = self.venv
         if options:
             for k in rows.tolist():
                 self._reset_with_options(k, options)
             return
-        t = v.template
-        kernel = gk.reset_tables_parallel if use_parallel(len(rows), v.threads) else gk.reset_tables
-        with _thread_count(v.threads):
-            kernel(rows, *self._args(), np.asarray(t._fixed_rows, np.int64),
-                   np.ascontiguousarray(t._fixed_xy, dtype=float).reshape(-1, 2), v._rand_rows, v._regions,
-                   v._pockets, self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.tout, self.kc, v._obs)
-        self._check(rows)
+        self._play(rows, np.ones(len(rows), np.bool_), self._no_act)
         for k in rows.tolist():
-            self.states[k].changed()
             self._reset_infos[k] = None
 
     def _reset_with_options(self, k: int, options: dict[str, Any]) -> None:
@@ -263,13 +267,7 @@ class GameTables:
 
     def step(self, rows: np.ndarray, act: np.ndarray) -> None:
         """One step of tables ``rows`` (``act``: the batch's actions, float64 clipped)."""
-        v = self.venv
-        kernel = gk.step_tables_parallel if use_parallel(len(rows), v.threads) else gk.step_tables
-        with _thread_count(v.threads):
-            kernel(rows, act, self.kc, *self._args(), self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs)
-        self._check(rows)
-        for k in rows.tolist():
-            self.states[k].changed()
+        self._play(rows, np.zeros(len(rows), np.bool_), act)
 
     def observe(self, rows: np.ndarray) -> None:
         """The observations of tables ``rows`` (already made in the kernels for the positions and candidates
@@ -301,7 +299,7 @@ class GameTables:
                                "or the turn passing; raise max_shots if its game allows longer turns")
         raise RuntimeError(f"sub-env {k}: the opponent won every game before the agent's first shot")
 
-    # --- info ----------------------------------------------------------------------------------------------------------
+    # --- info ---------------------------------------------------------------------------------------------------------
     def prepare_infos(self) -> None:
         """Work out what the info dicts of the tables read from their game states (their legal balls), in one call;
         before :meth:`reset_info` and :meth:`step_info`."""

@@ -283,5 +283,5 @@ def _slot_features(rows: np.ndarray, in_hand: bool, kick_target: int, kick_lengt
     return flat
 
 
-__all__ = ["Slot", "Slots", "candidate_slots", "next_shot_ease", "slot_features", "SLOT_FEATURES", "EASY_TOLERANCE", "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL",
-           "KICK_MARGIN", "KICK_FAN"]
+__all__ = ["Slot", "Slots", "candidate_slots", "next_shot_ease", "slot_features", "SLOT_FEATURES", "EASY_TOLERANCE",
+           "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL", "KICK_MARGIN", "KICK_FAN"]

@@ -32,7 +32,8 @@ KICK_LENGTH, KICK_TARGET, KICK_ANGLE, KICK_SPEED = range(4)
 def shot_slots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, targets: np.ndarray,
                pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float, hi: float) -> np.ndarray:
     """The pot slots with the cue ball where it lies: every ghost-ball shot at a legal ball (``targets``) with a
-    cut up to 80 degrees, easiest first, or up to 88 degrees when there is none: rows of :data:`billiards_env.players.geometry.N_COLS` columns; a slot's ``clear_obj`` is
+    cut up to 80 degrees, easiest first, or up to 88 degrees when there is none: rows of
+    :data:`billiards_env.players.geometry.N_COLS` columns; a slot's ``clear_obj`` is
     ``COL_CLEAR_OBJ``."""
     tm = model(pocket_xy, pocket_r, params)
     rows = ghost_shots_from(pos[0, 0], pos[0, 1], pos, on, radius, mass, 0, targets,
@@ -95,7 +96,8 @@ def _kick_before(a: np.ndarray, b: np.ndarray) -> bool:
 def kick_candidates(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, targets: np.ndarray, pocket_xy: np.ndarray,
                     pocket_r: np.ndarray, params: np.ndarray, lo: float, hi: float, arrival: float,
                     margin: float) -> np.ndarray:
-    """The one-rail kicks at the legal balls worth simulating, shortest first: for each legal ball and cushion, the point on the cushion line from
+    """The one-rail kicks at the legal balls worth simulating, shortest first: for each legal ball and cushion, the
+    point on the cushion line from
     which the cue ball's path, its normal component scaled by the cushion's restitution, runs into the ball full
     (``kick_points``); dropped if it lies outside the cushion's span, passes within two ball radii of a pocket's
     capture circle, or either leg is blocked. Rows of ``KICK_*`` columns: the path length, the target, the cue

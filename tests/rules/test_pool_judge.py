@@ -50,7 +50,8 @@ def _summary(rng: random.Random, state: GameState) -> ShotSummary:
     if 8 in on and rng.random() < 0.15 and 8 not in pocketed:
         pocketed = pocketed + (8,)
     cue = rng.random() < 0.2
-    return ShotSummary(first, rails, pocketed, tuple(rng.randrange(6) for _ in pocketed), cue, rng.randrange(6) if cue else -1)
+    return ShotSummary(first, rails, pocketed, tuple(rng.randrange(6) for _ in pocketed), cue,
+                       rng.randrange(6) if cue else -1)
 
 
 @pytest.mark.parametrize("game", ["nine_ball", "eight_ball"])
