@@ -36,12 +36,12 @@ from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import (PLACE_BATCH, PLACE_TRIES, nearest_free_xy, place_random_rows, py_hypot,
                                           spot_cue_row, spot_object_row)
-from billiards_env.physics.outcome import first_contact_row, scan_shot
+from billiards_env.physics.outcome import scan_shot
 from billiards_env.physics.spin_collide import strike_spin
 from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_CLEAR, COL_POCKET, COL_SPEED, SPEED_FACTORS,
                                             geometric_decision_arrays, ghost_shots)
-from billiards_env.players.slots import (HAND_D_OBJ, HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET, in_hand_slots,
-                                         kick_candidates, next_shot_ease, shot_slots)
+from billiards_env.players.slots import (HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET, in_hand_slots, next_shot_ease,
+                                         shot_slots)
 from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_KITCHEN, BIH_NO, C_FOUL, C_REASON, C_RESPOT, C_SHOOTER,
                                             C_TURN_OVER, GAME_EIGHT, GROUPS_OPEN, GROUPS_SOLIDS, N_CALL, N_STATE,
                                             S_BIH, S_BREAK, S_FOULS0, S_FOULS1, S_GAME, S_GROUPS, S_ON, S_OVER,
@@ -52,7 +52,7 @@ from billiards_env.shot_path import noisy_shot
 from ._kernels import observation
 from .actions import (AIM_ABSOLUTE, AIM_RELATIVE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, aim_to_angle,
                       power_to_speed, square_to_disc)
-from .candidates import _FAN, _FAN_ORDER, _FAN_SORTED, KICK_ARRIVAL, KICK_MARGIN, _slot_features
+from .candidates import _slot_features, kick_of
 
 #: The ``candidates`` action type (``J_AIM``).
 AIM_CANDIDATES = 4
@@ -278,54 +278,14 @@ def _direct_hit(targets: np.ndarray, pos: np.ndarray, on: np.ndarray, cx: float,
 @njit(cache=True)
 def _kick(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params,
           kc):
-    """The kick of ``envs/candidates.py`` (``_kick_slot``) for table ``k`` with speeds in ``[lo, hi]``, from the
-    table's kick cache ``kc[k]`` when it holds it: its candidates shortest first, each simulated at the fan of aims
-    on a copy of the table until one hits its ball first without a scratch. Returns ``(found, target, angle,
+    """The kick of ``envs/candidates.py`` (:func:`~billiards_env.envs.candidates.kick_of`) for table ``k`` with
+    speeds in ``[lo, hi]``, from the table's kick cache ``kc[k]`` when it holds it. Returns ``(found, target, angle,
     speed, length)``."""
     c = kc[k]
     if c[KC_VALID] != 0.0 and c[KC_LO] == lo and c[KC_HI] == hi:
         return c[KC_FOUND] != 0.0, int(c[KC_TARGET]), c[KC_ANGLE], c[KC_SPEED], c[KC_LENGTH]
-    rows = kick_candidates(pos, on, radius, targets, tm_xy, tm_r, tm_params, lo, hi, KICK_ARRIVAL, KICK_MARGIN)
-    nb = pos.shape[0]
-    nf = _FAN.shape[0]
-    p2 = np.empty((nb, 2))
-    v2 = np.empty((nb, 2))
-    a2 = np.empty((nb, 3))
-    o2 = np.empty(nb, np.bool_)
-    hits = np.empty(nf, np.bool_)
-    found, j, angle, speed, length = False, -1, 0.0, 0.0, 0.0
-    for r in range(rows.shape[0]):
-        d, target, a0, sp = rows[r, 0], int(rows[r, 1]), rows[r, 2], rows[r, 3]
-        for f in range(nf):
-            p2[:] = pos
-            v2[:] = 0.0
-            o2[:] = on
-            a = a0 + _FAN[f]
-            v2[0, 0] = sp * math.cos(a)
-            v2[0, 1] = sp * math.sin(a)
-            if icfg[J_SPIN_MODEL]:
-                a2[:] = 0.0
-                res = simulate_exact_spin(p2, v2, a2, radius, mass, o2, pocket_xy, pocket_r, params,
-                                          icfg[J_MAX_EVENTS], False)
-            else:
-                res = simulate_exact(p2, v2, radius, mass, o2, pocket_xy, pocket_r, params, icfg[J_MAX_EVENTS],
-                                     False)
-            hits[f] = first_contact_row(res.ev_int, 0) == target and res.pocket[0] < 0
-        n_ok = 0
-        for f in range(nf):
-            if hits[_FAN_ORDER[f]]:
-                n_ok += 1
-        if n_ok == 0:
-            continue
-        mid = n_ok // 2
-        for f in range(nf):
-            if hits[_FAN_ORDER[f]]:
-                if mid == 0:
-                    angle = a0 + _FAN_SORTED[f]
-                    break
-                mid -= 1
-        found, j, speed, length = True, target, sp, d
-        break
+    found, j, angle, speed, length = kick_of(pos, on, radius, mass, targets, tm_xy, tm_r, tm_params, lo, hi, pocket_xy,
+                                             pocket_r, params, icfg[J_SPIN_MODEL] != 0, icfg[J_MAX_EVENTS])
     c[KC_VALID] = 1.0
     c[KC_FOUND] = found
     c[KC_TARGET] = j

@@ -16,7 +16,7 @@ The last of the ``n`` slots is kept for a *kick* (the cue ball where it lies), o
 paths: a one-rail kick at a legal ball (a foul gives the opponent the cue ball in hand; a legal contact does not).
 The kick aims at the cushion point from which the ball, reflected with the cushion's restitution, runs into the
 legal ball full; kicks whose paths are blocked, or that would pass a pocket's mouth, are dropped, the others are
-simulated at a fan of aims around that one (:data:`KICK_FAN`, :func:`billiards_env.physics.batch.run_shots`),
+simulated at a fan of aims around that one (:data:`KICK_FAN`; each aim the exact kernel's run, :func:`kick_of`),
 shortest first, until one hits its ball first without a scratch at some aim (the middle of those is played): that
 one is the slot. The other ``n - 1`` slots are the pots.
 
@@ -34,7 +34,9 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics.aim import ghost_ball_position
-from billiards_env.physics.batch import run_shots
+from billiards_env.physics.exact import simulate_exact
+from billiards_env.physics.exact_spin import simulate_exact_spin
+from billiards_env.physics.outcome import first_contact_row
 from billiards_env.players.geometry import (COL_ANGLE, COL_CLEAR, COL_CLEAR_OBJ, COL_D_CUE, COL_D_OBJ, COL_OBJ_ANGLE,
                                             COL_POCKET, COL_REACH, COL_RISK, COL_SPEED, COL_TARGET, COL_TOL, N_COLS,
                                             state_model)
@@ -165,23 +167,62 @@ def _pot_slot(row: np.ndarray) -> Slot:
 
 
 def _kick_slot(state: "TableState", lo: float, hi: float) -> Slot | None:
-    """The kick (see the module docstring): the candidates of
-    :func:`billiards_env.players.slots.kick_candidates`, shortest first, each simulated at the fan of aims until
-    one hits its ball first without a scratch; None if none does."""
+    """The kick (see the module docstring; :func:`kick_of`); None if none hits."""
     b = state.balls
-    rows = kick_candidates(b.pos, b.on_table, b.radius, _targets(state), *state_model(state), lo, hi, KICK_ARRIVAL,
-                           KICK_MARGIN)
-    for d, target, angle, speed in rows.tolist():
-        j = int(target)
-        res = run_shots(state.simulator, b, angle + _FAN, np.full(len(_FAN), speed), validate=False)
-        hits = (res.first_contact == j) & (res.pocket[:, 0] < 0)
-        ok = np.flatnonzero(hits[_FAN_ORDER])
-        if len(ok) == 0:
+    sim = state.simulator
+    found, j, a, speed, d = kick_of(b.pos, b.on_table, b.radius, b.mass, _targets(state), *state_model(state), lo, hi,
+                                    sim._pocket_xy, sim._pocket_r, sim._params, sim._spin, int(sim.max_events))
+    if not found:
+        return None
+    shot = ShotCandidate(j, -1, a, speed, speed, math.nan, 0.0, d, 0.0, 0.0, 0.0, True, True, False, 0.0)
+    return Slot(j, -1, math.nan, 0.0, 0.0, True, shot)
+
+
+@njit(cache=True)
+def kick_of(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, targets: np.ndarray,
+            tm_xy: np.ndarray, tm_r: np.ndarray, tm_params: np.ndarray, lo: float, hi: float, pocket_xy: np.ndarray,
+            pocket_r: np.ndarray, params: np.ndarray, spin: bool, max_events: int) -> tuple:
+    """The kick in one compiled call: the candidates of :func:`billiards_env.players.slots.kick_candidates`,
+    shortest first, each simulated at the fan of aims (:data:`KICK_FAN`; each aim the exact kernel's run on a copy
+    of the table, as :func:`billiards_env.physics.batch.run_shots` runs it) until one hits its ball first without a
+    scratch at some aim: the middle of those is played. Returns ``(found, target, angle, speed, path length)``."""
+    rows = kick_candidates(pos, on, radius, targets, tm_xy, tm_r, tm_params, lo, hi, KICK_ARRIVAL, KICK_MARGIN)
+    nb = pos.shape[0]
+    nf = _FAN.shape[0]
+    p2 = np.empty((nb, 2))
+    v2 = np.empty((nb, 2))
+    a2 = np.empty((nb, 3))
+    o2 = np.empty(nb, np.bool_)
+    hits = np.empty(nf, np.bool_)
+    for r in range(rows.shape[0]):
+        d, target, a0, sp = rows[r, 0], int(rows[r, 1]), rows[r, 2], rows[r, 3]
+        for f in range(nf):
+            p2[:] = pos
+            v2[:] = 0.0
+            o2[:] = on
+            a = a0 + _FAN[f]
+            v2[0, 0] = sp * math.cos(a)
+            v2[0, 1] = sp * math.sin(a)
+            if spin:
+                a2[:] = 0.0
+                res = simulate_exact_spin(p2, v2, a2, radius, mass, o2, pocket_xy, pocket_r, params, max_events,
+                                          False)
+            else:
+                res = simulate_exact(p2, v2, radius, mass, o2, pocket_xy, pocket_r, params, max_events, False)
+            hits[f] = first_contact_row(res.ev_int, 0) == target and res.pocket[0] < 0
+        n_ok = 0
+        for f in range(nf):
+            if hits[_FAN_ORDER[f]]:
+                n_ok += 1
+        if n_ok == 0:
             continue
-        a = float(angle + _FAN_SORTED[ok[len(ok) // 2]])  # the middle of the aims that hit it
-        shot = ShotCandidate(j, -1, a, speed, speed, math.nan, 0.0, d, 0.0, 0.0, 0.0, True, True, False, 0.0)
-        return Slot(j, -1, math.nan, 0.0, 0.0, True, shot)
-    return None
+        mid = n_ok // 2
+        for f in range(nf):
+            if hits[_FAN_ORDER[f]]:
+                if mid == 0:
+                    return True, target, a0 + _FAN_SORTED[f], sp, d  # the middle of the aims that hit it
+                mid -= 1
+    return False, -1, 0.0, 0.0, 0.0
 
 
 def next_shot_ease(state: "TableState", n: int) -> float:
@@ -284,4 +325,4 @@ def _slot_features(rows: np.ndarray, in_hand: bool, kick_target: int, kick_lengt
 
 
 __all__ = ["Slot", "Slots", "candidate_slots", "next_shot_ease", "slot_features", "SLOT_FEATURES", "EASY_TOLERANCE",
-           "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL", "KICK_MARGIN", "KICK_FAN"]
+           "EASE_SPREAD", "FALLBACK_CUT", "KICK_ARRIVAL", "KICK_MARGIN", "KICK_FAN", "kick_of"]
