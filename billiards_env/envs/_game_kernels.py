@@ -50,8 +50,8 @@ from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_KITCHEN, BIH_NO, C
 from billiards_env.shot_path import noisy_shot
 
 from ._kernels import observation
-from .actions import (AIM_ABSOLUTE, AIM_RELATIVE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, aim_to_angle,
-                      power_to_speed, square_to_disc)
+from .actions import (AIM_ABSOLUTE, AIM_RELATIVE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, PLACED_MAX_CUT,
+                      aim_to_angle, power_to_speed, square_to_disc)
 from .candidates import _slot_features, kick_of
 
 #: The ``candidates`` action type (``J_AIM``).
@@ -255,7 +255,6 @@ def _action_of_shot(code: int, max_ghost: float, angle: float, speed: float, pla
 # --- the ``candidates`` action and observation types -----------------------------------------------------------------
 
 _SPEED_FACTORS = np.array(SPEED_FACTORS)
-_PLACED_MAX_CUT = math.radians(89.0)
 
 
 @njit(cache=True)
@@ -384,7 +383,7 @@ def _candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm
     p2[0, 0] = qx
     p2[0, 1] = qy
     o2[0] = True
-    shots = ghost_shots(p2, o2, radius, mass, 0, np.array([j]), tm_xy, tm_r, tm_params, lo, hi, _PLACED_MAX_CUT,
+    shots = ghost_shots(p2, o2, radius, mass, 0, np.array([j]), tm_xy, tm_r, tm_params, lo, hi, PLACED_MAX_CUT,
                         ARRIVE_SPEED, _SPEED_FACTORS, True)
     base_angle = math.atan2(gy - qy, gx - qx)
     base_speed = FALLBACK_SPEED

@@ -106,10 +106,20 @@ class Slots:
     @property
     def slots(self) -> tuple[Slot, ...]:
         if self._slots is None:
-            rows = self.rows if self.rows is not None else np.zeros((0, N_COLS))
-            self._slots = tuple(_hand_slot(r) for r in rows.tolist()) if self.in_hand else \
-                tuple(_pot_slot(r) for r in rows)
+            self._slots = tuple(self.at(i) for i in range(self.count))
         return self._slots
+
+    @property
+    def count(self) -> int:
+        """How many pots (``len(slots)``, without making them)."""
+        return len(self._slots) if self._slots is not None else (0 if self.rows is None else len(self.rows))
+
+    def at(self, i: int) -> Slot:
+        """Pot ``i`` (``slots[i]``, made alone when the others are not made yet)."""
+        if self._slots is not None:
+            return self._slots[i]
+        assert self.rows is not None
+        return _hand_slot(self.rows[i].tolist()) if self.in_hand else _pot_slot(self.rows[i])
 
     def __repr__(self) -> str:
         return (f"Slots(slots={self.slots!r}, in_hand={self.in_hand}, break_shot={self.break_shot}, "
