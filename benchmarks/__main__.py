@@ -1,4 +1,4 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|ladder] [--write | --out DIR]``,
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|ladder|games] [--write | --out DIR]``,
 from the repository root.
 
 It prints what it measured and nothing else; reports are written only when asked: ``--write`` updates the
@@ -20,7 +20,7 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players", "ladder")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players", "ladder", "games")
 #: Where ``--write`` puts the reports (the committed ones).
 DEFAULT_OUT = Path("docs/bench")
 
@@ -59,7 +59,7 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, batch, ladder, players, speed, spin
+    from . import accuracy, batch, games, ladder, players, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -80,6 +80,8 @@ def main(argv: list[str] | None = None) -> int:
             players.render(out)
         if (out / "ladder.json").exists():
             ladder.render(out)
+        if (out / "games.json").exists():
+            games.render(out)
         log(f"[bench] re-rendered the reports in {out}")
         return 0
     acc = accuracy.main(out, quick=args.quick) if "accuracy" in only else None
@@ -99,6 +101,8 @@ def main(argv: list[str] | None = None) -> int:
         players.main(out, quick=args.quick)
     if "ladder" in only:
         ladder.main(out, quick=args.quick)
+    if "games" in only:
+        games.main(out, quick=args.quick)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; "
         + (f"reports in {out}" if out is not None else "no report written (--write or --out DIR to write them)"))
     return 0

@@ -9,6 +9,7 @@ import time
 from pathlib import Path
 
 from .physics.warmup import warm_up as warm_up_physics
+from .players.warmup import warm_up as warm_up_players
 from .registration import ENV_IDS
 
 _PACKAGE = Path(__file__).resolve().parent
@@ -46,12 +47,20 @@ def clear_stale_cache() -> bool:
 
 
 def warm_up() -> float:
-    """Physics kernels, then one reset and step of each registered env and of the native vector env's paths;
-    returns the seconds it took."""
+    """Physics kernels, the players' kernels (:func:`billiards_env.players.warmup.warm_up`), the placement of a ball
+    in hand, then one reset and step of each registered env (and of a game with the ``candidates`` types) and of the
+    native vector env's paths (the pot scenes' and the games'); returns the seconds it took."""
     start = time.perf_counter()
     clear_stale_cache()
     warm_up_physics()
+    warm_up_players()
     import gymnasium as gym
+    import numpy as np
+
+    from .physics.layout import nearest_free_point
+
+    nearest_free_point(0.3, 0.3, np.array([[0.3, 0.3], [1.0, 0.5]]), np.ones(2, np.bool_), np.full(2, 0.028575), 0,
+                       (0.1, 0.6, 0.1, 1.1), holes=np.array([[0.0, 0.0, 0.06]]))
 
     import billiards_env  # noqa: F401  (registers the ids)
 
@@ -60,6 +69,11 @@ def warm_up() -> float:
         env.reset(seed=0)
         env.step(env.action_space.sample())
         env.close()
+    env = gym.make("Billiards9Ball-v0", action_type="candidates", observation_type="candidates", opponent=None,
+                   opening="ball_in_hand")
+    env.reset(seed=0)
+    env.step(np.zeros(env.action_space.shape, np.float32))
+    env.close()
     # The native vector env's kernels: serial (one call per step), parallel, with shot noise, and the spin model.
     for kwargs in ({"threads": 1}, {"threads": 2, "angle_noise": 0.01},
                    {"threads": 1, "physics": {"friction": "spin"}, "spin_action": True}):
@@ -67,6 +81,11 @@ def warm_up() -> float:
         env.reset(seed=0)
         env.step(env.action_space.sample())
         env.close()
+    # The games' tables (9-ball and 8-ball in compiled code: one kernel for every thread count).
+    env = gym.make_vec("Billiards9Ball-v0", 2)
+    env.reset(seed=0)
+    env.step(env.action_space.sample())
+    env.close()
     return time.perf_counter() - start
 
 

@@ -37,7 +37,9 @@ from gymnasium import spaces
 from numba import njit
 
 from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_aim, ray_circle_entry, wrap_angle)
-from billiards_env.players.shots import direct_hit, ghost_ball_shots
+from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_POCKET, COL_SPEED, SPEED_FACTORS, ghost_shots,
+                                            state_model)
+from billiards_env.players.shots import direct_hit
 from billiards_env.shot_path import CueShot, noisy_shot
 
 from .candidates import candidate_slots
@@ -312,6 +314,9 @@ class GhostAim(ActionType):
 #: the cut angle (rad) of the placement for ``|place_y|`` = 1.
 PLACE_BACK = (0.08, 0.8)
 PLACE_MAX_CUT = math.radians(60.0)
+#: ``candidates`` with the cue ball in hand: the largest cut of the ghost-ball shot played from the place.
+PLACED_MAX_CUT = math.radians(89.0)
+_SPEED_FACTORS = np.array(SPEED_FACTORS)
 #: ``candidates``: the speed (m/s) of the fallback full-ball hit when no candidate shot exists (the geometric
 #: player's firm hit); ``power`` scales it as it scales a candidate's speed.
 FALLBACK_SPEED = 2.0
@@ -374,16 +379,19 @@ class CandidateShots(ActionType):
         return math.log(max(float(speed), 1e-9) / max(base, 1e-9)) / self.log_factor
 
     def _placed_shot(self, state: "TableState", slot: Any, place: tuple[float, float]) -> tuple[float, float]:
-        """Aim and base speed of ``slot`` from the cue ball placed at ``place``."""
+        """Aim and base speed of ``slot`` from the cue ball placed at ``place``: the ghost-ball shot at its pocket
+        (cut up to 89 degrees; :func:`billiards_env.players.geometry.ghost_shots`), else a hit at its ghost ball at
+        :data:`FALLBACK_SPEED`."""
         b = state.balls
         with state.cue_moved_to(place):
-            shots = ghost_ball_shots(b, state.table, state.physics, 0, [slot.target], self.speed_range,
-                                     math.radians(89.0))
+            rows = ghost_shots(b.pos, b.on_table, b.radius, b.mass, 0, np.array([slot.target], dtype=np.int64),
+                               *state_model(state), float(self.speed_range[0]), float(self.speed_range[1]),
+                               PLACED_MAX_CUT, ARRIVE_SPEED, _SPEED_FACTORS, True)
             ghost = slot.ghost(float(b.radius[0] + b.radius[slot.target]), b.pos)
             angle = aim_angle(b.pos[0], ghost)
-        for s in shots:
-            if s.pocket == slot.pocket:
-                return s.angle, s.speed
+        for r in rows.tolist():
+            if int(r[COL_POCKET]) == slot.pocket:
+                return r[COL_ANGLE], r[COL_SPEED]
         return angle, FALLBACK_SPEED
 
     def _place_for(self, state: "TableState", slot: Any, px: float, py: float) -> tuple[float, float]:
@@ -414,11 +422,12 @@ class CandidateShots(ActionType):
             return base._replace(angle=angle, speed=max(speed, self.speed_range[0]), place=place)
         if cands.kick is not None and self._kicks(a[0]):  # as verified: its speed, no tip offsets
             return base._replace(angle=cands.kick.shot.angle, speed=cands.kick.shot.speed, side=0.0, top=0.0)
-        if not cands.slots:
+        n = cands.count
+        if n == 0:
             with state.cue_moved_to(base.place):
                 angle = self._direct(state, cands.targets)
             return base._replace(angle=angle, speed=self._speed(FALLBACK_SPEED, a[1]))
-        slot = cands.slots[0 if self._kicks(a[0]) else self._slot(a[0], len(cands.slots))]
+        slot = cands.at(0 if self._kicks(a[0]) else self._slot(a[0], n))
         if "pocket" in self._declare_at:  # the 8's called pocket: the chosen shot's
             base = base._replace(pocket=slot.pocket)
         if cands.in_hand:
@@ -489,6 +498,6 @@ def action_factory(config: "EnvConfig", placement: bool = False, declarations: t
 
 
 __all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "CandidateShots", "ACTION_TYPES",
-           "action_factory", "PLACE_BACK", "PLACE_MAX_CUT", "FALLBACK_SPEED",
+           "action_factory", "PLACE_BACK", "PLACE_MAX_CUT", "PLACED_MAX_CUT", "FALLBACK_SPEED",
            "square_to_disc", "disc_to_square", "aim_to_angle", "power_to_speed", "noisy_shot", "AIM_ABSOLUTE",
            "AIM_RELATIVE", "AIM_GHOST"]

@@ -244,8 +244,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         return self._exact_type
 
     def _opponent_shot(self) -> CueShot:
-        """The opponent policy's shot on the table now (see :meth:`GameTask.opponent_action`)."""
-        obs = self.observation_type.observe(self.state)
+        """The opponent policy's shot on the table now (see :meth:`GameTask.opponent_action`). The observation is
+        made only for a policy that reads it (a player whose ``reads_observation`` is False gets None)."""
+        reads = getattr(self.task.opponent, "reads_observation", True)
+        obs = self.observation_type.observe(self.state) if reads else None
         action, codec = self.task.opponent_action(self.state, obs, self.action_type, self._acting_type(), self)
         return codec.shot(self.state, action)
 

@@ -29,7 +29,7 @@ from gymnasium import spaces
 from billiards_env.physics.aim import pocket_bearings, pocket_mouth_axes, wrap_angle
 
 from ._kernels import observation
-from .candidates import candidate_slots
+from .candidates import EASY_TOLERANCE, SLOT_FEATURES, candidate_slots, slot_features  # noqa: F401
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.physics.table import Table
@@ -114,10 +114,6 @@ class ShotFeatures(ObservationType):
         return out
 
 
-#: Values per slot of the ``candidates`` observation.
-SLOT_FEATURES = 12
-#: Tolerance (rad of cue angle) that reads 1 in the ``candidates`` observation (an easy shot).
-EASY_TOLERANCE = 0.02
 
 
 class CandidateFeatures(ObservationType):
@@ -141,40 +137,10 @@ class CandidateFeatures(ObservationType):
         super().__init__(config, table, n_balls, n_game_features)
 
     def features(self, state: "TableState") -> np.ndarray:
-        """The slots' values (``12 * candidate_slots``)."""
-        out = np.zeros((self.n_slots, SLOT_FEATURES), np.float32)
+        """The slots' values (``12 * candidate_slots``; one compiled call:
+        :func:`billiards_env.envs.candidates.slot_features`)."""
         cands = candidate_slots(state, self.n_slots, self.speed_range)
-        t = state.table
-        px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
-        numbers = state.numbers
-        if cands.kick is not None:
-            s = cands.kick
-            row = out[self.n_slots - 1]
-            row[0] = 1.0
-            row[1] = numbers[s.target] / 15.0
-            row[2] = row[3] = -1.0  # no pocket
-            row[5] = min(s.shot.d_cue / t.length, 1.0)
-            row[8] = row[9] = 1.0
-            row[11] = s.shot.speed / self.speed_range[1]
-        for k, s in enumerate(cands.slots):
-            row = out[k]
-            row[0] = 1.0
-            row[1] = numbers[s.target] / 15.0
-            row[2], row[3] = px[s.pocket], py[s.pocket]
-            row[6] = min(s.d_obj / t.length, 1.0)
-            shot = s.shot
-            if shot is None:
-                row[7] = min(s.half / (math.pi / 8.0), 1.0)
-                row[8] = 1.0 if s.clear_obj else 0.0
-                continue
-            row[4] = wrap_angle(s.obj_angle - shot.angle) / (math.pi / 2.0)
-            row[5] = min(shot.d_cue / t.length, 1.0)
-            row[7] = min(shot.tolerance / EASY_TOLERANCE, 1.0)
-            row[8] = 1.0 if shot.clear else 0.0
-            row[9] = 1.0 if shot.reachable else 0.0
-            row[10] = 1.0 if shot.scratch_risk else 0.0
-            row[11] = shot.speed / self.speed_range[1]
-        return np.clip(out.reshape(-1), -1.0, 1.0)
+        return slot_features(state, cands, self.n_slots, self.speed_range[1])
 
 
 OBSERVATION_TYPES = {"positions": Positions, "features": ShotFeatures, "candidates": CandidateFeatures}

@@ -16,9 +16,12 @@ difference is speed: for the pot task (``BilliardsOneBall-v0``, ``BilliardsThree
 and any config of them) a step runs the actions, noise, strikes, scoring, re-spotting, resets and observations
 of all tables in compiled array code, and every table's shot in one call of the batch physics
 (:mod:`billiards_env.physics.batch`, spread over numba's threads); each sub-env draws from its own
-``numpy.random.Generator``, seeded as the single env is. Tasks played under the rules of a game (9-ball, 8-ball:
-rules engines and an opponent in Python) and the ``step`` solver run their sub-envs one by one (the same results,
-at single-env speed).
+``numpy.random.Generator``, seeded as the single env is. 9-ball and 8-ball (``Billiards9Ball-v0``,
+``Billiards8Ball-v0``) against the geometric opponent or alone run whole games per table in compiled code, the
+opponent's turns inside the step (:mod:`._vector_games`, :mod:`._game_kernels`: the rules compiled, the geometric
+player's decision on arrays, the ``candidates`` types); the ``features`` observation type, reset options and the
+info dicts stay in Python per table. Other opponents, rendering and the ``step`` solver run
+their sub-envs one by one (the same results, at single-env speed; ``not_native`` says why).
 
 Options (keyword arguments besides the env's own config keys): ``autoreset_mode`` (``"next_step"``, Gymnasium's
 default, ``"same_step"`` or ``"disabled"``; declared in ``metadata["autoreset_mode"]``), ``render_mode`` and
@@ -45,6 +48,7 @@ from billiards_env.table_state import TableState
 
 from ._pot_fast import compiled_action
 from ._seeding import np_random
+from ._vector_games import GameTables, native_games, stack_infos
 from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP,
                               I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
                               draw_noise, finish_shots, observe_positions, pack_config, place_tables, pot_step,
@@ -96,8 +100,16 @@ class BilliardsVectorEnv(VectorEnv):
         self.action_space = batch_space(t.action_space, self.num_envs)
         self.spec = None
         self.closed = False
-        #: Native array path (the pot task on the exact solver); otherwise the sub-envs run one by one.
+        #: Native array path (the pot task on the exact solver, or a game of :mod:`._vector_games`); otherwise the
+        #: sub-envs run one by one.
         self.native = c.task == "pot" and c.solver.name == "exact" and compiled_action(c)
+        #: The games' tables (9-ball, 8-ball: rules and opponents compiled), or None.
+        self.games: GameTables | None = None
+        #: Why a game runs its sub-envs one by one (None: it does not, or not a game).
+        self.not_native: str | None = None
+        if not self.native and c.task != "pot":
+            self.not_native = native_games(t, render_mode)
+            self.native = self.not_native is None
         if self.native:
             self._setup_native(t)
         else:
@@ -123,7 +135,9 @@ class BilliardsVectorEnv(VectorEnv):
         self._out = new_outputs(n, nb)
         self._fout = np.zeros((n, 7))  # per table: reward, the shot as played, the cue ball's start (F_*)
         self._iout = np.zeros((n, 5), np.int64)  # per table: terminated, truncated, success, scratch, pocketed (O_*)
-        self._cfg, self._icfg = pack_config(t.config, t.action_type, t.observation_type)
+        game = c.task != "pot"
+        self._cfg, self._icfg = (np.zeros(17), np.zeros(7, np.int64)) if game else \
+            pack_config(t.config, t.action_type, t.observation_type)
         c = t.config
         self._noisy = c.angle_noise > 0.0 or c.speed_noise > 0.0 or c.tip_noise > 0.0
         self._noise = np.zeros((n, 4))  # each table's shot noise (drawn by draw_noise when there is noise)
@@ -152,6 +166,8 @@ class BilliardsVectorEnv(VectorEnv):
         self._states = [TableState(Balls(self.ball_ids, self.pos[k], self.vel[k], t.balls.radius, t.balls.mass,
                                          self.on_table[k], self.ang[k]), s.table, s.physics, s.simulator, s.numbers,
                                    s.settings) for k in range(n)]
+        if game:
+            self.games = GameTables(self)
 
     # ======================================================================================================
     # Gymnasium API
@@ -185,7 +201,11 @@ class BilliardsVectorEnv(VectorEnv):
         self._reset_rows(rows, options or None)
         self._observe(rows)
         self._ever_reset = True
-        return self._obs.copy(), {}
+        infos: dict[str, Any] = {}
+        if self.games is not None:  # the games' reset info, stacked as SyncVectorEnv stacks it
+            self.games.prepare_infos()
+            infos = stack_infos(n, [(k, self.games.reset_info(k)) for k in rows.tolist()])
+        return self._obs.copy(), infos
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
         """Step every sub-env (one shot each; sub-envs whose episode ended reset as ``autoreset_mode`` says)."""
@@ -195,6 +215,8 @@ class BilliardsVectorEnv(VectorEnv):
             raise gym.error.ResetNeeded("call reset() before step(): the tables have no balls yet")
         n = self.num_envs
         act = self._parse(actions)
+        if self.games is not None:
+            return self._step_games(act)
         mode = self.autoreset_mode
         if mode == AutoresetMode.NEXT_STEP:
             resetting = self._needs_reset.copy()
@@ -346,6 +368,9 @@ class BilliardsVectorEnv(VectorEnv):
         self.shots[rows] = 0
         self._needs_reset[rows] = False
         self._has_shot[rows] = False
+        if self.games is not None:
+            self.games.reset(rows, options)
+            return
         if options:
             for k in rows.tolist():
                 self._reset_with_options(k, options)
@@ -374,6 +399,9 @@ class BilliardsVectorEnv(VectorEnv):
     def _observe(self, rows: np.ndarray) -> None:
         if rows.size == 0:
             return
+        if self.games is not None:
+            self.games.observe(rows)
+            return
         if self._positions_obs:
             observe_positions(np.ascontiguousarray(rows, dtype=np.int64), self.pos, self.on_table, self._cfg[C_SX],
                               self._cfg[C_SY], self._obs)
@@ -383,6 +411,57 @@ class BilliardsVectorEnv(VectorEnv):
                 state = self._states[k]
                 state.changed()  # the table moved on since the last observation
                 self._obs[k] = ot.observe(state)
+
+    def _step_games(self, act: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
+        """A step of the games' tables (:class:`._vector_games.GameTables`): the agent's shots and the opponents'
+        replies in one compiled call, the autoreset, and the info stacked as ``SyncVectorEnv`` stacks it."""
+        n = self.num_envs
+        g = self.games
+        assert g is not None
+        mode = self.autoreset_mode
+        if mode == AutoresetMode.NEXT_STEP:
+            resetting = self._needs_reset.copy()
+        else:
+            if mode == AutoresetMode.DISABLED and self._needs_reset.any():
+                k = int(np.flatnonzero(self._needs_reset)[0])
+                raise gym.error.ResetNeeded(f"sub-env {k}: its episode ended; with autoreset_mode='disabled' reset it "
+                                            "(options={'reset_mask': ...}) before stepping")
+            resetting = np.zeros(n, np.bool_)
+        stepped = np.flatnonzero(~resetting)
+        reset_rows = np.flatnonzero(resetting)
+        if stepped.size:
+            g.step(stepped, act)
+            g.observe(stepped)
+        if reset_rows.size:
+            self._reset_rows(reset_rows, None)
+            self._observe(reset_rows)
+        reward = np.zeros(n)
+        term = np.zeros(n, np.bool_)
+        trunc = np.zeros(n, np.bool_)
+        for k in stepped.tolist():
+            reward[k], term[k], trunc[k] = g.outcome(k)
+        done = term | trunc
+        entries: list[tuple[int, dict[str, Any]]] = []
+        g.prepare_infos()
+        if mode == AutoresetMode.SAME_STEP:
+            step_infos = {k: g.step_info(k) for k in stepped.tolist()}
+            ended = np.flatnonzero(done)
+            final_obs = {k: row for k, row in zip(ended.tolist(), self._obs[ended])}
+            if ended.size:
+                self._reset_rows(ended, None)
+                self._observe(ended)
+                g.prepare_infos()
+            for k in range(n):
+                info = step_infos[k]
+                if done[k]:
+                    entries.append((k, {"final_obs": final_obs[k], "final_info": info}))
+                    info = g.reset_info(k)
+                entries.append((k, info))
+            self._needs_reset[:] = False
+        else:
+            entries = [(k, g.reset_info(k) if resetting[k] else g.step_info(k)) for k in range(n)]
+            self._needs_reset = done
+        return self._obs.copy(), reward, term, trunc, stack_infos(n, entries)
 
     def _step_info(self, rows: np.ndarray, status, sim_time, n_events, first) -> dict[str, np.ndarray]:
         """The single env's step ``info`` of every table, as arrays (rows not in ``rows`` are filler)."""

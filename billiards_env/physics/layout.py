@@ -228,11 +228,6 @@ def place_random(rng: np.random.Generator, pos: np.ndarray, rows: Sequence[int],
 
 
 # --- re-spotting and ball in hand ----------------------------------------------------------------------------------
-def _others(pos: np.ndarray, on_table: np.ndarray, row: int) -> list[tuple[float, float]]:
-    return [(float(x), float(y)) for k, ((x, y), on) in enumerate(zip(pos.tolist(), on_table.tolist()))
-            if on and k != row]
-
-
 @njit(cache=True)
 def spot_cue_row(pos, on_table, radius, row, hx, hy, width):
     """The compiled core of :func:`spot_cue_ball` (also run by the native vector env): ball ``row`` on the point
@@ -270,24 +265,193 @@ def spot_cue_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: T
         raise SceneError("could not re-spot the cue ball: the head of the table is full")  # pragma: no cover
 
 
-def spot_object_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int) -> None:
-    """Re-spot ball ``row`` (rules: a ball pocketed on a foul): on the foot spot, or if that is taken on the long
-    string as close to it as possible behind it (towards the foot cushion), else in front of it. Sets
-    ``pos[row]`` and ``on_table[row]``."""
-    others = _others(pos, on_table, row)
+@njit(cache=True)
+def spot_object_row(pos, on_table, radius, row, fx, fy, length):
+    """The compiled core of :func:`spot_object_ball` (also run by the native vector env): ball ``row`` on the point
+    ``(fx, fy)`` (the foot spot) or the nearest free point of the line ``y = fy`` behind it (towards ``x =
+    length``, in steps of an eighth of a radius), else in front of it. Returns False if none is free."""
+    n = pos.shape[0]
     need2 = (2.0 * radius + 1e-6) ** 2
-    fx, fy = foot_spot(table)
     step = radius / 8.0
-    n_back = int((table.length - radius - fx) / step)
+    n_back = int((length - radius - fx) / step)
     n_front = int((fx - radius) / step)
-    candidates = [fx + k * step for k in range(n_back + 1)] + [fx - k * step for k in range(1, n_front + 1)]
-    for x in candidates:
-        if all((x - qx) * (x - qx) + (fy - qy) * (fy - qy) >= need2 for qx, qy in others):
+    for c in range(n_back + 1 + n_front):
+        x = fx + c * step if c <= n_back else fx - (c - n_back) * step
+        free = True
+        for q in range(n):
+            if q != row and on_table[q] and (x - pos[q, 0]) * (x - pos[q, 0]) + (fy - pos[q, 1]) * (
+                    fy - pos[q, 1]) < need2:
+                free = False
+                break
+        if free:
             pos[row, 0] = x
             pos[row, 1] = fy
             on_table[row] = True
-            return
-    raise SceneError("could not re-spot a ball: the long string is full")  # pragma: no cover
+            return True
+    return False
+
+
+def spot_object_ball(pos: np.ndarray, on_table: np.ndarray, radius: float, table: Table, row: int) -> None:
+    """Re-spot ball ``row`` (rules: a ball pocketed on a foul): on the foot spot, or if that is taken on the long
+    string as close to it as possible behind it (towards the foot cushion), else in front of it
+    (:func:`spot_object_row`). Sets ``pos[row]`` and ``on_table[row]``."""
+    fx, fy = foot_spot(table)
+    if not spot_object_row(pos, on_table, float(radius), int(row), float(fx), float(fy), float(table.length)):
+        raise SceneError("could not re-spot a ball: the long string is full")  # pragma: no cover
+
+
+@njit(cache=True)
+def _split(x: float) -> tuple:
+    t = x * 134217729.0  # Veltkamp's constant, 2^27 + 1
+    hi = t - (t - x)
+    return hi, x - hi
+
+
+@njit(cache=True)
+def _exact_product(x: float, y: float) -> tuple:
+    xh, xl = _split(x)
+    yh, yl = _split(y)
+    p = xh * yh
+    q = xh * yl + xl * yh
+    z = p + q
+    return z, p - z + q + xl * yl
+
+
+@njit(cache=True)
+def py_hypot(x: float, y: float) -> float:
+    """``math.hypot(x, y)`` exactly as CPython 3.11 computes it (a scaled, compensated sum and one correction
+    step: correctly rounded in nearly all cases), so compiled code agrees with Python code that uses it."""
+    ax = abs(x)
+    ay = abs(y)
+    mx = max(ax, ay)
+    if math.isinf(mx):
+        return mx
+    if math.isnan(x) or math.isnan(y):
+        return math.nan
+    if mx == 0.0:
+        return mx
+    _, e = math.frexp(mx)
+    if e < -1023:  # subnormal: the hardware's hypot (the last bit may differ from CPython's)
+        return math.hypot(x, y)
+    scale = math.ldexp(1.0, -e)
+    csum = 1.0
+    frac1 = 0.0
+    frac2 = 0.0
+    for v in (ax, ay):
+        v = v * scale
+        ph, pl = _exact_product(v, v)
+        s = csum + ph
+        frac2 += (csum - s) + ph
+        csum = s
+        frac1 += pl
+    h = math.sqrt(csum - 1.0 + (frac1 + frac2))
+    ph, pl = _exact_product(-h, h)
+    s = csum + ph
+    frac2 += (csum - s) + ph
+    csum = s
+    frac1 += pl
+    h += (csum - 1.0 + (frac1 + frac2)) / (2.0 * h)
+    return h / scale
+
+
+@njit(cache=True)
+def free_discs(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, row: int, holes: np.ndarray,
+               clearance: float) -> np.ndarray:
+    """The forbidden discs ``(D, 3)`` (x, y, radius) for ball ``row``: every other ball on the table (the two
+    radii and ``clearance``), then each hole of ``holes`` (rows x, y, r: the pockets' capture circles) widened by
+    ``clearance`` (see :func:`nearest_free_point`)."""
+    n_on = 0
+    for k in range(pos.shape[0]):
+        if on[k] and k != row:
+            n_on += 1
+    out = np.empty((n_on + holes.shape[0], 3))
+    d = 0
+    for k in range(pos.shape[0]):
+        if on[k] and k != row:
+            out[d, 0] = pos[k, 0]
+            out[d, 1] = pos[k, 1]
+            out[d, 2] = radius[row] + radius[k] + clearance
+            d += 1
+    for h in range(holes.shape[0]):
+        out[d, 0] = holes[h, 0]
+        out[d, 1] = holes[h, 1]
+        out[d, 2] = holes[h, 2] + clearance
+        d += 1
+    return out
+
+
+@njit(cache=True)
+def _legal(px: float, py: float, discs: np.ndarray, x0: float, x1: float, y0: float, y1: float) -> bool:
+    if not (x0 <= px <= x1 and y0 <= py <= y1):
+        return False
+    for d in range(discs.shape[0]):
+        rr = discs[d, 2] * (1.0 - 1e-12)
+        if (px - discs[d, 0]) ** 2 + (py - discs[d, 1]) ** 2 < rr ** 2:
+            return False
+    return True
+
+
+@njit(cache=True)
+def _consider(qx: float, qy: float, px: float, py: float, discs: np.ndarray, x0: float, x1: float, y0: float,
+              y1: float, best: np.ndarray) -> None:
+    qx = min(max(qx, x0), x1)
+    qy = min(max(qy, y0), y1)
+    d2 = (qx - px) ** 2 + (qy - py) ** 2
+    if d2 < best[2] and _legal(qx, qy, discs, x0, x1, y0, y1):  # the nearer test first: it is the cheap one
+        best[0] = qx
+        best[1] = qy
+        best[2] = d2
+
+
+@njit(cache=True)
+def nearest_free(x: float, y: float, discs: np.ndarray, x0: float, x1: float, y0: float, y1: float) -> tuple:
+    """The legal point nearest to ``(x, y)``: inside ``[x0, x1] x [y0, y1]`` and outside every disc of ``discs``
+    (:func:`free_discs`). Returns ``(x, y, found)``. The exact nearest point of the rectangle minus the discs (see
+    :func:`nearest_free_point`): the clipped point if legal, else the nearest legal one of the candidates (its
+    projections onto the discs, the disc/disc and disc/edge crossings, the corners; the first of equals)."""
+    px = min(max(x, x0), x1)
+    py = min(max(y, y0), y1)
+    if _legal(px, py, discs, x0, x1, y0, y1):
+        return px, py, True
+    best = np.array([0.0, 0.0, math.inf])
+    nd = discs.shape[0]
+    for a in range(nd):  # projections onto each disc's boundary
+        cx, cy, rr = discs[a, 0], discs[a, 1], discs[a, 2]
+        dx = px - cx
+        dy = py - cy
+        d = py_hypot(dx, dy)
+        ux, uy = (dx / d, dy / d) if d > 0.0 else (1.0, 0.0)
+        _consider(cx + ux * rr, cy + uy * rr, px, py, discs, x0, x1, y0, y1, best)
+    for a in range(nd):  # disc/disc intersections
+        ax, ay, ar = discs[a, 0], discs[a, 1], discs[a, 2]
+        for b in range(a + 1, nd):
+            bx, by, br = discs[b, 0], discs[b, 1], discs[b, 2]
+            d = py_hypot(bx - ax, by - ay)
+            if d == 0.0 or d > ar + br or d < abs(ar - br):
+                continue
+            along = (ar * ar - br * br + d * d) / (2.0 * d)
+            h = math.sqrt(max(ar * ar - along * along, 0.0))
+            mx = ax + along * (bx - ax) / d
+            my = ay + along * (by - ay) / d
+            _consider(mx - h * (by - ay) / d, my + h * (bx - ax) / d, px, py, discs, x0, x1, y0, y1, best)
+            _consider(mx + h * (by - ay) / d, my - h * (bx - ax) / d, px, py, discs, x0, x1, y0, y1, best)
+    for a in range(nd):  # disc/edge intersections
+        cx, cy, rr = discs[a, 0], discs[a, 1], discs[a, 2]
+        for ex in (x0, x1):
+            h2 = rr * rr - (ex - cx) ** 2
+            if h2 >= 0.0:
+                _consider(ex, cy + math.sqrt(h2), px, py, discs, x0, x1, y0, y1, best)
+                _consider(ex, cy - math.sqrt(h2), px, py, discs, x0, x1, y0, y1, best)
+        for ey in (y0, y1):
+            h2 = rr * rr - (ey - cy) ** 2
+            if h2 >= 0.0:
+                _consider(cx + math.sqrt(h2), ey, px, py, discs, x0, x1, y0, y1, best)
+                _consider(cx - math.sqrt(h2), ey, px, py, discs, x0, x1, y0, y1, best)
+    for qx, qy in ((x0, y0), (x0, y1), (x1, y0), (x1, y1)):
+        _consider(qx, qy, px, py, discs, x0, x1, y0, y1, best)
+    if best[2] == math.inf:
+        return px, py, False
+    return best[0], best[1], True
 
 
 def nearest_free_point(x: float, y: float, pos: np.ndarray, on_table: np.ndarray, radius: np.ndarray | float,
@@ -301,67 +465,33 @@ def nearest_free_point(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
     Ball in hand: an agent outputs any point, and an illegal one (off the area, overlapping a ball) moves here.
     Exact for the rectangle minus the union of the forbidden discs: the nearest point is the clipped point
     itself, its projection onto one disc's boundary, or a corner where two boundaries (disc/disc, disc/edge)
-    meet; every candidate is checked and the nearest legal one returned. Raises :class:`SceneError` if there is
-    no legal point at all.
+    meet; every candidate is checked and the nearest legal one returned (one compiled call: :func:`free_discs`,
+    :func:`nearest_free`). Raises :class:`SceneError` if there is no legal point at all.
     """
     x0, x1, y0, y1 = area
     if not (x0 <= x1 and y0 <= y1):
         raise SceneError(f"placement area {area}: empty; x0 <= x1 and y0 <= y1 are required")
-    rad = np.broadcast_to(np.asarray(radius, dtype=float), (len(pos),))
-    discs = [(float(pos[k, 0]), float(pos[k, 1]), float(rad[row] + rad[k] + clearance))
-             for k in range(len(pos)) if on_table[k] and k != row]
-    if holes is not None:
-        discs += [(float(hx), float(hy), float(hr) + clearance) for hx, hy, hr in np.asarray(holes, dtype=float)]
-
-    def legal(px: float, py: float) -> bool:
-        if not (x0 <= px <= x1 and y0 <= py <= y1):
-            return False
-        return all((px - cx) ** 2 + (py - cy) ** 2 >= (rr * (1.0 - 1e-12)) ** 2 for cx, cy, rr in discs)
-
-    px = min(max(float(x), x0), x1)
-    py = min(max(float(y), y0), y1)
-    if legal(px, py):
-        return px, py
-    cands: list[tuple[float, float]] = []
-    for cx, cy, rr in discs:  # projections onto each disc's boundary
-        dx, dy = px - cx, py - cy
-        d = math.hypot(dx, dy)
-        ux, uy = (dx / d, dy / d) if d > 0.0 else (1.0, 0.0)
-        cands.append((cx + ux * rr, cy + uy * rr))
-    for a in range(len(discs)):  # disc/disc intersections
-        ax, ay, ar = discs[a]
-        for b in range(a + 1, len(discs)):
-            bx, by, br = discs[b]
-            d = math.hypot(bx - ax, by - ay)
-            if d == 0.0 or d > ar + br or d < abs(ar - br):
-                continue
-            along = (ar * ar - br * br + d * d) / (2.0 * d)
-            h = math.sqrt(max(ar * ar - along * along, 0.0))
-            mx, my = ax + along * (bx - ax) / d, ay + along * (by - ay) / d
-            cands.append((mx - h * (by - ay) / d, my + h * (bx - ax) / d))
-            cands.append((mx + h * (by - ay) / d, my - h * (bx - ax) / d))
-    for cx, cy, rr in discs:  # disc/edge intersections
-        for ex in (x0, x1):
-            h2 = rr * rr - (ex - cx) ** 2
-            if h2 >= 0.0:
-                cands += [(ex, cy + math.sqrt(h2)), (ex, cy - math.sqrt(h2))]
-        for ey in (y0, y1):
-            h2 = rr * rr - (ey - cy) ** 2
-            if h2 >= 0.0:
-                cands += [(cx + math.sqrt(h2), ey), (cx - math.sqrt(h2), ey)]
-    cands += [(x0, y0), (x0, y1), (x1, y0), (x1, y1)]
-    best = None
-    best_d2 = math.inf
-    for qx, qy in cands:
-        qx = min(max(qx, x0), x1)
-        qy = min(max(qy, y0), y1)
-        if legal(qx, qy):
-            d2 = (qx - px) ** 2 + (qy - py) ** 2
-            if d2 < best_d2:
-                best, best_d2 = (qx, qy), d2
-    if best is None:
+    n = len(pos)
+    rad = radius if isinstance(radius, np.ndarray) and radius.dtype == np.float64 and radius.shape == (n,) else \
+        np.ascontiguousarray(np.broadcast_to(np.asarray(radius, dtype=np.float64), (n,)))
+    hole_rows = _NO_HOLES if holes is None else np.ascontiguousarray(holes, dtype=np.float64).reshape(-1, 3)
+    px, py, ok = nearest_free_xy(float(x), float(y), np.ascontiguousarray(pos, dtype=np.float64),
+                                 np.ascontiguousarray(on_table, dtype=np.bool_), np.ascontiguousarray(rad), int(row),
+                                 float(x0), float(x1), float(y0), float(y1), float(clearance), hole_rows)
+    if not ok:
         raise SceneError(f"no legal point for ball row {row} in the area {area}: it is covered by other balls")
-    return best
+    return px, py
+
+
+_NO_HOLES = np.zeros((0, 3))
+
+
+@njit(cache=True)
+def nearest_free_xy(x: float, y: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, row: int, x0: float,
+                    x1: float, y0: float, y1: float, clearance: float, holes: np.ndarray) -> tuple:
+    """:func:`nearest_free_point` on arrays (for compiled callers): ``(x, y, found)``."""
+    return nearest_free(min(max(x, x0), x1), min(max(y, y0), y1), free_discs(pos, on, radius, row, holes, clearance),
+                        x0, x1, y0, y1)
 
 
 # --- snooker ------------------------------------------------------------------------------------------------------
@@ -615,6 +745,6 @@ __all__ = [
     "RACK_ORDER", "DIAMOND_ORDER", "head_string_x", "head_spot", "foot_spot", "rack_rows", "triangle_positions",
     "diamond_positions", "rack_balls", "rack_fits", "place_random", "place_random_rows", "place_rows", "place_row",
     "spot_cue_ball",
-    "spot_cue_row", "spot_object_ball",
-    "nearest_free_point",
+    "spot_cue_row", "spot_object_ball", "spot_object_row",
+    "nearest_free_point", "nearest_free", "nearest_free_xy", "free_discs", "py_hypot",
 ]

@@ -1,9 +1,10 @@
 """The players' Python before the compiled geometry of issue 21, kept as the reference that the tests
-(tests/players/test_geometry.py, test_search_fast.py) and the benchmark (benchmarks/players.py) compare the compiled
-code with: ``ghost_ball_shots``, ``geometric_shot``, ``break_shot``, ``choose_placement``, the geometric player's
-decision (:func:`reference_geometric_act`) and the search player (:class:`ReferenceSearchPlayer`), with the numpy
-``pocket_window`` (41 sampled directions), ``segment_blocked`` and ``cut_cosine`` they called. Verbatim copies (the
-search's imports pointed at the copies here). Not part of the API; to be removed once the lead retires it."""
+(tests/players/test_geometry.py, test_search_fast.py, test_slots.py) and the benchmark (benchmarks/players.py) compare
+the compiled code with: ``ghost_ball_shots``, ``geometric_shot``, ``break_shot``, ``choose_placement``, the geometric
+player's decision (:func:`reference_geometric_act`), the search player (:class:`ReferenceSearchPlayer`) and the
+``candidates`` types' slot lists (:func:`reference_candidate_slots` and its parts), with the numpy ``pocket_window``
+(41 sampled directions), ``segment_blocked`` and ``cut_cosine`` they called. Verbatim copies (the search's and the
+slots' imports pointed at the copies here). Not part of the API; to be removed once the lead retires it."""
 from __future__ import annotations
 
 import contextlib
@@ -779,3 +780,169 @@ class ReferenceSearchPlayer:
         return k if k >= 0 else None
 
 
+
+# --- the candidates types' slots (billiards_env/envs/candidates.py before issue 21) ---------------------------------
+# The Python slot lists of the ``candidates`` action and observation types, kept for tests/players/test_slots.py
+# (the compiled players/slots.py must equal them). They run on a table state and the reference geometry above.
+
+#: The cut limit of the fallback list when no shot has a cut <= MAX_CUT (as the geometric player).
+FALLBACK_CUT = math.radians(88.0)
+#: The least angle spread (rad) :func:`reference_next_shot_ease` assumes.
+EASE_SPREAD = 0.002
+#: A kick's speed: the launch speed that would still roll at ``KICK_ARRIVAL`` m/s over the path, times ``KICK_MARGIN``.
+KICK_ARRIVAL = 0.8
+KICK_MARGIN = 1.15
+#: Aim offsets (rad) simulated around each kick's reflected aim.
+KICK_FAN = (0.0, -0.008, 0.008, -0.02, 0.02, -0.04, 0.04, -0.07, 0.07)
+
+
+@dataclass(frozen=True)
+class Slot:
+    """One candidate: pot ball ``target`` (row) in ``pocket`` (as ``envs/candidates.py`` ``Slot``)."""
+
+    target: int
+    pocket: int
+    obj_angle: float
+    half: float
+    d_obj: float
+    clear_obj: bool
+    shot: ShotCandidate | None = None
+
+
+def reference_shot_slots(state: Any, targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
+    """The pot slots with the cue ball where it lies (``_shot_slots``)."""
+    b = state.balls
+    shots: list[ShotCandidate] = []
+    for cut in (MAX_CUT, FALLBACK_CUT):
+        shots = ghost_ball_shots(b, state.table, state.physics, 0, list(targets), rng, cut)
+        if shots:
+            break
+    return [Slot(s.target, s.pocket, s.obj_angle, s.window, s.d_obj,
+                 _path_clear(b, s.target, s.obj_angle, s.d_obj), s) for s in shots]
+
+
+def reference_in_hand_slots(state: Any, targets: tuple[int, ...]) -> list[Slot]:
+    """The pot slots with the cue ball in hand (``_in_hand_slots``)."""
+    b = state.balls
+    out: list[tuple[float, Slot]] = []
+    for j in targets:
+        r = float(b.radius[j])
+        for p in range(state.table.n_pockets):
+            win = pocket_window(b.pos[j], r, state.table, p)
+            if win is None:
+                continue
+            obj_angle, half, d_obj = win
+            clear = _path_clear(b, j, obj_angle, d_obj)
+            out.append((half * (1.0 if clear else 0.1), Slot(j, p, obj_angle, half, d_obj, clear)))
+    out.sort(key=lambda t: -t[0])  # stable: ties keep (ball, pocket) order
+    return [s for _, s in out]
+
+
+def kick_points(cue: np.ndarray, target: np.ndarray, table: Any, radius: float, restitution: float
+                ) -> list[tuple[int, np.ndarray]]:
+    """``(cushion, point)`` for each one-rail kick from ``cue`` to ``target`` (ball centres)."""
+    out: list[tuple[int, np.ndarray]] = []
+    cx, cy = float(cue[0]), float(cue[1])
+    tx, ty = float(target[0]), float(target[1])
+    e = restitution
+    lines = ((0, radius), (1, table.length - radius), (2, radius), (3, table.width - radius))
+    for k, w in lines:
+        if k < 2:  # vertical cushion x = w: (tx - w)(py - cy) = -e (w - cx)(ty - py)
+            den = (tx - w) - e * (w - cx)
+            if abs(den) < 1e-12 or (w - cx) * (w - tx) <= 0.0:
+                continue
+            p = np.array([w, ((tx - w) * cy - e * (w - cx) * ty) / den])
+            if not (radius < p[1] < table.width - radius):
+                continue
+        else:
+            den = (ty - w) - e * (w - cy)
+            if abs(den) < 1e-12 or (w - cy) * (w - ty) <= 0.0:
+                continue
+            p = np.array([((ty - w) * cx - e * (w - cy) * tx) / den, w])
+            if not (radius < p[0] < table.length - radius):
+                continue
+        out.append((k, p))
+    return out
+
+
+def reference_kick_candidates(state: Any, targets: tuple[int, ...], rng: tuple[float, float]
+                              ) -> list[tuple[float, int, float, float]]:
+    """The kicks worth simulating, ``(length, target, angle, speed)`` sorted (``_kick_slots`` before its batch)."""
+    b = state.balls
+    t = state.table
+    rc = float(b.radius[0])
+    cue = b.pos[0]
+    cands: list[tuple[float, int, float, float]] = []  # (length, target, angle, speed)
+    for j in targets:
+        others = [k for k in range(len(b.ids)) if b.on_table[k] and k not in (0, j)]
+        opos, orad = b.pos[others], b.radius[others] + rc
+        for _, p in kick_points(cue, b.pos[j], t, rc, t.cushion_restitution):
+            if np.any(np.hypot(*(t.pocket_xy - p).T) < t.pocket_radius + 2.0 * rc):
+                continue  # the bounce would pass a pocket's mouth
+            if segment_blocked(cue, p, opos, orad) or segment_blocked(p, b.pos[j], opos, orad):
+                continue
+            d = float(np.hypot(*(p - cue))) + float(np.hypot(*(b.pos[j] - p)))
+            v = KICK_MARGIN * launch_speed(d, KICK_ARRIVAL, *state.physics.path_args)
+            cands.append((d, j, aim_angle(cue, p), min(max(v, rng[0]), rng[1])))
+    cands.sort()
+    return cands
+
+
+def reference_kick_slots(state: Any, targets: tuple[int, ...], rng: tuple[float, float]) -> list[Slot]:
+    """Kicks at the legal balls, each verified by a fan of simulated aims, shortest first (``_kick_slots``)."""
+    b = state.balls
+    cands = reference_kick_candidates(state, targets, rng)
+    if not cands:
+        return []
+    fan = np.asarray(KICK_FAN)
+    angles = np.concatenate([c[2] + fan for c in cands])
+    speeds = np.repeat([c[3] for c in cands], len(fan))
+    res = run_shots(state.simulator, b, angles, speeds, validate=False)
+    hits = (res.first_contact.reshape(len(cands), len(fan)) == np.array([c[1] for c in cands])[:, None]) & \
+        (res.pocket[:, 0] < 0).reshape(len(cands), len(fan))
+    out = []
+    for k, (d, j, angle, speed) in enumerate(cands):
+        ok = np.flatnonzero(hits[k][np.argsort(fan)])
+        if len(ok) == 0:
+            continue
+        a = float(angle + np.sort(fan)[ok[len(ok) // 2]])  # the middle of the aims that hit it
+        shot = ShotCandidate(j, -1, a, speed, speed, math.nan, 0.0, d, 0.0, 0.0, 0.0, True, True, False, 0.0)
+        out.append(Slot(j, -1, math.nan, 0.0, 0.0, True, shot))
+    return out
+
+
+def reference_candidate_slots(state: Any, n: int, speed_range: tuple[float, float] | None = None
+                              ) -> tuple[tuple[Slot, ...], Slot | None]:
+    """``(slots, kick)`` of ``candidate_slots`` (no memo)."""
+    if speed_range is None:
+        speed_range = state.settings.speed_range
+    view = state.view
+    targets = view.targets
+    kick: Slot | None = None
+    if view.break_shot:
+        slots: tuple[Slot, ...] = ()
+    elif view.place_area is not None:
+        slots = tuple(reference_in_hand_slots(state, targets)[:max(n - 1, 1)])
+    else:
+        slots = tuple(reference_shot_slots(state, targets, speed_range)[:max(n - 1, 1)])
+        if n > 1 and not any(s.shot.clear for s in slots):
+            kicks = reference_kick_slots(state, targets, speed_range)
+            kick = kicks[0] if kicks else None
+    return slots, kick
+
+
+def reference_next_shot_ease(state: Any, n: int) -> float:
+    """``next_shot_ease``: the best slot's score through ``pot_probability`` (0 without a pot)."""
+    slots, _ = reference_candidate_slots(state, n)
+    best = max((s.shot.score for s in slots if s.shot is not None), default=0.0)
+    return pot_probability(best, max(state.settings.angle_noise, EASE_SPREAD))
+
+
+def _path_clear(b: Any, j: int, obj_angle: float, d_obj: float) -> bool:
+    """Whether ball ``j`` rolls ``d_obj`` along ``obj_angle`` without touching another object ball."""
+    others = [k for k in range(len(b.ids)) if b.on_table[k] and k not in (0, j)]
+    if not others:
+        return True
+    o = b.pos[j]
+    return not segment_blocked(o, o + direction_vector(obj_angle) * d_obj, b.pos[others],
+                               b.radius[others] + float(b.radius[j]))

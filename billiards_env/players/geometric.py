@@ -12,15 +12,24 @@ from typing import Any
 import numpy as np
 
 from .context import ShotContext, player_inputs, shot_context, to_action
-from .geometry import MAX_CUT, PLACE_BACKS, Decision, choose_place, geometric_decision, table_model
+from .geometry import (MAX_CUT, PLACE_BACKS, Decision, TableModel, choose_place, geometric_decision, state_model,
+                       table_model)
 from .shots import ShotCandidate, candidate_of
+
+
+def context_model(ctx: ShotContext) -> TableModel:
+    """The table model of a context: its table state's, made once per state (:func:`.geometry.state_model`), when the
+    context was read from one; else made now."""
+    st = ctx.table_state
+    if st is not None and st.table is ctx.table and st.physics is ctx.physics:
+        return state_model(st)
+    return table_model(ctx.table, ctx.physics)
 
 
 def _decide(ctx: ShotContext, max_cut: float, is_break: bool, place_area: Any = None) -> Decision:
     b = ctx.balls
     return geometric_decision(b.pos, b.on_table, b.radius, b.mass, np.asarray(ctx.targets, dtype=np.int64),
-                              table_model(ctx.table, ctx.physics), ctx.speed_range, place_area, is_break, max_cut,
-                              ctx.cue)
+                              context_model(ctx), ctx.speed_range, place_area, is_break, max_cut, ctx.cue)
 
 
 def geometric_shot(ctx: ShotContext, max_cut: float = MAX_CUT) -> tuple[float, float, ShotCandidate | None]:
@@ -50,7 +59,7 @@ def choose_placement(ctx: ShotContext, max_cut: float = MAX_CUT,
                             np.ascontiguousarray(b.on_table, dtype=np.bool_),
                             np.ascontiguousarray(b.radius, dtype=np.float64),
                             np.ascontiguousarray(b.mass, dtype=np.float64), int(ctx.cue),
-                            np.asarray(ctx.targets, dtype=np.int64), *table_model(ctx.table, ctx.physics),
+                            np.asarray(ctx.targets, dtype=np.int64), *context_model(ctx),
                             float(ctx.speed_range[0]), float(ctx.speed_range[1]), float(max_cut),
                             np.asarray(ctx.place_area, dtype=np.float64), np.asarray(backs, dtype=np.float64))
     if not ok:
@@ -63,6 +72,8 @@ class GeometricPlayer:
     """Ghost-ball aiming at the easiest pocket (see :func:`.shots.ghost_ball_shots`)."""
 
     name = "geometric"
+    #: :meth:`act` reads the table state, not the observation (the env need not observe for it).
+    reads_observation = False
 
     def __init__(self, seed: int | None = 0, max_cut: float = MAX_CUT):
         self.max_cut = max_cut
@@ -88,4 +99,4 @@ class GeometricPlayer:
         return to_action(codec, state, d.angle, d.speed, place=d.place, pocket=d.pocket if d.shot >= 0 else None)
 
 
-__all__ = ["geometric_shot", "break_shot", "choose_placement", "GeometricPlayer"]
+__all__ = ["geometric_shot", "break_shot", "choose_placement", "GeometricPlayer", "context_model"]

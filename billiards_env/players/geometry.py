@@ -18,7 +18,8 @@ A shot is a row of :data:`N_COLS` floats (columns ``COL_*``), ranked easiest fir
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+import weakref
+from typing import Any, NamedTuple
 
 import numpy as np
 from numba import njit
@@ -26,6 +27,7 @@ from numba import njit
 from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between, dot2, ghost_point,
                                        lone_path_pocket, pocket_windows, segment_blocked_by,
                                        segment_touched_by)
+from billiards_env.physics.layout import free_discs, nearest_free, py_hypot  # noqa: F401 (re-exported)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
 
 #: Columns of a shot row.
@@ -85,6 +87,18 @@ def table_model(table, physics) -> TableModel:
     # Copies: writeable arrays (the table's are read-only), so every caller hits the same compiled signature.
     return TableModel(np.array(table.pocket_xy, dtype=np.float64), np.array(table.pocket_radius, dtype=np.float64),
                       params)
+
+
+_MODELS: "weakref.WeakKeyDictionary[Any, tuple[Any, Any, TableModel]]" = weakref.WeakKeyDictionary()
+
+
+def state_model(state: Any) -> TableModel:
+    """The :class:`TableModel` of a table state (``state.table``, ``state.physics``), made once per state and kept
+    while its table and physics stay the same objects: a decision on a table pays no conversion."""
+    got = _MODELS.get(state)
+    if got is None or got[0] is not state.table or got[1] is not state.physics:
+        got = _MODELS[state] = (state.table, state.physics, table_model(state.table, state.physics))
+    return got[2]
 
 
 @njit(cache=True)
@@ -304,161 +318,7 @@ def nearest_target(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, cue: i
     return best
 
 
-# --- ball in hand: the nearest legal point --------------------------------------------------------------------------
-
-@njit(cache=True)
-def _split(x: float) -> tuple:
-    t = x * 134217729.0  # Veltkamp's constant, 2^27 + 1
-    hi = t - (t - x)
-    return hi, x - hi
-
-
-@njit(cache=True)
-def _exact_product(x: float, y: float) -> tuple:
-    xh, xl = _split(x)
-    yh, yl = _split(y)
-    p = xh * yh
-    q = xh * yl + xl * yh
-    z = p + q
-    return z, p - z + q + xl * yl
-
-
-@njit(cache=True)
-def py_hypot(x: float, y: float) -> float:
-    """``math.hypot(x, y)`` exactly as CPython 3.11 computes it (a scaled, compensated sum and one correction
-    step: correctly rounded in nearly all cases), so compiled code agrees with Python code that uses it."""
-    ax = abs(x)
-    ay = abs(y)
-    mx = max(ax, ay)
-    if math.isinf(mx):
-        return mx
-    if math.isnan(x) or math.isnan(y):
-        return math.nan
-    if mx == 0.0:
-        return mx
-    _, e = math.frexp(mx)
-    if e < -1023:  # subnormal: the hardware's hypot (the last bit may differ from CPython's)
-        return math.hypot(x, y)
-    scale = math.ldexp(1.0, -e)
-    csum = 1.0
-    frac1 = 0.0
-    frac2 = 0.0
-    for v in (ax, ay):
-        v = v * scale
-        ph, pl = _exact_product(v, v)
-        s = csum + ph
-        frac2 += (csum - s) + ph
-        csum = s
-        frac1 += pl
-    h = math.sqrt(csum - 1.0 + (frac1 + frac2))
-    ph, pl = _exact_product(-h, h)
-    s = csum + ph
-    frac2 += (csum - s) + ph
-    csum = s
-    frac1 += pl
-    h += (csum - 1.0 + (frac1 + frac2)) / (2.0 * h)
-    return h / scale
-
-
-@njit(cache=True)
-def free_discs(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, row: int, holes: np.ndarray,
-               clearance: float) -> np.ndarray:
-    """The forbidden discs ``(D, 3)`` (x, y, radius) for ball ``row``: every other ball on the table (the two
-    radii and ``clearance``), then each hole of ``holes`` (rows x, y, r: the pockets' capture circles) widened by
-    ``clearance`` (see :func:`billiards_env.physics.layout.nearest_free_point`)."""
-    n_on = 0
-    for k in range(pos.shape[0]):
-        if on[k] and k != row:
-            n_on += 1
-    out = np.empty((n_on + holes.shape[0], 3))
-    d = 0
-    for k in range(pos.shape[0]):
-        if on[k] and k != row:
-            out[d, 0] = pos[k, 0]
-            out[d, 1] = pos[k, 1]
-            out[d, 2] = radius[row] + radius[k] + clearance
-            d += 1
-    for h in range(holes.shape[0]):
-        out[d, 0] = holes[h, 0]
-        out[d, 1] = holes[h, 1]
-        out[d, 2] = holes[h, 2] + clearance
-        d += 1
-    return out
-
-
-@njit(cache=True)
-def _legal(px: float, py: float, discs: np.ndarray, x0: float, x1: float, y0: float, y1: float) -> bool:
-    if not (x0 <= px <= x1 and y0 <= py <= y1):
-        return False
-    for d in range(discs.shape[0]):
-        rr = discs[d, 2] * (1.0 - 1e-12)
-        if (px - discs[d, 0]) ** 2 + (py - discs[d, 1]) ** 2 < rr ** 2:
-            return False
-    return True
-
-
-@njit(cache=True)
-def _consider(qx: float, qy: float, px: float, py: float, discs: np.ndarray, x0: float, x1: float, y0: float,
-              y1: float, best: np.ndarray) -> None:
-    qx = min(max(qx, x0), x1)
-    qy = min(max(qy, y0), y1)
-    d2 = (qx - px) ** 2 + (qy - py) ** 2
-    if d2 < best[2] and _legal(qx, qy, discs, x0, x1, y0, y1):  # the nearer test first: it is the cheap one
-        best[0] = qx
-        best[1] = qy
-        best[2] = d2
-
-
-@njit(cache=True)
-def nearest_free(x: float, y: float, discs: np.ndarray, x0: float, x1: float, y0: float, y1: float) -> tuple:
-    """The legal point nearest to ``(x, y)``: inside ``[x0, x1] x [y0, y1]`` and outside every disc of ``discs``
-    (:func:`free_discs`). Returns ``(x, y, found)``. The exact nearest point of the rectangle minus the discs, as
-    :func:`billiards_env.physics.layout.nearest_free_point` finds it (the same candidates, in the same order: the
-    clipped point, its projections onto the discs, the disc/disc and disc/edge crossings, the corners)."""
-    px = min(max(x, x0), x1)
-    py = min(max(y, y0), y1)
-    if _legal(px, py, discs, x0, x1, y0, y1):
-        return px, py, True
-    best = np.array([0.0, 0.0, math.inf])
-    nd = discs.shape[0]
-    for a in range(nd):  # projections onto each disc's boundary
-        cx, cy, rr = discs[a, 0], discs[a, 1], discs[a, 2]
-        dx = px - cx
-        dy = py - cy
-        d = py_hypot(dx, dy)
-        ux, uy = (dx / d, dy / d) if d > 0.0 else (1.0, 0.0)
-        _consider(cx + ux * rr, cy + uy * rr, px, py, discs, x0, x1, y0, y1, best)
-    for a in range(nd):  # disc/disc intersections
-        ax, ay, ar = discs[a, 0], discs[a, 1], discs[a, 2]
-        for b in range(a + 1, nd):
-            bx, by, br = discs[b, 0], discs[b, 1], discs[b, 2]
-            d = py_hypot(bx - ax, by - ay)
-            if d == 0.0 or d > ar + br or d < abs(ar - br):
-                continue
-            along = (ar * ar - br * br + d * d) / (2.0 * d)
-            h = math.sqrt(max(ar * ar - along * along, 0.0))
-            mx = ax + along * (bx - ax) / d
-            my = ay + along * (by - ay) / d
-            _consider(mx - h * (by - ay) / d, my + h * (bx - ax) / d, px, py, discs, x0, x1, y0, y1, best)
-            _consider(mx + h * (by - ay) / d, my - h * (bx - ax) / d, px, py, discs, x0, x1, y0, y1, best)
-    for a in range(nd):  # disc/edge intersections
-        cx, cy, rr = discs[a, 0], discs[a, 1], discs[a, 2]
-        for ex in (x0, x1):
-            h2 = rr * rr - (ex - cx) ** 2
-            if h2 >= 0.0:
-                _consider(ex, cy + math.sqrt(h2), px, py, discs, x0, x1, y0, y1, best)
-                _consider(ex, cy - math.sqrt(h2), px, py, discs, x0, x1, y0, y1, best)
-        for ey in (y0, y1):
-            h2 = rr * rr - (ey - cy) ** 2
-            if h2 >= 0.0:
-                _consider(cx + math.sqrt(h2), ey, px, py, discs, x0, x1, y0, y1, best)
-                _consider(cx - math.sqrt(h2), ey, px, py, discs, x0, x1, y0, y1, best)
-    for qx, qy in ((x0, y0), (x0, y1), (x1, y0), (x1, y1)):
-        _consider(qx, qy, px, py, discs, x0, x1, y0, y1, best)
-    if best[2] == math.inf:
-        return px, py, False
-    return best[0], best[1], True
-
+# --- ball in hand: the nearest legal point (physics/layout.py's nearest_free, on the pockets as holes) ----------
 
 @njit(cache=True)
 def pocket_holes(tm: Model) -> np.ndarray:
@@ -804,11 +664,11 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
     return Decision((float(px), float(py)) if placed else None, float(angle), float(speed), pocket, int(k), rows)
 
 
-__all__ = ["Model", "TableModel", "table_model", "model", "windows_of", "target_windows", "shot_row", "rank_rows",
-           "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
+__all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "target_windows", "shot_row",
+           "rank_rows", "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "pot_chance",
            "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",
            "Decision", "N_COLS", "MAX_CUT", "FALLBACK_CUT", "ARRIVE_SPEED", "SPEED_FACTORS", "DIRECT_HIT_SPEED",
-           "PLACE_BACKS", "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE",
-           "COL_CUT", "COL_D_CUE", "COL_D_OBJ", "COL_WINDOW", "COL_TOL", "COL_CLEAR", "COL_REACH", "COL_RISK",
-           "COL_SCORE", "COL_CLEAR_OBJ", "WIN_ANGLE", "WIN_HALF", "WIN_DIST", "WIN_FOUND"]
+           "PLACE_BACKS", "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE", "COL_CUT",
+           "COL_D_CUE", "COL_D_OBJ", "COL_WINDOW", "COL_TOL", "COL_CLEAR", "COL_REACH", "COL_RISK", "COL_SCORE",
+           "COL_CLEAR_OBJ", "WIN_ANGLE", "WIN_HALF", "WIN_DIST", "WIN_FOUND"]

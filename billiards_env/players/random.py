@@ -12,6 +12,8 @@ class RandomPlayer:
     """Uniformly random actions (seeded)."""
 
     name = "random"
+    #: :meth:`act` does not read the observation (the env need not observe for it).
+    reads_observation = False
 
     def __init__(self, seed: int | None = 0):
         self.rng = np.random.default_rng(seed)

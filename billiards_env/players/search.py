@@ -610,6 +610,8 @@ class SearchPlayer:
     :func:`search_shot`)."""
 
     name = "search"
+    #: :meth:`act` does not read the observation (the env need not observe for it).
+    reads_observation = False
 
     def __init__(self, seed: int | None = 0, settings: SearchSettings | None = None):
         self.settings = settings or SearchSettings()

@@ -1,10 +1,12 @@
 """The candidate shots of the ``candidates`` action and observation types, as arrays (compiled, one call each).
 
-These are the geometric parts of :mod:`billiards_env.envs.candidates` (``_shot_slots``, ``_in_hand_slots``, the
-kicks' ``kick_points`` and their filters, ``next_shot_ease``) on plain arrays, for a caller holding the table state
-(balls as arrays, a :class:`~billiards_env.players.geometry.TableModel`, the legal ``targets``): the same lists in
-the same order, bit for bit (tests/players/test_slots.py). The cue ball is row 0. Verifying the kicks by simulation
-stays a :func:`billiards_env.physics.batch.run_shots` call of the caller.
+The geometric parts of :mod:`billiards_env.envs.candidates` (the pot slots from where the cue ball lies and in hand,
+the kicks worth simulating, the next shot's ease) on plain arrays, for a caller holding the table state (balls as
+arrays, a :class:`~billiards_env.players.geometry.TableModel`, the legal ``targets`` in the view's order): the same
+lists in the same order, bit for bit, as the Python they replaced (``players/_reference.py``:
+``reference_shot_slots``, ``reference_in_hand_slots``, ``reference_kick_candidates``, ``reference_next_shot_ease``;
+tests/players/test_slots.py). The cue ball is row 0. Verifying the kicks by simulation stays a
+:func:`billiards_env.physics.batch.run_shots` call of the caller (``envs/candidates.py``).
 """
 from __future__ import annotations
 
@@ -30,8 +32,8 @@ KICK_LENGTH, KICK_TARGET, KICK_ANGLE, KICK_SPEED = range(4)
 def shot_slots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, targets: np.ndarray,
                pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float, hi: float) -> np.ndarray:
     """The pot slots with the cue ball where it lies: every ghost-ball shot at a legal ball (``targets``) with a
-    cut up to 80 degrees, easiest first, or up to 88 degrees when there is none (``envs/candidates.py``
-    ``_shot_slots``): rows of :data:`billiards_env.players.geometry.N_COLS` columns; a slot's ``clear_obj`` is
+    cut up to 80 degrees, easiest first, or up to 88 degrees when there is none: rows of
+    :data:`billiards_env.players.geometry.N_COLS` columns; a slot's ``clear_obj`` is
     ``COL_CLEAR_OBJ``."""
     tm = model(pocket_xy, pocket_r, params)
     rows = ghost_shots_from(pos[0, 0], pos[0, 1], pos, on, radius, mass, 0, targets,
@@ -48,7 +50,7 @@ def in_hand_slots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, targets: 
                   pocket_r: np.ndarray, params: np.ndarray) -> np.ndarray:
     """The pot slots with the cue ball in hand: every (legal ball, pocket) with an entry window, widest window
     first, those whose path to the pocket is blocked (by a ball other than the cue ball) after the others (their
-    width counted a tenth), ties in (ball, pocket) order (``envs/candidates.py`` ``_in_hand_slots``): rows of
+    width counted a tenth), ties in (ball, pocket) order: rows of
     ``HAND_*`` columns."""
     tm = model(pocket_xy, pocket_r, params)
     windows = windows_of(pos, radius, targets, tm)
@@ -94,8 +96,8 @@ def _kick_before(a: np.ndarray, b: np.ndarray) -> bool:
 def kick_candidates(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, targets: np.ndarray, pocket_xy: np.ndarray,
                     pocket_r: np.ndarray, params: np.ndarray, lo: float, hi: float, arrival: float,
                     margin: float) -> np.ndarray:
-    """The one-rail kicks at the legal balls worth simulating, shortest first (``envs/candidates.py``
-    ``_kick_slots`` before its batch check): for each legal ball and cushion, the point on the cushion line from
+    """The one-rail kicks at the legal balls worth simulating, shortest first: for each legal ball and cushion, the
+    point on the cushion line from
     which the cue ball's path, its normal component scaled by the cushion's restitution, runs into the ball full
     (``kick_points``); dropped if it lies outside the cushion's span, passes within two ball radii of a pocket's
     capture circle, or either leg is blocked. Rows of ``KICK_*`` columns: the path length, the target, the cue
@@ -165,8 +167,8 @@ def next_shot_ease(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np
                    sigma: float) -> float:
     """The chance of potting the easiest shot from where the cue ball lies: the best pot slot's score
     (:func:`shot_slots`) through :func:`~billiards_env.players.geometry.pot_chance` with spread ``sigma``; 0 when no
-    pot exists (``envs/candidates.py`` ``next_shot_ease``, the caller passing ``max(angle_noise, EASE_SPREAD)``
-    and 0 for ball in hand and the break)."""
+    pot exists (the caller, ``envs/candidates.py`` ``next_shot_ease``, passes ``sigma = max(angle_noise,
+    EASE_SPREAD)`` and answers 0 itself for ball in hand and the break)."""
     rows = shot_slots(pos, on, radius, mass, targets, pocket_xy, pocket_r, params, lo, hi)
     best = rows[0, COL_SCORE] if rows.shape[0] else 0.0
     return pot_chance(best, sigma)

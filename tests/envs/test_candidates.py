@@ -265,3 +265,76 @@ def test_position_reward_pays_for_the_next_shot_after_a_kept_turn():
             if t0:
                 break
     assert seen == {"kept", "lost"}
+
+
+def _python_slot_values(state, cands, n_slots, speed_max):
+    """The ``candidates`` observation's slot values as the Python loop over the slots made them (before issue 21)."""
+    from billiards_env.envs.candidates import EASY_TOLERANCE
+    from billiards_env.physics.aim import wrap_angle
+
+    out = np.zeros((n_slots, SLOT_FEATURES), np.float32)
+    t = state.table
+    px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
+    numbers = state.numbers
+    if cands.kick is not None:
+        s = cands.kick
+        row = out[n_slots - 1]
+        row[0] = 1.0
+        row[1] = numbers[s.target] / 15.0
+        row[2] = row[3] = -1.0
+        row[5] = min(s.shot.d_cue / t.length, 1.0)
+        row[8] = row[9] = 1.0
+        row[11] = s.shot.speed / speed_max
+    for k, s in enumerate(cands.slots):
+        row = out[k]
+        row[0] = 1.0
+        row[1] = numbers[s.target] / 15.0
+        row[2], row[3] = px[s.pocket], py[s.pocket]
+        row[6] = min(s.d_obj / t.length, 1.0)
+        shot = s.shot
+        if shot is None:
+            row[7] = min(s.half / (math.pi / 8.0), 1.0)
+            row[8] = 1.0 if s.clear_obj else 0.0
+            continue
+        row[4] = wrap_angle(s.obj_angle - shot.angle) / (math.pi / 2.0)
+        row[5] = min(shot.d_cue / t.length, 1.0)
+        row[7] = min(shot.tolerance / EASY_TOLERANCE, 1.0)
+        row[8] = 1.0 if shot.clear else 0.0
+        row[9] = 1.0 if shot.reachable else 0.0
+        row[10] = 1.0 if shot.scratch_risk else 0.0
+        row[11] = shot.speed / speed_max
+    return np.clip(out.reshape(-1), -1.0, 1.0)
+
+
+@pytest.mark.parametrize("env_id", ["Billiards9Ball-v0", "Billiards8Ball-v0"])
+def test_observation_values_equal_the_python_loop(env_id):
+    """The compiled slot values (envs/candidates.py ``slot_features``) equal the Python loop they replaced, bit for
+    bit: the cue ball where it lies, in hand, the break, kicks (a hidden ball), 1 to 6 slots."""
+    from billiards_env.envs.candidates import slot_features
+
+    env = gym.make(env_id, opening="either", opponent="geometric", **CAND)
+    u = env.unwrapped
+    rng = np.random.default_rng(4)
+    seen = {"hand": 0, "kick": 0, "pots": 0, "break": 0}
+    for seed in range(8):
+        obs, _ = env.reset(seed=seed)
+        for _ in range(6):
+            for n in (1, 4, 6):
+                cands = candidate_slots(u.state, n, u.action_type.speed_range)
+                got = slot_features(u.state, cands, n, u.config.speed_max)
+                want = _python_slot_values(u.state, cands, n, u.config.speed_max)
+                assert got.dtype == want.dtype and np.array_equal(got, want)
+                seen["break" if cands.break_shot else "hand" if cands.in_hand else "pots"] += 1
+                seen["kick"] += cands.kick is not None
+            obs, _, term, trunc, _ = env.step(rng.uniform(-1, 1, env.action_space.shape).astype(np.float32))
+            if term or trunc:
+                break
+    # A hidden 1 (every pot goes through the 2): the kick's values.
+    env9 = gym.make("Billiards9Ball-v0", opponent=None, **CAND)
+    pos = np.array([[0.5, 0.35], [1.5, 0.35], [1.0, 0.35]] + [[0.3 + 0.1 * k, 1.2] for k in range(7)])
+    env9.reset(seed=0, options={"positions": pos, "pocketed": np.array([False] * 3 + [True] * 7)})
+    cands = candidate_slots(env9.unwrapped.state, 4)
+    assert cands.kick is not None
+    assert np.array_equal(slot_features(env9.unwrapped.state, cands, 4, 5.0),
+                          _python_slot_values(env9.unwrapped.state, cands, 4, 5.0))
+    assert seen["hand"] and seen["pots"] and seen["break"], seen

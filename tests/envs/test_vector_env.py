@@ -91,11 +91,90 @@ def test_native_paths_equal_single_envs(kwargs):
     assert seen["done"] > 0 and seen["scratch"] + seen["pocketed"] > 0
 
 
-@pytest.mark.parametrize("env_id", GAME_IDS)
-def test_game_ids_vectorise_with_the_same_results(env_id):
+#: The games the native vector env plays in compiled code (rules and the geometric opponent included).
+NATIVE_GAMES = ["Billiards9Ball-v0", "Billiards8Ball-v0"]
+
+
+@pytest.mark.parametrize("mode", list(AutoresetMode))
+@pytest.mark.parametrize("env_id", NATIVE_GAMES)
+def test_native_games_equal_single_envs(env_id, mode):
+    """9-ball and 8-ball against the geometric opponent: the agent's shots, the opponent's replies, the calls,
+    rewards, resets (the opponent breaking too) and the info of every shot, bit for bit."""
     vec = gym.make_vec(env_id, 2)
+    assert vec.unwrapped.native and vec.unwrapped.games is not None
+    seen = _compare(env_id, mode, steps=12, n=3, first_shooter="random")
+    assert seen["done"] > 0 and seen["pocketed"] > 0
+
+
+@pytest.mark.parametrize("kwargs", [
+    {"action_type": "relative", "angle_noise": 0.01, "speed_noise": 0.05, "opening": "ball_in_hand"},
+    {"action_type": "ghost", "observation_type": "features", "first_shooter": "opponent"},
+    {"physics": {"friction": "spin"}, "spin_action": True, "tip_noise": 0.02, "angle_noise": 0.003},
+    {"action_type": "candidates", "observation_type": "candidates", "opening": "either"},
+    {"opponent": None, "opening": "either", "pot_reward": 0.1, "foul_penalty": 0.2, "position_reward": 0.5,
+     "max_shots": 4},
+    {"rules": {"three_foul_rule": True, "eight_on_break": "win", "call_eight": False}, "speed_noise": 0.05,
+     "speed_noise_mode": "absolute", "first_shooter": "opponent", "placement": "random"},
+    {"physics": {"preset": "pooltool"}, "spin_action": True, "tip_noise": 0.02},
+], ids=["relative-noise-bih", "ghost-features-opp-breaks", "spin-noise", "candidates-either", "alone-shaping",
+        "rules-options-random-rack", "pooltool-squirt"])
+@pytest.mark.parametrize("env_id", NATIVE_GAMES)
+def test_native_game_paths_equal_single_envs(env_id, kwargs):
+    if "rules" in kwargs and env_id == "Billiards9Ball-v0":
+        kwargs = {**kwargs, "rules": {"push_out": True, "three_foul_rule": False, "break_rail_balls": 2}}
+    seen = _compare(env_id, AutoresetMode.SAME_STEP, steps=8, n=3, **kwargs)
+    assert seen["done"] > 0
+
+
+@pytest.mark.parametrize("env_id", NATIVE_GAMES)
+def test_native_games_with_scenes_set_by_hand(env_id):
+    """``reset(options=...)`` (positions, ball in hand, groups) goes through the single env's own reset per table."""
+    n_balls = 10 if env_id == "Billiards9Ball-v0" else 16
+    rng = np.random.default_rng(0)
+    vec = gym.make_vec(env_id, 2, autoreset_mode="disabled")
+    ref = SyncVectorEnv([lambda: python_path_env(env_id) for _ in range(2)], autoreset_mode=AutoresetMode.DISABLED)
+    vec.reset(seed=1)
+    ref.reset(seed=1)
+    single = gym.make(env_id)
+    single.reset(seed=5)
+    pos = single.unwrapped.balls.pos.copy()
+    pos[0] = (0.4, 0.3)
+    options = {"positions": pos, "ball_in_hand": "anywhere", "reset_mask": np.array([False, True])}
+    if n_balls == 16:
+        options["groups"] = ("stripes", "solids")
+    obs, info = vec.reset(options=dict(options))
+    obs_r, info_r = ref.reset(options=dict(options))
+    assert np.array_equal(obs, obs_r)
+    _same_info(info, info_r)
+    for _ in range(3):
+        action = rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32)
+        out, out_r = vec.step(action), ref.step(action)
+        for x, y in zip(out[:4], out_r[:4]):
+            assert np.array_equal(x, y)
+        _same_info(out[4], out_r[4])
+        if (out[2] | out[3]).any():
+            break
+
+
+def test_native_games_do_not_depend_on_the_thread_count():
+    if numba.config.NUMBA_NUM_THREADS < 2:
+        pytest.skip("needs two numba threads")
+    runs = []
+    for threads in (1, 2):
+        vec = gym.make_vec("Billiards9Ball-v0", 24, threads=threads, autoreset_mode="same_step")
+        vec.reset(seed=1)
+        rng = np.random.default_rng(2)
+        runs.append([vec.step(rng.uniform(-1, 1, vec.action_space.shape))[:4] for _ in range(4)])
+    for a, b in zip(*runs):
+        for x, y in zip(a, b):
+            assert np.array_equal(x, y)
+
+
+def test_other_opponents_run_the_sub_envs_one_by_one():
+    vec = gym.make_vec("Billiards9Ball-v0", 2, opponent="random")
     assert isinstance(vec.unwrapped, BilliardsVectorEnv) and not vec.unwrapped.native
-    _compare(env_id, AutoresetMode.NEXT_STEP, steps=4, n=2)
+    assert "opponent" in vec.unwrapped.not_native
+    _compare("Billiards9Ball-v0", AutoresetMode.NEXT_STEP, steps=4, n=2, opponent="random")
 
 
 def test_every_id_has_a_native_vector_entry_point():
@@ -208,7 +287,63 @@ def test_every_combination_vectorises_with_the_same_results(env_id, action_type,
     a few steps, bit for bit), the candidates types included."""
     kwargs = {"action_type": action_type, "observation_type": observation_type}
     if env_id in GAME_IDS:
-        kwargs["opponent"] = "random"  # the types are under test; the default opponent's are test_game_ids_...
+        kwargs["opponent"] = None  # the types are under test; the opponent's are test_native_games_...
     if spin:
         kwargs.update(physics={"friction": "spin"}, spin_action=True)
     _compare(env_id, AutoresetMode.NEXT_STEP, steps=3 if env_id in POT_IDS else 2, n=2, **kwargs)
+
+
+def test_game_infos_stack_as_gymnasiums_add_info():
+    """``stack_infos`` (the games' vector info, a key at a time) equals ``VectorEnv._add_info`` called sub-env by
+    sub-env: dtypes from each key's first value (a bool array when the first ``ball_in_hand`` is False), masks, nested
+    dicts, ``final_obs``, key order."""
+    from gymnasium.vector import VectorEnv
+
+    from billiards_env.envs._vector_games import stack_infos
+
+    class Stub(VectorEnv):
+        num_envs = 4
+
+    stub = Stub()
+    obs = np.arange(3, dtype=np.float32)
+    entries = [(0, {"ball_in_hand": False, "winner": -1, "turns": [], "groups": None}),
+               (1, {"final_obs": obs, "final_info": {"ball_in_hand": "anywhere", "call": "legal"}}),
+               (1, {"ball_in_hand": "kitchen", "winner": 1, "turns": [{"a": 1}], "call": "scratch", "x": 0.5}),
+               (3, {"groups": ("solids", "stripes"), "winner": 0, "x": np.float64(2.0)})]
+    want: dict = {}
+    for k, info in entries:
+        want = stub._add_info(want, info, k)
+    got = stack_infos(4, entries)
+    assert list(got) == list(want)
+    _same_info({k: v for k, v in got.items() if k != "final_obs"}, {k: v for k, v in want.items() if k != "final_obs"})
+    assert got["final_obs"][1] is obs and got["final_obs"][0] is None
+
+
+@pytest.mark.parametrize("spin", [False, True])
+def test_native_candidates_kicks(spin):
+    """The ``candidates`` types compiled in the native games: a hidden ball (every pot blocked) is kicked at, the
+    kick's values observed, as the single env does (a scene set by hand, then the kick slot and others)."""
+    kw = {"action_type": "candidates", "observation_type": "candidates", "opponent": None}
+    if spin:
+        kw.update(physics={"friction": "spin"}, spin_action=True)
+    vec = gym.make_vec("Billiards9Ball-v0", 3, autoreset_mode=AutoresetMode.DISABLED, **kw)
+    ref = SyncVectorEnv([lambda: python_path_env("Billiards9Ball-v0", **kw) for _ in range(3)],
+                        autoreset_mode=AutoresetMode.DISABLED)
+    pos = np.array([[0.5, 0.35], [1.5, 0.35], [1.0, 0.35]] + [[0.3 + 0.1 * k, 1.2] for k in range(7)])
+    off = np.array([False] * 3 + [True] * 7)
+    for env in (vec, ref):
+        env.reset(seed=0)
+    options = {"positions": pos, "pocketed": off, "reset_mask": np.ones(3, bool)}
+    obs, _ = vec.reset(options=dict(options))
+    obs_r, _ = ref.reset(options=dict(options))
+    assert np.array_equal(obs, obs_r)
+    kick_row = obs[0, 30 + 3 * 12:30 + 4 * 12]
+    assert kick_row[0] == 1.0 and kick_row[2] == kick_row[3] == -1.0  # the kick is observed
+    action = np.zeros(vec.action_space.shape, np.float32)
+    action[:, 0] = (-1.0, 0.2, 0.9)  # the kick, a blocked pot, the kick again
+    action[:, 1] = (0.5, -0.3, 0.0)
+    out, out_r = vec.step(action), ref.step(action)
+    for x, y in zip(out[:4], out_r[:4]):
+        assert np.array_equal(x, y)
+    _same_info(out[4], out_r[4])
+    assert out[4]["first_contact"][0] == "1"  # the kick hit the hidden ball

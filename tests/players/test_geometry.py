@@ -19,8 +19,7 @@ from billiards_env.physics import BALL_RADIUS, Balls, Physics, Simulator, Table
 from billiards_env.physics.layout import nearest_free_point
 from billiards_env.players import GeometricPlayer, ShotContext, ghost_ball_shots, shot_context
 from billiards_env.players.geometric import choose_placement, geometric_shot
-from billiards_env.players.geometry import (COL_POCKET, COL_SCORE, COL_TARGET, free_discs, geometric_decision,
-                                            ghost_shots, nearest_free, pocket_holes, model, py_hypot, table_model)
+from billiards_env.players.geometry import COL_POCKET, COL_SCORE, COL_TARGET, geometric_decision, ghost_shots, table_model
 
 from billiards_env.players import _reference as reference
 
@@ -171,35 +170,3 @@ def test_ghost_shots_rows_are_ranked_and_complete():
     assert np.all(np.diff(rows[:, COL_SCORE]) <= 0.0)
     keys = [(int(r[COL_TARGET]), int(r[COL_POCKET])) for r in rows]
     assert len(set(keys)) == len(keys)
-
-
-def test_py_hypot_is_pythons_hypot():
-    rng = np.random.default_rng(0)
-    for scale in (1e-6, 1e-2, 1.0, 3.0):
-        xs = rng.normal(size=20000) * scale
-        ys = rng.normal(size=20000) * scale * rng.uniform(0.0, 1.0, 20000)
-        assert [py_hypot(x, y) for x, y in zip(xs.tolist(), ys.tolist())] == \
-            [math.hypot(x, y) for x, y in zip(xs.tolist(), ys.tolist())]
-    assert py_hypot(0.0, 0.0) == 0.0 and py_hypot(-3.0, 4.0) == 5.0 and math.isinf(py_hypot(math.inf, 1.0))
-
-
-def test_nearest_free_is_layouts_nearest_free_point():
-    rng = np.random.default_rng(5)
-    table = Table()
-    tm = table_model(table, Physics())
-    holes = pocket_holes(model(*tm))
-    moved = 0
-    for k in range(300):
-        pos = _random_layout(rng, int(rng.integers(2, 16)), table)
-        on = rng.random(len(pos)) < 0.9
-        radius = np.full(len(pos), R)
-        area = (R, table.length / 4, R, table.width - R) if k % 2 else (R, table.length - R, R, table.width - R)
-        # Aim at a ball, a pocket or anywhere: the asked point is often illegal.
-        x, y = (pos[int(rng.integers(len(pos)))] + rng.normal(0, R, 2)) if k % 3 else rng.uniform(-0.1, 2.6, 2)
-        expected = nearest_free_point(x, y, pos, on, radius, 0, area, holes=np.column_stack(
-            [table.pocket_xy, table.pocket_radius]))
-        got = nearest_free(min(max(x, area[0]), area[1]), min(max(y, area[2]), area[3]),
-                           free_discs(pos, on, radius, 0, holes, 1e-6), *area)
-        assert got[2] and (got[0], got[1]) == expected
-        moved += expected != (min(max(x, area[0]), area[1]), min(max(y, area[2]), area[3]))
-    assert moved >= 50  # the sample exercises the moves, not only legal points

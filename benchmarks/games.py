@@ -1,0 +1,520 @@
+"""The games at engine speed (issue 21), from the repository root:
+
+    python -m benchmarks --only games [--quick] [--write | --out DIR]
+
+- shots and agent steps per second through ``Billiards9Ball-v0`` and ``Billiards8Ball-v0`` (single env, seeded
+  uniform random actions, resetting when an episode ends; a shot is the agent's or the built-in opponent's, breaks
+  included): alone (``opponent=None``), against the geometric opponent, and with the ``candidates`` action and
+  observation types (alone and against it). Per CPU-second of this process (steadier than wall time on a shared
+  machine) and per wall second; the configurations are timed in interleaved rounds, so that a change of the
+  machine's load hits them alike. The targets compare each with the env alone on its plain types;
+- the geometric decision (``geometric_decision`` on the env's arrays, ball in hand and breaks included) median and
+  worst over the tables of seeded games, and the search decision (``SearchPlayer.act``; 9-ball, breaks excluded)
+  median, its time in the batch simulation and its own, and the shots it simulates;
+- the native vector env (``gymnasium.make_vec(id, 256)``) with the geometric opponent: agent steps per second;
+- the 9-ball training job's env (``configs/train/nine_ball_sac.yaml``, run-out practice, and
+  ``nine_ball_sac_vs_geometric.yaml``, games against the geometric player): its ``n_envs`` single envs stepped in
+  turn as SB3's DummyVecEnv steps them, random actions, shots per CPU-second. *Before*: the same envs with the Python
+  of before issue 21 swapped in (``players/_reference.py``: the candidate slot lists, the ``candidates``
+  observation's loop and the next shot's ease in Python, and the geometric opponent of before, observed for at every
+  shot); *after*: as they are; and the native vector env of the same tables.
+
+Prints the figures (and the targets); writes ``games.json`` and ``games.md`` only with ``--write``/``--out``.
+"""
+from __future__ import annotations
+
+import contextlib
+import statistics
+import time
+from pathlib import Path
+from types import SimpleNamespace
+from typing import Any, Callable, Iterator
+
+import numpy as np
+
+from .common import fmt_rate, fmt_time, load_now, log, machine_info, machine_markdown, time_call, write_json
+
+GAMES = ("Billiards9Ball-v0", "Billiards8Ball-v0")
+#: The single-env configurations timed (name, env kwargs).
+CONFIGS = (("alone", {"opponent": None}),
+           ("geometric", {}),
+           ("candidates alone", {"opponent": None, "action_type": "candidates", "observation_type": "candidates"}),
+           ("candidates vs geometric", {"action_type": "candidates", "observation_type": "candidates"}))
+#: The issue-21 targets.
+TARGETS = {"slowdown": 1.5, "geometric_median": 1e-4, "geometric_worst": 2e-3, "search_median_9ball": 1e-2,
+           "vector": {"Billiards9Ball-v0": 20_000, "Billiards8Ball-v0": 10_000}}
+#: The training job's configs (phase 1: run-out practice; phase 2: against the geometric player).
+JOB_CONFIGS = ("configs/train/nine_ball_sac.yaml", "configs/train/nine_ball_sac_vs_geometric.yaml")
+
+
+def _sizes(quick: bool) -> dict[str, Any]:
+    if quick:
+        return {"seconds": 0.6, "rounds": 2, "games": 3, "steps": 10, "search_every": 3, "vector_tables": 64,
+                "vector_seconds": 1.0, "job_seconds": 0.8}
+    return {"seconds": 6.0, "rounds": 3, "games": 20, "steps": 30, "search_every": 1, "vector_tables": 256,
+            "vector_seconds": 6.0, "job_seconds": 8.0}
+
+
+# --- single env: shots and steps per second ----------------------------------------------------------------------
+
+class _Stepper:
+    """Envs stepped with seeded uniform random actions in turn (one env: a single env; ``n``: as DummyVecEnv steps
+    ``n`` envs), counting agent steps and shots (the agent's and the opponent's, from ``info["opponent_shots"]``,
+    the opponent's break at a reset included)."""
+
+    def __init__(self, make: Callable[[], Any], n: int = 1, seed: int = 0) -> None:
+        self.envs = [make() for _ in range(n)]
+        self.rng = np.random.default_rng(seed)
+        self.steps = 0
+        self.shots = 0
+        for k, env in enumerate(self.envs):
+            self.shots += env.reset(seed=seed + k)[1].get("opponent_shots", 0)
+
+    def run(self, seconds: float) -> tuple[float, float]:
+        """Step for ``seconds`` of wall time; returns the ``(wall, CPU)`` seconds taken (the counts accumulate)."""
+        t0, c0 = time.perf_counter(), time.process_time()
+        while time.perf_counter() - t0 < seconds:
+            for env in self.envs:
+                a = self.rng.uniform(-1.0, 1.0, env.action_space.shape).astype(np.float32)
+                _, _, term, trunc, info = env.step(a)
+                self.steps += 1
+                self.shots += 1 + info.get("opponent_shots", 0)
+                if term or trunc:
+                    self.shots += env.reset()[1].get("opponent_shots", 0)
+        return time.perf_counter() - t0, time.process_time() - c0
+
+    def close(self) -> None:
+        for env in self.envs:
+            env.close()
+
+
+def _interleaved(steppers: dict[str, _Stepper], seconds: float, rounds: int) -> dict[str, dict[str, float]]:
+    """Each stepper for ``seconds`` in total, in ``rounds`` interleaved slices: rates per CPU and wall second."""
+    wall = dict.fromkeys(steppers, 0.0)
+    cpu = dict.fromkeys(steppers, 0.0)
+    base = {k: (s.steps, s.shots) for k, s in steppers.items()}
+    for _ in range(rounds):
+        for k, s in steppers.items():
+            w, c = s.run(seconds / rounds)
+            wall[k] += w
+            cpu[k] += c
+    out = {}
+    for k, s in steppers.items():
+        steps, shots = s.steps - base[k][0], s.shots - base[k][1]
+        out[k] = {"steps": steps, "shots": shots, "wall_s": wall[k], "cpu_s": cpu[k],
+                  "shots_per_cpu_s": shots / cpu[k], "steps_per_cpu_s": steps / cpu[k],
+                  "shots_per_s": shots / wall[k], "steps_per_s": steps / wall[k]}
+    return out
+
+
+def single_env_rates(env_id: str, sizes: dict[str, Any]) -> dict[str, dict[str, float]]:
+    """The configurations of :data:`CONFIGS` on ``env_id`` (see the module docstring)."""
+    import gymnasium as gym
+
+    steppers = {name: _Stepper(lambda kw=kw: gym.make(env_id, **kw)) for name, kw in CONFIGS}
+    for s in steppers.values():  # load the compiled code outside the timings
+        s.run(0.05)
+    try:
+        return _interleaved(steppers, sizes["seconds"], sizes["rounds"])
+    finally:
+        for s in steppers.values():
+            s.close()
+
+
+# --- the decisions -----------------------------------------------------------------------------------------------
+
+def decisions(env_id: str, sizes: dict[str, Any], search: bool) -> dict[str, Any]:
+    """The geometric decision on every table of seeded games, and the search decision on some (see the module
+    docstring)."""
+    from billiards_env.players import SearchPlayer, shot_context
+    from billiards_env.players.geometric import context_model
+    from billiards_env.players.geometry import geometric_decision
+
+    from .players import _SimClock, game_decisions
+
+    geo: list[float] = []
+    geo_hand: list[float] = []
+    found: dict[str, list[float]] = {"wall": [], "cpu": [], "sim": [], "own": [], "shots": []}
+    k = 0
+    warm = False
+    with _SimClock() as clock:
+        for env, obs in game_decisions(env_id, sizes["games"], sizes["steps"]):
+            ctx = shot_context(env)
+            b = ctx.balls
+            brk = bool(ctx.game.state.break_shot)
+            args = (b.pos, b.on_table, b.radius, b.mass, np.asarray(ctx.targets, dtype=np.int64), context_model(ctx),
+                    ctx.speed_range, ctx.place_area, brk)
+            if not warm:  # load the compiled code outside the timings
+                geometric_decision(*args)
+                if search:
+                    SearchPlayer().act(env, obs)
+                warm = True
+            t, _ = time_call(lambda: geometric_decision(*args))
+            geo.append(t)
+            if ctx.place_area is not None and not brk:
+                geo_hand.append(t)
+            k += 1
+            if not search or brk or ctx.place_area is not None or k % sizes["search_every"]:
+                continue
+            player = SearchPlayer(seed=k)
+            clock.reset()
+            c0, t0 = time.process_time(), time.perf_counter()
+            player.act(env, obs)
+            wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+            found["wall"].append(wall)
+            found["cpu"].append(cpu)
+            found["sim"].append(clock.seconds)
+            found["own"].append(wall - clock.seconds)
+            found["shots"].append(clock.shots)
+    out: dict[str, Any] = {"geometric": _stats(geo), "geometric_in_hand": _stats(geo_hand)}
+    if search:
+        out["search"] = {name: (statistics.median(v) if v else None) for name, v in found.items()}
+        out["search"]["n"] = len(found["wall"])
+    return out
+
+
+def _stats(times: list[float]) -> dict[str, Any]:
+    if not times:
+        return {"n": 0, "median_s": None, "worst_s": None}
+    return {"n": len(times), "median_s": statistics.median(times), "worst_s": max(times)}
+
+
+# --- the native vector env ---------------------------------------------------------------------------------------
+
+def vector_rate(env_id: str, n: int, seconds: float, **kwargs: Any) -> dict[str, Any]:
+    """Agent steps per second of ``gymnasium.make_vec(env_id, n)`` with seeded uniform random actions (and shots,
+    from ``info["opponent_shots"]``); a table resetting (the step after its episode ended) counts no agent step."""
+    import gymnasium as gym
+
+    vec = gym.make_vec(env_id, n, **kwargs)
+    rng = np.random.default_rng(0)
+    try:
+        vec.reset(seed=0)
+        vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))  # compile outside the timing
+        steps = shots = 0
+        t0, c0 = time.perf_counter(), time.process_time()
+        while time.perf_counter() - t0 < seconds:
+            _, _, _, _, info = vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))
+            stepped = int(np.sum(info.get("_shots", np.ones(n, np.bool_))))  # (tables resetting took no shot)
+            steps += stepped
+            shots += stepped + int(np.sum(info.get("opponent_shots", 0)))
+        wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+        native = bool(getattr(vec.unwrapped, "native", False))
+    finally:
+        vec.close()
+    return {"tables": n, "native": native, "steps": steps, "shots": shots, "wall_s": wall, "cpu_s": cpu,
+            "steps_per_s": steps / wall, "shots_per_s": shots / wall, "steps_per_cpu_s": steps / cpu}
+
+
+# --- the training job: before and after ----------------------------------------------------------------------------
+
+def job_env_kwargs(path: str) -> tuple[str, dict[str, Any], int]:
+    """The env id, env kwargs and ``n_envs`` of a training config (``configs/train/*.yaml``)."""
+    import yaml
+
+    doc = yaml.safe_load(Path(path).read_text())
+    env_id = doc["billiards"]["env_id"]
+    hyper = doc[env_id]
+    return env_id, dict(hyper.get("env_kwargs") or {}), int(hyper.get("n_envs", 1))
+
+
+class _ReferenceGeometric:
+    """The geometric player of before issue 21 (``players/_reference.py``), acting in the action type it is given."""
+
+    name = "geometric"
+
+    def reset(self, seed: int | None = None) -> None:
+        pass
+
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+        from billiards_env.players import _reference as ref
+        from billiards_env.players.context import to_action
+        from billiards_env.table_state import state_of
+
+        state = state_of(source)
+        env = SimpleNamespace(unwrapped=SimpleNamespace(state=state, legal_cue_position=state.legal_cue_position,
+                                                        cue_moved_to=state.cue_moved_to))
+        place, angle, speed, cand = ref.reference_geometric_act(env)
+        return to_action(codec, state, angle, speed, place=place, pocket=cand.pocket if cand is not None else None)
+
+
+def _reference_slots(state: Any, n: int, speed_range: tuple[float, float] | None = None) -> Any:
+    """``envs.candidates.candidate_slots`` on the Python slot lists of before issue 21 (memoised as it is)."""
+    from billiards_env.envs import candidates as envc
+    from billiards_env.players import _reference as ref
+
+    b = state.balls
+    if speed_range is None:
+        speed_range = state.settings.speed_range
+    view = state.view
+    key = ("candidates", b.pos.tobytes(), b.on_table.tobytes(), n, speed_range)
+    got = view.memo.get(key)
+    if got is None:
+        slots, kick = ref.reference_candidate_slots(state, n, speed_range)
+
+        def conv(s: Any) -> Any:
+            return envc.Slot(s.target, s.pocket, s.obj_angle, s.half, s.d_obj, s.clear_obj, s.shot)
+
+        got = view.memo[key] = envc.Slots(tuple(map(conv, slots)), view.place_area is not None, view.break_shot,
+                                          view.targets, conv(kick) if kick is not None else None)
+    return got
+
+
+def _reference_slot_values(self: Any, state: Any) -> np.ndarray:
+    """``CandidateFeatures.features`` as the Python loop over the slots of before issue 21."""
+    import math
+
+    from billiards_env.envs.candidates import EASY_TOLERANCE, SLOT_FEATURES
+    from billiards_env.physics.aim import wrap_angle
+
+    out = np.zeros((self.n_slots, SLOT_FEATURES), np.float32)
+    cands = _reference_slots(state, self.n_slots, self.speed_range)
+    t = state.table
+    px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
+    numbers = state.numbers
+    if cands.kick is not None:
+        s = cands.kick
+        row = out[self.n_slots - 1]
+        row[0] = 1.0
+        row[1] = numbers[s.target] / 15.0
+        row[2] = row[3] = -1.0
+        row[5] = min(s.shot.d_cue / t.length, 1.0)
+        row[8] = row[9] = 1.0
+        row[11] = s.shot.speed / self.speed_range[1]
+    for k, s in enumerate(cands.slots):
+        row = out[k]
+        row[0] = 1.0
+        row[1] = numbers[s.target] / 15.0
+        row[2], row[3] = px[s.pocket], py[s.pocket]
+        row[6] = min(s.d_obj / t.length, 1.0)
+        shot = s.shot
+        if shot is None:
+            row[7] = min(s.half / (math.pi / 8.0), 1.0)
+            row[8] = 1.0 if s.clear_obj else 0.0
+            continue
+        row[4] = wrap_angle(s.obj_angle - shot.angle) / (math.pi / 2.0)
+        row[5] = min(shot.d_cue / t.length, 1.0)
+        row[7] = min(shot.tolerance / EASY_TOLERANCE, 1.0)
+        row[8] = 1.0 if shot.clear else 0.0
+        row[9] = 1.0 if shot.reachable else 0.0
+        row[10] = 1.0 if shot.scratch_risk else 0.0
+        row[11] = shot.speed / self.speed_range[1]
+    return np.clip(out.reshape(-1), -1.0, 1.0)
+
+
+@contextlib.contextmanager
+def before_issue_21() -> Iterator[None]:
+    """The envs' candidate slot lists, the ``candidates`` observation's values and the next shot's ease as the
+    Python of before issue 21, for the block."""
+    from billiards_env.envs import actions, games, observations
+    from billiards_env.players import _reference as ref
+
+    cf = observations.CandidateFeatures
+    saved = (actions.candidate_slots, cf.features, games.next_shot_ease)
+    actions.candidate_slots = _reference_slots
+    cf.features = _reference_slot_values  # type: ignore[method-assign]
+    games.next_shot_ease = ref.reference_next_shot_ease
+    try:
+        yield
+    finally:
+        actions.candidate_slots, cf.features, games.next_shot_ease = saved  # type: ignore[method-assign]
+
+
+class _VectorStepper:
+    """A native vector env of ``n`` tables stepped with seeded uniform random actions (counts as :class:`_Stepper`;
+    a finished episode resets at the next step, as Gymnasium's default autoreset does)."""
+
+    def __init__(self, make: Callable[[], Any], seed: int = 0) -> None:
+        self.vec = make()
+        self.rng = np.random.default_rng(seed)
+        _, info = self.vec.reset(seed=seed)
+        self.steps = 0
+        self.shots = int(np.sum(info.get("opponent_shots", 0)))
+
+    def run(self, seconds: float) -> tuple[float, float]:
+        t0, c0 = time.perf_counter(), time.process_time()
+        vec = self.vec
+        while time.perf_counter() - t0 < seconds:
+            a = self.rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32)
+            _, _, _, _, info = vec.step(a)
+            stepped = info.get("_shots", np.ones(vec.num_envs, np.bool_))
+            self.steps += int(np.sum(stepped))
+            self.shots += int(np.sum(stepped)) + int(np.sum(info.get("opponent_shots", 0)))
+        return time.perf_counter() - t0, time.process_time() - c0
+
+    def close(self) -> None:
+        self.vec.close()
+
+
+class _SwitchedStepper(_Stepper):
+    """A :class:`_Stepper` that runs inside :func:`before_issue_21` (its envs' opponents the reference player)."""
+
+    def __init__(self, make: Callable[[], Any], n: int, seed: int) -> None:
+        with before_issue_21():
+            super().__init__(make, n, seed)
+
+    def run(self, seconds: float) -> tuple[float, float]:
+        with before_issue_21():
+            return super().run(seconds)
+
+
+def training_job(sizes: dict[str, Any]) -> dict[str, Any]:
+    """Shots per CPU-second of each training config's envs, before and after (see the module docstring)."""
+    import gymnasium as gym
+
+    out: dict[str, Any] = {}
+    for path in JOB_CONFIGS:
+        env_id, kwargs, n_envs = job_env_kwargs(path)
+
+        def make_before(kwargs: dict[str, Any] = kwargs, env_id: str = env_id) -> Any:
+            env = gym.make(env_id, **kwargs)
+            if kwargs.get("opponent", "geometric") == "geometric":
+                env.unwrapped.set_opponent(_ReferenceGeometric())
+            return env
+
+        steppers: dict[str, Any] = {
+            "before": _SwitchedStepper(make_before, n_envs, 0),
+            "after": _Stepper(lambda kwargs=kwargs, env_id=env_id: gym.make(env_id, **kwargs), n_envs, 0),
+            "native": _VectorStepper(lambda kwargs=kwargs, env_id=env_id: gym.make_vec(env_id, n_envs, threads=1,
+                                                                                       **kwargs))}
+        for s in steppers.values():
+            s.run(0.05)
+        try:
+            rates = _interleaved(steppers, sizes["job_seconds"], sizes["rounds"])
+        finally:
+            for s in steppers.values():
+                s.close()
+        before = rates["before"]["shots_per_cpu_s"]
+        out[path] = {"env_id": env_id, "n_envs": n_envs, "env_kwargs": kwargs, **rates,
+                     "native_path": bool(steppers["native"].vec.unwrapped.native),
+                     "speedup": rates["after"]["shots_per_cpu_s"] / before,
+                     "speedup_native": rates["native"]["shots_per_cpu_s"] / before}
+    return out
+
+
+# --- the run and its report ----------------------------------------------------------------------------------------
+
+def run(quick: bool = False) -> dict[str, Any]:
+    sizes = _sizes(quick)
+    doc: dict[str, Any] = {"machine": machine_info(), "quick": quick, "sizes": sizes, "single": {},
+                           "decisions": {}, "vector": {}}
+    for env_id in GAMES:
+        log(f"[games] {env_id}: single env")
+        doc["single"][env_id] = single_env_rates(env_id, sizes)
+        log(f"[games] {env_id}: decisions")
+        doc["decisions"][env_id] = decisions(env_id, sizes, search=env_id == "Billiards9Ball-v0")
+        log(f"[games] {env_id}: native vector env, {sizes['vector_tables']} tables")
+        doc["vector"][env_id] = vector_rate(env_id, sizes["vector_tables"], sizes["vector_seconds"])
+    log("[games] the 9-ball training job's envs, before and after")
+    doc["job"] = training_job(sizes)
+    doc["end_load"] = load_now()
+    return doc
+
+
+def targets(doc: dict[str, Any]) -> list[dict[str, Any]]:
+    """The issue-21 targets with their figures."""
+    rows = []
+    for env_id, rates in doc["single"].items():
+        base = rates["alone"]["shots_per_cpu_s"]
+        for name in ("geometric", "candidates alone", "candidates vs geometric"):
+            slow = base / rates[name]["shots_per_cpu_s"]
+            rows.append({"name": f"shots/s, {name} vs alone ({env_id})",
+                         "value": f"{fmt_rate(rates[name]['shots_per_cpu_s'])} vs {fmt_rate(base)} per CPU-s: "
+                                  f"{slow:.2f}x {'slower' if slow > 1 else 'faster'}",
+                         "target": f"<= {TARGETS['slowdown']}x slower", "ok": slow <= TARGETS["slowdown"]})
+    for env_id, d in doc["decisions"].items():
+        g = d["geometric"]
+        rows.append({"name": f"geometric decision median / worst, ball in hand included ({env_id})",
+                     "value": f"{fmt_time(g['median_s'])} / {fmt_time(g['worst_s'])}",
+                     "target": "<= 0.1 ms / <= 2 ms",
+                     "ok": g["median_s"] <= TARGETS["geometric_median"] and g["worst_s"] <= TARGETS["geometric_worst"]})
+        s = d.get("search")
+        if s and s["wall"] is not None:
+            rows.append({"name": f"search decision median, cue ball where it lies ({env_id})",
+                         "value": f"{fmt_time(s['wall'])} (CPU {fmt_time(s['cpu'])}; simulation "
+                                  f"{fmt_time(s['sim'])}, own {fmt_time(s['own'])}; {s['shots']:.0f} shots)",
+                         "target": "<= 10 ms", "ok": s["wall"] <= TARGETS["search_median_9ball"]})
+    for env_id, v in doc["vector"].items():
+        want = TARGETS["vector"][env_id]
+        rows.append({"name": f"native vector env, geometric opponent, {v['tables']} tables ({env_id})",
+                     "value": f"{fmt_rate(v['steps_per_s'])} agent steps/s ({fmt_rate(v['shots_per_s'])} shots/s"
+                              f"{'' if v['native'] else '; not native: sub-envs one by one'})",
+                     "target": f">= {want:,}", "ok": v["steps_per_s"] >= want})
+    return rows
+
+
+def render_markdown(doc: dict[str, Any]) -> str:
+    m = doc["machine"]
+    lines = ["# Games at engine speed", "",
+             f"Measured by `python -m benchmarks --only games{' --quick' if doc['quick'] else ''}` on {m['time']} "
+             "(all figures from this one run).", "", machine_markdown(m, doc.get("end_load")), "",
+             "## Targets (issue 21)", "", "| | measured | target | |", "|---|---|---|---|"]
+    for r in targets(doc):
+        lines.append(f"| {r['name']} | {r['value']} | {r['target']} | {'pass' if r['ok'] else '**miss**'} |")
+    lines += ["", "## Single env", "",
+              "Seeded uniform random actions; a shot is the agent's or the opponent's (breaks included). Per "
+              "CPU-second of the benchmark process, then per wall second; the configurations ran in interleaved "
+              "rounds.", "",
+              "| game | configuration | shots/CPU-s | agent steps/CPU-s | shots/s | steps/s |",
+              "|---|---|---|---|---|---|"]
+    for env_id, rates in doc["single"].items():
+        for name, r in rates.items():
+            lines.append(f"| {env_id} | {name} | {fmt_rate(r['shots_per_cpu_s'])} | {fmt_rate(r['steps_per_cpu_s'])} | "
+                         f"{fmt_rate(r['shots_per_s'])} | {fmt_rate(r['steps_per_s'])} |")
+    lines += ["", "## Decisions", "",
+              "The geometric decision (`geometric_decision` on the env's arrays) on every table of seeded games (the "
+              "agent plays the geometric player's shot or, one time in four, a random action): the median of repeated "
+              "calls per table, then the median and the worst over the tables. The search decision "
+              "(`SearchPlayer.act`, cue ball where it lies): one run per table.", "",
+              "| game | geometric median / worst | ball in hand median / worst | search median (CPU) | simulation | "
+              "own | shots simulated |", "|---|---|---|---|---|---|---|"]
+    for env_id, d in doc["decisions"].items():
+        g, h, s = d["geometric"], d["geometric_in_hand"], d.get("search")
+        srch = (f"{fmt_time(s['wall'])} ({fmt_time(s['cpu'])}) | {fmt_time(s['sim'])} | {fmt_time(s['own'])} | "
+                f"{s['shots']:.0f}") if s and s["wall"] is not None else "- | - | - | -"
+        lines.append(f"| {env_id} | {fmt_time(g['median_s'])} / {fmt_time(g['worst_s'])} | "
+                     f"{fmt_time(h['median_s'])} / {fmt_time(h['worst_s'])} | {srch} |")
+    lines += ["", "## Native vector env", "",
+              "| game | tables | native | agent steps/s | shots/s | agent steps/CPU-s |", "|---|---|---|---|---|---|"]
+    for env_id, v in doc["vector"].items():
+        lines.append(f"| {env_id} | {v['tables']} | {'yes' if v['native'] else 'no'} | {fmt_rate(v['steps_per_s'])} | "
+                     f"{fmt_rate(v['shots_per_s'])} | {fmt_rate(v['steps_per_cpu_s'])} |")
+    lines += ["", "## The 9-ball training job's envs", "",
+              "Each config's `n_envs` single envs stepped in turn (as SB3's DummyVecEnv steps them), seeded random "
+              "actions. Before: the Python of before issue 21 swapped in (`players/_reference.py`: the candidate "
+              "slot lists, the next shot's ease, the geometric opponent, observed for at every shot); after: the "
+              "envs as they are. Interleaved rounds in this one run.", "",
+              "The native vector env of the same `n_envs` tables (`gymnasium.make_vec`, one thread) is what SB3 would "
+              "step through `agents.vec.BilliardsVecEnv` once `agents/vec.py` lets games use it.", "",
+              "| config | shots/CPU-s before | after (single envs) | speed-up | native vector env | speed-up | "
+              "agent steps/CPU-s before | after | native |", "|---|---|---|---|---|---|---|---|---|"]
+    for path, j in doc["job"].items():
+        b, a, v = j["before"], j["after"], j["native"]
+        lines.append(f"| `{path}` | {fmt_rate(b['shots_per_cpu_s'])} | {fmt_rate(a['shots_per_cpu_s'])} | "
+                     f"{j['speedup']:.2f}x | {fmt_rate(v['shots_per_cpu_s'])} | {j['speedup_native']:.2f}x | "
+                     f"{fmt_rate(b['steps_per_cpu_s'])} | {fmt_rate(a['steps_per_cpu_s'])} | "
+                     f"{fmt_rate(v['steps_per_cpu_s'])} |")
+    return "\n".join(lines) + "\n"
+
+
+def render(out: Path) -> None:
+    import json
+
+    doc = json.loads((out / "games.json").read_text())
+    (out / "games.md").write_text(render_markdown(doc))
+
+
+def main(out: Path | None, quick: bool = False) -> dict[str, Any]:
+    """Measure, print the figures, and write ``games.json`` and ``games.md`` into ``out`` if given."""
+    doc = run(quick)
+    md = render_markdown(doc)
+    print(md)
+    if out is not None:
+        out.mkdir(parents=True, exist_ok=True)
+        write_json(out / "games.json", doc)
+        (out / "games.md").write_text(md)
+        log(f"[games] wrote {out / 'games.md'}")
+    return doc
+
+
+__all__ = ["run", "targets", "render_markdown", "render", "main", "before_issue_21", "TARGETS"]

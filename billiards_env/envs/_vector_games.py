@@ -1,0 +1,446 @@
+"""The native vector env's games: 9-ball and 8-ball tables reset and stepped in compiled code, opponents and the
+``candidates`` types included (:mod:`._game_kernels`), and what stays in Python per table: the ``features``
+observation type, resets with options, and the info dicts.
+
+:func:`native_games` says whether an env qualifies (9-ball or 8-ball on the exact solver, playing alone or against
+the geometric player, an action type of the envs' own, nothing drawn); :class:`GameTables` holds the tables' game
+states and runs them for :class:`~billiards_env.envs.vector.BilliardsVectorEnv`, which keeps the ball arrays, the
+generators and the autoreset. The info dicts are built per table as the single env builds them and stacked by
+Gymnasium's own ``VectorEnv._add_info``, in sub-env order, so the vector info is the one ``SyncVectorEnv`` makes.
+"""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from billiards_env.games.pool import EightBallSession, NineBallSession
+from billiards_env.physics.batch import _thread_count, use_parallel
+from billiards_env.physics.codes import STATUS_NAMES
+from billiards_env.physics.errors import SceneError
+from billiards_env.physics.layout import DIAMOND_ORDER, RACK_ORDER, foot_spot, head_spot, head_string_x
+from billiards_env.players.geometric import GeometricPlayer
+from billiards_env.players.geometry import MAX_CUT, state_model
+from billiards_env.rules import pool_judge as pj
+from billiards_env.table_state import RectArea, ShotView, TableState
+
+from . import _game_kernels as gk
+from .actions import AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, AbsoluteAim, CandidateShots, GhostAim, RelativeAim
+from .candidates import EASE_SPREAD
+from .config import ConfigError
+from .games import MAX_RERACKS, MAX_TURN_SHOTS, GameTask
+from .info import shot_info
+from .observations import CandidateFeatures, Positions
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .base import BilliardsEnv
+    from .vector import BilliardsVectorEnv
+
+_AIM_CODES = {AbsoluteAim: AIM_ABSOLUTE, RelativeAim: AIM_RELATIVE, GhostAim: AIM_GHOST}
+_SESSIONS = {NineBallSession: (gk.RACK_NINE, "diamond", DIAMOND_ORDER), EightBallSession: (gk.RACK_EIGHT, "rack",
+                                                                                            RACK_ORDER)}
+
+
+def native_games(env: "BilliardsEnv", render_mode: str | None) -> str | None:
+    """Why the native game path does not apply to ``env`` (a made env of the id), or None when it does."""
+    task = env.task
+    if not isinstance(task, GameTask):
+        return "not a game"
+    c = env.config
+    session = task.session
+    if type(session) not in _SESSIONS:
+        return f"the game {task.name!r} has no compiled rules"
+    if render_mode is not None:
+        return "rendering"
+    if c.solver.name != "exact":
+        return "the step solver"
+    opp = task.opponent
+    if opp is not None and not (type(opp) is GeometricPlayer and opp.max_cut == MAX_CUT):
+        return "an opponent other than the geometric player"
+    at = env.action_type
+    if type(at) not in _AIM_CODES and type(at) is not CandidateShots:
+        return f"the action type {at.name!r}"
+    if type(env._acting_type()) not in _AIM_CODES:
+        return "the opponent's action type"
+    rack, placement, _ = _SESSIONS[type(session)]
+    if c.placement not in (placement, "random"):
+        return f"placement {c.placement!r}"
+    full = session.rules.full_rack
+    if c.n_object_balls != len(full) or tuple(env.state.numbers) != tuple(range(len(full) + 1)):
+        return "the ball set"
+    return None
+
+
+class GameTables:
+    """The game side of a native vector env's tables (see the module docstring)."""
+
+    def __init__(self, venv: "BilliardsVectorEnv") -> None:
+        self.venv = venv
+        t = venv.template
+        self.template = t
+        c = t.config
+        n, nb = venv.num_envs, t.n_balls
+        task: GameTask = t.task  # type: ignore[assignment]
+        session = task.session
+        self.rules = session.rules
+        at = t.action_type
+        acting = t._acting_type()
+        self.action_type = at
+        self.opts = pj.options_row(self.rules)
+        self.full = pj.mask_of(self.rules.full_rack)
+        rack, placement, order = _SESSIONS[type(session)]
+        table = t.table
+        r = float(t.balls.radius[0])
+        hx, hy = head_spot(table)
+        fx, fy = foot_spot(table)
+        cfg = np.zeros(gk.N_K)
+        cfg[gk.K_SPEED_LO] = at.speed_lo
+        cfg[gk.K_SPEED_SPAN] = at.speed_span
+        cfg[gk.K_MAX_TIP] = at.max_tip
+        cfg[gk.K_ANGLE_NOISE] = c.angle_noise
+        cfg[gk.K_SPEED_NOISE] = c.speed_noise
+        cfg[gk.K_TIP_NOISE] = c.tip_noise
+        cfg[gk.K_GHOST] = at.max_angle
+        cfg[gk.K_ACT_GHOST] = acting.max_angle
+        cfg[gk.K_RADIUS] = r
+        cfg[gk.K_LENGTH] = table.length
+        cfg[gk.K_WIDTH] = table.width
+        cfg[gk.K_KITCHEN_X] = head_string_x(table)
+        cfg[gk.K_HEAD_X], cfg[gk.K_HEAD_Y] = hx, hy
+        cfg[gk.K_FOOT_X], cfg[gk.K_FOOT_Y] = fx, fy
+        cfg[gk.K_SPEED_MIN], cfg[gk.K_SPEED_MAX] = t.state.settings.speed_range
+        cfg[gk.K_WIN] = c.win_reward
+        cfg[gk.K_LOSS] = c.loss_penalty
+        cfg[gk.K_FOUL_PENALTY] = c.foul_penalty
+        cfg[gk.K_POT_REWARD] = c.pot_reward
+        cfg[gk.K_POSITION_REWARD] = c.position_reward
+        cfg[gk.K_EASE_SIGMA] = max(t.state.settings.angle_noise, EASE_SPREAD)
+        cfg[gk.K_SX] = 1.0 / table.length
+        cfg[gk.K_SY] = 1.0 / table.width
+        cfg[gk.K_POCKET_MARGIN] = c.pocket_margin
+        cfg[gk.K_MIN_DIST] = 2.0 * c.ball_radius + c.ball_gap
+        cfg[gk.K_BREAK_SPEED] = float(c.speed_max)
+        cfg[gk.K_MAX_CUT] = MAX_CUT
+        cfg[gk.K_SQUIRT] = c.physics.squirt
+        cfg[gk.K_CUE_END_MASS] = c.physics.cue_end_mass
+        if type(at) is CandidateShots:
+            cfg[gk.K_CAND_LO], cfg[gk.K_CAND_HI] = at.speed_range
+            cfg[gk.K_LOG_FACTOR] = at.log_factor
+        ot = t.observation_type
+        if type(ot) is CandidateFeatures:
+            cfg[gk.K_OBS_LO], cfg[gk.K_OBS_HI] = ot.speed_range
+        self.cfg = cfg
+        icfg = np.zeros(gk.N_J, np.int64)
+        icfg[gk.J_AIM] = gk.AIM_CANDIDATES if type(at) is CandidateShots else _AIM_CODES[type(at)]
+        icfg[gk.J_ACT_AIM] = _AIM_CODES[type(acting)]
+        icfg[gk.J_SPIN_DIMS] = at.spin
+        icfg[gk.J_SPIN_MODEL] = t._spin
+        icfg[gk.J_N_ACT] = at.n
+        icfg[gk.J_PLACE_AT] = at._place_at
+        icfg[gk.J_POCKET_AT] = at._declare_at.get("pocket", -1)
+        icfg[gk.J_PUSH_AT] = at._declare_at.get("push", -1)
+        icfg[gk.J_N_POCKETS] = at.n_pockets
+        icfg[gk.J_OPPONENT] = gk.OPP_NONE if task.opponent is None else gk.OPP_GEOMETRIC
+        icfg[gk.J_FIRST] = {"agent": gk.FIRST_AGENT, "opponent": gk.FIRST_OPPONENT}.get(c.first_shooter,
+                                                                                       gk.FIRST_RANDOM)
+        icfg[gk.J_OPENING] = {"break": gk.OPEN_BREAK, "ball_in_hand": gk.OPEN_BALL_IN_HAND}.get(c.opening,
+                                                                                              gk.OPEN_EITHER)
+        icfg[gk.J_MAX_SHOTS] = c.max_shots
+        icfg[gk.J_TURN_CAP] = max(MAX_TURN_SHOTS, c.max_shots)
+        icfg[gk.J_RACK] = rack if c.placement == placement else gk.RACK_NONE
+        self.positions_obs = type(ot) is Positions and ot.n_extra == 0 and ot.n_game == session.n_features
+        cand_obs = type(ot) is CandidateFeatures and ot.n_game == session.n_features and \
+            ot.n_slots == c.candidate_slots
+        #: Whether the kernels make the observation (the positions and the candidates types).
+        self.compiled_obs = self.positions_obs or cand_obs
+        icfg[gk.J_POSITIONS_OBS] = self.positions_obs
+        icfg[gk.J_CANDIDATES_OBS] = cand_obs
+        icfg[gk.J_SPEED_NOISE_ABS] = c.speed_noise_mode == "absolute"
+        icfg[gk.J_SLOTS] = c.candidate_slots
+        icfg[gk.J_MAX_EVENTS] = t.simulator.max_events
+        icfg[gk.J_OPENING_RESPOT] = session.opening_respot
+        icfg[gk.J_MAX_RERACKS] = MAX_RERACKS
+        icfg[gk.J_GAME] = pj.GAME_NINE if type(session) is NineBallSession else pj.GAME_EIGHT
+        self.icfg = icfg
+        sim = t.simulator
+        tm = state_model(t.state)
+        holes = np.column_stack([table.pocket_xy, table.pocket_radius]).astype(np.float64) if table.n_pockets else \
+            np.zeros((0, 3))
+        self.consts = (venv._radius[0], venv._mass[0])
+        self.tables = (sim._pocket_xy, sim._pocket_r, sim._params, tm.pocket_xy, tm.pocket_r, tm.params,
+                       np.ascontiguousarray(holes))
+        # The rack's slots as order_rack takes them (the positions of the numbers of the rack order in the layout).
+        fixed = {int(row): xy for row, xy in zip(t._fixed_rows, t._fixed_xy)}
+        self.rack_slots = np.array([fixed[n] for n in order], dtype=np.float64).reshape(-1, 2) \
+            if icfg[gk.J_RACK] != gk.RACK_NONE else np.zeros((0, 2))
+        self.layout = (np.asarray(t._fixed_rows, np.int64),
+                       np.ascontiguousarray(t._fixed_xy, dtype=float).reshape(-1, 2), venv._rand_rows, venv._regions,
+                       venv._pockets)
+        self._no_act = np.zeros((n, at.n))
+        self.gst = np.zeros((n, pj.N_STATE), np.int64)
+        self.cap = int(icfg[gk.J_TURN_CAP])
+        self.rec_agent = np.zeros((n, gk.N_R))
+        self.rec_opp = np.zeros((n, self.cap, gk.N_R))
+        self.reward = np.zeros(n)
+        self.tout = np.zeros((n, gk.N_T), np.int64)
+        self.kc = np.zeros((n, gk.N_KC))  # each table's kick cache (the candidates types)
+        self.n_game = session.n_features
+        # One table state per table (views of the batch arrays) for what stays in Python.
+        self.states = []
+        for k in range(n):
+            st = TableState(venv._states[k].balls, table, t.physics, sim, t.state.numbers, t.state.settings,
+                            view_source=lambda s, k=k: self.view(k))
+            st.game = _TableGame(self, k)
+            self.states.append(st)
+        self.ids = t.ball_ids
+        self._ids_of: dict[int, tuple[str, ...]] = {}
+        self._first = self.ids + (None,)
+        self._radius = r
+        self._reset_infos: dict[int, dict[str, Any] | None] = {}
+        self._numbers_of: dict[int, tuple[int, ...]] = {}
+        self.legal = np.zeros(n, np.int64)
+
+    # --- what Python parts read --------------------------------------------------------------------------------------
+    def view(self, k: int) -> ShotView:
+        """``PoolSession.view`` of table ``k``'s game state."""
+        st = self.gst[k]
+        legal = pj.numbers_of(pj.legal_mask(st))
+        on = self.venv.on_table[k]
+        over = bool(st[pj.S_OVER])
+        area = None
+        if st[pj.S_BIH] != pj.BIH_NO and not over:
+            r = self._radius
+            x1 = self.cfg[gk.K_KITCHEN_X] if st[pj.S_BIH] == pj.BIH_KITCHEN else self.cfg[gk.K_LENGTH] - r
+            area = RectArea(r, x1, r, self.cfg[gk.K_WIDTH] - r)
+        return ShotView(tuple(int(i) for i in legal if on[i] and i != 0), min(legal) if legal else None, area,
+                        bool(st[pj.S_BREAK] and not over), bool(pj.needs_called_pocket(st, self.opts)),
+                        bool(st[pj.S_PUSH_AVAILABLE]), int(st[pj.S_SHOOTER]))
+
+    def game_state(self, k: int) -> Any:
+        """Table ``k``'s game as a :class:`~billiards_env.rules.GameState`."""
+        return pj.game_state(self.gst[k])
+
+    # --- reset and step ----------------------------------------------------------------------------------------------
+    def _play(self, rows: np.ndarray, resets: np.ndarray, act: np.ndarray) -> None:
+        """:func:`._game_kernels.play_tables` on tables ``rows`` (a reset where ``resets``), on one thread when the
+        batch or the machine says so (:func:`~billiards_env.physics.batch.use_parallel`)."""
+        v = self.venv
+        threads = v.threads if use_parallel(len(rows), v.threads) else 1
+        with _thread_count(threads):
+            gk.play_tables(rows, resets, act, self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts,
+                           v._gen_list(), self.gst, self.opts, self.cfg, self.icfg, *self.tables, self.layout,
+                           self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs)
+        self._check(rows)
+        for k in rows.tolist():
+            self.states[k].changed()
+
+    def reset(self, rows: np.ndarray, options: dict[str, Any] | None) -> None:
+        """Reset tables ``rows`` (``options``: a scene set by hand, per table through the template env)."""
+        if options:
+            for k in rows.tolist():
+                self._reset_with_options(k, options)
+            return
+        self._play(rows, np.ones(len(rows), np.bool_), self._no_act)
+        for k in rows.tolist():
+            self._reset_infos[k] = None
+
+    def _reset_with_options(self, k: int, options: dict[str, Any]) -> None:
+        """A scene set by ``reset(options=...)`` for table ``k``: the template env's reset on the table's generator,
+        its balls and game state copied to the table."""
+        v = self.venv
+        t = v.template
+        t._np_random = v._rngs[k]
+        _, info = t.reset(options=options)
+        b = t.balls
+        v.pos[k] = b.pos
+        v.vel[k] = b.vel
+        v.ang[k] = b.ang
+        v.on_table[k] = b.on_table
+        self.gst[k] = pj.state_row(t.task.session.state)
+        self.kc[k, gk.KC_VALID] = 0.0
+        self.states[k].changed()
+        self._reset_infos[k] = info
+        self._observe_compiled(np.array([k], np.int64))
+
+    def _observe_compiled(self, rows: np.ndarray) -> None:
+        v = self.venv
+        gk.observe_tables(rows, v.pos, v.on_table, *self.consts, self.gst, self.cfg, self.icfg, self.tables[3],
+                          self.tables[4], self.tables[5], *self.tables[:3], self.kc, v._obs)
+
+    def step(self, rows: np.ndarray, act: np.ndarray) -> None:
+        """One step of tables ``rows`` (``act``: the batch's actions, float64 clipped)."""
+        self._play(rows, np.zeros(len(rows), np.bool_), act)
+
+    def observe(self, rows: np.ndarray) -> None:
+        """The observations of tables ``rows`` (already made in the kernels for the positions and candidates
+        types)."""
+        if self.compiled_obs:
+            return
+        v = self.venv
+        ot = v.template.observation_type
+        for k in rows.tolist():
+            v._obs[k] = ot.observe(self.states[k])
+
+    def _check(self, rows: np.ndarray) -> None:
+        err = self.tout[rows, gk.T_ERROR]
+        if not err.any():
+            return
+        k = int(rows[np.flatnonzero(err)[0]])
+        code = int(self.tout[k, gk.T_ERROR])
+        if code == gk.E_NO_PLACE:
+            raise SceneError(f"sub-env {k}: no legal point for ball row 0 in the area: it is covered by other balls")
+        if code == gk.E_RESPOT:
+            raise SceneError(f"sub-env {k}: could not re-spot a ball: the long string is full")
+        if code == gk.E_CUE_RESPOT:
+            raise SceneError(f"sub-env {k}: could not re-spot the cue ball: the head of the table is full")
+        if code == gk.E_PLACEMENT:
+            raise ConfigError(f"{self.venv.env_id}: could not place the balls at random; lower n_object_balls, "
+                              "pocket_margin, ball_gap or cushion_margin")
+        if code == gk.E_TURN_CAP:
+            raise RuntimeError(f"sub-env {k}: the opponent took {self.cap} shots in one turn without the game ending "
+                               "or the turn passing; raise max_shots if its game allows longer turns")
+        raise RuntimeError(f"sub-env {k}: the opponent won every game before the agent's first shot")
+
+    # --- info ---------------------------------------------------------------------------------------------------------
+    def prepare_infos(self) -> None:
+        """Work out what the info dicts of the tables read from their game states (their legal balls), in one call;
+        before :meth:`reset_info` and :meth:`step_info`."""
+        gk.legal_masks(self.gst, self.legal)
+
+    def _numbers(self, mask: int) -> tuple[int, ...]:
+        got = self._numbers_of.get(mask)
+        if got is None:
+            got = self._numbers_of[mask] = pj.numbers_of(mask)
+        return got
+
+    def _ids(self, mask: int) -> tuple[str, ...]:
+        got = self._ids_of.get(mask)
+        if got is None:
+            got = self._ids_of[mask] = tuple(self.ids[i] for i in range(len(self.ids)) if mask >> i & 1)
+        return got
+
+    def _turn(self, rec: np.ndarray) -> dict[str, Any]:
+        """An entry of ``info["opponent_turns"]`` (``GameTask._turn_info``)."""
+        r = rec.tolist()
+        foul = bool(r[gk.R_FOUL])
+        reason = pj.REASONS[int(r[gk.R_REASON])]
+        first = int(r[gk.R_FIRST])
+        return {"shooter": int(r[gk.R_SHOOTER]), "pocketed": self._ids(int(r[gk.R_POCKETED])),
+                "scratch": bool(r[gk.R_SCRATCH]), "first_contact": self._first[first], "foul": foul,
+                "foul_reason": reason if foul else None, "call": reason, "turn_over": bool(r[gk.R_TURN_OVER]),
+                "angle": r[gk.R_ANGLE], "speed": r[gk.R_SPEED],
+                "ball_in_hand": pj.ball_in_hand_value(int(r[gk.R_BIH])),
+                "groups": pj.groups_value(int(r[gk.R_GROUPS]))}
+
+    def _game_info(self, k: int, rec: np.ndarray | None) -> dict[str, Any]:
+        """``GameTask._info`` of table ``k`` after its last reset or step (``rec``: the agent's shot, None after a
+        reset)."""
+        st = self.gst[k].tolist()
+        over = bool(st[pj.S_OVER])
+        winner = st[pj.S_WINNER]
+        n_opp = int(self.tout[k, gk.T_N_OPP])
+        turns = [self._turn(self.rec_opp[k, i]) for i in range(n_opp)]
+        if rec is None:
+            foul, reason, turn_over = False, None, False
+        else:
+            foul = bool(rec[gk.R_FOUL])
+            reason = pj.REASONS[int(rec[gk.R_REASON])]
+            turn_over = bool(rec[gk.R_TURN_OVER])
+        info: dict[str, Any] = {
+            "foul": foul,
+            "foul_reason": reason if foul else None,
+            "turn_over": turn_over,
+            "winner": -1 if winner < 0 else winner,
+            "is_success": over and winner == 0,
+            "opponent_shots": n_opp,
+            "opponent_turns": turns,
+            "shooter": st[pj.S_SHOOTER],
+            "legal_targets": () if over else self._numbers(int(self.legal[k])),
+            "ball_in_hand": False if over else pj.ball_in_hand_value(st[pj.S_BIH]),
+            "groups": pj.groups_value(st[pj.S_GROUPS]),
+        }
+        if rec is not None:
+            info["call"] = reason
+        return info
+
+    def reset_info(self, k: int) -> dict[str, Any]:
+        """The info of table ``k``'s last reset."""
+        given = self._reset_infos.get(k)
+        return given if given is not None else self._game_info(k, None)
+
+    def step_info(self, k: int) -> dict[str, Any]:
+        """The info of table ``k``'s last step: the game's, then the agent's shot's (``shot_info``)."""
+        rec = self.rec_agent[k]
+        info = self._game_info(k, rec)
+        r = rec.tolist()
+        first = int(r[gk.R_FIRST])
+        info.update(shot_info(self._ids(int(r[gk.R_POCKETED])), bool(r[gk.R_SCRATCH]), self._first[first],
+                              int(r[gk.R_N_EVENTS]), r[gk.R_TIME], STATUS_NAMES[int(r[gk.R_STATUS])],
+                              int(self.venv.shots[k]), _Played(r[gk.R_ANGLE], r[gk.R_SPEED], r[gk.R_SIDE],
+                                                               r[gk.R_TOP]), self.action_type.spin))
+        return info
+
+    def outcome(self, k: int) -> tuple[float, bool, bool]:
+        """Table ``k``'s reward, termination and truncation of its last step."""
+        return float(self.reward[k]), bool(self.tout[k, gk.T_TERMINATED]), bool(self.tout[k, gk.T_TRUNCATED])
+
+
+def stack_infos(n: int, entries: list[tuple[int, dict[str, Any]]]) -> dict[str, Any]:
+    """The vector info of ``n`` sub-envs from their info dicts, ``entries`` ``(sub-env, info)`` in the order
+    Gymnasium's ``VectorEnv._add_info`` would take them (``final_obs`` and nested dicts included): the same arrays,
+    dtypes (each key's from its first value), masks and key order, built a key at a time."""
+    first: dict[str, Any] = {}
+    for _, info in entries:
+        for key, value in info.items():
+            if key not in first:
+                first[key] = value
+    out: dict[str, Any] = {}
+    for key, value in first.items():
+        rows = [(k, info[key]) for k, info in entries if key in info]
+        if key == "final_obs":
+            array: Any = np.full(n, None, dtype=object)
+            for k, v in rows:
+                array[k] = v
+        elif isinstance(value, dict):
+            array = stack_infos(n, rows)
+        else:
+            if type(value) in (int, float, bool) or issubclass(type(value), np.number):
+                array = np.zeros(n, dtype=type(value))
+            elif isinstance(value, np.ndarray):
+                array = np.zeros((n, *value.shape), dtype=value.dtype)
+            else:
+                array = np.full(n, None, dtype=object)
+            for k, v in rows:
+                array[k] = v
+        mask = np.zeros(n, dtype=np.bool_)
+        for k, _ in rows:
+            mask[k] = True
+        out[key], out[f"_{key}"] = array, mask
+    return out
+
+
+class _Played:
+    """The shot as played, as ``shot_info`` reads it."""
+
+    __slots__ = ("angle", "speed", "side", "top")
+
+    def __init__(self, angle: float, speed: float, side: float, top: float) -> None:
+        self.angle, self.speed, self.side, self.top = angle, speed, side, top
+
+
+class _TableGame:
+    """What the observation types read of a table's game (``state.game``): its features."""
+
+    def __init__(self, tables: GameTables, k: int) -> None:
+        self.tables = tables
+        self.k = k
+
+    def features(self, player: int | None = None) -> np.ndarray:
+        if player is not None:
+            raise ValueError("the native vector env observes each table as its shooter sees it (player=None)")
+        out = np.zeros(self.tables.n_game, np.float32)
+        gk.features(self.tables.gst[self.k], out)
+        return out
+
+
+__all__ = ["GameTables", "native_games", "stack_infos"]
