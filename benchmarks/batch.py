@@ -61,11 +61,12 @@ def _rate(step: Callable[[int], int], seconds: float, windows: int, name: str = 
     best = best_cpu = 0.0
     k = 0
     for _ in range(windows):
-        done = 0
+        done = calls = 0
         t0, c0 = time.perf_counter(), time.process_time()
-        while time.perf_counter() - t0 < seconds:
+        while calls == 0 or time.perf_counter() - t0 < seconds:  # one call at least, however busy the machine
             done += step(k)
             k += 1
+            calls += 1
         best = max(best, done / (time.perf_counter() - t0))
         best_cpu = max(best_cpu, done / max(time.process_time() - c0, 1e-9))
     CPU_RATES[name] = best_cpu

@@ -31,7 +31,7 @@ def _rate(fn: Any, seconds: float) -> float:
     """Calls of ``fn`` per second over ``seconds`` (after one warm-up call); ``fn`` returns how many it counts."""
     fn()
     n, t0 = 0, time.perf_counter()
-    while time.perf_counter() - t0 < seconds:
+    while n == 0 or time.perf_counter() - t0 < seconds:  # one call at least, however busy the machine
         n += fn()
     return n / (time.perf_counter() - t0)
 

@@ -15,7 +15,7 @@
 - the 9-ball training job's env (``configs/train/nine_ball_sac.yaml``, run-out practice, and
   ``nine_ball_sac_vs_geometric.yaml``, games against the geometric player): its ``n_envs`` single envs stepped in
   turn as SB3's DummyVecEnv steps them, random actions, shots per CPU-second. *Before*: the same envs with the Python
-  of before issue 21 swapped in (``players/_reference.py``: the candidate slot lists, the ``candidates``
+  of before issue 21 swapped in (``benchmarks/reference_players.py``: the candidate slot lists, the ``candidates``
   observation's loop and the next shot's ease in Python, and the geometric opponent of before, observed for at every
   shot); *after*: as they are; and the native vector env of the same tables.
 
@@ -73,7 +73,9 @@ class _Stepper:
     def run(self, seconds: float) -> tuple[float, float]:
         """Step for ``seconds`` of wall time; returns the ``(wall, CPU)`` seconds taken (the counts accumulate)."""
         t0, c0 = time.perf_counter(), time.process_time()
-        while time.perf_counter() - t0 < seconds:
+        first = True
+        while first or time.perf_counter() - t0 < seconds:  # one round at least, however busy the machine
+            first = False
             for env in self.envs:
                 a = self.rng.uniform(-1.0, 1.0, env.action_space.shape).astype(np.float32)
                 _, _, term, trunc, info = env.step(a)
@@ -193,7 +195,7 @@ def vector_rate(env_id: str, n: int, seconds: float, **kwargs: Any) -> dict[str,
         vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))  # compile outside the timing
         steps = shots = 0
         t0, c0 = time.perf_counter(), time.process_time()
-        while time.perf_counter() - t0 < seconds:
+        while steps == 0 or time.perf_counter() - t0 < seconds:  # one step at least
             _, _, _, _, info = vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))
             stepped = int(np.sum(info.get("_shots", np.ones(n, np.bool_))))  # (tables resetting took no shot)
             steps += stepped
@@ -203,7 +205,7 @@ def vector_rate(env_id: str, n: int, seconds: float, **kwargs: Any) -> dict[str,
     finally:
         vec.close()
     return {"tables": n, "native": native, "steps": steps, "shots": shots, "wall_s": wall, "cpu_s": cpu,
-            "steps_per_s": steps / wall, "shots_per_s": shots / wall, "steps_per_cpu_s": steps / cpu}
+            "steps_per_s": steps / wall, "shots_per_s": shots / wall, "steps_per_cpu_s": steps / max(cpu, 1e-9)}
 
 
 # --- the training job: before and after ----------------------------------------------------------------------------
@@ -219,7 +221,7 @@ def job_env_kwargs(path: str) -> tuple[str, dict[str, Any], int]:
 
 
 class _ReferenceGeometric:
-    """The geometric player of before issue 21 (``players/_reference.py``), acting in the action type it is given."""
+    """The geometric player of before issue 21 (``benchmarks/reference_players.py``), acting in the action type it is given."""
 
     name = "geometric"
 
@@ -227,7 +229,7 @@ class _ReferenceGeometric:
         pass
 
     def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
-        from billiards_env.players import _reference as ref
+        from benchmarks import reference_players as ref
         from billiards_env.players.context import to_action
         from billiards_env.table_state import state_of
 
@@ -241,7 +243,7 @@ class _ReferenceGeometric:
 def _reference_slots(state: Any, n: int, speed_range: tuple[float, float] | None = None) -> Any:
     """``envs.candidates.candidate_slots`` on the Python slot lists of before issue 21 (memoised as it is)."""
     from billiards_env.envs import candidates as envc
-    from billiards_env.players import _reference as ref
+    from benchmarks import reference_players as ref
 
     b = state.balls
     if speed_range is None:
@@ -307,7 +309,7 @@ def before_issue_21() -> Iterator[None]:
     """The envs' candidate slot lists, the ``candidates`` observation's values and the next shot's ease as the
     Python of before issue 21, for the block."""
     from billiards_env.envs import actions, games, observations
-    from billiards_env.players import _reference as ref
+    from benchmarks import reference_players as ref
 
     cf = observations.CandidateFeatures
     saved = (actions.candidate_slots, cf.features, games.next_shot_ease)
@@ -334,7 +336,9 @@ class _VectorStepper:
     def run(self, seconds: float) -> tuple[float, float]:
         t0, c0 = time.perf_counter(), time.process_time()
         vec = self.vec
-        while time.perf_counter() - t0 < seconds:
+        first = True
+        while first or time.perf_counter() - t0 < seconds:  # one step at least, however busy the machine
+            first = False
             a = self.rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32)
             _, _, _, _, info = vec.step(a)
             stepped = info.get("_shots", np.ones(vec.num_envs, np.bool_))
@@ -481,7 +485,7 @@ def render_markdown(doc: dict[str, Any]) -> str:
                      f"{fmt_rate(v['shots_per_s'])} | {fmt_rate(v['steps_per_cpu_s'])} |")
     lines += ["", "## The 9-ball training job's envs", "",
               "Each config's `n_envs` single envs stepped in turn (as SB3's DummyVecEnv steps them), seeded random "
-              "actions. Before: the Python of before issue 21 swapped in (`players/_reference.py`: the candidate "
+              "actions. Before: the Python of before issue 21 swapped in (`benchmarks/reference_players.py`: the candidate "
               "slot lists, the next shot's ease, the geometric opponent, observed for at every shot); after: the "
               "envs as they are. Interleaved rounds in this one run.", "",
               "The native vector env of the same `n_envs` tables (`gymnasium.make_vec`, one thread) is what SB3 would "

@@ -9,7 +9,7 @@ action), breaks and ball in hand included. On each table, interleaved:
 
 - the geometric decision: ``geometric_decision`` on arrays (what a caller holding the table state calls),
   ``GeometricPlayer.decide`` on the env's table (with ``shot_context``), and today's Python
-  (``players/_reference.py``: ``GeometricPlayer.act`` before issue 21 without the action); median of repeats per
+  (``benchmarks/reference_players.py``: ``GeometricPlayer.act`` before issue 21 without the action); median of repeats per
   table, then the median and the worst over the tables;
 - the search decision (not on breaks): ``SearchPlayer.act`` and today's ``ReferenceSearchPlayer.act`` (one run each
   per table), the search's time in the batch simulation (``run_shots``) and its own, and how many shots it simulates.
@@ -100,7 +100,7 @@ class _SimClock:
 def run_game(env_id: str, sizes: dict[str, int]) -> dict[str, Any]:
     """Both players' decisions on the tables of ``env_id`` (see the module docstring)."""
     from billiards_env.players import GeometricPlayer, shot_context
-    from billiards_env.players import _reference as reference
+    from benchmarks import reference_players as reference
     from billiards_env.players.geometry import geometric_decision, table_model
     from billiards_env.players.search import SearchPlayer
 
@@ -212,7 +212,7 @@ def render_markdown(doc: dict[str, Any]) -> str:
              f"{m['time']} (all figures from this one run).", "", machine_markdown(m, doc.get("end_load")), "",
              "Tables: every decision of seeded games with the built-in geometric opponent (the agent plays the "
              "geometric player's shot, or a seeded random action one time in four); breaks and ball in hand "
-             "included. Today's Python: `billiards_env/players/_reference.py` (the players before issue 21).", "",
+             "included. Today's Python: `benchmarks/reference_players.py` (the players before issue 21).", "",
              "## Targets", "", "| | measured | target | |", "|---|---|---|---|"]
     for r in targets(doc):
         lines.append(f"| {r['name']} | {r['value']} | {r['target']} | {'pass' if r['ok'] else '**miss**'} |")

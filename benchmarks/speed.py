@@ -176,7 +176,7 @@ def time_env(env_id: str, seconds: float, wrapped: bool = True, fast: bool = Tru
     t_step = t_reset = 0.0
     start = time.perf_counter()
     cpu0 = time.process_time()
-    while time.perf_counter() - start < seconds:
+    while steps == 0 or time.perf_counter() - start < seconds:  # one round at least, however busy the machine
         for _ in range(100):
             a = actions[steps % len(actions)]
             t0 = time.perf_counter()

@@ -3,7 +3,7 @@
 The geometric parts of :mod:`billiards_env.envs.candidates` (the pot slots from where the cue ball lies and in hand,
 the kicks worth simulating, the next shot's ease) on plain arrays, for a caller holding the table state (balls as
 arrays, a :class:`~billiards_env.players.geometry.TableModel`, the legal ``targets`` in the view's order): the same
-lists in the same order, bit for bit, as the Python they replaced (``players/_reference.py``:
+lists in the same order, bit for bit, as the Python they replaced (``benchmarks/reference_players.py``:
 ``reference_shot_slots``, ``reference_in_hand_slots``, ``reference_kick_candidates``, ``reference_next_shot_ease``;
 tests/players/test_slots.py). The cue ball is row 0. Verifying the kicks by simulation stays a
 :func:`billiards_env.physics.batch.run_shots` call of the caller (``envs/candidates.py``).

@@ -21,7 +21,7 @@ from billiards_env.players import GeometricPlayer, ShotContext, ghost_ball_shots
 from billiards_env.players.geometric import choose_placement, geometric_shot
 from billiards_env.players.geometry import COL_POCKET, COL_SCORE, COL_TARGET, geometric_decision, ghost_shots, table_model
 
-from billiards_env.players import _reference as reference
+from benchmarks import reference_players as reference
 
 R = BALL_RADIUS
 

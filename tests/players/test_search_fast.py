@@ -1,5 +1,5 @@
 """The search player on the compiled geometry and the batch API (players/search.py) plays what today's Python search
-(players/_reference.py) played: the same action on fixed tables of 9-ball and 8-ball games (the cue ball where it
+(benchmarks/reference_players.py) played: the same action on fixed tables of 9-ball and 8-ball games (the cue ball where it
 lies and in hand), under the spin model with tip offsets and shot noise, without rules, and with an action type
 mapped shot by shot. Its parts are checked against what they replace: what the rules read of a shot from the batch
 arrays against the event log, the absolute aim's round trip on arrays against the env's, and the rules' contract
@@ -14,7 +14,7 @@ import pytest
 
 import billiards_env  # noqa: F401  (registers the ids)
 from billiards_env.physics.batch import run_shots
-from billiards_env.players import _reference as reference
+from benchmarks import reference_players as reference
 from billiards_env.players import make_player, shot_context
 from billiards_env.players.search import Playable, SearchPlayer, SearchSettings, _key_from_log, shot_keys
 from billiards_env.rules import ShotInfo, ShotSummary

@@ -1,5 +1,5 @@
 """The ``candidates`` slots as arrays (players/slots.py) and the lists the env builds on them (envs/candidates.py)
-equal the Python they replaced (players/_reference.py), bit for bit, on the tables of seeded 9-ball and 8-ball games:
+equal the Python they replaced (benchmarks/reference_players.py), bit for bit, on the tables of seeded 9-ball and 8-ball games:
 the pot slots from where the cue ball lies and in hand, the kicks worth simulating, the kick chosen by simulation and
 the next-shot ease."""
 from __future__ import annotations
@@ -10,7 +10,7 @@ import pytest
 
 import billiards_env  # noqa: F401  (registers the ids)
 from billiards_env.envs import candidates as envc
-from billiards_env.players import _reference as ref
+from benchmarks import reference_players as ref
 from billiards_env.players import make_player
 from billiards_env.players.geometry import (COL_CLEAR_OBJ, COL_D_OBJ, COL_OBJ_ANGLE, COL_POCKET, COL_SCORE,
                                             COL_TARGET, COL_WINDOW, table_model)

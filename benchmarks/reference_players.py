@@ -4,7 +4,7 @@ the compiled code with: ``ghost_ball_shots``, ``geometric_shot``, ``break_shot``
 player's decision (:func:`reference_geometric_act`), the search player (:class:`ReferenceSearchPlayer`) and the
 ``candidates`` types' slot lists (:func:`reference_candidate_slots` and its parts), with the numpy ``pocket_window``
 (41 sampled directions), ``segment_blocked`` and ``cut_cosine`` they called. Verbatim copies (the search's and the
-slots' imports pointed at the copies here). Not part of the API; to be removed once the lead retires it."""
+slots' imports pointed at the copies here). Kept with the benchmarks, outside the package: not part of the API."""
 from __future__ import annotations
 
 import contextlib
