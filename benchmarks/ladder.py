@@ -83,7 +83,7 @@ class Shot:
         return Shot(self.pos, self.angle, self.speed, 0.0, 0.0)
 
     def balls(self, physics: Physics) -> Balls:
-        spin = physics.friction == "spin"
+        spin = physics.has_spin
         return Balls.from_positions(self.pos).strike(0, self.angle, self.speed, side=self.side if spin else 0.0,
                                                      top=self.top if spin else 0.0, physics=physics)
 

@@ -101,7 +101,7 @@ def play_shot(state: TableState, shot: CueShot, rng: np.random.Generator, record
     b.vel[0, 0] = speed * math.cos(angle)
     b.vel[0, 1] = speed * math.sin(angle)
     p = state.physics
-    spin = p.friction == "spin"
+    spin = p.has_spin
     if spin:  # the tip offsets' spin, and the squirt of the physics
         b.vel[0, 0], b.vel[0, 1], b.ang[0, 0], b.ang[0, 1], b.ang[0, 2] = strike_ball(
             angle, speed, side, top, float(b.radius[0]), float(b.mass[0]), p.squirt, p.cue_end_mass)

@@ -47,7 +47,7 @@ def main(argv: list[str] | None = None) -> int:
             raise SceneError(f"{flags} {'apply' if len(step_only) > 1 else 'applies'} only to the step solver, "
                              f"and this run uses {solver!r}{whose}; add --solver step, or drop {flags}")
         # Under spin, --events reports each ball's motion state after each event: that needs the state log.
-        record = args.events and scene.physics.friction == "spin"
+        record = args.events and scene.physics.has_spin
         result = scene.run(solver=args.solver, dt=args.dt, contact=args.contact, record=record)
     except SceneError as exc:
         print(f"billiards-sim: error: {exc}", file=sys.stderr)

@@ -117,7 +117,7 @@ def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.ndarray, np.n
     icfg = np.zeros(7, np.int64)
     icfg[I_AIM] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
     icfg[I_SPIN_ACTION] = int(a.spin)
-    icfg[I_SPIN_MODEL] = int(c.physics.friction == "spin")
+    icfg[I_SPIN_MODEL] = int(c.physics.has_spin)
     icfg[I_SINGLE_SHOT] = int(c.single_shot)
     icfg[I_MAX_SHOTS] = int(c.max_shots)
     icfg[I_POSITIONS_OBS] = int(observation_type.name == "positions" and observation_type.n_game == 0)

@@ -84,7 +84,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         balls = Balls.from_positions(np.zeros((n, 2)), ids=ids, radius=c.ball_radius, mass=c.ball_mass)
         simulator = Simulator(c.table, c.physics, solver=c.solver.name, dt=c.solver.dt, contact=c.solver.contact,
                               max_time=c.max_time, max_events=c.max_events)
-        spin = c.physics.friction == "spin"
+        spin = c.physics.has_spin
         settings = ShotSettings(float(c.speed_min), float(c.speed_max), float(c.angle_noise), float(c.speed_noise),
                                 float(c.tip_noise), spin and bool(c.spin_action), float(c.max_tip_offset),
                                 c.speed_noise_mode == "absolute")

@@ -312,7 +312,7 @@ def _apply_noise(cfg: EnvConfig, given: set[str]) -> EnvConfig:
         return cfg
     preset = dict(NOISE_PRESETS[cfg.noise])
     tip_mm = preset.pop("tip_noise_mm")
-    if cfg.physics.friction == "spin":
+    if cfg.physics.has_spin:
         preset["tip_noise"] = tip_mm * 1e-3 / cfg.ball_radius
     fill = {k: v for k, v in preset.items() if k not in given}
     return cfg.updated(fill, source=f"noise {cfg.noise!r}") if fill else cfg
@@ -535,7 +535,7 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _require(0 < cfg.ghost_max_angle <= 90, "ghost_max_angle", f"must be in (0, 90] degrees, got {cfg.ghost_max_angle}")
     _require(0 < cfg.max_tip_offset <= 0.5, "max_tip_offset",
              f"must be in (0, 0.5] (fraction of the ball radius; 0.5 is the miscue limit), got {cfg.max_tip_offset}")
-    spin = cfg.physics.friction == "spin"
+    spin = cfg.physics.has_spin
     _require(spin or not cfg.spin_action, "spin_action",
              f"needs the spin model: add friction='spin' (the physics friction is {cfg.physics.friction!r})")
     _require(spin or cfg.tip_noise == 0, "tip_noise", "needs the spin model: add friction='spin'")

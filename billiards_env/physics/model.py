@@ -165,6 +165,12 @@ class Physics:
         return {"rolling": ROLLING, "drag": DRAG, "spin": SPIN}[self.friction]
 
     @property
+    def has_spin(self) -> bool:
+        """Balls carry angular velocities (the ``spin`` law): a strike's tip offsets put spin on the ball, and the
+        spin kernels (:mod:`.kernels`) run its shots. The rolling and drag laws have no spin."""
+        return self.friction == "spin"
+
+    @property
     def deceleration(self) -> float:
         """Rolling deceleration ``mu_roll * g`` (m/s^2): of the ``rolling`` law, and of a rolling ball under
         ``spin``; 0 under ``drag``."""

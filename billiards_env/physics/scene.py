@@ -93,7 +93,7 @@ class Scene:
         if "balls" not in d:
             raise SceneError("scene: missing 'balls'; give a list of balls, e.g. [{\"id\": \"cue\", \"x\": 0.6, \"y\": 0.6}]")
         balls = _balls(d["balls"])
-        validate_balls(balls, table, allow_spin=physics.friction == "spin")
+        validate_balls(balls, table, allow_spin=physics.has_spin)
         physics.check_cushion_height(balls.radius)
         shot = _shot(d["shot"], balls, physics) if d.get("shot") is not None else None
         solver = parse_solver(d.get("solver", {}))

@@ -40,7 +40,7 @@ def _warm_batch(sim: Simulator, balls: Balls) -> None:
     """The batch drivers of ``sim``'s model (:mod:`.batch`): serial with the event log, and parallel."""
     from .batch import run_shots
 
-    spin = sim.physics.friction == "spin"
+    spin = sim.physics.has_spin
     kw = {"side": [0.1, 0.0], "top": [0.0, -0.1]} if spin else {}
     for threads, events in ((1, True), (2, False)):
         run_shots(sim, balls, [0.0, 1.0], [1.0, 0.5], threads=threads, events=events, **kw)

@@ -56,7 +56,7 @@ def shot_context(source: Any, codec: Any = None) -> ShotContext:
     spin_dims = bool(getattr(codec, "spin", s.tip_offsets))
     return ShotContext(state.balls, state.table, state.physics, state.simulator, 0, list(view.targets),
                        s.speed_range, s.angle_noise, s.speed_noise, state.game, view.place_area, s.tip_noise,
-                       state.physics.friction == "spin" and spin_dims, state)
+                       state.physics.has_spin and spin_dims, state)
 
 
 def player_inputs(source: Any, codec: Any = None) -> tuple[TableState, Any]:

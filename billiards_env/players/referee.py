@@ -79,9 +79,9 @@ def snooker_turn(sim: Simulator, balls: Balls, values: np.ndarray, state: Snooke
         balls.on_table[cue] = True
         balls.vel[cue] = 0.0
         balls.ang[cue] = 0.0
-    spin = sim.physics.friction == "spin"
+    spin = sim.physics.has_spin
     a, v, sd, tp = noisy(shot.angle, shot.speed, shot.side, shot.top, rng, noise if spin else (*noise[:2], 0.0))
-    _set(balls, balls.strike(cue, a, v, **({"side": sd, "top": tp} if spin else {})))
+    _set(balls, balls.strike(cue, a, v, **({"side": sd, "top": tp} if spin else {}), physics=sim.physics))
     _, _, _, pocket, events = sim.run_in_place(balls)
     info = SnookerShotInfo(nominated=shot.nominated if state.on == "colour" else None,
                            free_ball=shot.free_ball if rules.free_ball_available(state, is_snookered) else None,
@@ -111,9 +111,9 @@ def three_cushion_turn(sim: Simulator, balls: Balls, state: ThreeCushionState, s
     re-spotting in three-cushion)."""
     rules = rules or ThreeCushion()
     rows = carom_rows(balls.ids, state.shooter)
-    spin = sim.physics.friction == "spin"
+    spin = sim.physics.has_spin
     a, v, sd, tp = noisy(shot.angle, shot.speed, shot.side, shot.top, rng, noise if spin else (*noise[:2], 0.0))
-    _set(balls, balls.strike(rows[0], a, v, **({"side": sd, "top": tp} if spin else {})))
+    _set(balls, balls.strike(rows[0], a, v, **({"side": sd, "top": tp} if spin else {}), physics=sim.physics))
     _, _, _, _, events = sim.run_in_place(balls)
     balls.vel[...] = 0.0
     balls.ang[...] = 0.0

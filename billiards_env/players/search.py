@@ -255,7 +255,7 @@ def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = No
                      judge: Judge | None = None) -> Judged:
     """:func:`_simulate`, with who shoots next and his legal balls (see :class:`Judged`)."""
     game = ctx.game is not None
-    spin = ctx.physics.friction == "spin"
+    spin = ctx.physics.has_spin
     res = run_shots(ctx.simulator, ctx.balls, angles, speeds, ball=ctx.cue, validate=False,
                     side=sides if spin else None, top=tops if spin else None)
     targets = np.asarray(ctx.targets, dtype=np.int64)
@@ -427,7 +427,7 @@ def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
     st = settings or SearchSettings()
     rng = rng or np.random.default_rng(0)
     lo, hi = ctx.speed_range
-    spin = ctx.physics.friction == "spin"
+    spin = ctx.physics.has_spin
     tm = table_model(ctx.table, ctx.physics)
     c = _candidates(ctx, st, tm)
     if playable is not None:
@@ -662,8 +662,9 @@ class SearchPlayer:
         """On the 8: the pocket the chosen shot sends it into (None if it does not)."""
         if ctx.game is None or not ctx.game.needs_called_pocket():
             return None
-        spin = ctx.physics.friction == "spin"
-        shot = ctx.balls.strike(ctx.cue, angle, speed, **({"side": out.side, "top": out.top} if spin else {}))
+        spin = ctx.physics.has_spin
+        shot = ctx.balls.strike(ctx.cue, angle, speed, **({"side": out.side, "top": out.top} if spin else {}),
+                                physics=ctx.physics)
         res = ctx.simulator.run(shot, validate=False)
         k = int(res.pocket[ctx.game.row_of[8]])
         return k if k >= 0 else None

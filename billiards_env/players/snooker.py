@@ -370,7 +370,7 @@ def _evaluate(b: Balls, sim: Simulator, state: SnookerState, values: np.ndarray,
     points scored minus the penalty, plus ``keep_value`` and the position term when the striker keeps the table,
     minus the opponent's chances when he does not, or +-``win_value`` when the frame ends. Position terms are
     computed for the rows within reach of the best (``full``: for every row)."""
-    spin = sim.physics.friction == "spin"
+    spin = sim.physics.has_spin
     res = run_shots(sim, b, shots[:, 0], shots[:, 1], ball=cue, side=shots[:, 2] if spin else None,
                     top=shots[:, 3] if spin else None, validate=False)
     n = len(shots)
@@ -419,7 +419,7 @@ def snooker_search_shot(balls: Balls, sim: Simulator, state: SnookerState, value
     windows = {} if windows is None else windows
     values = np.ascontiguousarray(values, dtype=np.int64)
     cue = _cue_row(values)
-    spin = sim.physics.friction == "spin"
+    spin = sim.physics.has_spin
     lo, hi = speed_range
     free_ok = rules.free_ball_available(state, snookered)
     targets = target_rows(balls, values, state, free_ok)
@@ -483,7 +483,7 @@ def _evaluate_free(b, sim, state, values, cue, shots, st, sigma, windows, full=F
     (-inf for the shots that hit a ball on first or nothing)."""
     out = np.full(len(shots), -math.inf)
     scored = np.zeros(len(shots), bool)
-    spin = sim.physics.friction == "spin"
+    spin = sim.physics.has_spin
     res = run_shots(sim, b, shots[:, 0], shots[:, 1], ball=cue, side=shots[:, 2] if spin else None,
                     top=shots[:, 3] if spin else None, validate=False)
     first_val = np.where(res.first_contact >= 0, values[np.maximum(res.first_contact, 0)], -1)
@@ -499,7 +499,7 @@ def _evaluate_free(b, sim, state, values, cue, shots, st, sigma, windows, full=F
 
 def _first_row(b: Balls, sim: Simulator, cue: int, shot: np.ndarray) -> int:
     """The row the shot's cue ball hits first (-1: none)."""
-    spin = sim.physics.friction == "spin"
+    spin = sim.physics.has_spin
     res = run_shots(sim, b, shot[0:1], shot[1:2], ball=cue, side=shot[2:3] if spin else None,
                     top=shot[3:4] if spin else None, validate=False)
     return int(res.first_contact[0])

@@ -225,7 +225,7 @@ def three_cushion_geometric_shot(balls: Balls, table: Table, physics: Physics, c
     mc = float(balls.mass[cue])
     e_ball = physics.ball_restitution
     decel = physics.deceleration
-    spin = physics.friction == "spin"
+    spin = physics.has_spin
     top = NATURAL_ROLL if spin else 0.0
     lo, hi = speed_range
     best: tuple[int, float, float, float] | None = None  # (run length, angle, speed, cushions)

@@ -9,7 +9,7 @@ from billiards_env.physics.layout import CAROM_IDS, carom_balls
 from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.physics.table import CAROM_BALL_MASS, CAROM_BALL_RADIUS, carom_table
 from billiards_env.players.referee import three_cushion_turn
-from billiards_env.players.three_cushion import (CaromSearchSettings, three_cushion_geometric_shot,
+from billiards_env.players.three_cushion import (CaromSearchSettings, CaromShot, three_cushion_geometric_shot,
                                                 three_cushion_shot)
 from billiards_env.rules.three_cushion import ThreeCushion, summarize_carom
 
@@ -97,3 +97,18 @@ def test_geometric_player_scores_in_the_rolling_model(layout):
 def test_geometric_player_rolls_the_cue_ball_under_the_spin_model():
     shot = three_cushion_geometric_shot(balls_of(LAYOUTS[1]), TABLE, SIM.physics, 0, 1, 2)
     assert shot.top == 0.4 and shot.side == 0.0 and 0.5 <= shot.speed <= 6.0
+
+
+def test_the_referee_plays_the_squirt_of_the_physics():
+    """Under a physics with squirt (the pooltool preset), the referee's turn is the shot the physics plays: side
+    english turns the cue ball's path (``Balls.strike(physics=...)``), not the unturned strike."""
+    sim = Simulator(TABLE, Physics.from_preset("pooltool"))
+    balls = balls_of(LAYOUTS[1])
+    shot = CaromShot(angle=0.3, speed=2.0, side=0.3, top=0.1, point=False, robustness=0.0, cushions=0,
+                     simulated=0)
+    played = balls.copy()
+    three_cushion_turn(sim, played, ThreeCushion().initial_state(0), shot)
+    squirted = sim.run(balls.strike(0, shot.angle, shot.speed, shot.side, shot.top, physics=sim.physics))
+    unturned = sim.run(balls.strike(0, shot.angle, shot.speed, shot.side, shot.top))
+    assert np.array_equal(played.pos, squirted.balls.pos)
+    assert not np.allclose(played.pos, unturned.balls.pos, atol=1e-3)
