@@ -30,7 +30,7 @@ import sys
 import time
 from dataclasses import asdict
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 import yaml
@@ -209,9 +209,11 @@ def _spent_budget(max_seconds: float, clock: str, seconds: float, steps: int, n_
 
 
 def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = None,
-          progress_bar: bool | None = None, quiet: bool = False, vec_env: str = "auto") -> dict[str, Any]:
+          progress_bar: bool | None = None, quiet: bool = False, vec_env: str = "auto",
+          init: Callable[[Any], None] | None = None) -> dict[str, Any]:
     """Train from a resolved config; returns the run summary (also written to ``run.json``). ``vec_env``: see
-    :func:`use_native`."""
+    :func:`use_native`. ``init(model)`` is called on a new model before it learns (e.g. to start from a
+    behaviour-cloned policy: :mod:`agents.distill`); not on a resumed one."""
     import torch
     from stable_baselines3.common.callbacks import CallbackList
 
@@ -281,6 +283,8 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
         except TypeError as exc:
             raise TrainConfigError(f"{cfg.source}: {s.algo.upper()} does not accept these hyperparameters "
                                    f"({exc}); check the '{cfg.env_id}:' entry") from None
+        if init is not None:
+            init(model)
 
     clock = TrainingClock(run_dir, s.max_seconds, offset_seconds, offset_steps, verbose=1 if not quiet else 0,
                           clock=s.budget_clock)
