@@ -231,10 +231,17 @@ def power_of(speed: Any, base: Any, log_factor: float) -> np.ndarray:
         return np.log(np.maximum(speed, 1e-12) / np.maximum(base, 1e-12)) / log_factor
 
 
+def offset_of(a: float) -> float:
+    """The offset of :data:`OFFSETS` an ``offset`` action value picks (equal bins over ``[-1, 1]``)."""
+    k = min(int(0.5 * (min(max(a, -1.0), 1.0) + 1.0) * len(OFFSETS)), len(OFFSETS) - 1)
+    return OFFSETS[k]
+
+
 class CandidateAim(CandidateShots):
     """The ``candidates`` action type with one more dim, ``offset`` (the last): where in the chosen pot's entry
-    window the object ball is sent, ``offset * OFFSET_SPAN`` of the window's half-width off its middle (0: the
-    middle, as ``candidates``). It moves the cut, and with it the line the cue ball leaves on after contact: a
+    window the object ball is sent, one of :data:`OFFSETS` (:func:`offset_of`: equal bins of the action value,
+    the middle bin 0) times ``OFFSET_SPAN`` of the window's half-width off its middle (0: the middle, as
+    ``candidates``): exactly the offsets the ``candidates_path`` observation describes. It moves the cut, and with it the line the cue ball leaves on after contact: a
     second way, beside the speed, to keep the cue ball out of the pockets. Read only for a pot with the cue ball
     where it lies (not the kick, the break or ball in hand); an offset whose direction misses the pocket or asks
     for a cut beyond :data:`MAX_OFFSET_CUT` plays the middle. ``power`` scales the slot's own speed as in
@@ -259,7 +266,7 @@ class CandidateAim(CandidateShots):
         if cands.break_shot or cands.in_hand or not cands.slots or (cands.kick is not None and self._kicks(a[0])):
             return played
         slot = cands.slots[0 if self._kicks(a[0]) else self._slot(a[0], len(cands.slots))]
-        g = offset_ghost(state, slot, a[self._offset_at])
+        g = offset_ghost(state, slot, offset_of(a[self._offset_at]))
         if g is None:
             return played
         angle = math.atan2(g[1] - float(state.balls.pos[0, 1]), g[0] - float(state.balls.pos[0, 0]))
@@ -287,7 +294,8 @@ class CandidateAim(CandidateShots):
             return out
         direction = math.atan2(oy - (cy + math.sin(angle) * d), ox - (cx + math.cos(angle) * d))
         off = wrap_angle(direction - s.obj_angle) / (OFFSET_SPAN * s.half)
-        out[self._offset_at] = np.float32(min(max(off, -1.0), 1.0))
+        m = int(np.argmin(np.abs(np.asarray(OFFSETS) - off)))  # the nearest offset, as the middle of its bin
+        out[self._offset_at] = np.float32(2.0 * (m + 0.5) / len(OFFSETS) - 1.0)
         return out
 
 
@@ -343,6 +351,9 @@ class CandidateAimTypes(gym.Wrapper):
     def __init__(self, env: gym.Env) -> None:
         super().__init__(env)
         u = env.unwrapped
+        if u.config.action_type != "candidates":
+            raise ValueError(f"CandidateAimTypes: make the env with action_type='candidates' (and its "
+                             f"candidate_slots, candidate_speed_factor), got {u.config.action_type!r}")
         at = u.action_type
         u.action_type = CandidateAim(u.config, at.placement, at.declarations, at.n_pockets)
         u.observation_type = CuePathFeatures(u.config, u.table, u.n_balls, u.task.n_features)
@@ -351,5 +362,5 @@ class CandidateAimTypes(gym.Wrapper):
 
 
 __all__ = ["CuePathFeatures", "CandidateAim", "CandidateAimTypes", "path_pocket_speed", "shot_thresholds",
-           "rows_thresholds", "offset_ghost", "offset_rows", "thresholds", "power_of", "MAX_BOUNCES",
+           "rows_thresholds", "offset_ghost", "offset_of", "offset_rows", "thresholds", "power_of", "MAX_BOUNCES",
            "PATH_FEATURES", "OFFSETS", "OFFSET_SPAN"]

@@ -41,7 +41,7 @@ import numpy as np
 import yaml
 
 from .config import TrainConfig, load_train_config, parse_hyperparams, wrapper_factory
-from .train import REPO_ROOT, algo_class, make_vec_envs, new_run_dir, train
+from .train import REPO_ROOT, algo_class, env_spec, make_vec_envs, new_run_dir, train
 
 #: Labels are clipped to this inside ``[-1, 1]`` for the squashed Gaussian's log-probability (atanh is finite).
 LABEL_CLIP = 0.995
@@ -153,10 +153,12 @@ def _bc_parameters(model: Any) -> list[Any]:
 
 
 def behaviour_clone(model: Any, obs: np.ndarray, actions: np.ndarray, epochs: int = 30, batch_size: int = 256,
-                    lr: float = 1e-3, seed: int = 0, holdout: float = 0.1) -> dict[str, Any]:
-    """Fit ``model``'s policy to ``(obs, actions)`` by maximum likelihood (see :func:`_log_likelihood`), Adam,
-    ``epochs`` passes; a ``holdout`` fraction is kept out to report the fit. Returns the losses per epoch. The
-    target network of an off-policy actor (TD3/DDPG) is copied from the fitted actor."""
+                    lr: float = 1e-3, seed: int = 0, holdout: float = 0.1, mse_weight: float = 10.0
+                    ) -> dict[str, Any]:
+    """Fit ``model``'s policy to ``(obs, actions)`` by maximum likelihood (see :func:`_log_likelihood`) plus
+    ``mse_weight`` times the squared error of its deterministic action (the likelihood alone spends its first
+    steps on the spread), Adam, ``epochs`` passes; a ``holdout`` fraction is kept out to report the fit. Returns
+    the losses per epoch. The target network of an off-policy actor (TD3/DDPG) is copied from the fitted actor."""
     import torch
 
     rng = np.random.default_rng(seed)
@@ -177,11 +179,14 @@ def behaviour_clone(model: Any, obs: np.ndarray, actions: np.ndarray, epochs: in
         for start in range(0, len(perm), batch_size):
             idx = torch.as_tensor(perm[start:start + batch_size], device=dev)
             loss = -_log_likelihood(model, o[idx], a[idx]).mean()
+            if mse_weight:
+                det = model.policy._predict(o[idx], deterministic=True)
+                loss = loss + mse_weight * ((det - a[idx]) ** 2).sum(dim=1).mean()
             opt.zero_grad()
             loss.backward()
             opt.step()
             total += float(loss.detach()) * len(idx)
-        entry = {"epoch": epoch + 1, "train_nll": total / max(len(fit), 1)}
+        entry = {"epoch": epoch + 1, "train_loss": total / max(len(fit), 1)}
         if n_val:
             with torch.no_grad():
                 vi = torch.as_tensor(val, device=dev)
@@ -227,8 +232,9 @@ def distill(cfg: TrainConfig, teacher: str = "search", states: int = 4000, dagge
             beta: float = 0.0, bc_epochs: int = 30, bc_lr: float = 1e-3, rl_seconds: float = 0.0,
             actor_delay: int = 20_000, workers: int = 1, address: str | None = None, label_seed: int = 1_000_000,
             eval_episodes: int = 500, eval_seed: int = 10_000, run_dir: Path | None = None,
-            quiet: bool = False) -> dict[str, Any]:
-    """The pipeline of the module docstring; returns (and writes to ``distill.json``) what each stage bought."""
+            quiet: bool = False, labels: Path | None = None, mse_weight: float = 10.0) -> dict[str, Any]:
+    """The pipeline of the module docstring; returns (and writes to ``distill.json``) what each stage bought.
+    ``labels``: a ``labels.npz`` of an earlier run, cloned again instead of the first round's labelling."""
     import torch
 
     say = (lambda *a: None) if quiet else (lambda *a: print(*a, flush=True))
@@ -244,7 +250,7 @@ def distill(cfg: TrainConfig, teacher: str = "search", states: int = 4000, dagge
     # what a model of this folder plays (agents.evaluate reads it): as agents.train writes it
     (run_dir / "config.yaml").write_text(f"# Resolved config of this run (from {cfg.source})\n"
                                          + yaml.safe_dump(cfg.to_yaml_dict(), sort_keys=False))
-    (run_dir / "env.json").write_text(json.dumps({"id": cfg.env_id, "kwargs": setup.env_kwargs}, indent=2))
+    (run_dir / "env.json").write_text(json.dumps(env_spec(cfg, setup), indent=2))
     report: dict[str, Any] = {"teacher": teacher, "env_id": cfg.env_id, "env_kwargs": setup.env_kwargs,
                               "env_wrapper": wrapper_spec, "config": cfg.source, "stages": []}
 
@@ -261,11 +267,17 @@ def distill(cfg: TrainConfig, teacher: str = "search", states: int = 4000, dagge
     for rnd in range(dagger_rounds + 1):
         c0, w0 = cpu(), time.perf_counter()
         seeds = range(label_seed + rnd * per_round, label_seed + (rnd + 1) * per_round)
-        new = collect_labels(cfg.env_id, setup.env_kwargs, wrapper_spec, teacher, seeds,
-                             student if rnd > 0 else None, beta if rnd > 0 else 1.0, workers, address)
+        if rnd == 0 and labels is not None:
+            with np.load(labels) as f:
+                new = {k: f[k] for k in ("obs", "actions", "rewards", "success")}
+        else:
+            new = collect_labels(cfg.env_id, setup.env_kwargs, wrapper_spec, teacher, seeds,
+                                 student if rnd > 0 else None, beta if rnd > 0 else 1.0, workers, address)
         data = new if data is None else {k: np.concatenate([data[k], new[k]]) for k in new}
+        np.savez_compressed(run_dir / "labels.npz", **data)
         c1, w1 = cpu(), time.perf_counter()
-        fit = behaviour_clone(model, data["obs"], data["actions"], bc_epochs, lr=bc_lr, seed=s.seed + rnd)
+        fit = behaviour_clone(model, data["obs"], data["actions"], bc_epochs, lr=bc_lr, seed=s.seed + rnd,
+                              mse_weight=mse_weight)
         path = run_dir / ("bc_model.zip" if rnd == dagger_rounds else f"bc_model_round{rnd}.zip")
         model.save(path)
         c2 = cpu()
@@ -317,6 +329,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--actor-delay", type=int, default=20_000, help="env steps the actor is held still at first")
     p.add_argument("--workers", type=int, default=os.cpu_count() or 1)
     p.add_argument("--address", default=None, help="a Ray cluster's address: label there")
+    p.add_argument("--mse-weight", type=float, default=10.0, help="weight of the squared error in the BC loss")
+    p.add_argument("--labels", type=Path, default=None, help="labels.npz of an earlier run: clone from it")
     p.add_argument("--eval-episodes", type=int, default=500)
     p.add_argument("--run-root", default=None)
     p.add_argument("--seed", type=int, default=None)
@@ -333,7 +347,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     cfg = load_train_config(args.config, overrides=overrides)
     rep = distill(cfg, args.teacher, args.states, args.dagger_rounds, args.beta, args.bc_epochs, args.bc_lr,
                   args.rl_seconds, args.actor_delay, args.workers, args.address,
-                  eval_episodes=args.eval_episodes, eval_seed=cfg.settings.eval_seed)
+                  eval_episodes=args.eval_episodes, eval_seed=cfg.settings.eval_seed, labels=args.labels,
+                  mse_weight=args.mse_weight)
     print(f"run folder: {rep['run_dir']}")
     return 0
 

@@ -8,7 +8,9 @@ each player's break-and-run and run-out-from-ball-in-hand rates.
 
 A player is a baseline name (``random``, ``geometric``, ``search``: :mod:`billiards_env.players`) or a trained policy:
 an SB3 run folder or model zip, or an RLlib checkpoint or run folder (with the ``rllib`` extra), played with
-deterministic actions in its own action and observation types (:class:`agents.games.TrainedPlayer`). Every pair
+deterministic actions in its own action and observation types (:class:`agents.games.TrainedPlayer`); ``prior:<run>``
+is the search player with that policy's proposals in place of its sweep, at its own simulation budget
+(:mod:`agents.prior_search`). Every pair
 plays ``--games`` games on the two-player env (:mod:`billiards_env.multi`, absolute action type), seats swapped
 every game so each breaks as often as the other; game ``k`` of a match uses the rack of seed ``seed + k``, so every
 pair meets on the same racks. ``--spin`` plays under the spin model (friction ``spin``, tip offsets in the action);
@@ -74,6 +76,11 @@ def load_player(spec: str, seed: int = 0, game: str = "nine_ball") -> tuple[str,
     folder: a :class:`agents.games.TrainedPlayer`)."""
     if spec in BASELINES:
         return spec, make_player(spec, seed=seed, game=game)
+    if spec.startswith("prior:"):  # the search player with a trained policy's proposals (agents.prior_search)
+        from .prior_search import prior_search_player
+
+        p = prior_search_player(spec[len("prior:"):], game, seed)
+        return p.name, p
     from .games import trained_player
 
     p = trained_player(spec, game)
@@ -465,7 +472,7 @@ def league_env_kwargs(players: Sequence[tuple[str, Any]], spin: bool, noise: str
     kw: dict[str, Any] = {}
     if spin:
         kw.update(friction="spin", spin_action=True)
-    trained = [p for _, p in players if isinstance(p, TrainedPlayer)]
+    trained = [t for t in (getattr(p, "policy", p) for _, p in players) if isinstance(t, TrainedPlayer)]
     for t in trained:
         if t.physics != trained[0].physics:
             raise ValueError(f"players: {t.name} and {trained[0].name} were trained with different physics; a "
@@ -494,8 +501,8 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
                runouts: int = 0, runout_seed: int = 50_000, command: str | None = None,
                pair_games: dict[str, int] | None = None, workers: int = 1,
                address: str | None = None) -> dict[str, Any]:
-    """Every pair of ``specs`` plays ``n_games`` (a pair with a player named in ``pair_games`` at most that many:
-    slow players); each player's run-outs from ball in hand on ``runouts`` racks (games that open with ball in hand
+    """Every pair of ``specs`` plays ``n_games`` (a pair with a player named in ``pair_games``, or whose spec starts
+    with one of its keys, at most that many: slow players); each player's run-outs from ball in hand on ``runouts`` racks (games that open with ball in hand
     only); returns (and writes under ``out``) the report. The games are cut into chunks played on ``workers`` local
     processes, or on Ray workers with ``address``; the results do not depend on how (each game is seeded by its
     index, :func:`play_games`)."""
@@ -508,8 +515,11 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
     tasks: list[tuple[Any, ...]] = []
     owners: list[tuple[str, int]] = []
     combos = list(itertools.combinations(range(len(players)), 2))
+    def limit(x: int) -> list[int]:  # a key names a player, or starts its spec ("prior:")
+        return [v for k, v in limits.items() if players[x][0] == k or specs[x] == k or specs[x].startswith(k)]
+
     for i, j in combos:
-        n = min([n_games] + [limits[players[x][0]] for x in (i, j) if players[x][0] in limits])
+        n = min([n_games] + limit(i) + limit(j))
         for ks in _chunks(n, pool.workers):
             tasks.append((game, specs[i], specs[j], ks, seed, kw))
             owners.append(("pair", combos.index((i, j))))
@@ -559,7 +569,8 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
     if command is None:
         command = "python -m agents.league " + " ".join(sys.argv[1:]) if "league" in sys.argv[0] \
             else f"agents.league.run_league({game!r}, {list(specs)!r}, {n_games}, {seed}, {noise!r})"
-    fewer = "".join(f" ({v} for the pairs of {k})" for k, v in limits.items() if v < n_games and k in names)
+    fewer = "".join(f" ({v} for the pairs of {k})" for k, v in limits.items()
+                    if v < n_games and any(n == k or sp.startswith(k) for n, sp in zip(names, specs)))
     info = {"game": game, "games": n_games, "fewer": fewer, "seed": seed, "noise": noise, "spin": spin,
             "env_kwargs": kw, "seconds": seconds, "workers": pool.workers, "address": address,
             "setting": setting_text(kw), "runouts": runouts, "runout_seed": runout_seed, "command": command,

@@ -119,6 +119,15 @@ def make_vec_envs(cfg: TrainConfig, setup: AlgoSetup, n_envs: int, seed: int, mo
     return env
 
 
+def env_spec(cfg: TrainConfig, setup: AlgoSetup) -> dict[str, Any]:
+    """What ``env.json`` holds: the env id and kwargs (``gym.make(spec["id"], **spec["kwargs"])`` makes the env a
+    model was trained on) and, for a config that wraps the env, the wrapper (``env_wrapper``, as in the config)."""
+    out: dict[str, Any] = {"id": cfg.env_id, "kwargs": setup.env_kwargs}
+    if cfg.hyperparams.get("env_wrapper"):
+        out["wrapper"] = cfg.hyperparams["env_wrapper"]
+    return out
+
+
 def _action_noise(setup: AlgoSetup, env: Any) -> Any:
     if setup.noise is None:
         return None
@@ -327,7 +336,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     }
     (run_dir / "run.json").write_text(json.dumps(meta, indent=2, default=str))
     # What the model was trained on: gym.make(env["id"], **env["kwargs"]) gives that env (see the README).
-    (run_dir / "env.json").write_text(json.dumps({"id": cfg.env_id, "kwargs": setup.env_kwargs}, indent=2))
+    (run_dir / "env.json").write_text(json.dumps(env_spec(cfg, setup), indent=2))
     say(f"run folder: {run_dir}")
     say(f"training {s.algo.upper()} on {cfg.env_id} ({setup.n_envs} envs) for {remaining} steps"
         + (f" (budget {s.max_seconds:.0f} s)" if s.max_seconds else ""))
@@ -380,7 +389,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     })
     (run_dir / "run.json").write_text(json.dumps(meta, indent=2, default=str))
     # What the model was trained on: gym.make(env["id"], **env["kwargs"]) gives that env (see the README).
-    (run_dir / "env.json").write_text(json.dumps({"id": cfg.env_id, "kwargs": setup.env_kwargs}, indent=2))
+    (run_dir / "env.json").write_text(json.dumps(env_spec(cfg, setup), indent=2))
     say(f"done: {meta['timesteps']} steps in {meta['wall_seconds']:.0f} s "
         f"({meta['train_steps_per_second']:.0f} env steps/s excluding evaluation); run folder {run_dir}")
     env.close()
