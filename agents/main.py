@@ -45,8 +45,9 @@ TARGET_JOB_SECONDS = 15 * 60
 
 
 def train_agent(config: Path, out: Path, seconds: float | None, progress: bool) -> dict[str, Any]:
-    """Train the config's agent (after behaviour cloning when the config has a ``distill:`` section); returns
-    ``{"run_dir", "distill": the distillation report or None, "seconds": wall seconds}``."""
+    """Train the config's agent (after behaviour cloning when the config has a ``distill:`` section; a budget
+    below the config's labels that many fewer tables); returns ``{"run_dir", "distill": the distillation report or
+    None, "seconds": wall seconds}``."""
     t0 = time.perf_counter()
     overrides: dict[str, Any] = {"run_root": str(out)}
     if seconds is not None:
@@ -56,7 +57,11 @@ def train_agent(config: Path, out: Path, seconds: float | None, progress: bool) 
     if d:
         from .distill import distill
 
-        rep = distill(cfg, teacher=d.get("teacher", "search"), states=int(d.get("states", 3000)),
+        states = int(d.get("states", 3000))
+        full = float(load_train_config(config).settings.max_seconds or 0.0)
+        if seconds is not None and full > 0 and seconds < full:  # a shorter job labels fewer tables too
+            states = max(20, round(states * seconds / full))
+        rep = distill(cfg, teacher=d.get("teacher", "search"), states=states,
                       bc_epochs=int(d.get("bc_epochs", 40)), rl_seconds=cfg.settings.max_seconds,
                       actor_delay=int(d.get("actor_delay", 20_000)),
                       workers=int(d.get("workers", 0)) or (os.cpu_count() or 1),
@@ -83,23 +88,33 @@ def teacher_player(model: PlayerSpec, name: str = "search", seed: int = 0) -> Pl
 
 
 def decision_ms(spec: PlayerSpec, tables: int, seed: int) -> dict[str, float]:
-    """A trained player's decision time on ``tables`` tables (median over them, ms): its observation's features
-    computed from the table state (the observation type's ``observe``) and the policy's forward pass."""
+    """A trained player's decision time on ``tables`` tables (median over them, ms of the deciding thread's CPU
+    time, so that other work on the machine does not count; torch runs on this thread): its observation's features
+    computed from the table state from scratch (the observation type's ``observe``, nothing of the table cached) and
+    the policy's forward pass."""
+    import torch
+
+    threads = torch.get_num_threads()
+    torch.set_num_threads(1)  # the policy on this thread: its CPU time is the thread's
     env = spec.make_env()
     u = env.unwrapped
     feats, policy = [], []
     try:
         for k in range(tables):
             env.reset(seed=seed + k)
-            t0 = time.perf_counter()
+            memo = getattr(getattr(u.state, "view", None), "memo", None)
+            if memo is not None:  # what reset computed of this table (the candidate shots) is computed again
+                memo.clear()
+            t0 = time.thread_time()
             obs = u.observation_type.observe(u.state)
-            t1 = time.perf_counter()
+            t1 = time.thread_time()
             spec.act(env, obs)
-            t2 = time.perf_counter()
+            t2 = time.thread_time()
             feats.append(t1 - t0)
             policy.append(t2 - t1)
     finally:
         env.close()
+        torch.set_num_threads(threads)
     f, p = 1000 * float(np.median(feats)), 1000 * float(np.median(policy))
     return {"features_ms": f, "policy_ms": p, "decision_ms": f + p, "tables": tables}
 
