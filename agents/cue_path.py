@@ -18,13 +18,21 @@ This module computes it in closed form from the engine's own formulas (no simula
 
 Both thresholds are given in the units of the ``candidates`` action's ``power`` dim (``a[1]``: the shot's own speed
 times ``candidate_speed_factor ** a[1]``), so "which ``a[1]`` pots without a scratch" is an interval the
-observation states: ``[pot_at, scratch_at)``. Under the ``spin`` law the cue ball slides and curves after contact;
-the straight path is then an approximation (stun shots, the players' own assumption).
+observation states: ``[pot_at, scratch_at)``. The speed is not the only lever: where the object ball enters its
+pocket's window moves the cut, and with it the cue ball's line, so the thresholds are given at five offsets across
+the window (:data:`OFFSETS`), and the action type :class:`CandidateAim` (``candidates`` plus an ``offset`` dim)
+plays exactly those offsets. A second collision (the cue ball coming back into the object ball) is not modelled.
+Under the ``spin`` law the cue ball slides and curves after contact; the straight path is then an approximation
+(stun shots, the players' own assumption).
 
-:class:`CuePathFeatures` is an observation type (a subclass of the env's ``candidates`` type: its values, then four
-per slot), written to go into ``billiards_env/envs/observations.py`` as ``"candidates_path"``;
-:class:`CuePathObservation` puts it on an env made with ``action_type="candidates"`` as a Gymnasium wrapper
-(``env_wrapper: agents.cue_path.CuePathObservation`` in a training config) until then.
+Where it goes in the package (today both are installed on an env by the wrapper :class:`CandidateAimTypes`,
+``env_wrapper: agents.cue_path.CandidateAimTypes`` in a training config, on an env made with
+``action_type="candidates", observation_type="candidates"``): :class:`CuePathFeatures` is an observation type (a
+subclass of the env's ``candidates`` type: its values, then :data:`PATH_FEATURES` per slot), for
+``billiards_env/envs/observations.py`` as ``"candidates_path"``; :class:`CandidateAim` an action type (a subclass of
+``CandidateShots``), for ``billiards_env/envs/actions.py`` as ``"candidates_aim"``; the compiled path functions for
+``billiards_env/physics/aim.py`` beside ``lone_path_pocket``. ``python -m agents.cue_path`` plays a hand-written
+rule on the observation (:func:`interval_action`): what the observation alone allows.
 """
 from __future__ import annotations
 
@@ -361,6 +369,55 @@ class CandidateAimTypes(gym.Wrapper):
         u.observation_space = self.observation_space = u.observation_type.space
 
 
-__all__ = ["CuePathFeatures", "CandidateAim", "CandidateAimTypes", "path_pocket_speed", "shot_thresholds",
-           "rows_thresholds", "offset_ghost", "offset_of", "offset_rows", "thresholds", "power_of", "MAX_BOUNCES",
+def interval_action(obs: np.ndarray, n_slots: int, n_balls: int = 2) -> np.ndarray:
+    """A hand-written rule on the ``candidates_path`` observation (no learning; what the observation alone allows):
+    the (slot, offset) whose interval ``[pot_at, min(scratch_at, top))`` is widest, at the interval's middle;
+    the widest first among those at least half an action unit wide, the easiest slot first."""
+    base = 3 * n_balls
+    has = obs[base:base + 12 * n_slots].reshape(n_slots, 12)[:, 0]
+    path = obs[base + 12 * n_slots:base + (12 + PATH_FEATURES) * n_slots].reshape(n_slots, PATH_FEATURES)
+    k = len(OFFSETS)
+    best, act = -np.inf, np.array([0.5 / n_slots, 0.0, 0.0], np.float32)
+    for i in range(n_slots - 1):
+        if not has[i]:
+            continue
+        for m in range(k):
+            lo, hi = path[i, 2 * m], min(path[i, 2 * m + 1], path[i, 2 * k], 1.0)
+            if hi - lo > best and best < 0.5:  # keep the first (easiest) wide enough interval
+                best = hi - lo
+                act = np.array([(i + 0.5) / n_slots, 0.5 * (lo + hi), 2.0 * (m + 0.5) / k - 1.0], np.float32)
+    return act
+
+
+def main(argv: Any = None) -> int:
+    """``python -m agents.cue_path``: the pocket rate of :func:`interval_action` on the one-ball tables."""
+    import argparse
+
+    import billiards_env  # noqa: F401
+
+    p = argparse.ArgumentParser(prog="python -m agents.cue_path", description=main.__doc__)
+    p.add_argument("--episodes", type=int, default=1000)
+    p.add_argument("--seed", type=int, default=100_000)
+    p.add_argument("--slots", type=int, default=7)
+    args = p.parse_args(argv)
+    env = CandidateAimTypes(gym.make("BilliardsOneBall-v0", action_type="candidates", observation_type="candidates",
+                                     candidate_slots=args.slots, candidate_speed_factor=3.0))
+    ok = 0
+    for k in range(args.episodes):
+        obs, _ = env.reset(seed=args.seed + k)
+        _, _, _, _, info = env.step(interval_action(obs, args.slots))
+        ok += bool(info["is_success"])
+    print(f"interval rule on the candidates_path observation: {ok}/{args.episodes} = {100 * ok / args.episodes:.1f}% "
+          f"(tables {args.seed}..{args.seed + args.episodes - 1})")
+    return 0
+
+
+__all__ = ["CuePathFeatures", "CandidateAim", "CandidateAimTypes", "interval_action", "path_pocket_speed",
+           "shot_thresholds", "rows_thresholds", "offset_ghost", "offset_of", "offset_rows", "thresholds", "power_of", "MAX_BOUNCES",
            "PATH_FEATURES", "OFFSETS", "OFFSET_SPAN"]
+
+
+if __name__ == "__main__":
+    import sys
+
+    sys.exit(main())
