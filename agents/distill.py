@@ -282,9 +282,11 @@ def distill(cfg: TrainConfig, teacher: str = "search", states: int = 4000, dagge
         model.save(path)
         c2 = cpu()
         ev = success_rate(path, eval_episodes, eval_seed) if eval_episodes else {}
+        loaded = rnd == 0 and labels is not None
         stage = {"stage": "bc" if rnd == 0 else f"dagger round {rnd}", "episodes_labelled": len(new["success"]),
                  "labels": int(len(new["obs"])), "labels_total": int(len(data["obs"])),
-                 "played_success": float(new["success"].mean()) if len(new["success"]) else None,
+                 "labels_from": str(labels) if loaded else None,
+                 "played_success": float(new["success"].mean()) if len(new["success"]) and not loaded else None,
                  "label_cpu_seconds": c1 - c0, "label_wall_seconds": w1 - w0, "bc_cpu_seconds": c2 - c1,
                  "bc_last_epoch": fit["epochs"][-1] if fit["epochs"] else None, "model": str(path), **ev}
         report["stages"].append(stage)

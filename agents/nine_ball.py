@@ -236,6 +236,9 @@ def limits_text(report: dict[str, Any], leagues: dict[str, dict[str, Any]], trai
     stages = (report.get("training") or {}).get("stages") or []
     if stages:
         first = stages[0]
+        if first.get("labels_from"):
+            out.append(f"- The labels were those of an earlier run (`{first['labels_from']}`): its `distill.json` has the "
+                       "teacher's own games.")
         if first.get("played_success") is not None:
             out.append(f"- The teacher (the search player acting in the agent's action type) won "
                        f"{100 * first['played_success']:.0f}% of the {first['episodes_labelled']} games it played "
@@ -249,6 +252,16 @@ def limits_text(report: dict[str, Any], leagues: dict[str, dict[str, Any]], trai
                            + (f" ({st['labels_total']} labels)" if "labels_total" in st else "")
                            + (f", {st.get('timesteps')} RL steps" if st["stage"] == "rl fine-tuning" else "") + ".")
     return out
+
+
+def _league_model(run_dir: Path) -> Path:
+    """The model a run plays the league with: its best evaluation checkpoint (EvalCallback's, on the evaluation
+    games against the geometric player: seeds apart from the league's racks), as the one-ball job plays; else the
+    final model; else the folder itself (an RLlib run)."""
+    for name in ("best_model.zip", "final_model.zip"):
+        if (run_dir / name).exists():
+            return run_dir / name
+    return run_dir
 
 
 def run(out: Path, seconds: float | None, practice_fraction: float, games: int, search_games: int, runouts: int,
@@ -275,6 +288,8 @@ def run(out: Path, seconds: float | None, practice_fraction: float, games: int, 
         run_dir = p if p.is_dir() else p.parent
         if p.is_dir():
             model = str(_league_model(p))
+        if (run_dir / "distill.json").exists():  # a distilled run: its stages go into the report
+            train_info = json.loads((run_dir / "distill.json").read_text())
     t_train = time.perf_counter() - t0
     print("neutral policy on the evaluation episodes...", flush=True)
     neutral = {"vs_geometric": neutral_baseline(MATCH_CONFIG if curriculum else config, 100)}
