@@ -8,7 +8,9 @@ each player's break-and-run and run-out-from-ball-in-hand rates.
 
 A player is a baseline name (``random``, ``geometric``, ``search``: :mod:`billiards_env.players`) or a trained policy:
 an SB3 run folder or model zip, or an RLlib checkpoint or run folder (with the ``rllib`` extra), played with
-deterministic actions in its own action and observation types (:class:`agents.games.TrainedPlayer`). Every pair
+deterministic actions in its own action and observation types (:class:`agents.games.TrainedPlayer`); ``prior:<run>``
+is the search player with that policy's proposals in place of its sweep, at its own simulation budget
+(:mod:`agents.prior_search`). Every pair
 plays ``--games`` games on the two-player env (:mod:`billiards_env.multi`, absolute action type), seats swapped
 every game so each breaks as often as the other; game ``k`` of a match uses the rack of seed ``seed + k``, so every
 pair meets on the same racks. ``--spin`` plays under the spin model (friction ``spin``, tip offsets in the action);
@@ -61,6 +63,8 @@ class PairResult:
     reasons: dict[str, int] = field(default_factory=dict)  #: how the games ended
     ms_per_decision: tuple[float, float] = (0.0, 0.0)  #: a's and b's mean decision time
     break_and_runs_by: tuple[int, int] = (0, 0)  #: break-and-runs of a and of b
+    innings: tuple[int, int] = (0, 0)  #: a's and b's innings (visits to the table)
+    scored: tuple[float, float] = (0.0, 0.0)  #: what a's and b's shots scored (the game's Verdict.scored)
 
     @property
     def rate_a(self) -> float:
@@ -72,6 +76,11 @@ def load_player(spec: str, seed: int = 0, game: str = "nine_ball") -> tuple[str,
     folder: a :class:`agents.games.TrainedPlayer`)."""
     if spec in BASELINES:
         return spec, make_player(spec, seed=seed, game=game)
+    if spec.startswith("prior:"):  # the search player with a trained policy's proposals (agents.prior_search)
+        from .prior_search import prior_search_player
+
+        p = prior_search_player(spec[len("prior:"):], game, seed)
+        return p.name, p
     from .games import trained_player
 
     p = trained_player(spec, game)
@@ -115,26 +124,31 @@ class RunOutResult:
     balls: float  #: object balls off the table at the end of the turn, per turn
     ms_per_decision: float
     seconds: float
+    decisions: int = 0
 
     @property
     def rate(self) -> float:
         return self.run_outs / max(self.racks, 1)
 
 
-def run_outs(game: str, player: tuple[str, Any], racks: int, seed: int, env_kwargs: dict[str, Any]) -> RunOutResult:
-    """``player``'s turns from ball in hand on ``racks`` layouts: the env breaks (``opening="ball_in_hand"``; rack and
-    break from ``reset(seed=seed + k)``), player_0 has the cue ball in hand anywhere and shoots until the table
-    passes. A run-out is a turn that wins the game (the 9 may drop early on a combination: slop counts)."""
+def run_outs(game: str, player: tuple[str, Any], racks: int | Sequence[int], seed: int,
+             env_kwargs: dict[str, Any]) -> RunOutResult:
+    """``player``'s turns from ball in hand on ``racks`` layouts (a number, or the rack indices ``k``): the env breaks
+    (``opening="ball_in_hand"``; rack and break from ``reset(seed=seed + k)``), player_0 has the cue ball in hand
+    anywhere and shoots until the table passes. A run-out is a turn that wins the game (the 9 may drop early on a
+    combination: slop counts)."""
     import importlib
 
+    warm_up(game, [player[1]], env_kwargs)
     module = importlib.import_module(f"billiards_env.multi.{GAMES[game]}")
     env = module.env(**{**env_kwargs, "opening": "ball_in_hand", "first_shooter": "agent"})
     raw = env.unwrapped
     timed = Timed(player[1])
     wins, balls = 0, 0
     t0 = time.perf_counter()
+    ks = range(racks) if isinstance(racks, int) else [int(k) for k in racks]
     try:
-        for k in range(racks):
+        for k in ks:
             timed.reset(int(np.random.SeedSequence([seed, k, 7]).generate_state(1)[0]))
             env.reset(seed=seed + k)
             before = int(raw.game_env.balls.on_table[1:].sum())
@@ -145,31 +159,207 @@ def run_outs(game: str, player: tuple[str, Any], racks: int, seed: int, env_kwar
             wins += raw.task.session.winner == 0
     finally:
         env.close()
-    return RunOutResult(player[0], racks, wins, balls / max(racks, 1), timed.ms_per_decision,
-                        time.perf_counter() - t0)
+    return RunOutResult(player[0], len(ks), wins, balls / max(len(ks), 1), timed.ms_per_decision,
+                        time.perf_counter() - t0, timed.decisions)
 
 
-def play_pair(game: str, a: tuple[str, Any], b: tuple[str, Any], n_games: int, seed: int,
-              env_kwargs: dict[str, Any]) -> PairResult:
-    """``n_games`` games of ``a`` against ``b`` (seats swapped every game)."""
+def merge_run_outs(parts: Sequence[RunOutResult], seconds: float) -> RunOutResult:
+    """One player's :class:`RunOutResult` from its chunks."""
+    racks = sum(p.racks for p in parts)
+    dec = sum(p.decisions for p in parts)
+    return RunOutResult(parts[0].player, racks, sum(p.run_outs for p in parts),
+                        sum(p.balls * p.racks for p in parts) / max(racks, 1),
+                        sum(p.ms_per_decision * p.decisions for p in parts) / max(dec, 1), seconds, dec)
+
+
+def has_runouts(game: str) -> bool:
+    """Whether ``game`` can open with the cue ball in hand after the env's break (the run-out test's layouts)."""
+    return "ball_in_hand" in REGISTERED[game].session_class.openings
+
+
+@dataclass
+class GameStats:
+    """One game of a pair, from the pair's side (policy 0 is ``a``): the seats, the winner (-1: none), how it
+    ended, and per policy its shots, innings (visits to the table), what its shots scored (balls kept down in
+    pool, points in snooker and three-cushion: the game's ``Verdict.scored``), and its decisions and their
+    seconds."""
+
+    k: int
+    seats: tuple[int, int]
+    winner: int
+    reason: str
+    shots: tuple[int, int]
+    innings: tuple[int, int]
+    scored: tuple[float, float]
+    decisions: tuple[int, int]
+    seconds: tuple[float, float]
+    wall: float = 0.0  #: seconds the game took where it was played
+
+
+_WARM: set[tuple[str, int]] = set()
+
+
+def warm_up(game: str, policies: Sequence[Any], env_kwargs: dict[str, Any]) -> None:
+    """One untimed decision of each policy on a fresh rack (once per process and policy), so that loading the
+    compiled kernels (numba's cache) is not counted in the decision times."""
     import importlib
 
-    from billiards_env.multi import play_match
-
+    todo = [p for p in policies if (game, id(p)) not in _WARM]
+    if not todo:
+        return
     module = importlib.import_module(f"billiards_env.multi.{GAMES[game]}")
-    t0 = time.perf_counter()
-    ta, tb = Timed(a[1]), Timed(b[1])
-    res = play_match(lambda: module.env(**env_kwargs), [ta, tb], n_games, seed=seed)
+    env = module.env(**env_kwargs)
+    try:
+        for p in todo:
+            env.reset(seed=0)
+            obs = env.observe(env.unwrapped.agent_selection)
+            Timed(p).act(env.unwrapped.game_env, obs)
+            _WARM.add((game, id(p)))
+    finally:
+        env.close()
+
+
+def play_games(game: str, policies: Sequence[Any], ks: Sequence[int], seed: int,
+               env_kwargs: dict[str, Any]) -> list[GameStats]:
+    """Games ``ks`` of a match between ``policies`` (two, policy 0 is ``a``) on the game's two-player env: game
+    ``k`` on ``reset(seed=seed + k)``, policy 0 in seat ``k % 2`` (seats swapped every game) and each policy
+    reseeded from ``(seed, k, j)``: :func:`billiards_env.multi.play_match`'s games, so a match cut into chunks and
+    played anywhere gives the same games. Counts innings, scores and decision times besides."""
+    import importlib
+
+    warm_up(game, policies, env_kwargs)
+    module = importlib.import_module(f"billiards_env.multi.{GAMES[game]}")
+    env = module.env(**env_kwargs)
+    raw = env.unwrapped
+    timed = [Timed(p) for p in policies]
+    out: list[GameStats] = []
+    try:
+        for k in ks:
+            seats = (1, 0) if k % 2 else (0, 1)
+            for j, t in enumerate(timed):
+                t.reset(int(np.random.SeedSequence([seed, k, j]).generate_state(1)[0]))
+            t_game = time.perf_counter()
+            env.reset(seed=seed + k)
+            shots, innings, scored = [0, 0], [0, 0], [0.0, 0.0]
+            dec0 = [t.decisions for t in timed]
+            sec0 = [t.seconds for t in timed]
+            last = -1
+            for agent in env.agent_iter():
+                obs, _, terminated, truncated, _ = env.last()
+                if terminated or truncated:
+                    env.step(None)
+                    continue
+                who = seats[raw.agent_index[agent]]
+                env.step(timed[who].act(raw.game_env, obs))
+                shots[who] += 1
+                if who != last:
+                    innings[who] += 1
+                    last = who
+                verdict = raw.task.verdict
+                if verdict is not None:
+                    scored[who] += float(verdict.scored)
+            over = raw.game_over
+            w = raw.task.session.winner
+            winner = -1 if (not over or w is None) else seats[w]
+            verdict = raw.task.verdict
+            reason = verdict.reason if over and verdict is not None else "max_shots"
+            out.append(GameStats(int(k), seats, winner, reason, (shots[0], shots[1]), (innings[0], innings[1]),
+                                 (scored[0], scored[1]),
+                                 (timed[0].decisions - dec0[0], timed[1].decisions - dec0[1]),
+                                 (timed[0].seconds - sec0[0], timed[1].seconds - sec0[1]),
+                                 time.perf_counter() - t_game))
+    finally:
+        env.close()
+    return out
+
+
+def pair_result(a: str, b: str, games: Sequence[GameStats], seconds: float | None = None) -> PairResult:
+    """The :class:`PairResult` of a pair's games (in any order); ``seconds`` default: the games' own times summed
+    (worker seconds, wherever they were played)."""
+    if seconds is None:
+        seconds = sum(g.wall for g in games)
+    games = sorted(games, key=lambda g: g.k)
     reasons: dict[str, int] = {}
     bnr = [0, 0]
-    for g in res.games:
+    for g in games:
         reasons[g.reason] = reasons.get(g.reason, 0) + 1
         breaker = g.seats[0]
         if g.winner == breaker and g.shots[1 - breaker] == 0:
             bnr[breaker] += 1
-    wins = res.wins
-    return PairResult(a[0], b[0], n_games, wins[0], wins[1], res.unfinished, sum(bnr), time.perf_counter() - t0,
-                      reasons, (ta.ms_per_decision, tb.ms_per_decision), (bnr[0], bnr[1]))
+    winners = [g.winner for g in games]
+
+    def ms(j: int) -> float:
+        n = sum(g.decisions[j] for g in games)
+        return 1000.0 * sum(g.seconds[j] for g in games) / max(n, 1)
+
+    return PairResult(a, b, len(games), winners.count(0), winners.count(1), winners.count(-1), sum(bnr), seconds,
+                      reasons, (ms(0), ms(1)), (bnr[0], bnr[1]),
+                      (sum(g.innings[0] for g in games), sum(g.innings[1] for g in games)),
+                      (sum(g.scored[0] for g in games), sum(g.scored[1] for g in games)))
+
+
+def play_pair(game: str, a: tuple[str, Any], b: tuple[str, Any], n_games: int, seed: int,
+              env_kwargs: dict[str, Any]) -> PairResult:
+    """``n_games`` games of ``a`` against ``b`` (seats swapped every game), in this process."""
+    t0 = time.perf_counter()
+    games = play_games(game, [a[1], b[1]], range(n_games), seed, env_kwargs)
+    return pair_result(a[0], b[0], games, time.perf_counter() - t0)
+
+
+def _pair_chunk(game: str, spec_a: str, spec_b: str, ks: list[int], seed: int,
+                env_kwargs: dict[str, Any]) -> list[GameStats]:
+    """A worker's chunk of a pair's games: the players loaded from their specs (names, run folders) here."""
+    import torch
+
+    torch.set_num_threads(1)
+    a, b = load_player(spec_a, seed, game), load_player(spec_b, seed, game)
+    return play_games(game, [a[1], b[1]], ks, seed, env_kwargs)
+
+
+def _runout_chunk(game: str, spec: str, ks: list[int], seed: int, env_kwargs: dict[str, Any]) -> RunOutResult:
+    import torch
+
+    torch.set_num_threads(1)
+    return run_outs(game, load_player(spec, seed, game), ks, seed, env_kwargs)
+
+
+def _chunks(n: int, workers: int) -> list[list[int]]:
+    """``range(n)`` cut into about four chunks per worker (the last ones smaller: slow games even out)."""
+    k = max(1, min(n, 4 * max(workers, 1)))
+    return [c.tolist() for c in np.array_split(np.arange(n), k) if len(c)]
+
+
+class Pool:
+    """Where the league's chunks run: this process (``workers=1``), local processes, or Ray workers on a cluster
+    (``address``). ``map(fn, argument tuples)`` returns the results in order."""
+
+    def __init__(self, workers: int = 1, address: str | None = None) -> None:
+        self.workers = max(int(workers), 1)
+        self.address = address
+        self._pool: Any = None
+        if address:
+            import ray
+
+            ray.init(address=address, ignore_reinit_error=True, log_to_driver=False)
+        elif self.workers > 1:
+            from concurrent.futures import ProcessPoolExecutor
+
+            self._pool = ProcessPoolExecutor(max_workers=self.workers)
+
+    def map(self, fn: Any, args: Sequence[tuple[Any, ...]]) -> list[Any]:
+        if self.address:
+            import ray
+
+            remote = ray.remote(fn)
+            return ray.get([remote.remote(*a) for a in args])
+        if self._pool is not None:
+            futures = [self._pool.submit(fn, *a) for a in args]
+            return [f.result() for f in futures]
+        return [fn(*a) for a in args]
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.shutdown()
 
 
 def fit_elo(names: Sequence[str], pairs: Sequence[PairResult], anchor: str | None = "random",
@@ -208,7 +398,7 @@ def markdown(game: str, pairs: Sequence[PairResult], elo: dict[str, float], info
              f"{info['games']} games per pair{info.get('fewer', '')} on seeded racks (seed {info['seed']}), seats "
              "swapped every game; "
              f"{info['setting']}. Command: `{info['command']}`. {info['machine']}", "",
-             "| player A | player B | A wins | B wins | unfinished | A win rate [95% CI] | break-and-run | time |",
+             "| player A | player B | A wins | B wins | unfinished | A win rate [95% CI] | break-and-run | worker time |",
              "|---|---|---|---|---|---|---|---|"]
     for p in pairs:
         lo, hi = wilson_interval(p.wins_a, p.games)
@@ -216,13 +406,15 @@ def markdown(game: str, pairs: Sequence[PairResult], elo: dict[str, float], info
                      f"[{100 * lo:.0f}, {100 * hi:.0f}] | {100 * p.break_and_runs / p.games:.0f}% | "
                      f"{p.seconds:.0f} s |")
     stats = player_stats(pairs, runs)
-    lines += ["", "| player | Elo | games won [95% CI] | break-and-run (breaks) | run-out from ball in hand [95% CI] "
-              "| balls per turn in hand | ms / decision |", "|---|---|---|---|---|---|---|"]
+    unit = SCORED.get(game, "scored")
+    lines += ["", f"| player | Elo | games won [95% CI] | break-and-run (breaks) | {unit} per inning | run-out from "
+              "ball in hand [95% CI] | balls per turn in hand | ms / decision |", "|---|---|---|---|---|---|---|---|"]
     for name, r in sorted(elo.items(), key=lambda kv: -kv[1]):
         st = stats[name]
         lo, hi = wilson_interval(st["wins"], st["games"])
         row = f"| {name} | {r:.0f} | {100 * st['wins'] / max(st['games'], 1):.0f}% [{100 * lo:.0f}, {100 * hi:.0f}] " \
               f"| {100 * st['break_and_runs'] / max(st['breaks'], 1):.0f}% ({st['breaks']}) |"
+        row += f" {st['per_inning']:.2f} ({st['innings']}) |" if st.get("per_inning") is not None else " - |"
         ro = next((x for x in runs if x.player == name), None)
         if ro is not None:
             rlo, rhi = wilson_interval(ro.run_outs, ro.racks)
@@ -239,25 +431,35 @@ def markdown(game: str, pairs: Sequence[PairResult], elo: dict[str, float], info
 
 
 def player_stats(pairs: Sequence[PairResult], runs: Sequence[RunOutResult] = ()) -> dict[str, dict[str, Any]]:
-    """Per player over all its pairs: games, wins, breaks (half its games: the seats alternate), break-and-runs and
-    the mean decision time (weighted by games)."""
+    """Per player over all its pairs: games, wins, breaks (half its games: the seats alternate), break-and-runs,
+    innings and what its shots scored (``per_inning``: the Olympiads' balls per inning) and the mean decision time
+    (weighted by games)."""
     out: dict[str, dict[str, Any]] = {}
     for p in pairs:
-        for name, wins, bnr_share, ms in ((p.a, p.wins_a, 0, p.ms_per_decision[0]),
-                                          (p.b, p.wins_b, 1, p.ms_per_decision[1])):
-            st = out.setdefault(name, {"games": 0, "wins": 0, "breaks": 0, "break_and_runs": 0, "ms_sum": 0.0})
+        for name, wins, bnr_share, ms, inn, sc in ((p.a, p.wins_a, 0, p.ms_per_decision[0], p.innings[0], p.scored[0]),
+                                                   (p.b, p.wins_b, 1, p.ms_per_decision[1], p.innings[1], p.scored[1])):
+            st = out.setdefault(name, {"games": 0, "wins": 0, "breaks": 0, "break_and_runs": 0, "ms_sum": 0.0,
+                                       "innings": 0, "scored": 0.0})
             st["games"] += p.games
             st["wins"] += wins
             st["breaks"] += (p.games + (1 - bnr_share)) // 2  # policy a breaks games 0, 2, 4...
             st["ms_sum"] += ms * p.games
+            st["innings"] += inn
+            st["scored"] += sc
     for p in pairs:  # break-and-runs are counted per pair for the winner who broke
         for name, k in ((p.a, 0), (p.b, 1)):
             out[name]["break_and_runs"] += p.break_and_runs_by[k]
     for st in out.values():
         st["ms"] = st.pop("ms_sum") / max(st["games"], 1)
+        st["per_inning"] = st["scored"] / st["innings"] if st["innings"] else None
     for r in runs:
-        out.setdefault(r.player, {"games": 0, "wins": 0, "breaks": 0, "break_and_runs": 0, "ms": r.ms_per_decision})
+        out.setdefault(r.player, {"games": 0, "wins": 0, "breaks": 0, "break_and_runs": 0, "ms": r.ms_per_decision,
+                                  "innings": 0, "scored": 0.0, "per_inning": None})
     return out
+
+
+#: What a game's ``Verdict.scored`` counts (the league's "per inning" column).
+SCORED = {"nine_ball": "balls", "eight_ball": "balls", "snooker": "points", "three_cushion": "points"}
 
 
 def league_env_kwargs(players: Sequence[tuple[str, Any]], spin: bool, noise: str | float,
@@ -270,7 +472,7 @@ def league_env_kwargs(players: Sequence[tuple[str, Any]], spin: bool, noise: str
     kw: dict[str, Any] = {}
     if spin:
         kw.update(friction="spin", spin_action=True)
-    trained = [p for _, p in players if isinstance(p, TrainedPlayer)]
+    trained = [t for t in (getattr(p, "policy", p) for _, p in players) if isinstance(t, TrainedPlayer)]
     for t in trained:
         if t.physics != trained[0].physics:
             raise ValueError(f"players: {t.name} and {trained[0].name} were trained with different physics; a "
@@ -297,30 +499,69 @@ def setting_text(kw: dict[str, Any]) -> str:
 def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: str | float, out: Path | None,
                env_kwargs: dict[str, Any] | None = None, quiet: bool = False, spin: bool = False,
                runouts: int = 0, runout_seed: int = 50_000, command: str | None = None,
-               pair_games: dict[str, int] | None = None) -> dict[str, Any]:
-    """Every pair of ``specs`` plays ``n_games`` (a pair with a player named in ``pair_games`` at most that many:
-    slow players); each player's run-outs from ball in hand on ``runouts`` racks; returns (and writes under
-    ``out``) the report."""
+               pair_games: dict[str, int] | None = None, workers: int = 1,
+               address: str | None = None) -> dict[str, Any]:
+    """Every pair of ``specs`` plays ``n_games`` (a pair with a player named in ``pair_games``, or whose spec starts
+    with one of its keys, at most that many: slow players); each player's run-outs from ball in hand on ``runouts`` racks (games that open with ball in hand
+    only); returns (and writes under ``out``) the report. The games are cut into chunks played on ``workers`` local
+    processes, or on Ray workers with ``address``; the results do not depend on how (each game is seeded by its
+    index, :func:`play_games`)."""
     say = (lambda *a: None) if quiet else (lambda *a: print(*a, flush=True))
     players = [load_player(s, seed, game) for s in specs]
     kw = league_env_kwargs(players, spin, noise, env_kwargs)
-    say(setting_text(kw))
-    pairs = []
+    say(setting_text(kw) + (f"; on Ray at {address}" if address else f"; {max(workers, 1)} process(es)"))
     limits = pair_games or {}
-    for a, b in itertools.combinations(players, 2):
-        n = min([n_games] + [limits[x[0]] for x in (a, b) if x[0] in limits])
-        p = play_pair(game, a, b, n, seed, kw)
+    pool = Pool(workers, address)
+    tasks: list[tuple[Any, ...]] = []
+    owners: list[tuple[str, int]] = []
+    combos = list(itertools.combinations(range(len(players)), 2))
+    def limit(x: int) -> list[int]:  # a key names a player, or starts its spec ("prior:")
+        return [v for k, v in limits.items() if players[x][0] == k or specs[x] == k or specs[x].startswith(k)]
+
+    for i, j in combos:
+        n = min([n_games] + limit(i) + limit(j))
+        for ks in _chunks(n, pool.workers):
+            tasks.append((game, specs[i], specs[j], ks, seed, kw))
+            owners.append(("pair", combos.index((i, j))))
+    rtasks: list[tuple[Any, ...]] = []
+    rowners: list[int] = []
+    if runouts > 0 and not has_runouts(game):
+        say(f"run-outs: {game} has no ball-in-hand opening; not played")
+        runouts = 0
+    if runouts > 0:
+        for i in range(len(players)):
+            for ks in _chunks(runouts, pool.workers):
+                rtasks.append((game, specs[i], ks, runout_seed, kw))
+                rowners.append(i)
+    for _, pl in players:  # compiled code loaded before the processes fork (they inherit it)
+        warm_up(game, [pl], kw)
+    t0 = time.perf_counter()
+    try:
+        if pool.workers == 1 and not address:  # in this process: the players loaded above, no reloading
+            results = [play_games(game, [players[i][1], players[j][1]], t[3], seed, kw)
+                       for t, (_, c) in zip(tasks, owners) for i, j in [combos[c]]]
+            rresults = [run_outs(game, players[i], t[2], runout_seed, kw) for t, i in zip(rtasks, rowners)]
+        else:
+            both = pool.map(_pair_chunk, tasks) if tasks else []
+            rresults = pool.map(_runout_chunk, rtasks) if rtasks else []
+            results = both
+    finally:
+        pool.close()
+    seconds = time.perf_counter() - t0
+    pairs = []
+    for c, (i, j) in enumerate(combos):
+        games = [g for r, (_, o) in zip(results, owners) if o == c for g in r]
+        p = pair_result(players[i][0], players[j][0], games)
         lo, hi = wilson_interval(p.wins_a, p.games)
         say(f"{p.a} vs {p.b}: {p.wins_a}-{p.wins_b} ({p.unfinished} unfinished), {p.a} wins "
-            f"{100 * p.rate_a:.0f}% [{100 * lo:.0f}, {100 * hi:.0f}], {p.seconds:.0f} s")
+            f"{100 * p.rate_a:.0f}% [{100 * lo:.0f}, {100 * hi:.0f}]")
         pairs.append(p)
     runs = []
-    if runouts > 0:
-        for pl in players:
-            r = run_outs(game, pl, runouts, runout_seed, kw)
-            say(f"{r.player}: run-outs from ball in hand {r.run_outs}/{r.racks}, {r.balls:.1f} balls per turn, "
-                f"{r.seconds:.0f} s")
-            runs.append(r)
+    for i in sorted(set(rowners)):
+        r = merge_run_outs([x for x, o in zip(rresults, rowners) if o == i], 0.0)
+        r.player = players[i][0]
+        say(f"{r.player}: run-outs from ball in hand {r.run_outs}/{r.racks}, {r.balls:.1f} balls per turn")
+        runs.append(r)
     names = [p[0] for p in players]
     elo = fit_elo(names, pairs)
     from billiards_env.machine import machine_info, machine_markdown
@@ -328,9 +569,10 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
     if command is None:
         command = "python -m agents.league " + " ".join(sys.argv[1:]) if "league" in sys.argv[0] \
             else f"agents.league.run_league({game!r}, {list(specs)!r}, {n_games}, {seed}, {noise!r})"
-    fewer = "".join(f" ({v} for the pairs of {k})" for k, v in limits.items() if v < n_games and k in names)
+    fewer = "".join(f" ({v} for the pairs of {k})" for k, v in limits.items()
+                    if v < n_games and any(n == k or sp.startswith(k) for n, sp in zip(names, specs)))
     info = {"game": game, "games": n_games, "fewer": fewer, "seed": seed, "noise": noise, "spin": spin,
-            "env_kwargs": kw,
+            "env_kwargs": kw, "seconds": seconds, "workers": pool.workers, "address": address,
             "setting": setting_text(kw), "runouts": runouts, "runout_seed": runout_seed, "command": command,
             "machine": machine_markdown(machine_info())}
     report = {"info": info, "pairs": [asdict(p) for p in pairs], "elo": elo,
@@ -361,6 +603,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--spin", action="store_true", help="the spin model (tip offsets in the action)")
     p.add_argument("--runouts", type=int, default=0, help="racks of the run-out-from-ball-in-hand test per player")
     p.add_argument("--runout-seed", type=int, default=50_000)
+    p.add_argument("--rules", default=None, help="the game's rules options as JSON, e.g. '{\"target_points\": 3}' "
+                   "for short three-cushion games")
+    p.add_argument("--max-shots", type=int, default=None, help="shots of the two players together before a game is "
+                   "called unfinished (default: the game's)")
+    p.add_argument("--workers", type=int, default=1, help="local processes playing the games (default 1)")
+    p.add_argument("--address", default=None, help="a Ray cluster's address (e.g. auto): play the games on its "
+                   "workers (the rllib extra)")
     p.add_argument("--out", type=Path, default=None, help="folder for league.md / league.json")
     return p
 
@@ -370,11 +619,20 @@ def main(argv: Sequence[str] | None = None) -> int:
     if len(args.players) < 2:
         print("league: error: give at least two players", file=sys.stderr)
         return 2
+    extra: dict[str, Any] = {}
     try:
-        run_league(args.game, args.players, args.games, args.seed, args.noise, args.out, spin=args.spin,
-                   runouts=args.runouts, runout_seed=args.runout_seed,
-                   pair_games={"search": args.search_games} if args.search_games else None)
-    except (ValueError, FileNotFoundError) as exc:
+        if args.rules:
+            extra["rules"] = json.loads(args.rules)
+        if args.max_shots is not None:
+            extra["max_shots"] = args.max_shots
+        run_league(args.game, args.players, args.games, args.seed, args.noise, args.out, env_kwargs=extra,
+                   spin=args.spin, runouts=args.runouts, runout_seed=args.runout_seed,
+                   pair_games={"search": args.search_games} if args.search_games else None,
+                   workers=args.workers, address=args.address)
+    except json.JSONDecodeError as exc:
+        print(f"league: error: --rules: not JSON ({exc}); e.g. '{{\"target_points\": 3}}'", file=sys.stderr)
+        return 2
+    except (ValueError, FileNotFoundError, KeyError) as exc:
         print(f"league: error: {exc}", file=sys.stderr)
         return 2
     return 0

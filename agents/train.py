@@ -30,7 +30,7 @@ import sys
 import time
 from dataclasses import asdict
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 import yaml
@@ -117,6 +117,15 @@ def make_vec_envs(cfg: TrainConfig, setup: AlgoSetup, n_envs: int, seed: int, mo
             env.training = False
             env.norm_reward = False
     return env
+
+
+def env_spec(cfg: TrainConfig, setup: AlgoSetup) -> dict[str, Any]:
+    """What ``env.json`` holds: the env id and kwargs (``gym.make(spec["id"], **spec["kwargs"])`` makes the env a
+    model was trained on) and, for a config that wraps the env, the wrapper (``env_wrapper``, as in the config)."""
+    out: dict[str, Any] = {"id": cfg.env_id, "kwargs": setup.env_kwargs}
+    if cfg.hyperparams.get("env_wrapper"):
+        out["wrapper"] = cfg.hyperparams["env_wrapper"]
+    return out
 
 
 def _action_noise(setup: AlgoSetup, env: Any) -> Any:
@@ -209,9 +218,11 @@ def _spent_budget(max_seconds: float, clock: str, seconds: float, steps: int, n_
 
 
 def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = None,
-          progress_bar: bool | None = None, quiet: bool = False, vec_env: str = "auto") -> dict[str, Any]:
+          progress_bar: bool | None = None, quiet: bool = False, vec_env: str = "auto",
+          init: Callable[[Any], None] | None = None) -> dict[str, Any]:
     """Train from a resolved config; returns the run summary (also written to ``run.json``). ``vec_env``: see
-    :func:`use_native`."""
+    :func:`use_native`. ``init(model)`` is called on a new model before it learns (e.g. to start from a
+    behaviour-cloned policy: :mod:`agents.distill`); not on a resumed one."""
     import torch
     from stable_baselines3.common.callbacks import CallbackList
 
@@ -281,6 +292,8 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
         except TypeError as exc:
             raise TrainConfigError(f"{cfg.source}: {s.algo.upper()} does not accept these hyperparameters "
                                    f"({exc}); check the '{cfg.env_id}:' entry") from None
+        if init is not None:
+            init(model)
 
     clock = TrainingClock(run_dir, s.max_seconds, offset_seconds, offset_steps, verbose=1 if not quiet else 0,
                           clock=s.budget_clock)
@@ -323,7 +336,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     }
     (run_dir / "run.json").write_text(json.dumps(meta, indent=2, default=str))
     # What the model was trained on: gym.make(env["id"], **env["kwargs"]) gives that env (see the README).
-    (run_dir / "env.json").write_text(json.dumps({"id": cfg.env_id, "kwargs": setup.env_kwargs}, indent=2))
+    (run_dir / "env.json").write_text(json.dumps(env_spec(cfg, setup), indent=2))
     say(f"run folder: {run_dir}")
     say(f"training {s.algo.upper()} on {cfg.env_id} ({setup.n_envs} envs) for {remaining} steps"
         + (f" (budget {s.max_seconds:.0f} s)" if s.max_seconds else ""))
@@ -376,7 +389,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
     })
     (run_dir / "run.json").write_text(json.dumps(meta, indent=2, default=str))
     # What the model was trained on: gym.make(env["id"], **env["kwargs"]) gives that env (see the README).
-    (run_dir / "env.json").write_text(json.dumps({"id": cfg.env_id, "kwargs": setup.env_kwargs}, indent=2))
+    (run_dir / "env.json").write_text(json.dumps(env_spec(cfg, setup), indent=2))
     say(f"done: {meta['timesteps']} steps in {meta['wall_seconds']:.0f} s "
         f"({meta['train_steps_per_second']:.0f} env steps/s excluding evaluation); run folder {run_dir}")
     env.close()

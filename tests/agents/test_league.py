@@ -114,3 +114,44 @@ def test_a_trained_player_acts_in_its_own_types_on_the_league_env():
     rolling.reset(seed=4)
     with pytest.raises(ValueError, match="physics"):
         player.act(rolling.unwrapped.game_env, None)
+
+
+def test_chunked_games_are_the_matchs_games():
+    """play_games on any cut of the game indices plays play_match's games (seeds, seats, players' reseeding)."""
+    from billiards_env.multi import nine_ball_v0, play_match
+
+    from agents.league import play_games
+
+    a, b = load_player("random", 0), load_player("geometric", 0)
+    ref = play_match(nine_ball_v0.env, [a[1], b[1]], 4, seed=7)
+    parts = play_games("nine_ball", [a[1], b[1]], [2, 3], 7, {}) + play_games("nine_ball", [a[1], b[1]], [0, 1], 7, {})
+    parts.sort(key=lambda g: g.k)
+    assert [(g.seats, g.winner, g.reason, g.shots) for g in parts] == \
+        [(r.seats, r.winner, r.reason, r.shots) for r in ref.games]
+    for g in parts:  # innings: each player's visits; what they scored: balls kept down (9-ball)
+        assert all(0 <= g.innings[j] <= g.shots[j] for j in (0, 1)) and g.innings[g.seats[0]] >= 1
+        assert 0 <= sum(g.scored) <= 9
+
+
+def test_a_league_on_two_processes_is_the_league_on_one(tmp_path):
+    from agents.league import run_league
+
+    args = ("nine_ball", ["random", "geometric"], 4, 1, "0", None)
+    one = run_league(*args, quiet=True, runouts=2, workers=1)
+    two = run_league(*args, quiet=True, runouts=2, workers=2)
+    keys = ("wins_a", "wins_b", "unfinished", "break_and_runs", "innings", "scored", "reasons")
+    assert [{k: p[k] for k in keys} for p in one["pairs"]] == [{k: p[k] for k in keys} for p in two["pairs"]]
+    assert [(r["run_outs"], r["balls"]) for r in one["run_outs"]] == [(r["run_outs"], r["balls"])
+                                                                      for r in two["run_outs"]]
+    assert one["players"]["geometric"]["per_inning"] > one["players"]["random"]["per_inning"]
+
+
+@pytest.mark.parametrize("game, extra", [("three_cushion", ["--rules", '{"target_points": 1}']),
+                                         ("snooker", ["--max-shots", "30"])])
+def test_every_game_has_a_league(tmp_path, game, extra):
+    assert main(["--game", game, "--players", "random", "geometric", "--games", "2", "--runouts", "2",
+                 "--out", str(tmp_path), *extra]) == 0
+    md = (tmp_path / "league.md").read_text()
+    assert "points per inning" in md and "| random | geometric |" in md
+    assert "run-out" in md  # the column, empty: these games have no ball-in-hand opening
+    assert main(["--game", game, "--players", "random", "geometric", "--rules", "{oops"]) == 2

@@ -18,13 +18,18 @@ def league(pairs):
 
 
 def test_targets_name_each_figure_and_verdict():
-    leagues = {"no_noise": league([("geometric", "search", 10, 30), ("geometric", "agent", 45, 55)]),
-               "fastfiz": league([("search", "geometric", 20, 20), ("agent", "geometric", 70, 30)])}
-    search, agent = target_lines(leagues, "agent")
+    leagues = {"no_noise": league([("geometric", "search", 10, 30), ("geometric", "agent", 45, 55),
+                                   ("search", "prior", 18, 22)]),
+               "olympiad": league([("search", "geometric", 20, 20), ("agent", "geometric", 70, 30),
+                                   ("prior", "search", 30, 10)])}
+    search, agent, prior, ms, job = target_lines(leagues, "agent", "prior", job_seconds=3000, decision_ms=0.7)
     assert "search player beats" in search and "30/40 = **75%**" in search and "20/40 = **50%**" in search
-    assert search.endswith("pass (interval includes 50%), **miss** |") or "**miss**" in search
+    assert "**missed**" in search
     assert "55/100 = **55%**" in agent and "70/100 = **70%**" in agent
-    assert "pass (interval includes 50%), pass |" in agent  # 55% [45, 65]; 70% [60, 78]
+    assert "| **missed**, met |" in agent  # 55% < 60%; 70% [60.4, 78] clears 60%
+    assert "22/40 = **55%**" in prior and "30/40 = **75%**" in prior
+    assert "met (interval includes the target), met" in prior  # 55% [40, 69]; 75% [60, 86]
+    assert ms.endswith("| met |") and "50 min wall | met |" in job
 
 
 def test_learning_curve_marks_the_two_phases(tmp_path):
@@ -46,7 +51,10 @@ def test_main_takes_the_game_option():
 
 
 @pytest.mark.slow
-def test_the_whole_job_on_a_tiny_budget(tmp_path, monkeypatch):
+@pytest.mark.parametrize("curriculum", [False, True])
+def test_the_whole_job_on_a_tiny_budget(tmp_path, monkeypatch, curriculum):
+    import yaml
+
     import agents.nine_ball as nb
     from agents.config import load_train_config
 
@@ -58,10 +66,21 @@ def test_the_whole_job_on_a_tiny_budget(tmp_path, monkeypatch):
                     {**(hyper_overrides or {}), "learning_starts": 50, "batch_size": 32, "n_envs": 2})
 
     monkeypatch.setattr("agents.config.load_train_config", tiny)
-    rep = nb.run(tmp_path, 40.0, 0.6, 2, 2, 2, 0, None, 3, False, "test")
-    for name in ("report.md", "report.json", "league_no_noise.md", "league_fastfiz.md", "learning_curve.png",
+    cfg = yaml.safe_load(nb.DISTILL_CONFIG.read_text())
+    cfg["distill"].update(states=4, dagger_rounds=1, bc_epochs=2, eval_episodes=2)
+    cfg["billiards"]["max_seconds"] = 20
+    (tmp_path / "distill.yaml").write_text(yaml.safe_dump(cfg))
+    rep = nb.run(tmp_path / "out", 20.0, 0.6, 2, 2, 2, 0, None, 3, False, "test", curriculum=curriculum, workers=2,
+                 config=tmp_path / "distill.yaml")
+    out = tmp_path / "out"
+    for name in ("report.md", "report.json", "league_no_noise.md", "league_olympiad.md", "learning_curve.png",
                  "game.gif"):
-        assert (tmp_path / name).exists(), name
-    md = (tmp_path / "report.md").read_text()
-    assert "the search player beats the geometric player" in md and "a trained agent beats" in md
-    assert rep["training"]["phases"]["vs_geometric"]["timesteps"] >= rep["training"]["switch_step"]
+        assert (out / name).exists(), name
+    md = (out / "report.md").read_text()
+    assert "the search player beats the geometric player" in md and "the trained policy alone wins" in md
+    assert "search with the learned prior" in md and "the 9-ball job <= 60 min" in md
+    if curriculum:
+        assert rep["training"]["phases"]["vs_geometric"]["timesteps"] >= rep["training"]["switch_step"]
+    else:
+        assert [s["stage"] for s in rep["training"]["stages"]] == ["bc", "dagger round 1", "rl fine-tuning"]
+        assert "What limits the trained agent" in md

@@ -1,0 +1,158 @@
+"""Search with a learned prior: the search player, with part of its candidate shots proposed by a trained policy.
+
+The search player (:class:`billiards_env.players.search.SearchPlayer`) simulates a fixed list of candidates per
+decision: the ghost-ball shots of the easiest pots at angle offsets, speed factors and tip offsets, then a sweep of
+72 directions x 3 speeds for kicks and safeties. :class:`PriorSearchPlayer` keeps that budget, the same number of
+simulated shots and the same valuation (the rules' verdict, the position left, the noisy re-runs of the best), and
+spends the sweep's share on the policy's proposals instead: the shot the policy plays and variants of it (angle
+offsets, speed factors, tip offsets), then the policy's speed and spin applied to every other candidate (ball,
+pocket) of its action type. With the cue ball in hand the policy's place is searched first, then the search's own
+best places (as many places in all as the search player searches, each with as many candidates; the search's
+places keep its sweep). AlphaGo's use of a policy network, in pool terms: the prior says where
+to look, the simulation decides.
+
+The shots enter through the search's ``playable`` hook (the map of candidates to the shots an action type plays),
+so the search itself is untouched: ``python -m agents.league --players search prior:runs/<run>`` plays it.
+"""
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+#: Angle offsets (rad), speed factors and tip offsets of the variants of the policy's own shot.
+PRIOR_ANGLES = (0.0, 0.0008, -0.0008, 0.002, -0.002, 0.005, -0.005)
+PRIOR_SPEEDS = (1.0, 0.8, 1.25, 0.65, 1.5)
+PRIOR_TIPS = ((0.0, 0.0), (0.0, -0.3), (0.0, 0.3), (-0.25, 0.0), (0.25, 0.0), (0.0, -0.15), (0.0, 0.15))
+
+
+class _PriorPlayable:
+    """The search's ``playable`` hook: candidates through an action type, except the sweep's, which become the
+    policy's proposals (``proposals``: ``(angle, speed, side, top)`` rows, played through the same type)."""
+
+    def __init__(self, inner: Any, proposals: np.ndarray) -> None:
+        self.inner = inner
+        self.proposals = proposals
+        self.actions = getattr(inner, "actions", {})
+
+    def __call__(self, cands: list[tuple[float, float, float, float, str]]
+                 ) -> list[tuple[float, float, float, float, str]]:
+        sweep = [k for k, c in enumerate(cands) if c[4] == "sweep"]
+        out = list(cands)
+        for m, k in enumerate(sweep[:len(self.proposals)]):
+            a, v, sd, tp = (float(x) for x in self.proposals[m])
+            out[k] = (a, v, sd, tp, "prior")
+        played = self.inner(out) if self.inner is not None else out
+        return [(p[0], p[1], p[2], p[3], c[4]) for p, c in zip(played, out)]
+
+    def action_for(self, angle: float, speed: float, side: float, top: float) -> Any:
+        return self.inner.action_for(angle, speed, side, top) if self.inner is not None else None
+
+
+class PriorSearchPlayer:
+    """The search player with a trained policy's proposals (see the module docstring). ``policy``: a
+    :class:`agents.games.TrainedPlayer` (it observes in its own types and names the shot it means)."""
+
+    def __init__(self, policy: Any, seed: int | None = 0, settings: Any = None) -> None:
+        from billiards_env.players.search import SearchPlayer, SearchSettings
+
+        self.policy = policy
+        self.search = SearchPlayer(seed, settings or SearchSettings())
+        self.name = f"search+prior({policy.name})"
+
+    def reset(self, seed: int | None = None) -> None:
+        self.search.reset(seed)
+        self.policy.reset(seed)
+
+    def budget(self) -> int:
+        """Sweep candidates per decision: the proposals' share of the search's budget."""
+        st = self.search.settings
+        return int(st.sweep_angles) * len(st.sweep_speeds)
+
+    def proposals(self, state: Any, shot: Any, spin: bool) -> np.ndarray:
+        """``(angle, speed, side, top)`` rows: the policy's shot and its variants, then its speed factor and tip
+        offsets on the other candidate shots of its type, at most :meth:`budget` rows."""
+        rows: list[tuple[float, float, float, float]] = []
+        lo, hi = state.settings.speed_range
+        tips = PRIOR_TIPS if spin else ((0.0, 0.0),)
+        own = (float(shot.side), float(shot.top))
+        for da in PRIOR_ANGLES:  # the shot itself, aimed a little either side
+            rows.append((shot.angle + da, shot.speed, *own))
+        for f in PRIOR_SPEEDS[1:]:
+            for sd, tp in ((own,) + tuple(t for t in tips if t != own)):
+                rows.append((shot.angle, min(max(shot.speed * f, lo), hi), sd, tp))
+        for sd, tp in tips:
+            if (sd, tp) != own:
+                rows.append((shot.angle, shot.speed, sd, tp))
+        at = self.policy._action_type
+        slots = at.slots(state) if hasattr(at, "slots") else None
+        if slots is not None and not slots.in_hand:
+            for s in slots.slots:  # every other (ball, pocket) at the policy's speed factor and spin
+                if s.shot is None:
+                    continue
+                v = min(max(s.shot.speed * shot.speed / max(self._base_speed(state, shot), 1e-9), lo), hi)
+                for f in PRIOR_SPEEDS:
+                    rows.append((s.shot.angle, min(max(v * f, lo), hi), *own))
+        out = np.array(rows[: self.budget()], dtype=np.float64).reshape(-1, 4)
+        return out
+
+    def _base_speed(self, state: Any, shot: Any) -> float:
+        """The own speed of the candidate the policy chose (its shot's speed without the power factor)."""
+        at = self.policy._action_type
+        slots = at.slots(state)
+        best = min((s for s in slots.slots if s.shot is not None), default=None,
+                   key=lambda s: abs(math.remainder(s.shot.angle - shot.angle, 2 * math.pi)))
+        return best.shot.speed if best is not None else shot.speed
+
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+        from billiards_env.players.context import player_inputs, shot_context, to_action
+        from billiards_env.players.geometric import break_shot
+        from billiards_env.players.search import Judge, placement_candidates, playable_shots, search_shot
+
+        state, codec = player_inputs(source, codec)
+        ctx = shot_context(state, codec)
+        env = getattr(source, "unwrapped", None)
+        if ctx.game is not None and ctx.game.state.break_shot:
+            place, angle, speed = break_shot(ctx)
+            return to_action(codec, state, angle, speed, place=place)
+        self.policy._types(env)
+        mine = self.policy._action_type.shot(state, self.policy.predict(self.policy._obs_type.observe(state)))
+        st = self.search.settings
+        places: list[Any] = [None]
+        if ctx.place_area is not None:
+            sigma = max(ctx.angle_noise, st.ease_noise)
+            own = placement_candidates(ctx, max(st.placements, 1), sigma=sigma)
+            places = ([mine.place] if mine.place is not None else []) + own
+            places = places[:max(st.placements, 1)]
+        judge = Judge(ctx) if ctx.game is not None else None
+        best = None
+        for place in places:
+            with state.cue_moved_to(place):
+                # the policy's place gets its proposals; the search's own places keep its sweep
+                prop = self.proposals(state, mine, ctx.tip_offsets) if place == mine.place else np.zeros((0, 4))
+                play = _PriorPlayable(playable_shots(state, codec, place), prop)
+                angle, speed, out = search_shot(ctx, st, self.search.rng, None, play, judge)
+            if best is None or out.robust > best[3].robust:
+                best = (place, angle, speed, out, play)
+        place, angle, speed, out, play = best
+        pocket = None
+        if ctx.game is not None and ctx.game.needs_called_pocket():
+            with state.cue_moved_to(place):
+                pocket = self.search._called_pocket(ctx, angle, speed, out)
+        action = to_action(codec, state, angle, speed, place=place, pocket=pocket, side=out.side, top=out.top)
+        searched = play.action_for(angle, speed, out.side, out.top)
+        if searched is not None:
+            dims = 4 if codec.spin else 2
+            action[:dims] = searched[:dims]
+        return action
+
+
+def prior_search_player(path: str, game: str = "nine_ball", seed: int = 0) -> PriorSearchPlayer:
+    """The search player with the trained policy at ``path`` (a run folder or model zip of ``game``) as its prior."""
+    from .games import trained_player
+
+    return PriorSearchPlayer(trained_player(path, game), seed)
+
+
+__all__ = ["PriorSearchPlayer", "prior_search_player", "PRIOR_ANGLES", "PRIOR_SPEEDS", "PRIOR_TIPS"]
