@@ -138,7 +138,7 @@ def trained_player(path: str, game: str = "nine_ball") -> TrainedPlayer:
 def physics_kwargs(config: Any) -> dict[str, Any]:
     """The env kwargs that give another env ``config``'s physics (and the spin dims under the spin model)."""
     kw: dict[str, Any] = {"physics": dataclasses.asdict(config.physics)}
-    if config.physics.friction == "spin":
+    if config.physics.has_spin:
         kw["spin_action"] = True
     return kw
 
