@@ -15,7 +15,8 @@
     result = play_match(nine_ball_v0.env, [make_player("geometric"), make_player("random")], n_games=10, seed=0)
     result.winners, result.wins                   # per game: 0 / 1 (the policy) or -1 (truncated)
 
-- :mod:`.nine_ball_v0`, :mod:`.eight_ball_v0`: ``env(**config)`` (wrapped) and ``raw_env``; the manual is
+- :mod:`.nine_ball_v0`, :mod:`.eight_ball_v0`, :mod:`.snooker_v0`, :mod:`.three_cushion_v0`: ``env(**config)``
+  (wrapped) and ``raw_env`` (made by :func:`.aec.game_module`); the manual is
   :class:`.aec.BilliardsGameAEC`. Built on the single-agent game env (``env.unwrapped.game_env``), which plays and
   judges every shot; the two-player env only passes the turn and gives each agent its view and its reward.
 - :func:`play_match` (:mod:`.match`): games between two policies (players, SB3 models, callables), seats

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import copy
 import warnings
-from typing import Any, ClassVar
+from typing import Any, Callable, ClassVar
 
 import gymnasium as gym
 import numpy as np
@@ -34,8 +34,9 @@ _SINGLE_AGENT_KEYS = ("is_success", "opponent_shots")
 
 
 class BilliardsGameAEC(AECEnv, EzPickle):
-    """A pool game for two players (PettingZoo AEC API). The subclasses :class:`billiards_env.multi.nine_ball_v0.raw_env`
-    and :class:`billiards_env.multi.eight_ball_v0.raw_env` name the game; this is the manual of both.
+    """A pool game for two players (PettingZoo AEC API). Each game's module (``nine_ball_v0``, ``eight_ball_v0``,
+    ``snooker_v0``, ``three_cushion_v0``) names its game with a ``raw_env`` subclass (:func:`game_module`); this is
+    the manual of all of them.
 
     ## Description
 
@@ -236,4 +237,22 @@ def wrap(env: BilliardsGameAEC) -> AECEnv:
     return wrappers.OrderEnforcingWrapper(env)
 
 
-__all__ = ["AGENTS", "BilliardsGameAEC", "wrap"]
+def game_module(game_class: type[BilliardsEnv], name: str, module: str, doc: str
+                ) -> tuple[type[BilliardsGameAEC], Callable[..., AECEnv]]:
+    """The two names a PettingZoo env module exports for a game: ``raw_env`` (the :class:`BilliardsGameAEC` of
+    ``game_class``, its ``metadata["name"]`` = ``name``) and ``env(render_mode=None, config=None, **overrides)``
+    (``raw_env`` in :func:`wrap`). ``module`` is the exporting module's ``__name__``, so both pickle by name."""
+    raw = type("raw_env", (BilliardsGameAEC,), {
+        "__doc__": doc, "__module__": module, "__qualname__": "raw_env", "game_class": game_class,
+        "metadata": {**BilliardsGameAEC.metadata, "name": name}})
+
+    def env(render_mode: str | None = None, config: Any = None, **overrides: Any) -> AECEnv:
+        return wrap(raw(render_mode=render_mode, config=config, **overrides))
+
+    env.__module__, env.__qualname__ = module, "env"
+    env.__doc__ = (f"``{name}``'s :class:`raw_env` in PettingZoo's ``OrderEnforcingWrapper`` "
+                   "(see :func:`billiards_env.multi.aec.wrap`).")
+    return raw, env
+
+
+__all__ = ["AGENTS", "BilliardsGameAEC", "game_module", "wrap"]

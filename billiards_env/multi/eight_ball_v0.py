@@ -17,32 +17,18 @@ docs/rules.md.
 """
 from __future__ import annotations
 
-from typing import Any, ClassVar
-
-from pettingzoo import AECEnv
-
 from billiards_env.envs.eight_ball import EightBallEnv
 
-from .aec import BilliardsGameAEC, wrap
+from .aec import game_module
 
+raw_env, env = game_module(EightBallEnv, "eight_ball_v0", __name__, doc="""\
+8-ball for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual).
 
-class raw_env(BilliardsGameAEC):  # noqa: N801 - PettingZoo's name
-    """8-ball for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual).
-
-    Action ``Box(-1, 1, (5,))`` by default: aim, power, place_x, place_y, pocket (the pocket called for the 8; no
-    such dim with ``rules={"call_eight": False}``; + side, top with ``spin_action``). Observation ``Box(0, 1,
-    (59,))``: 16 positions, 16 pocketed flags, 11 game features (the own group is each agent's own). A game ends on
-    the 8: pocketed legally in the called pocket after clearing the group wins, early / on a foul / in another
-    pocket loses.
-    """
-
-    metadata: ClassVar[dict[str, Any]] = {**BilliardsGameAEC.metadata, "name": "eight_ball_v0"}
-    game_class = EightBallEnv
-
-
-def env(render_mode: str | None = None, config: Any = None, **overrides: Any) -> AECEnv:
-    """:class:`raw_env` in PettingZoo's ``OrderEnforcingWrapper`` (see :func:`billiards_env.multi.aec.wrap`)."""
-    return wrap(raw_env(render_mode=render_mode, config=config, **overrides))
-
+Action ``Box(-1, 1, (5,))`` by default: aim, power, place_x, place_y, pocket (the pocket called for the 8; no
+such dim with ``rules={"call_eight": False}``; + side, top with ``spin_action``). Observation ``Box(0, 1,
+(59,))``: 16 positions, 16 pocketed flags, 11 game features (the own group is each agent's own). A game ends on
+the 8: pocketed legally in the called pocket after clearing the group wins, early / on a foul / in another
+pocket loses.
+""")
 
 __all__ = ["env", "raw_env"]

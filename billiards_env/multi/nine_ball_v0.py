@@ -16,30 +16,16 @@ game (rack, rules, action layout): :class:`billiards_env.envs.nine_ball.NineBall
 """
 from __future__ import annotations
 
-from typing import Any, ClassVar
-
-from pettingzoo import AECEnv
-
 from billiards_env.envs.nine_ball import NineBallEnv
 
-from .aec import BilliardsGameAEC, wrap
+from .aec import game_module
 
+raw_env, env = game_module(NineBallEnv, "nine_ball_v0", __name__, doc="""\
+9-ball for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual).
 
-class raw_env(BilliardsGameAEC):  # noqa: N801 - PettingZoo's name
-    """9-ball for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual).
-
-    Action ``Box(-1, 1, (4,))`` by default: aim, power, place_x, place_y (+ side, top with ``spin_action``; + push
-    with ``rules={"push_out": True}``). Observation ``Box(0, 1, (41,))``: 10 positions, 10 pocketed flags, 11 game
-    features. A game ends on the 9 pocketed legally (its shooter wins) or a third foul in a row (its player loses).
-    """
-
-    metadata: ClassVar[dict[str, Any]] = {**BilliardsGameAEC.metadata, "name": "nine_ball_v0"}
-    game_class = NineBallEnv
-
-
-def env(render_mode: str | None = None, config: Any = None, **overrides: Any) -> AECEnv:
-    """:class:`raw_env` in PettingZoo's ``OrderEnforcingWrapper`` (see :func:`billiards_env.multi.aec.wrap`)."""
-    return wrap(raw_env(render_mode=render_mode, config=config, **overrides))
-
+Action ``Box(-1, 1, (4,))`` by default: aim, power, place_x, place_y (+ side, top with ``spin_action``; + push
+with ``rules={"push_out": True}``). Observation ``Box(0, 1, (41,))``: 10 positions, 10 pocketed flags, 11 game
+features. A game ends on the 9 pocketed legally (its shooter wins) or a third foul in a row (its player loses).
+""")
 
 __all__ = ["env", "raw_env"]

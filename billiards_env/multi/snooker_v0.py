@@ -16,26 +16,12 @@ game: :class:`billiards_env.envs.snooker.SnookerEnv` and docs/rules.md.
 """
 from __future__ import annotations
 
-from typing import Any, ClassVar
-
-from pettingzoo import AECEnv
-
 from billiards_env.envs.snooker import SnookerEnv
 
-from .aec import BilliardsGameAEC, wrap
+from .aec import game_module
 
-
-class raw_env(BilliardsGameAEC):  # noqa: N801 - PettingZoo's name
-    """Snooker for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual, and
-    :class:`billiards_env.envs.snooker.SnookerEnv` for the spaces)."""
-
-    metadata: ClassVar[dict[str, Any]] = {**BilliardsGameAEC.metadata, "name": "snooker_v0"}
-    game_class = SnookerEnv
-
-
-def env(render_mode: str | None = None, config: Any = None, **overrides: Any) -> AECEnv:
-    """:class:`raw_env` in PettingZoo's ``OrderEnforcingWrapper`` (see :func:`billiards_env.multi.aec.wrap`)."""
-    return wrap(raw_env(render_mode=render_mode, config=config, **overrides))
-
+raw_env, env = game_module(SnookerEnv, "snooker_v0", __name__, doc="""\
+Snooker for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual, and
+:class:`billiards_env.envs.snooker.SnookerEnv` for the spaces).""")
 
 __all__ = ["env", "raw_env"]
