@@ -264,44 +264,10 @@ def _reference_slots(state: Any, n: int, speed_range: tuple[float, float] | None
 
 def _reference_slot_values(self: Any, state: Any) -> np.ndarray:
     """``CandidateFeatures.features`` as the Python loop over the slots of before issue 21."""
-    import math
+    from benchmarks import reference_players as ref
 
-    from billiards_env.envs.candidates import EASY_TOLERANCE, SLOT_FEATURES
-    from billiards_env.physics.aim import wrap_angle
-
-    out = np.zeros((self.n_slots, SLOT_FEATURES), np.float32)
     cands = _reference_slots(state, self.n_slots, self.speed_range)
-    t = state.table
-    px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
-    numbers = state.numbers
-    if cands.kick is not None:
-        s = cands.kick
-        row = out[self.n_slots - 1]
-        row[0] = 1.0
-        row[1] = numbers[s.target] / 15.0
-        row[2] = row[3] = -1.0
-        row[5] = min(s.shot.d_cue / t.length, 1.0)
-        row[8] = row[9] = 1.0
-        row[11] = s.shot.speed / self.speed_range[1]
-    for k, s in enumerate(cands.slots):
-        row = out[k]
-        row[0] = 1.0
-        row[1] = numbers[s.target] / 15.0
-        row[2], row[3] = px[s.pocket], py[s.pocket]
-        row[6] = min(s.d_obj / t.length, 1.0)
-        shot = s.shot
-        if shot is None:
-            row[7] = min(s.half / (math.pi / 8.0), 1.0)
-            row[8] = 1.0 if s.clear_obj else 0.0
-            continue
-        row[4] = wrap_angle(s.obj_angle - shot.angle) / (math.pi / 2.0)
-        row[5] = min(shot.d_cue / t.length, 1.0)
-        row[7] = min(shot.tolerance / EASY_TOLERANCE, 1.0)
-        row[8] = 1.0 if shot.clear else 0.0
-        row[9] = 1.0 if shot.reachable else 0.0
-        row[10] = 1.0 if shot.scratch_risk else 0.0
-        row[11] = shot.speed / self.speed_range[1]
-    return np.clip(out.reshape(-1), -1.0, 1.0)
+    return ref.reference_slot_values(state, cands, self.n_slots, self.speed_range[1])
 
 
 @contextlib.contextmanager

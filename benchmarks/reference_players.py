@@ -946,3 +946,42 @@ def _path_clear(b: Any, j: int, obj_angle: float, d_obj: float) -> bool:
     o = b.pos[j]
     return not segment_blocked(o, o + direction_vector(obj_angle) * d_obj, b.pos[others],
                                b.radius[others] + float(b.radius[j]))
+
+
+def reference_slot_values(state: Any, cands: Any, n_slots: int, speed_max: float) -> np.ndarray:
+    """The ``candidates`` observation's slot values as the Python loop over the slots made them (before issue 21)."""
+    from billiards_env.envs.candidates import EASY_TOLERANCE, SLOT_FEATURES
+    from billiards_env.physics.aim import wrap_angle
+
+    out = np.zeros((n_slots, SLOT_FEATURES), np.float32)
+    t = state.table
+    px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
+    numbers = state.numbers
+    if cands.kick is not None:
+        s = cands.kick
+        row = out[n_slots - 1]
+        row[0] = 1.0
+        row[1] = numbers[s.target] / 15.0
+        row[2] = row[3] = -1.0
+        row[5] = min(s.shot.d_cue / t.length, 1.0)
+        row[8] = row[9] = 1.0
+        row[11] = s.shot.speed / speed_max
+    for k, s in enumerate(cands.slots):
+        row = out[k]
+        row[0] = 1.0
+        row[1] = numbers[s.target] / 15.0
+        row[2], row[3] = px[s.pocket], py[s.pocket]
+        row[6] = min(s.d_obj / t.length, 1.0)
+        shot = s.shot
+        if shot is None:
+            row[7] = min(s.half / (math.pi / 8.0), 1.0)
+            row[8] = 1.0 if s.clear_obj else 0.0
+            continue
+        row[4] = wrap_angle(s.obj_angle - shot.angle) / (math.pi / 2.0)
+        row[5] = min(shot.d_cue / t.length, 1.0)
+        row[7] = min(shot.tolerance / EASY_TOLERANCE, 1.0)
+        row[8] = 1.0 if shot.clear else 0.0
+        row[9] = 1.0 if shot.reachable else 0.0
+        row[10] = 1.0 if shot.scratch_risk else 0.0
+        row[11] = shot.speed / speed_max
+    return np.clip(out.reshape(-1), -1.0, 1.0)

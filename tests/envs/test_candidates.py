@@ -12,6 +12,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import billiards_env  # noqa: E402,F401
+from benchmarks.reference_players import reference_slot_values
 from billiards_env.envs.actions import PLACE_BACK, PLACE_MAX_CUT
 from billiards_env.envs.candidates import candidate_slots
 from billiards_env.envs.config import ConfigError
@@ -267,45 +268,6 @@ def test_position_reward_pays_for_the_next_shot_after_a_kept_turn():
     assert seen == {"kept", "lost"}
 
 
-def _python_slot_values(state, cands, n_slots, speed_max):
-    """The ``candidates`` observation's slot values as the Python loop over the slots made them (before issue 21)."""
-    from billiards_env.envs.candidates import EASY_TOLERANCE
-    from billiards_env.physics.aim import wrap_angle
-
-    out = np.zeros((n_slots, SLOT_FEATURES), np.float32)
-    t = state.table
-    px, py = t.pocket_xy[:, 0] / t.length, t.pocket_xy[:, 1] / t.width
-    numbers = state.numbers
-    if cands.kick is not None:
-        s = cands.kick
-        row = out[n_slots - 1]
-        row[0] = 1.0
-        row[1] = numbers[s.target] / 15.0
-        row[2] = row[3] = -1.0
-        row[5] = min(s.shot.d_cue / t.length, 1.0)
-        row[8] = row[9] = 1.0
-        row[11] = s.shot.speed / speed_max
-    for k, s in enumerate(cands.slots):
-        row = out[k]
-        row[0] = 1.0
-        row[1] = numbers[s.target] / 15.0
-        row[2], row[3] = px[s.pocket], py[s.pocket]
-        row[6] = min(s.d_obj / t.length, 1.0)
-        shot = s.shot
-        if shot is None:
-            row[7] = min(s.half / (math.pi / 8.0), 1.0)
-            row[8] = 1.0 if s.clear_obj else 0.0
-            continue
-        row[4] = wrap_angle(s.obj_angle - shot.angle) / (math.pi / 2.0)
-        row[5] = min(shot.d_cue / t.length, 1.0)
-        row[7] = min(shot.tolerance / EASY_TOLERANCE, 1.0)
-        row[8] = 1.0 if shot.clear else 0.0
-        row[9] = 1.0 if shot.reachable else 0.0
-        row[10] = 1.0 if shot.scratch_risk else 0.0
-        row[11] = shot.speed / speed_max
-    return np.clip(out.reshape(-1), -1.0, 1.0)
-
-
 @pytest.mark.parametrize("env_id", ["Billiards9Ball-v0", "Billiards8Ball-v0"])
 def test_observation_values_equal_the_python_loop(env_id):
     """The compiled slot values (envs/candidates.py ``slot_features``) equal the Python loop they replaced, bit for
@@ -322,7 +284,7 @@ def test_observation_values_equal_the_python_loop(env_id):
             for n in (1, 4, 6):
                 cands = candidate_slots(u.state, n, u.action_type.speed_range)
                 got = slot_features(u.state, cands, n, u.config.speed_max)
-                want = _python_slot_values(u.state, cands, n, u.config.speed_max)
+                want = reference_slot_values(u.state, cands, n, u.config.speed_max)
                 assert got.dtype == want.dtype and np.array_equal(got, want)
                 seen["break" if cands.break_shot else "hand" if cands.in_hand else "pots"] += 1
                 seen["kick"] += cands.kick is not None
@@ -336,5 +298,5 @@ def test_observation_values_equal_the_python_loop(env_id):
     cands = candidate_slots(env9.unwrapped.state, 4)
     assert cands.kick is not None
     assert np.array_equal(slot_features(env9.unwrapped.state, cands, 4, 5.0),
-                          _python_slot_values(env9.unwrapped.state, cands, 4, 5.0))
+                          reference_slot_values(env9.unwrapped.state, cands, 4, 5.0))
     assert seen["hand"] and seen["pots"] and seen["break"], seen
