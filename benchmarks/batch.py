@@ -26,7 +26,8 @@ from typing import Any, Callable
 
 import numpy as np
 
-from .common import fmt_rate, fmt_time, load_now, log, machine_info, machine_markdown, one_ball_shots, write_json
+from .common import (fmt_rate, fmt_time, load_now, log, machine_info, machine_markdown, one_ball_shots, rerender,
+                     write_json)
 
 TARGETS = {
     "vector_one_ball": 200_000.0,  # episodes/s
@@ -356,10 +357,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
 
 
 def render(out: Path) -> None:
-    import json
-
-    doc = json.loads((out / "batch.json").read_text())
-    (out / "batch.md").write_text(render_markdown(doc))
+    """Re-write ``batch.md`` from ``batch.json``, without measuring."""
+    rerender(out, "batch", render_markdown)
 
 
 def main(out: Path | None, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict:

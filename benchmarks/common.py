@@ -205,6 +205,21 @@ def write_json(path: Path, data: Any) -> None:
     path.write_text(json.dumps(_finite(data), indent=1, default=_json_default, allow_nan=False) + "\n")
 
 
+def rerender(out: Path, name: str, render_markdown: Callable[[dict[str, Any]], str]) -> None:
+    """Re-write a section's ``name.md`` from its ``name.json`` in ``out``, without measuring."""
+    (out / f"{name}.md").write_text(render_markdown(json.loads((out / f"{name}.json").read_text())))
+
+
+def publish(doc: dict[str, Any], md: str, out: Path | None, name: str) -> None:
+    """Print a section's report ``md``; with ``out``, also write ``name.json`` (``doc``) and ``name.md`` there."""
+    print(md)
+    if out is not None:
+        out.mkdir(parents=True, exist_ok=True)
+        write_json(out / f"{name}.json", doc)
+        (out / f"{name}.md").write_text(md)
+        log(f"[{name}] wrote {out / (name + '.md')}")
+
+
 def _finite(o: Any) -> Any:
     if isinstance(o, dict):
         return {k: _finite(v) for k, v in o.items()}

@@ -32,7 +32,7 @@ from typing import Any, Callable, Iterator
 
 import numpy as np
 
-from .common import fmt_rate, fmt_time, load_now, log, machine_info, machine_markdown, time_call, write_json
+from .common import fmt_rate, fmt_time, load_now, log, machine_info, machine_markdown, publish, rerender, time_call
 
 GAMES = ("Billiards9Ball-v0", "Billiards8Ball-v0")
 #: The single-env configurations timed (name, env kwargs).
@@ -468,22 +468,14 @@ def render_markdown(doc: dict[str, Any]) -> str:
 
 
 def render(out: Path) -> None:
-    import json
-
-    doc = json.loads((out / "games.json").read_text())
-    (out / "games.md").write_text(render_markdown(doc))
+    """Re-write ``games.md`` from ``games.json``, without measuring."""
+    rerender(out, "games", render_markdown)
 
 
 def main(out: Path | None, quick: bool = False) -> dict[str, Any]:
     """Measure, print the figures, and write ``games.json`` and ``games.md`` into ``out`` if given."""
     doc = run(quick)
-    md = render_markdown(doc)
-    print(md)
-    if out is not None:
-        out.mkdir(parents=True, exist_ok=True)
-        write_json(out / "games.json", doc)
-        (out / "games.md").write_text(md)
-        log(f"[games] wrote {out / 'games.md'}")
+    publish(doc, render_markdown(doc), out, "games")
     return doc
 
 

@@ -40,7 +40,8 @@ from billiards_env.physics import Balls, Physics, Simulator, Table
 from billiards_env.physics.aim import cut_angle, ghost_point, path_clear, pocket_window
 from billiards_env.physics.layout import diamond_positions, foot_spot
 
-from .common import DRAG_FACTOR, DRAG_FRAME_DT, DRAG_MIN_SPEED, log, machine_info, machine_markdown, write_json
+from .common import (DRAG_FACTOR, DRAG_FRAME_DT, DRAG_MIN_SPEED, load_now, log, machine_info, machine_markdown,
+                     publish, rerender)
 
 R = 0.028575
 #: Final positions within this of the preset's count as the same outcome (m).
@@ -274,23 +275,13 @@ def render_markdown(doc: dict[str, Any]) -> str:
 
 
 def render(out: Path) -> None:
-    import json
-
-    doc = json.loads((out / "ladder.json").read_text())
-    (out / "ladder.md").write_text(render_markdown(doc))
+    """Re-write ``ladder.md`` from ``ladder.json``, without measuring."""
+    rerender(out, "ladder", render_markdown)
 
 
 def main(out: Path | None, quick: bool = False) -> dict[str, Any]:
     """Measure, print the ladder, and write ``ladder.json`` and ``ladder.md`` into ``out`` if given."""
-    from .common import load_now
-
     doc = {"machine": machine_info(), **run(quick)}
     doc["end_load"] = load_now()
-    md = render_markdown(doc)
-    print(md)
-    if out is not None:
-        out.mkdir(parents=True, exist_ok=True)
-        write_json(out / "ladder.json", doc)
-        (out / "ladder.md").write_text(md)
-        log(f"[ladder] wrote {out / 'ladder.md'}")
+    publish(doc, render_markdown(doc), out, "ladder")
     return doc

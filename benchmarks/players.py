@@ -25,7 +25,7 @@ from typing import Any, Callable, Iterator
 
 import numpy as np
 
-from .common import fmt_time, load_now, log, machine_info, machine_markdown, time_call, write_json
+from .common import fmt_time, load_now, log, machine_info, machine_markdown, publish, rerender, time_call
 
 GAMES = ("Billiards9Ball-v0", "Billiards8Ball-v0")
 #: Targets of issue 21 (seconds).
@@ -248,22 +248,14 @@ def render_markdown(doc: dict[str, Any]) -> str:
 
 
 def render(out: Path) -> None:
-    import json
-
-    doc = json.loads((out / "players.json").read_text())
-    (out / "players.md").write_text(render_markdown(doc))
+    """Re-write ``players.md`` from ``players.json``, without measuring."""
+    rerender(out, "players", render_markdown)
 
 
 def main(out: Path | None, quick: bool = False) -> dict[str, Any]:
     """Measure, print the figures, and write ``players.json`` and ``players.md`` into ``out`` if given."""
     doc = run(quick)
-    md = render_markdown(doc)
-    print(md)
-    if out is not None:
-        out.mkdir(parents=True, exist_ok=True)
-        write_json(out / "players.json", doc)
-        (out / "players.md").write_text(md)
-        log(f"[players] wrote {out / 'players.md'}")
+    publish(doc, render_markdown(doc), out, "players")
     return doc
 
 

@@ -27,7 +27,7 @@ import numpy as np
 from billiards_env.physics import Balls, Physics, Simulator, Table
 from billiards_env.physics.layout import rack_balls
 
-from .common import fmt_time, load_now, log, machine_info, machine_markdown, one_ball_shots, write_json
+from .common import fmt_time, load_now, log, machine_info, machine_markdown, one_ball_shots, rerender, write_json
 
 TARGET_SPEEDUP = 100.0
 DTS = (1e-3, 1e-4, 1e-5)
@@ -237,10 +237,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
 
 
 def render(out: Path) -> None:
-    """Re-write ``spin.md`` from ``spin.json``."""
-    import json
-
-    (out / "spin.md").write_text(render_markdown(json.loads((out / "spin.json").read_text())))
+    """Re-write ``spin.md`` from ``spin.json``, without measuring."""
+    rerender(out, "spin", render_markdown)
 
 
 def main(out: Path | None, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict:
