@@ -36,10 +36,10 @@ def angle_to(a, b) -> float:
     return math.atan2(d[1], d[0])
 
 
-def behind(ball, pocket: int, dist: float) -> tuple[float, float]:
-    """The point ``dist`` behind ``ball`` on the line from pocket ``pocket`` through ``ball`` (where a ball must
-    sit to drive ``ball`` straight into the pocket)."""
-    p = np.asarray(ball, float) - dist * unit(ball, POCKETS[pocket])
+def behind(ball, pocket: int, dist: float, pockets: np.ndarray = POCKETS) -> tuple[float, float]:
+    """The point ``dist`` behind ``ball`` on the line from pocket ``pocket`` (of ``pockets``: the pool table's by
+    default) through ``ball`` (where a ball must sit to drive ``ball`` straight into the pocket)."""
+    p = np.asarray(ball, float) - dist * unit(ball, pockets[pocket])
     return float(p[0]), float(p[1])
 
 

@@ -9,6 +9,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import rules_helpers
+from rules_helpers import angle_to, unit  # noqa: F401 (the scenes use them)
 
 from billiards_env.physics import Balls, Physics, Simulator
 from billiards_env.physics.layout import SNOOKER_COLOURS, SNOOKER_REDS, snooker_spots
@@ -25,20 +27,9 @@ SPOTS = snooker_spots(TABLE)
 RED_PARK = [(0.12 + 0.06 * (k % 4), 0.3 + 0.06 * (k // 4)) for k in range(15)]
 
 
-def unit(a, b) -> np.ndarray:
-    d = np.asarray(b, float) - np.asarray(a, float)
-    return d / np.linalg.norm(d)
-
-
-def angle_to(a, b) -> float:
-    d = np.asarray(b, float) - np.asarray(a, float)
-    return math.atan2(d[1], d[0])
-
-
 def behind(ball, pocket: int, dist: float) -> tuple[float, float]:
-    """The point ``dist`` behind ``ball`` on the line from pocket ``pocket`` through ``ball``."""
-    p = np.asarray(ball, float) - dist * unit(ball, POCKETS[pocket])
-    return float(p[0]), float(p[1])
+    """The point ``dist`` behind ``ball`` on the line from the snooker pocket ``pocket`` through ``ball``."""
+    return rules_helpers.behind(ball, pocket, dist, POCKETS)
 
 
 def near_pocket(pocket: int, dist: float = 0.3) -> tuple[float, float]:
