@@ -71,7 +71,8 @@ VEC_ENVS = ("auto", "native", "dummy")
 def use_native(cfg: TrainConfig, setup: AlgoSetup, vec_env: str = "auto") -> bool:
     """Whether to train on :class:`agents.vec.BilliardsVecEnv` (N tables in one call; the same transitions as
     DummyVecEnv with the same seeds) rather than a DummyVecEnv of single envs: ``auto`` uses it where it applies
-    (no env wrapper; the pot task on the exact solver), ``native`` insists."""
+    (no env wrapper; a config the native vector env runs as arrays: the pot task on the exact solver, 9-ball and
+    8-ball against the geometric player or none), ``native`` insists."""
     from .vec import native_vec_env_supported
 
     if vec_env not in VEC_ENVS:
@@ -80,8 +81,9 @@ def use_native(cfg: TrainConfig, setup: AlgoSetup, vec_env: str = "auto") -> boo
         return False
     ok = native_vec_env_supported(cfg.env_id, setup.env_kwargs, setup.wrapper)
     if vec_env == "native" and not ok:
-        raise TrainConfigError(f"vec_env: 'native' needs no env_wrapper and the pot task on the exact solver "
-                               f"({cfg.env_id} with these env_kwargs does not qualify); use 'auto' or 'dummy'")
+        raise TrainConfigError(f"vec_env: 'native' needs no env_wrapper and a config the native vector env runs as "
+                               f"arrays ({cfg.env_id} with these env_kwargs does not qualify: see "
+                               "BilliardsVectorEnv.not_native); use 'auto' or 'dummy'")
     return ok
 
 

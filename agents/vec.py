@@ -46,7 +46,7 @@ class BilliardsVecEnv(VecEnv):
         seeds = None if all(s is None for s in self._seeds) else list(self._seeds)
         options = self._options[0] if self._options and self._options[0] else None
         obs, info = self.venv.reset(seed=seeds, options=options)
-        self.reset_infos = _per_env(info, self.num_envs)
+        self.reset_infos = self._infos(info)
         self._reset_seeds()
         self._reset_options()
         return obs
@@ -57,9 +57,10 @@ class BilliardsVecEnv(VecEnv):
     def step_wait(self) -> VecEnvStepReturn:
         obs, reward, terminated, truncated, info = self.venv.step(self._actions)
         dones = terminated | truncated
-        infos = _per_env(info, self.num_envs)
+        games = self.venv.unwrapped.sub_infos is not None
+        infos = self._infos(info)
         if dones.any():
-            final_infos = _per_env(info.get("final_info", {}), self.num_envs)
+            final_infos = infos if games else _per_env(info.get("final_info", {}), self.num_envs)
             final_obs = info["final_obs"]
             for k in np.flatnonzero(dones).tolist():
                 infos[k] = final_infos[k]
@@ -68,6 +69,14 @@ class BilliardsVecEnv(VecEnv):
         for k, d in enumerate(infos):
             d["TimeLimit.truncated"] = bool(truncated[k] and not terminated[k])
         return obs, reward.astype(np.float32), dones, infos
+
+    def _infos(self, info: dict[str, Any]) -> list[dict[str, Any]]:
+        """One info dict per env: the games' own dicts (the vector env's ``sub_infos``: Gymnasium's stacked arrays
+        keep only the first value's dtype), else the stacked arrays taken apart."""
+        subs = self.venv.unwrapped.sub_infos
+        if subs is not None:
+            return [dict(d) for d in subs]
+        return _per_env(info, self.num_envs)
 
     def close(self) -> None:
         self.venv.close()
@@ -118,22 +127,22 @@ def _per_env(info: dict[str, Any], n: int) -> list[dict[str, Any]]:
 
 def native_vec_env_supported(env_id: str, env_kwargs: dict[str, Any] | None, wrapper: Any) -> bool:
     """Whether :class:`BilliardsVecEnv` can replace a ``DummyVecEnv`` of ``gym.make(env_id, **env_kwargs)`` here:
-    no per-env wrapper, and a config on the native array path (the pot task on the exact solver; game ids run
-    their sub-envs one by one, no faster than ``DummyVecEnv``)."""
+    no per-env wrapper, and a config the native vector env runs as arrays (the pot task on the exact solver; the
+    9-ball and 8-ball games with the geometric opponent or none, their own action types or ``candidates``: see
+    ``BilliardsVectorEnv.not_native``), not sub-env by sub-env (no faster than ``DummyVecEnv``)."""
     if wrapper is not None:
         return False
     import gymnasium as gym
 
     import billiards_env  # noqa: F401
 
-    spec = gym.spec(env_id)
-    if spec.vector_entry_point is None:
+    if gym.spec(env_id).vector_entry_point is None:
         return False
-    from billiards_env.envs.config import load_config
-    from gymnasium.envs.registration import load_env_creator
-
-    cfg = load_config(load_env_creator(spec.entry_point).scene, None, **(env_kwargs or {}))
-    return cfg.task == "pot" and cfg.solver.name == "exact"
+    vec = gym.make_vec(env_id, 1, vectorization_mode="vector_entry_point", **(env_kwargs or {}))
+    try:
+        return bool(vec.unwrapped.native)
+    finally:
+        vec.close()
 
 
 __all__ = ["BilliardsVecEnv", "native_vec_env_supported"]

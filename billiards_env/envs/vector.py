@@ -107,6 +107,11 @@ class BilliardsVectorEnv(VectorEnv):
         self.games: GameTables | None = None
         #: Why a game runs its sub-envs one by one (None: it does not, or not a game).
         self.not_native: str | None = None
+        #: The native games' info of the last reset or step as one dict per sub-env, as the single env returns it
+        #: (for a sub-env that ended in a same-step autoreset: its last step's; ``{}`` for one not reset), before
+        #: Gymnasium's stacking makes one array per key (whose dtype is the first value's: ``ball_in_hand``'s
+        #: ``False`` and ``"anywhere"`` become bools there). None on the pot task. SB3's adapter reads it.
+        self.sub_infos: list[dict[str, Any]] | None = None
         if not self.native and c.task != "pot":
             self.not_native = native_games(t, render_mode)
             self.native = self.not_native is None
@@ -204,7 +209,11 @@ class BilliardsVectorEnv(VectorEnv):
         infos: dict[str, Any] = {}
         if self.games is not None:  # the games' reset info, stacked as SyncVectorEnv stacks it
             self.games.prepare_infos()
-            infos = stack_infos(n, [(k, self.games.reset_info(k)) for k in rows.tolist()])
+            entries = [(k, self.games.reset_info(k)) for k in rows.tolist()]
+            self.sub_infos = [{} for _ in range(n)]
+            for k, info in entries:
+                self.sub_infos[k] = info
+            infos = stack_infos(n, entries)
         return self._obs.copy(), infos
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
@@ -457,9 +466,11 @@ class BilliardsVectorEnv(VectorEnv):
                     entries.append((k, {"final_obs": final_obs[k], "final_info": info}))
                     info = g.reset_info(k)
                 entries.append((k, info))
+            self.sub_infos = [step_infos[k] for k in range(n)]
             self._needs_reset[:] = False
         else:
             entries = [(k, g.reset_info(k) if resetting[k] else g.step_info(k)) for k in range(n)]
+            self.sub_infos = [info for _, info in entries]
             self._needs_reset = done
         return self._obs.copy(), reward, term, trunc, stack_infos(n, entries)
 

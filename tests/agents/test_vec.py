@@ -21,11 +21,19 @@ def _same(a, b) -> None:
             assert a[key] == b[key] and type(a[key]) is type(b[key]), (key, a[key], b[key])
 
 
-@pytest.mark.parametrize("env_id,kwargs", [("BilliardsOneBall-v0", {}),
-                                           ("BilliardsThreeBalls-v0", {"max_shots": 2, "action_type": "relative"})])
-def test_adapter_equals_dummy_vec_env(env_id, kwargs):
+@pytest.mark.parametrize("env_id,kwargs,truncates", [
+    ("BilliardsOneBall-v0", {}, False),
+    ("BilliardsThreeBalls-v0", {"max_shots": 2, "action_type": "relative"}, True),
+    ("Billiards9Ball-v0", {"action_type": "candidates", "observation_type": "candidates", "friction": "spin",
+                           "spin_action": True, "noise": "olympiad", "first_shooter": "random"}, False),
+    ("Billiards8Ball-v0", {"max_shots": 3}, True),
+])
+def test_adapter_equals_dummy_vec_env(env_id, kwargs, truncates):
+    """The same observations, rewards, dones and infos (every key, its value and its type: the games' infos mix
+    ``False`` and ``"anywhere"`` under one key) as ``DummyVecEnv`` with the same seeds and actions."""
     n = 4
     native = BilliardsVecEnv(env_id, n, kwargs)
+    assert native.venv.unwrapped.native  # the arrays' path, not its sub-envs one by one
     dummy = DummyVecEnv([lambda: gym.make(env_id, **kwargs) for _ in range(n)])
     native.seed(3)
     dummy.seed(3)
@@ -43,8 +51,7 @@ def test_adapter_equals_dummy_vec_env(env_id, kwargs):
         ends += int(done.sum())
         truncations += sum(d["TimeLimit.truncated"] for d in infos)
     assert ends > 0 and all("terminal_observation" in d for d, e in zip(infos, done) if e)
-    if kwargs:
-        assert truncations > 0
+    assert (truncations > 0) == truncates
 
 
 def test_sb3_trains_on_the_adapter_with_vec_monitor(tmp_path):
@@ -62,4 +69,5 @@ def test_native_is_used_only_where_it_applies():
     assert native_vec_env_supported("BilliardsOneBall-v0", {"action_type": "ghost"}, None)
     assert not native_vec_env_supported("BilliardsOneBall-v0", {}, wrapper=lambda e: e)
     assert not native_vec_env_supported("BilliardsOneBall-v0", {"solver": "step"}, None)
-    assert not native_vec_env_supported("Billiards9Ball-v0", {}, None)
+    assert native_vec_env_supported("Billiards9Ball-v0", {}, None)
+    assert not native_vec_env_supported("Billiards9Ball-v0", {"opponent": "random"}, None)
