@@ -454,8 +454,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
               "actions. Before: the Python of before issue 21 swapped in (`benchmarks/reference_players.py`: the candidate "
               "slot lists, the next shot's ease, the geometric opponent, observed for at every shot); after: the "
               "envs as they are. Interleaved rounds in this one run.", "",
-              "The native vector env of the same `n_envs` tables (`gymnasium.make_vec`, one thread) is what SB3 would "
-              "step through `agents.vec.BilliardsVecEnv` once `agents/vec.py` lets games use it.", "",
+              "The native vector env of the same `n_envs` tables (`gymnasium.make_vec`, one thread) is what "
+              "`agents.train` steps through `agents.vec.BilliardsVecEnv` where it applies (no env wrapper).", "",
               "| config | shots/CPU-s before | after (single envs) | speed-up | native vector env | speed-up | "
               "agent steps/CPU-s before | after | native |", "|---|---|---|---|---|---|---|---|---|"]
     for path, j in doc["job"].items():
