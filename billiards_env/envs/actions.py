@@ -9,7 +9,8 @@ Every action is a ``Box(-1, 1)`` vector laid out as::
   ghost_max_angle`` from the cue -> target line; the cue is aimed at the ghost-ball position that sends it there),
   :class:`CandidateShots` (``candidates``: one of the candidate (ball, pocket) shots of
   :mod:`billiards_env.envs.candidates`; ``power`` then scales that shot's own speed, and with ball in hand the
-  placement is set relative to it: see the class).
+  placement is set relative to it: see the class); :class:`CandidateAim` (``candidates_aim``) adds a last dim,
+  ``offset``: where in the chosen pot's entry window the object ball is sent (:mod:`billiards_env.envs.cue_path`).
 - ``power``: ``speed = speed_min + (a + 1) / 2 (speed_max - speed_min)``.
 - ``side``, ``top``: the square ``[-1, 1]^2`` mapped onto the disc of tip offsets of radius ``max_tip_offset``
   (fractions of the ball radius) by the elliptical grid mapping ``(u, v) = (x sqrt(1 - y^2/2), y sqrt(1 - x^2/2))``:
@@ -43,6 +44,7 @@ from billiards_env.players.shots import direct_hit
 from billiards_env.shot_path import CueShot, noisy_shot
 
 from .candidates import candidate_slots
+from .cue_path import OFFSET_SPAN, OFFSETS, offset_ghost, offset_of
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.table_state import TableState
@@ -487,7 +489,70 @@ class CandidateShots(ActionType):
         return np.clip(out, -1.0, 1.0).astype(np.float32)
 
 
-ACTION_TYPES = {"absolute": AbsoluteAim, "relative": RelativeAim, "ghost": GhostAim, "candidates": CandidateShots}
+class CandidateAim(CandidateShots):
+    """The ``candidates`` action type with one more dim, ``offset`` (the last): where in the chosen pot's entry
+    window the object ball is sent, one of :data:`OFFSETS` (:func:`offset_of`: equal bins of the action value,
+    the middle bin 0) times ``OFFSET_SPAN`` of the window's half-width off its middle (0: the middle, as
+    ``candidates``): exactly the offsets the ``candidates_path`` observation describes. It moves the cut, and with it the line the cue ball leaves on after contact: a
+    second way, beside the speed, to keep the cue ball out of the pockets. Read only for a pot with the cue ball
+    where it lies (not the kick, the break or ball in hand); an offset whose direction misses the pocket or asks
+    for a cut beyond :data:`MAX_OFFSET_CUT` plays the middle. ``power`` scales the slot's own speed as in
+    ``candidates``."""
+
+    name = "candidates_aim"
+
+    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+                 n_pockets: int = 6) -> None:
+        super().__init__(config, placement, declarations, n_pockets)
+        self._offset_at = self.n
+        self.n += 1
+        self.space = spaces.Box(-1.0, 1.0, shape=(self.n,), dtype=np.float32)
+
+    def layout(self) -> str:
+        return super().layout() + ", offset"
+
+    def shot(self, state: "TableState", action: Any) -> Any:
+        played = super().shot(state, action)
+        a = self.parse(action)
+        cands = self.slots(state)
+        if cands.break_shot or cands.in_hand or not cands.slots or (cands.kick is not None and self._kicks(a[0])):
+            return played
+        slot = cands.slots[0 if self._kicks(a[0]) else self._slot(a[0], len(cands.slots))]
+        g = offset_ghost(state, slot, offset_of(a[self._offset_at]))
+        if g is None:
+            return played
+        angle = math.atan2(g[1] - float(state.balls.pos[0, 1]), g[0] - float(state.balls.pos[0, 0]))
+        return played._replace(angle=angle)
+
+    def action(self, state: "TableState", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
+               place: tuple[float, float] | None = None, pocket: int | None = None,
+               push: bool = False) -> np.ndarray:
+        """The nearest action (as ``candidates``: the slot whose aim is closest, its speed factor), with the
+        ``offset`` that sends the slot's ball where the cue direction ``angle`` sends it (the line of centres at
+        contact), when it is a pot from where the cue ball lies."""
+        out = super().action(state, angle, speed, side, top, place, pocket, push)
+        cands = self.slots(state)
+        if cands.break_shot or cands.in_hand or not cands.slots:
+            return out
+        k = min(int(abs(float(out[0])) * self.n_slots), self.n_slots - 1)
+        if k >= len(cands.slots):
+            return out
+        s = cands.slots[k]
+        b = state.balls
+        cx, cy = float(b.pos[0, 0]), float(b.pos[0, 1])
+        ox, oy = float(b.pos[s.target, 0]), float(b.pos[s.target, 1])
+        d = ray_circle_entry(cx, cy, math.cos(angle), math.sin(angle), ox, oy, float(b.radius[0] + b.radius[s.target]))
+        if not math.isfinite(d) or s.half <= 0.0:
+            return out
+        direction = math.atan2(oy - (cy + math.sin(angle) * d), ox - (cx + math.cos(angle) * d))
+        off = wrap_angle(direction - s.obj_angle) / (OFFSET_SPAN * s.half)
+        m = int(np.argmin(np.abs(np.asarray(OFFSETS) - off)))  # the nearest offset, as the middle of its bin
+        out[self._offset_at] = np.float32(2.0 * (m + 0.5) / len(OFFSETS) - 1.0)
+        return out
+
+
+ACTION_TYPES = {"absolute": AbsoluteAim, "relative": RelativeAim, "ghost": GhostAim, "candidates": CandidateShots,
+                "candidates_aim": CandidateAim}
 
 
 def action_factory(config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
@@ -497,7 +562,7 @@ def action_factory(config: "EnvConfig", placement: bool = False, declarations: t
     return ACTION_TYPES[config.action_type](config, placement, declarations, n_pockets)
 
 
-__all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "CandidateShots", "ACTION_TYPES",
+__all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "CandidateShots", "CandidateAim", "ACTION_TYPES",
            "action_factory", "PLACE_BACK", "PLACE_MAX_CUT", "PLACED_MAX_CUT", "FALLBACK_SPEED",
            "square_to_disc", "disc_to_square", "aim_to_angle", "power_to_speed", "noisy_shot", "AIM_ABSOLUTE",
            "AIM_RELATIVE", "AIM_GHOST"]

@@ -132,7 +132,9 @@ class EnvConfig:
                             "line; the cue ball is struck at the ghost-ball position that sends it there), or "
                             "'candidates' (a[0] chooses one of the candidate shots that pocket a legal ball, easiest "
                             "first; a[1] scales that shot's own speed; with ball in hand the placement is set "
-                            "relative to it: billiards_env.envs.actions.CandidateShots). The target ball is the "
+                            "relative to it: billiards_env.envs.actions.CandidateShots), or 'candidates_aim' "
+                            "('candidates' plus a last dim, offset: where in the pocket's window the object ball "
+                            "is sent; billiards_env.envs.actions.CandidateAim). The target ball is the "
                             "lowest-numbered object ball on the table.", default="absolute")
     ghost_max_angle: float = _doc("action_type 'ghost': the object-ball angle (degrees, 0-90) that |a[0]| = 1 "
                                   "means.", default=90.0)
@@ -167,7 +169,9 @@ class EnvConfig:
                                  "table seen from the target ball: the cue -> target direction and distance, and "
                                  "per pocket the cut it asks for, its distance and how squarely it is entered) or "
                                  "'candidates' (the positions, then the candidate shots of the 'candidates' action "
-                                 "type: pocket, cut, distances, ease, clear paths, scratch risk, speed).",
+                                 "type: pocket, cut, distances, ease, clear paths, scratch risk, speed) or "
+                                 "'candidates_path' (those, then per candidate shot and window offset the powers "
+                                 "that pot it and that send the cue ball into a pocket after contact).",
                                  default="positions")
 
     # --- task: reward and episode ---------------------------------------------------------------------------------

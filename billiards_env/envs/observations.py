@@ -12,6 +12,10 @@
 - :class:`CandidateFeatures` (``"candidates"``): the positions, then the candidate (ball, pocket) shots that the
   ``candidates`` action type chooses among (:mod:`billiards_env.envs.candidates`), a fixed number of slots of 12
   values each (pocket, cut, distances, ease, clear paths, scratch risk, speed), best first.
+- :class:`CuePathFeatures` (``"candidates_path"``): the ``candidates`` values, then per slot where the cue ball goes
+  after contact: at five offsets across the pocket's window, the least ``power`` that pots the ball and the least at
+  which the deflected cue ball follows into a pocket (:mod:`billiards_env.envs.cue_path`); for the
+  ``candidates_aim`` action type.
 
 A game appends its features (the turn, ball in hand, group...: its session's ``features``,
 :mod:`billiards_env.games`), seen by the shooter or by the player asked for (the two-player env).
@@ -30,6 +34,7 @@ from billiards_env.physics.aim import pocket_bearings, pocket_mouth_axes, wrap_a
 
 from ._kernels import observation
 from .candidates import EASY_TOLERANCE, SLOT_FEATURES, candidate_slots, slot_features  # noqa: F401
+from .cue_path import OFFSETS, PATH_FEATURES, offset_rows, power_of, thresholds
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.physics.table import Table
@@ -143,7 +148,51 @@ class CandidateFeatures(ObservationType):
         return slot_features(state, cands, self.n_slots, self.speed_range[1])
 
 
-OBSERVATION_TYPES = {"positions": Positions, "features": ShotFeatures, "candidates": CandidateFeatures}
+class CuePathFeatures(CandidateFeatures):
+    """The ``candidates`` observation, then per slot :data:`~billiards_env.envs.cue_path.PATH_FEATURES` values
+    (where the cue ball goes after contact: :mod:`billiards_env.physics.cue_path`), in
+    the units of the ``power`` dim of the ``candidates`` actions, each clipped to ``[-1, 1]``: for each offset of
+    :data:`OFFSETS` (the ``offset`` dim of :class:`CandidateAim`), ``pot_at``, the least ``a[1]`` at which the
+    object ball reaches its pocket, and ``scratch_at``, the least ``a[1]`` at which the cue ball, deflected, rolls
+    into a pocket (+1 when it stops first at every speed of the range, or when that offset has no shot); then
+    ``top``, the ``a[1]`` of ``speed_max``, beyond which the speed is clipped. Slots without a shot from where the
+    cue ball lies (ball in hand, the kick, empty) read 0."""
+
+    name = "candidates_path"
+
+    def __init__(self, config: "EnvConfig", table: "Table", n_balls: int, n_game_features: int = 0) -> None:
+        n_slots = int(config.candidate_slots)
+        self.log_factor = math.log(float(config.candidate_speed_factor))
+        self._n_path = PATH_FEATURES * n_slots
+        super().__init__(config, table, n_balls, n_game_features)
+        # the parent set n_extra and the space for its own values: widen both
+        self.n_extra = self.n_extra + self._n_path
+        n = 3 * int(n_balls)
+        low = np.concatenate([np.zeros(n, np.float32), -np.ones(self.n_extra, np.float32),
+                              np.zeros(self.n_game, np.float32)])
+        self.space = spaces.Box(low, np.ones_like(low), dtype=np.float32)
+
+    def path_features(self, state: "TableState") -> np.ndarray:
+        """``(candidate_slots, PATH_FEATURES)``: the values above."""
+        out = np.zeros((self.n_slots, PATH_FEATURES), np.float32)
+        cands = candidate_slots(state, self.n_slots, self.speed_range)
+        if not cands.slots or cands.slots[0].shot is None:
+            return out
+        k = len(OFFSETS)
+        thr = thresholds(state, offset_rows(state, cands), self.speed_range[1]).reshape(len(cands.slots), k, 2)
+        for i, s in enumerate(cands.slots):
+            base = s.shot.speed
+            out[i, 0:2 * k] = np.clip(power_of(thr[i], base, self.log_factor), -1.0, 1.0).reshape(-1)
+            out[i, 2 * k] = np.clip(power_of(self.speed_range[1], base, self.log_factor), -1.0, 1.0)
+        return out
+
+    def features(self, state: "TableState") -> np.ndarray:
+        """The ``candidates`` values, then the path values."""
+        return np.concatenate([super().features(state), self.path_features(state).reshape(-1)])
+
+
+OBSERVATION_TYPES = {"positions": Positions, "features": ShotFeatures, "candidates": CandidateFeatures,
+                     "candidates_path": CuePathFeatures}
 
 
 def observation_factory(config: "EnvConfig", table: "Table", n_balls: int, n_game_features: int = 0
@@ -152,5 +201,5 @@ def observation_factory(config: "EnvConfig", table: "Table", n_balls: int, n_gam
     return OBSERVATION_TYPES[config.observation_type](config, table, n_balls, n_game_features)
 
 
-__all__ = ["ObservationType", "Positions", "ShotFeatures", "CandidateFeatures", "OBSERVATION_TYPES",
+__all__ = ["ObservationType", "Positions", "ShotFeatures", "CandidateFeatures", "CuePathFeatures", "OBSERVATION_TYPES",
            "observation_factory", "SLOT_FEATURES"]

@@ -64,7 +64,7 @@ def test_the_pipeline_writes_a_model_and_its_figures(tmp_path):
     assert 0.0 <= saved["stages"][0]["success_rate"] <= 1.0 and rep["run_dir"] == str(run)
     from agents.evaluate import model_player
 
-    assert model_player(run / "bc_model.zip").env_kwargs["action_type"] == "candidates"
+    assert model_player(run / "bc_model.zip").env_kwargs["action_type"] == "candidates_aim"  # its run's env
 
 
 @pytest.mark.slow

@@ -178,6 +178,11 @@ def cases() -> Iterator[tuple[str, Callable[[], str]]]:
                 friction="spin", spin_action=True)
     yield c("pot/BilliardsOneBall-v0/single_shot-penalties", run_single, "BilliardsOneBall-v0", 12, 8,
             miss_penalty=0.5, step_penalty=0.1, scratch_penalty=2.0)
+    yield c("pot/BilliardsOneBall-v0/candidates_aim/candidates_path", run_single, "BilliardsOneBall-v0", 12, 22,
+            action_type="candidates_aim", observation_type="candidates_path", candidate_slots=7,
+            candidate_speed_factor=3.0)
+    yield c("games/Billiards9Ball-v0/candidates_aim/candidates_path", run_single, "Billiards9Ball-v0", 4, 23,
+            action_type="candidates_aim", observation_type="candidates_path")
     # Games: against the default opponent, alone, and the other action / observation types.
     for env_id in GAMES:
         yield c(f"games/{env_id}/default", run_single, env_id, 4, 11)

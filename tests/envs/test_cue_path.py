@@ -1,5 +1,6 @@
-"""The cue ball's path after contact (agents/cue_path.py): the closed-form speed thresholds against the engine's own
-simulation of the same shots, the window offset of the ``candidates_aim`` action, and the observation's layout."""
+"""The cue ball's path after contact (physics/cue_path.py, envs/cue_path.py): the closed-form speed thresholds
+against the engine's own simulation of the same shots, the window offset of the ``candidates_aim`` action type, and
+the ``candidates_path`` observation's layout."""
 from __future__ import annotations
 
 import math
@@ -9,15 +10,15 @@ import numpy as np
 import pytest
 
 import billiards_env  # noqa: F401
-from agents.cue_path import (OFFSETS, PATH_FEATURES, CandidateAimTypes, offset_ghost, offset_of, offset_rows,
-                             path_pocket_speed, thresholds)
+from billiards_env.envs.cue_path import OFFSETS, PATH_FEATURES, offset_ghost, offset_of, offset_rows, thresholds
+from billiards_env.physics.cue_path import path_pocket_speed
 from billiards_env.envs.candidates import candidate_slots
 from billiards_env.physics.batch import run_shots
 
 
 def _env(**kw):
-    return CandidateAimTypes(gym.make("BilliardsOneBall-v0", action_type="candidates", observation_type="candidates",
-                                      candidate_slots=7, candidate_speed_factor=3.0, **kw))
+    return gym.make("BilliardsOneBall-v0", action_type="candidates_aim", observation_type="candidates_path",
+                    candidate_slots=7, candidate_speed_factor=3.0, **kw)
 
 
 def test_a_ball_rolled_at_a_pocket_needs_the_speed_of_its_distance():
@@ -129,8 +130,3 @@ def test_the_observation_and_its_layout():
             assert np.all(path[k] == 0.0)
     obs2, r, term, trunc, info = env.step(env.action_space.sample())
     assert term and env.observation_space.contains(obs2)
-
-
-def test_it_refuses_another_action_type():
-    with pytest.raises(ValueError, match="candidates"):
-        CandidateAimTypes(gym.make("BilliardsOneBall-v0"))
