@@ -11,6 +11,7 @@ import pytest
 from env_helpers import FAST_RENDER, GAME_IDS, IDS, POT_IDS, gym
 from gymnasium.vector import AutoresetMode, SyncVectorEnv
 
+from billiards_env.envs.config import ACTION_TYPES, OBSERVATION_TYPES
 from billiards_env.envs.vector import BilliardsVectorEnv
 
 
@@ -265,8 +266,8 @@ def test_single_env_fast_step_equals_its_python_path(env_id, kwargs):
                 break
 
 
-COMBINATIONS = [(env_id, at, ot, spin) for env_id in IDS for at in ("absolute", "relative", "ghost", "candidates")
-                for ot in ("positions", "features", "candidates") for spin in (False, True)]
+COMBINATIONS = [(env_id, at, ot, spin) for env_id in IDS for at in ACTION_TYPES for ot in OBSERVATION_TYPES
+                for spin in (False, True)]
 
 
 @pytest.mark.parametrize("env_id,action_type,observation_type,spin", COMBINATIONS,
