@@ -28,6 +28,7 @@ the table; the same layouts for every player) and its mean decision time.
 from __future__ import annotations
 
 import argparse
+import importlib
 import itertools
 import json
 import math
@@ -137,10 +138,8 @@ def run_outs(game: str, player: tuple[str, Any], racks: int | Sequence[int], see
     (``opening="ball_in_hand"``; rack and break from ``reset(seed=seed + k)``), player_0 has the cue ball in hand
     anywhere and shoots until the table passes. A run-out is a turn that wins the game (the 9 may drop early on a
     combination: slop counts)."""
-    import importlib
-
     warm_up(game, [player[1]], env_kwargs)
-    module = importlib.import_module(f"billiards_env.multi.{GAMES[game]}")
+    module = _aec_module(game)
     env = module.env(**{**env_kwargs, "opening": "ball_in_hand", "first_shooter": "agent"})
     raw = env.unwrapped
     timed = Timed(player[1])
@@ -202,12 +201,11 @@ _WARM: set[tuple[str, int]] = set()
 def warm_up(game: str, policies: Sequence[Any], env_kwargs: dict[str, Any]) -> None:
     """One untimed decision of each policy on a fresh rack (once per process and policy), so that loading the
     compiled kernels (numba's cache) is not counted in the decision times."""
-    import importlib
 
     todo = [p for p in policies if (game, id(p)) not in _WARM]
     if not todo:
         return
-    module = importlib.import_module(f"billiards_env.multi.{GAMES[game]}")
+    module = _aec_module(game)
     env = module.env(**env_kwargs)
     try:
         for p in todo:
@@ -225,10 +223,9 @@ def play_games(game: str, policies: Sequence[Any], ks: Sequence[int], seed: int,
     ``k`` on ``reset(seed=seed + k)``, policy 0 in seat ``k % 2`` (seats swapped every game) and each policy
     reseeded from ``(seed, k, j)``: :func:`billiards_env.multi.play_match`'s games, so a match cut into chunks and
     played anywhere gives the same games. Counts innings, scores and decision times besides."""
-    import importlib
 
     warm_up(game, policies, env_kwargs)
-    module = importlib.import_module(f"billiards_env.multi.{GAMES[game]}")
+    module = _aec_module(game)
     env = module.env(**env_kwargs)
     raw = env.unwrapped
     timed = [Timed(p) for p in policies]
@@ -459,6 +456,11 @@ def player_stats(pairs: Sequence[PairResult], runs: Sequence[RunOutResult] = ())
 
 
 #: What a game's ``Verdict.scored`` counts (the league's "per inning" column).
+def _aec_module(game: str) -> Any:
+    """The PettingZoo module of ``game`` (``billiards_env.multi.<game>_v0``)."""
+    return importlib.import_module(f"billiards_env.multi.{GAMES[game]}")
+
+
 SCORED = {"nine_ball": "balls", "eight_ball": "balls", "snooker": "points", "three_cushion": "points"}
 
 
@@ -487,12 +489,18 @@ def league_env_kwargs(players: Sequence[tuple[str, Any]], spin: bool, noise: str
     return kw
 
 
-def setting_text(kw: dict[str, Any]) -> str:
-    friction = kw.get("friction") or kw.get("physics", {}).get("friction", "rolling")
-    noise = ", ".join(f"{k} {kw[k]:.4g}" for k in ("angle_noise", "speed_noise", "tip_noise") if kw.get(k))
-    if kw.get("speed_noise_mode") == "absolute":
+def setting_text(game: str, kw: dict[str, Any]) -> str:
+    """The physics and shot noise the league's games are played under: the two-player env's resolved config (the
+    game's defaults where ``kw`` says nothing: three-cushion is played under the spin model by default)."""
+    module = _aec_module(game)
+    env = module.env(**kw)
+    cfg = env.unwrapped.game_env.config
+    env.close()
+    noise = ", ".join(f"{k} {getattr(cfg, k):.4g}" for k in ("angle_noise", "speed_noise", "tip_noise")
+                      if getattr(cfg, k))
+    if cfg.speed_noise_mode == "absolute":
         noise = noise.replace("speed_noise", "speed_noise (m/s)")
-    return f"physics: {friction}" + (", tip offsets in the action" if kw.get("spin_action") else "") + \
+    return f"physics: {cfg.physics.friction}" + (", tip offsets in the action" if cfg.spin_action else "") + \
         f"; shot noise: {noise or 'none'}"
 
 
@@ -509,7 +517,8 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
     say = (lambda *a: None) if quiet else (lambda *a: print(*a, flush=True))
     players = [load_player(s, seed, game) for s in specs]
     kw = league_env_kwargs(players, spin, noise, env_kwargs)
-    say(setting_text(kw) + (f"; on Ray at {address}" if address else f"; {max(workers, 1)} process(es)"))
+    setting = setting_text(game, kw)
+    say(setting + (f"; on Ray at {address}" if address else f"; {max(workers, 1)} process(es)"))
     limits = pair_games or {}
     pool = Pool(workers, address)
     tasks: list[tuple[Any, ...]] = []
@@ -573,7 +582,7 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
                     if v < n_games and any(n == k or sp.startswith(k) for n, sp in zip(names, specs)))
     info = {"game": game, "games": n_games, "fewer": fewer, "seed": seed, "noise": noise, "spin": spin,
             "env_kwargs": kw, "seconds": seconds, "workers": pool.workers, "address": address,
-            "setting": setting_text(kw), "runouts": runouts, "runout_seed": runout_seed, "command": command,
+            "setting": setting, "runouts": runouts, "runout_seed": runout_seed, "command": command,
             "machine": machine_markdown(machine_info())}
     report = {"info": info, "pairs": [asdict(p) for p in pairs], "elo": elo,
               "run_outs": [{**asdict(r), "rate": r.rate, "ci": wilson_interval(r.run_outs, r.racks)} for r in runs],

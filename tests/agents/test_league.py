@@ -155,3 +155,13 @@ def test_every_game_has_a_league(tmp_path, game, extra):
     assert "points per inning" in md and "| random | geometric |" in md
     assert "run-out" in md  # the column, empty: these games have no ball-in-hand opening
     assert main(["--game", game, "--players", "random", "geometric", "--rules", "{oops"]) == 2
+
+
+def test_the_setting_is_the_games_resolved_physics_and_noise():
+    """The report says what the games were played under: a game's own default physics where the league gives
+    none (three-cushion: the spin model with tip offsets), and the noise the option resolves to."""
+    from agents.league import setting_text
+
+    assert setting_text("three_cushion", {}).startswith("physics: spin, tip offsets in the action; shot noise: none")
+    assert setting_text("nine_ball", {}) == "physics: rolling; shot noise: none"
+    assert "angle_noise 0.01" in setting_text("nine_ball", {"angle_noise": 0.01})
