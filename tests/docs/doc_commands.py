@@ -79,6 +79,8 @@ RULES: list[Rule] = [
     Rule(r"python -m agents\.main", "the main job: a tiny budget",
          add="--seconds 4 --episodes 10 --baselines geometric random --gif-episodes 1 --no-progress", slow=True,
          timeout=600),
+    Rule(r"python -m agents\.dataset", "a dataset as written (2000 expert episodes, numba compiles included: a "
+                                        "minute or two on a busy machine)", timeout=300),
     Rule(r"python -m agents\.league", "a league: two games a pair",
          sub=[(r"--games \S+", "--games 2"), (r"--runouts \S+", "--runouts 2")], slow=True, timeout=600),
     Rule(r"python -m agents\.rllib", "RLlib training: two iterations, in the RLlib venv",

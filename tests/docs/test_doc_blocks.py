@@ -90,6 +90,21 @@ def prepare(command: str, box: Path) -> tuple[str, Rule | None]:
     return command, rule
 
 
+def run_group(args: list[str], timeout: float, **kwargs) -> subprocess.CompletedProcess:
+    """``subprocess.run(args, capture_output=True, text=True, stdin=DEVNULL, timeout=timeout, **kwargs)`` in a
+    process group of its own, killed whole on a timeout (a command's worker processes included: none is left
+    running after a failed test)."""
+    proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            stdin=subprocess.DEVNULL, start_new_session=True, **kwargs)
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired as exc:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, err = proc.communicate()
+        raise subprocess.TimeoutExpired(args, timeout, output=out, stderr=err) from exc
+    return subprocess.CompletedProcess(args, proc.returncode, out, err)
+
+
 def run_command(command: str, box: Path, where: str, venv: str | None = None) -> None:
     """Run one docs command in the sandbox as its rule says (in ``venv`` if given: a block of RLlib commands runs
     wholly in the RLlib venv, as the README's reader has activated it); fail with its output if it does not do as
@@ -116,8 +131,7 @@ def run_command(command: str, box: Path, where: str, venv: str | None = None) ->
         return
     started = time.perf_counter()
     try:
-        proc = subprocess.run(["bash", "-c", shell], cwd=cwd, env=env, capture_output=True, text=True,
-                              timeout=rule.timeout, stdin=subprocess.DEVNULL)
+        proc = run_group(["bash", "-c", shell], rule.timeout, cwd=cwd, env=env)
     except subprocess.TimeoutExpired as exc:
         out = (exc.stdout or b"")[-2000:] if isinstance(exc.stdout, bytes) else (exc.stdout or "")[-2000:]
         pytest.fail(f"{where}: `{command}` did not finish within {rule.timeout:.0f} s ({rule.why}); if it is "
@@ -221,8 +235,8 @@ def test_output_sample_matches_the_command(block: Block, tmp_path: Path):
     assert block.lang == "json", f"{block.where}: output-of is checked on JSON blocks"
     box = make_sandbox(tmp_path)
     command, _ = prepare(block.output_of, box)
-    proc = subprocess.run(["bash", "-c", command.replace("python -m ", f"{shlex.quote(sys.executable)} -m ")],
-                          cwd=box, env=_env(), capture_output=True, text=True, timeout=DEFAULT_TIMEOUT)
+    proc = run_group(["bash", "-c", command.replace("python -m ", f"{shlex.quote(sys.executable)} -m ")],
+                     DEFAULT_TIMEOUT, cwd=box, env=_env())
     assert proc.returncode == 0, proc.stderr[-2000:]
     shown, printed = json.loads(block.code, parse_float=_Shown), json.loads(proc.stdout)
     problems = _compare(shown, printed, "$")
@@ -307,8 +321,7 @@ def test_python_blocks_run(doc: str, blocks: list[Block], tmp_path: Path):
     script = tmp_path / "run_blocks.py"
     script.write_text(RUNNER)
     env = _env()
-    proc = subprocess.run([sys.executable, str(script), str(spec)], cwd=box, env=env, capture_output=True,
-                          text=True, timeout=PYTHON_TIMEOUT, stdin=subprocess.DEVNULL)
+    proc = run_group([sys.executable, str(script), str(spec)], PYTHON_TIMEOUT, cwd=box, env=env)
     ran = [line for line in proc.stdout.splitlines() if line.startswith(("PASSED", "FAILED", "SKIPPED"))]
     if proc.returncode != 0:
         pytest.fail(f"{doc}: {ran[-1] if ran else 'the blocks did not start'}\n--- stderr (end)\n"
