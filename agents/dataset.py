@@ -21,10 +21,11 @@ import json
 import os
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor
 from typing import Any
 
 import numpy as np
+
+from .processes import process_pool
 
 DEFAULT_EPISODES = 100
 
@@ -96,7 +97,7 @@ def collect(env_id: str, env_kwargs: dict[str, Any], expert: str, episodes: int,
         remote = ray.remote(play_episodes)
         parts = ray.get([remote.remote(env_id, env_kwargs, expert, c) for c in chunks])
     elif workers > 1:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
+        with process_pool(workers) as pool:
             parts = list(pool.map(play_episodes, [env_id] * len(chunks), [env_kwargs] * len(chunks),
                                   [expert] * len(chunks), chunks))
     else:

@@ -33,13 +33,13 @@ import json
 import os
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 from typing import Any, Sequence
 
 import numpy as np
 import yaml
 
+from .processes import process_pool
 from .config import TrainConfig, load_train_config, parse_hyperparams, wrapper_factory
 from .train import REPO_ROOT, algo_class, env_spec, make_vec_envs, new_run_dir, train
 
@@ -123,7 +123,7 @@ def collect_labels(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
         remote = ray.remote(label_episodes)
         parts = ray.get([remote.remote(*a) for a in args])
     elif workers > 1:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
+        with process_pool(workers) as pool:
             parts = list(pool.map(label_episodes, *zip(*args)))
     else:
         parts = [label_episodes(*a) for a in args]

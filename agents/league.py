@@ -339,9 +339,9 @@ class Pool:
 
             ray.init(address=address, ignore_reinit_error=True, log_to_driver=False)
         elif self.workers > 1:
-            from concurrent.futures import ProcessPoolExecutor
+            from .processes import process_pool
 
-            self._pool = ProcessPoolExecutor(max_workers=self.workers)
+            self._pool = process_pool(self.workers)
 
     def map(self, fn: Any, args: Sequence[tuple[Any, ...]]) -> list[Any]:
         if self.address:
@@ -492,10 +492,10 @@ def league_env_kwargs(players: Sequence[tuple[str, Any]], spin: bool, noise: str
 def setting_text(game: str, kw: dict[str, Any]) -> str:
     """The physics and shot noise the league's games are played under: the two-player env's resolved config (the
     game's defaults where ``kw`` says nothing: three-cushion is played under the spin model by default)."""
-    module = _aec_module(game)
-    env = module.env(**kw)
-    cfg = env.unwrapped.game_env.config
-    env.close()
+    from billiards_env.envs.config import load_config
+
+    game_class = _aec_module(game).raw_env.game_class  # the config only: no env, no kernel run before a fork
+    cfg = load_config(game_class.scene, None, **{**kw, "opponent": None})
     noise = ", ".join(f"{k} {getattr(cfg, k):.4g}" for k in ("angle_noise", "speed_noise", "tip_noise")
                       if getattr(cfg, k))
     if cfg.speed_noise_mode == "absolute":
