@@ -86,7 +86,7 @@ def three_cushion_geometric(n: int, seed: int) -> dict[str, Any]:
         for _ in range(n):
             balls = random_carom(rng, table)
             t0 = time.perf_counter()
-            shot = three_cushion_geometric_shot(balls, table, sim.physics, 0, 1, 2)
+            shot = three_cushion_geometric_shot(balls, table, sim.physics, 0, 1, 2, sim=sim)
             times.append(time.perf_counter() - t0)
             spin = {"side": shot.side, "top": shot.top} if law == "spin" else {}
             res = sim.run(balls.strike(0, shot.angle, shot.speed, **spin), validate=False)

@@ -40,6 +40,8 @@ from billiards_env.rules.three_cushion import CUSHIONS_NEEDED, scan_carom_batch
 
 #: Tip offset (ball radii above the centre) that sets a struck ball rolling at once (``2/5 R``).
 NATURAL_ROLL = 0.4
+#: Under the spin model: how many of its scoring aims the geometric player has the engine play (one batch).
+GEOMETRIC_CHECKED = 40
 
 
 @dataclass(frozen=True)
@@ -211,15 +213,19 @@ def _trace(x: float, y: float, ux: float, uy: float, speed: float, bx: float, by
 def three_cushion_geometric_shot(balls: Balls, table: Table, physics: Physics, cue: int, opponent: int, red: int,
                                  speed_range: tuple[float, float] = (0.5, 6.0), cuts: int = 61,
                                  after_speeds: tuple[float, ...] = (1.2, 2.0, 3.0),
-                                 max_bounces: int = 6, red_first: bool = False) -> CaromShot:
+                                 max_bounces: int = 6, red_first: bool = False,
+                                 sim: Simulator | None = None, checked: int = GEOMETRIC_CHECKED) -> CaromShot:
     """The geometric player's three-cushion shot, without the simulator: ball-first shots cutting each object
     ball from thin to full (``cuts`` aims), the cue ball leaving along the collision law's deflection
     (:func:`~billiards_env.physics.aim.deflected_cue_velocity`, no spin, no throw) at each of ``after_speeds``,
     then bouncing off the cushions in straight lines (the table's restitution, the rolling law). A shot scores in
     this model when that path meets the other ball after three cushions or more. Of each run of neighbouring
     scoring aims the middle one is played, from the widest run (the margin for error). ``red_first``: only shots
-    that meet the red first (the opening shot). The tip stays in the centre; the model ignores the spin model's
-    sliding and curving, which is what the search player simulates."""
+    that meet the red first (the opening shot). Under the rolling law the tip stays in the centre. Under the spin
+    model the cue ball rolls (top ``NATURAL_ROLL``) and its straight lines are only a guess (it slides and curves
+    after contact and off each cushion): with ``sim`` given, the model's scoring aims, widest run and middle first
+    (at most ``checked``), are played in one batch of the engine and the first that scores is chosen (else the
+    model's own choice). The search player simulates far more shots, with spin."""
     c = balls.pos[cue]
     rc = float(balls.radius[cue])
     mc = float(balls.mass[cue])
@@ -229,6 +235,7 @@ def three_cushion_geometric_shot(balls: Balls, table: Table, physics: Physics, c
     top = NATURAL_ROLL if spin else 0.0
     lo, hi = speed_range
     best: tuple[int, float, float, float] | None = None  # (run length, angle, speed, cushions)
+    ranked: list[tuple[int, float, int, float, float, int]] = []  # (-run, off the middle, order, angle, speed, cushions)
     for first, second in ((red, opponent), (opponent, red)) if not red_first else ((red, opponent),):
         a = balls.pos[first]
         b = balls.pos[second]
@@ -278,9 +285,23 @@ def three_cushion_geometric_shot(balls: Balls, table: Table, physics: Physics, c
                 mid = shots[(start + k - 1) // 2]
                 if best is None or k - start > best[0]:
                     best = (k - start, mid[0], mid[1], mid[2])
+                for q in range(start, k):
+                    ranked.append((start - k, abs(q - (start + k - 1) / 2), len(ranked), *shots[q]))
     if best is None:  # nothing in the model: a firm full hit on the red
         return CaromShot(aim_angle(c, balls.pos[red]), float(min(max(3.0, lo), hi)), 0.0, top, False, 0.0, 0, 0)
     run, angle, speed, cushions = best
+    if sim is not None and spin:
+        ranked.sort()
+        rows = ranked[:checked]
+        a = np.array([r[3] for r in rows])
+        v = np.array([r[4] for r in rows])
+        _, cush, _, _, point = _simulate(sim, balls, cue, opponent, red, a, v, np.zeros(len(rows)),
+                                         np.full(len(rows), top), red_first)
+        hit = np.flatnonzero(point)
+        if hit.size:
+            r = rows[int(hit[0])]
+            return CaromShot(float(r[3]), float(r[4]), 0.0, top, True, -r[0] / cuts, int(cush[hit[0]]), len(rows))
+        return CaromShot(float(angle), float(speed), 0.0, top, False, run / cuts, int(cushions), len(rows))
     return CaromShot(float(angle), float(speed), 0.0, top, True, run / cuts, int(cushions), 0)
 
 
@@ -334,7 +355,7 @@ class CaromGeometricPlayer(_CaromPlayer):
 
     def _shot(self, state: Any, opening: bool) -> CaromShot:
         return three_cushion_geometric_shot(state.balls, state.table, state.physics, 0, 1, 2,
-                                            state.settings.speed_range, red_first=opening)
+                                            state.settings.speed_range, red_first=opening, sim=state.simulator)
 
 
 __all__ = ["CaromSearchSettings", "CaromShot", "three_cushion_shot", "three_cushion_geometric_shot",

@@ -112,3 +112,26 @@ def test_the_referee_plays_the_squirt_of_the_physics():
     unturned = sim.run(balls.strike(0, shot.angle, shot.speed, shot.side, shot.top))
     assert np.array_equal(played.pos, squirted.balls.pos)
     assert not np.allclose(played.pos, unturned.balls.pos, atol=1e-3)
+
+
+def test_geometric_player_under_spin_plays_an_aim_the_engine_scores():
+    """Under the spin model the straight lines are a guess: given the simulator, the geometric player has the
+    engine play its scoring aims and chooses one that scores, on most random positions (without it: hardly any)."""
+    from billiards_env.physics.layout import place_random
+
+    rng = np.random.default_rng(7)
+    checked = unchecked = 0
+    n = 12
+    r = CAROM_BALL_RADIUS
+    for _ in range(n):
+        pos = np.zeros((3, 2))
+        place_random(rng, pos, [0, 1, 2], [(r, TABLE.length - 2 * r, r, TABLE.width - 2 * r)] * 3, [], [], 0.0,
+                     2 * r + 1e-3)
+        balls = Balls.from_positions(pos, ids=CAROM_IDS, radius=r, mass=CAROM_BALL_MASS)
+        shot = three_cushion_geometric_shot(balls, TABLE, SIM.physics, 0, 1, 2, sim=SIM)
+        assert shot.top == 0.4 and shot.side == 0.0 and shot.simulated <= 40
+        if shot.point:
+            assert scores(balls, shot)  # what it says scores, scores
+        checked += scores(balls, shot)
+        unchecked += scores(balls, three_cushion_geometric_shot(balls, TABLE, SIM.physics, 0, 1, 2))
+    assert checked >= n // 2 and checked > unchecked
