@@ -51,7 +51,7 @@ from billiards_env.shot_path import noisy_shot
 
 from ._kernels import observation
 from .actions import (AIM_ABSOLUTE, AIM_RELATIVE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, PLACED_MAX_CUT,
-                      aim_to_angle, power_to_speed, square_to_disc)
+                      aim_to_angle, disc_to_square, power_to_speed, square_to_disc)
 from .candidates import _slot_features, kick_of
 
 #: The ``candidates`` action type (``J_AIM``).
@@ -133,25 +133,6 @@ def _area(st: np.ndarray, cfg: np.ndarray, area: np.ndarray) -> bool:
 @njit(cache=True)
 def _wrap(angle: float) -> float:
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
-
-
-@njit(cache=True)
-def _clip(v: float) -> float:
-    return -1.0 if v < -1.0 else (1.0 if v > 1.0 else v)
-
-
-@njit(cache=True)
-def _disc_to_square(u: float, v: float) -> tuple:
-    """``actions.disc_to_square``."""
-    r = py_hypot(u, v)
-    if r > 1.0:
-        u, v = u / r, v / r
-    s2 = 2.0 * math.sqrt(2.0)
-    a = 2.0 + u * u - v * v
-    b = 2.0 - u * u + v * v
-    x = 0.5 * math.sqrt(max(a + s2 * u, 0.0)) - 0.5 * math.sqrt(max(a - s2 * u, 0.0))
-    y = 0.5 * math.sqrt(max(b + s2 * v, 0.0)) - 0.5 * math.sqrt(max(b - s2 * v, 0.0))
-    return _clip(x), _clip(y)
 
 
 @njit(cache=True)
@@ -241,7 +222,7 @@ def _action_of_shot(code: int, max_ghost: float, angle: float, speed: float, pla
         out[0] = _aim(code, angle, pos[0, 0], pos[0, 1], t, pos, radius, max_ghost)
     out[1] = 2.0 * (speed - cfg[K_SPEED_LO]) / cfg[K_SPEED_SPAN] - 1.0
     if icfg[J_SPIN_DIMS]:
-        out[2], out[3] = _disc_to_square(0.0 / cfg[K_MAX_TIP], 0.0 / cfg[K_MAX_TIP])
+        out[2], out[3] = disc_to_square(0.0 / cfg[K_MAX_TIP], 0.0 / cfg[K_MAX_TIP])
     if icfg[J_POCKET_AT] >= 0:
         n = icfg[J_N_POCKETS]
         k = 0 if pocket < 0 else min(max(pocket, 0), n - 1)

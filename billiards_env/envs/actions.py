@@ -38,6 +38,7 @@ from gymnasium import spaces
 from numba import njit
 
 from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_aim, ray_circle_entry, wrap_angle)
+from billiards_env.physics.layout import py_hypot
 from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_POCKET, COL_SPEED, SPEED_FACTORS, ghost_shots,
                                             state_model)
 from billiards_env.players.shots import direct_hit
@@ -52,6 +53,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from .config import EnvConfig
 
 
+@njit(cache=True)
 def _clip(v: float) -> float:
     return -1.0 if v < -1.0 else (1.0 if v > 1.0 else v)
 
@@ -89,9 +91,11 @@ def square_to_disc(x: float, y: float) -> tuple:
     return x * math.sqrt(1.0 - 0.5 * y * y), y * math.sqrt(1.0 - 0.5 * x * x)
 
 
-def disc_to_square(u: float, v: float) -> tuple[float, float]:
-    """Inverse of :func:`square_to_disc` (points outside the unit disc are first moved onto its rim)."""
-    r = math.hypot(u, v)
+@njit(cache=True)
+def disc_to_square(u: float, v: float) -> tuple:
+    """Inverse of :func:`square_to_disc` (points outside the unit disc are first moved onto its rim); compiled, so
+    the native games' kernels call it too (``py_hypot``: CPython's hypot, bit for bit)."""
+    r = py_hypot(u, v)
     if r > 1.0:
         u, v = u / r, v / r
     s2 = 2.0 * math.sqrt(2.0)
