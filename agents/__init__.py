@@ -9,3 +9,5 @@
 
 See ``agents/README.md``.
 """
+
+import billiards_env  # noqa: E402,F401  (first: it sets numba's OpenMP wait policy before torch loads OpenMP)

@@ -12,7 +12,11 @@ Importing the package registers the environment ids with Gymnasium (the list: :d
 
     env = gym.make("BilliardsOneBall-v0")  # every id: billiards_env.ENV_IDS
 """
-from .registration import ENV_IDS, register_envs
+from ._openmp import default_wait_policy
+
+default_wait_policy()  # before numba's thread pool starts (see ._openmp)
+
+from .registration import ENV_IDS, register_envs  # noqa: E402
 
 register_envs()
 
