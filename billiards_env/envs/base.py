@@ -49,6 +49,19 @@ from .tasks import Driver
 RENDER_MODES = ["human", "rgb_array", "rgb_array_list"]
 
 
+
+def frame_shares(durations: list[float], cap: int) -> list[int]:
+    """How many frames each of a step's shots gets when they must share ``cap`` frames (``rgb_array_list``): while
+    ``cap`` allows two a shot (its first and last state), two each and the rest in proportion to the shots'
+    durations; else one (its last state) for each of the last ``cap`` shots and none for the earlier ones. The
+    shares sum to at most ``cap``."""
+    n = len(durations)
+    if cap >= 2 * n:
+        total = sum(durations) or 1.0
+        spare = cap - 2 * n
+        return [2 + int(spare * d / total) for d in durations]
+    return [0] * max(n - cap, 0) + [1] * min(n, cap)
+
 class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     """Base class of the billiards environments (see the subclasses for each id's manual).
 
@@ -538,9 +551,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         cap = self.config.render_max_frames
         times = [self.animation_times(t.duration) for t, _ in shots]
         if self.render_mode == "rgb_array_list" and cap and sum(len(t) for t in times) > cap:
-            total = sum(float(t.duration) for t, _ in shots) or 1.0
-            times = [np.linspace(0.0, float(t.duration), max(2, int(cap * float(t.duration) / total)))
-                     for t, _ in shots]
+            shares = frame_shares([float(t.duration) for t, _ in shots], cap)
+            times = [np.linspace(0.0, float(t.duration), m) if m > 1 else np.full(m, float(t.duration))
+                     for (t, _), m in zip(shots, shares)]
         for k, ((trajectory, view), when) in enumerate(zip(shots, times)):
             self._animate(trajectory, view, final=k == len(shots) - 1, times=when)
 
@@ -557,6 +570,11 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
 
         if times is None:
             times = self.animation_times(trajectory.duration)
+        if len(times) == 0:  # a shot the frame cap leaves out: only the balls' turning is carried on
+            times = np.array([float(trajectory.duration)])
+            if self._spin:
+                self._orientations = sample_frames(trajectory, times, self._orientations_now())[2][-1]
+            return
         pos, on, turned = sample_frames(trajectory, times, self._orientations_now() if self._spin else None)
         if turned is not None:
             self._orientations = turned[-1]

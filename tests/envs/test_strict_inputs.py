@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from env_helpers import gym
 
+from billiards_env.envs.base import frame_shares
 from billiards_env.envs.config import ConfigError
 
 
@@ -139,3 +140,33 @@ def test_a_recorded_step_draws_at_most_render_max_frames():
     uncapped.render()
     uncapped.step(np.zeros(4, np.float32))
     assert len(uncapped.render()) > 40  # a break lasts seconds at 30 fps: the cap above did bite
+
+
+@pytest.mark.parametrize("n_shots", [1, 3, 7, 19, 20, 21, 45])
+@pytest.mark.parametrize("cap", [1, 2, 5, 40])
+def test_frame_shares_never_exceed_the_cap_and_keep_the_last_state(n_shots, cap):
+    rng = np.random.default_rng(n_shots * 100 + cap)
+    durations = list(rng.exponential(2.0, n_shots) * rng.integers(0, 2, n_shots))  # some shots last 0 s
+    shares = frame_shares(durations, cap)
+    assert len(shares) == n_shots
+    assert sum(shares) <= cap
+    assert shares[-1] >= 1  # the table after the step is always drawn
+    if cap >= 2 * n_shots:
+        assert min(shares) >= 2  # every shot's first and last state
+    else:
+        assert shares == sorted(shares)  # the latest shots are the ones kept
+
+
+def test_many_short_shots_in_one_step_stay_under_the_frame_cap():
+    """A game reply of many shots: the floors of two frames a shot used to push the total past the cap."""
+    env = gym.make("Billiards9Ball-v0", render_mode="rgb_array_list", render_width=64, render_max_frames=40)
+    inner = env.unwrapped
+    inner.reset(seed=0)
+    inner.render()
+    rng = np.random.default_rng(3)
+    for _ in range(40):
+        *_, term, trunc, info = inner.step(rng.uniform(-1, 1, inner.action_space.shape).astype(np.float32))
+        assert 1 <= len(inner.render()) <= 40
+        if term or trunc:
+            inner.reset(seed=1)
+            inner.render()
