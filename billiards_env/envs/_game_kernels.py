@@ -21,7 +21,7 @@ single env with the same seed and actions, bit for bit (``tests/envs/test_vector
   (``PoolSession.features``).
 
 Random numbers come from each table's ``numpy.random.Generator`` in the single env's order. What is not compiled
-(the ``features`` observation type, reset options, the info dicts) is done per table in Python by
+(the ``features`` observation type and reset options per table, the infos as arrays) is done in Python by
 :mod:`._vector_games`, from the records these functions write (``R_*`` columns per shot).
 """
 from __future__ import annotations
