@@ -144,7 +144,7 @@ def _speed_to_travel(d: float, v_end: float, tm: Model) -> float:
 def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: float, w_half: float, w_dist: float,
              pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, tm: Model,
              lo: float, hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool,
-             scratch: np.ndarray, floor: float = -math.inf) -> bool:
+             scratch: np.ndarray, floor: float = -math.inf, obj_clear: int = -1) -> bool:
     """The ghost-ball shot from the cue ball at ``(cx, cy)`` sending ball ``j`` into pocket ``p`` through its
     window ``(w_angle, w_half, w_dist)``, written into ``out`` (a row of :data:`N_COLS`); False (and ``out``
     untouched) when there is none: the ghost ball on the cue ball, a cut beyond ``max_cut``, or the ghost ball off
@@ -156,7 +156,9 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     ease (``COL_TOL``): the pocket window seen from the ball scaled by ``(rc + ro) cos(cut) / (d_cue + rc + ro)``;
     the score divides it by 10 when a path is blocked, by 3 when the speed is out of range and by 2 for the
     scratch risk. ``scratch``: a (2, 2) work array. ``floor``: skip (return False) a shot whose ease cannot
-    beat it (the score is at most the tolerance), before its paths and speeds are worked out."""
+    beat it (the score is at most the tolerance), before its paths and speeds are worked out, or whose path is
+    blocked and a tenth of its ease cannot beat it, before its speeds. ``obj_clear``: the object ball's clear path
+    (:func:`object_path_clear`) when known (0 or 1; -1: work it out), the same from every cue position."""
     rc = radius[cue]
     mc = mass[cue]
     ox = pos[j, 0]
@@ -183,8 +185,13 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     tol = w_half * (rc + ro) * cos_cut / (d_cue + rc + ro)
     if tol <= floor:
         return False
-    clear_obj = not segment_blocked_by(ox, oy, ox + ux * w_dist, oy + uy * w_dist, pos, on, radius, cue, j, ro)
+    if obj_clear < 0:
+        clear_obj = object_path_clear(ox, oy, ux, uy, w_dist, pos, on, radius, cue, j)
+    else:
+        clear_obj = obj_clear != 0
     clear = clear_obj and not segment_blocked_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc)
+    if not clear and tol / 10.0 <= floor:  # its score is at most tol / 10: it cannot beat the floor either
+        return False
     collide_into(scratch, 1.0 * cos_cut, 0.0, 0.0, 0.0, -1.0, 0.0, mc, mo, e)
     transfer = scratch[1, 0]  # object ball speed per unit impact speed
     speed = hi
@@ -240,6 +247,15 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     out[COL_SCORE] = score
     out[COL_CLEAR_OBJ] = 1.0 if clear_obj else 0.0
     return True
+
+
+@njit(cache=True)
+def object_path_clear(ox: float, oy: float, ux: float, uy: float, w_dist: float, pos: np.ndarray, on: np.ndarray,
+                      radius: np.ndarray, cue: int, j: int) -> bool:
+    """Whether ball ``j`` at ``(ox, oy)`` rolls ``w_dist`` along ``(ux, uy)`` (its pocket window's centre) without
+    touching a ball of the table other than the cue ball: the object ball's half of :func:`shot_row`'s clear path,
+    the same from wherever the cue ball is."""
+    return not segment_blocked_by(ox, oy, ox + ux * w_dist, oy + uy * w_dist, pos, on, radius, cue, j, radius[j])
 
 
 @njit(cache=True)
@@ -353,9 +369,11 @@ def place_for_shot(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np
     best_score = -1.0
     have = False
     r = radius[cue]
+    obj_clear = np.full(k_p, -1, np.int64)  # the object ball's clear path to each pocket (-1: not worked out yet)
     for t in range(targets.shape[0]):
         j = targets[t]
         contact = r + radius[j]
+        obj_clear[:] = -1
         for p in range(k_p):
             w = windows[t, p]
             if w[WIN_FOUND] == 0.0:
@@ -371,12 +389,17 @@ def place_for_shot(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np
                 if on[j] and j != cue:
                     for q in range(k_p):
                         wq = windows[t, q]
+                        if wq[WIN_FOUND] == 0.0:
+                            continue
+                        if obj_clear[q] < 0:
+                            obj_clear[q] = object_path_clear(pos[j, 0], pos[j, 1], math.cos(wq[WIN_ANGLE]),
+                                                             math.sin(wq[WIN_ANGLE]), wq[WIN_DIST], pos, on, radius,
+                                                             cue, j)
                         # A shot whose ease cannot beat the best place so far, nor this place's best shot, cannot
                         # change the choice: skipped before its paths and speeds.
-                        if wq[WIN_FOUND] != 0.0 and shot_row(row, px, py, j, q, wq[WIN_ANGLE], wq[WIN_HALF],
-                                                             wq[WIN_DIST], pos, on, radius, mass, cue, tm, lo, hi,
-                                                             max_cut, arrive, factors, True, scratch,
-                                                             max(best_score, score)):
+                        if shot_row(row, px, py, j, q, wq[WIN_ANGLE], wq[WIN_HALF], wq[WIN_DIST], pos, on, radius,
+                                    mass, cue, tm, lo, hi, max_cut, arrive, factors, True, scratch,
+                                    max(best_score, score), obj_clear[q]):
                             if row[COL_SCORE] > score:
                                 score = row[COL_SCORE]
                 if score < 0.0:
