@@ -187,6 +187,8 @@ class GameTables:
         self.reward = np.zeros(n)
         self.tout = np.zeros((n, gk.N_T), np.int64)
         self.kc = np.zeros((n, gk.N_KC))  # each table's kick cache (the candidates types)
+        # Each table's cache of its balls' pocket windows (the geometric opponent's decisions; by position).
+        self.windows = (np.zeros((n, nb, 2)), np.zeros((n, nb, tm.pocket_r.shape[0], 4)), np.zeros((n, nb), np.bool_))
         self.n_game = session.n_features
         # One table state per table (views of the batch arrays) for what stays in Python.
         self.states = []
@@ -233,7 +235,8 @@ class GameTables:
         with _thread_count(threads):
             gk.play_tables(rows, resets, act, self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts,
                            v._gen_list(), self.gst, self.opts, self.cfg, self.icfg, *self.tables, self.layout,
-                           self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs)
+                           self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs,
+                           self.windows)
         self._check(rows)
         for k in rows.tolist():
             self.states[k].changed()

@@ -125,6 +125,29 @@ def windows_of(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Mod
 
 
 @njit(cache=True)
+def windows_cached(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Model, cache_pos: np.ndarray,
+                   cache_win: np.ndarray, cache_have: np.ndarray) -> np.ndarray:
+    """:func:`windows_of` (its samples) with a table's cache of its balls' windows: ball ``j``'s are taken from
+    ``cache_win[j]`` when ``cache_have[j]`` and it stands exactly where they were worked out (``cache_pos[j]``),
+    else worked out and kept. A ball's windows depend on its position alone (the table's model fixed), so they are
+    the same numbers either way."""
+    k_p = tm.pocket_r.shape[0]
+    out = np.zeros((targets.shape[0], k_p, 4))
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if cache_have[j] and cache_pos[j, 0] == pos[j, 0] and cache_pos[j, 1] == pos[j, 1]:
+            out[t] = cache_win[j]
+            continue
+        pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
+                       WINDOW_SAMPLES, out[t])
+        cache_win[j] = out[t]
+        cache_pos[j, 0] = pos[j, 0]
+        cache_pos[j, 1] = pos[j, 1]
+        cache_have[j] = True
+    return out
+
+
+@njit(cache=True)
 def target_windows(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, pocket_xy: np.ndarray,
                    pocket_r: np.ndarray, params: np.ndarray) -> np.ndarray:
     """:func:`windows_of` on a :class:`TableModel`'s arrays (41 samples)."""
@@ -433,6 +456,29 @@ def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
     (ball in hand), ``rows`` the ranked ghost-ball shots from where it is played (cut up to
     ``max(max_cut, 88 deg)``), ``shot_row`` the index of the one played (-1: the break or the fallback direct hit),
     ``status`` 0, or 1 when ball in hand found no legal point."""
+    return _decision(pos, on, radius, mass, cue, targets, pocket_xy, pocket_r, params, lo, hi, area, in_hand, is_break,
+                     max_cut, np.zeros((0, 2)), np.zeros((0, 1, 4)), np.zeros(0, np.bool_))  # (no cache)
+
+
+@njit(cache=True)
+def geometric_decision_cached(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                              targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray,
+                              lo: float, hi: float, area: np.ndarray, in_hand: bool, is_break: bool, max_cut: float,
+                              cache_pos: np.ndarray, cache_win: np.ndarray, cache_have: np.ndarray) -> tuple:
+    """:func:`geometric_decision_arrays` with a table's cache of its balls' pocket windows (:func:`windows_cached`:
+    ``cache_pos`` (B, 2), ``cache_win`` (B, K, 4), ``cache_have`` (B,) False at first), kept between the decisions
+    on one table: the balls that have not moved keep theirs. The same decision, bit for bit."""
+    return _decision(pos, on, radius, mass, cue, targets, pocket_xy, pocket_r, params, lo, hi, area, in_hand, is_break,
+                     max_cut, cache_pos, cache_win, cache_have)
+
+
+@njit(cache=True)
+def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, targets: np.ndarray,
+              pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float, hi: float, area: np.ndarray,
+              in_hand: bool, is_break: bool, max_cut: float, cache_pos: np.ndarray, cache_win: np.ndarray,
+              cache_have: np.ndarray) -> tuple:
+    """:func:`geometric_decision_arrays`, with the windows from the cache when one is given (``cache_have`` not
+    empty)."""
     tm = model(pocket_xy, pocket_r, params)
     factors = np.array(SPEED_FACTORS)
     empty = np.empty((0, N_COLS))
@@ -455,7 +501,10 @@ def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
         if j < 0:
             j = cue
         return px, py, in_hand, math.atan2(pos[j, 1] - cy, pos[j, 0] - cx), hi, -1, empty, 0
-    windows = windows_of(pos, radius, targets, tm)
+    if cache_have.shape[0] == 0:
+        windows = windows_of(pos, radius, targets, tm)
+    else:
+        windows = windows_cached(pos, radius, targets, tm, cache_pos, cache_win, cache_have)
     if in_hand:
         backs = np.array(PLACE_BACKS)
         px, py, ok = place_for_shot(pos, on, radius, mass, cue, targets, windows, tm, lo, hi, max_cut, area, backs,
@@ -687,7 +736,8 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
     return Decision((float(px), float(py)) if placed else None, float(angle), float(speed), pocket, int(k), rows)
 
 
-__all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "target_windows", "shot_row",
+__all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "windows_cached",
+           "geometric_decision_cached", "target_windows", "shot_row",
            "rank_rows", "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "pot_chance",
            "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",
