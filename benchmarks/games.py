@@ -338,6 +338,8 @@ class GameRecord:
         self.shot_args = (sim._kernels.exact, pos, vel, ang, on, radius, mass, sim._pocket_xy, sim._pocket_r,
                           sim._params, int(sim.max_events))
         assert all(d[5] == 0 for d in decisions), "the games' cue ball is row 0"
+        if not decisions:  # (a tiny run whose opponent never shot)
+            decisions.append((pos[0], on[0], np.arange(1, radius.shape[0], dtype=np.int64), None, False, 0))
         counts = np.array([len(d[2]) for d in decisions], np.int64)
         targets = np.zeros((len(decisions), radius.shape[0]), np.int64)
         for i, d in enumerate(decisions):
