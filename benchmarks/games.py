@@ -11,7 +11,10 @@
 - the geometric decision (``geometric_decision`` on the env's arrays, ball in hand and breaks included) median and
   worst over the tables of seeded games, and the search decision (``SearchPlayer.act``; 9-ball, breaks excluded)
   median, its time in the batch simulation and its own, and the shots it simulates;
-- the native vector env (``gymnasium.make_vec(id, 256)``) with the geometric opponent: agent steps per second;
+- the native vector env (``gymnasium.make_vec(id, 256)``) with the geometric opponent: agent steps per second, the
+  CPU time in its compiled kernel and in Python; the physics bound (:func:`physics_bound`: the same games' shots
+  replayed through the exact kernel alone, the agent steps per CPU-second if nothing but the simulation cost), and
+  the shots per step, events per shot, and physics and geometric decisions per shot beside it;
 - the 9-ball training job's env (``configs/train/nine_ball_sac.yaml``, run-out practice, and
   ``nine_ball_sac_vs_geometric.yaml``, games against the geometric player): its ``n_envs`` single envs stepped in
   turn as SB3's DummyVecEnv steps them, random actions, shots per CPU-second. *Before*: the same envs with the Python
@@ -24,6 +27,7 @@ Prints the figures (and the targets); writes ``games.json`` and ``games.md`` onl
 from __future__ import annotations
 
 import contextlib
+import os
 import statistics
 import time
 from pathlib import Path
@@ -33,6 +37,23 @@ from typing import Any, Callable, Iterator
 import numpy as np
 
 from .common import fmt_rate, fmt_time, load_now, log, machine_info, machine_markdown, publish, rerender, time_call
+
+
+
+def njit_lazy(fn: Callable[..., Any]) -> Callable[..., Any]:
+    """``fn`` compiled by numba on its first call (numba imported then, not when the benchmarks are listed)."""
+    compiled: list[Any] = []
+
+    def call(*args: Any) -> Any:
+        if not compiled:
+            from numba import njit
+
+            compiled.append(njit(fn))
+        return compiled[0](*args)
+
+    call.__doc__ = fn.__doc__
+    return call
+
 
 GAMES = ("Billiards9Ball-v0", "Billiards8Ball-v0")
 #: The single-env configurations timed (name, env kwargs).
@@ -50,9 +71,9 @@ JOB_CONFIGS = ("configs/train/nine_ball_sac.yaml", "configs/train/nine_ball_sac_
 def _sizes(quick: bool) -> dict[str, Any]:
     if quick:
         return {"seconds": 0.6, "rounds": 2, "games": 3, "steps": 10, "search_every": 3, "vector_tables": 64,
-                "vector_seconds": 1.0, "job_seconds": 0.8}
+                "vector_seconds": 1.0, "job_seconds": 0.8, "bound_steps": 60, "bound_repeats": 2}
     return {"seconds": 6.0, "rounds": 3, "games": 20, "steps": 30, "search_every": 1, "vector_tables": 256,
-            "vector_seconds": 6.0, "job_seconds": 8.0}
+            "vector_seconds": 6.0, "job_seconds": 8.0, "bound_steps": 1500, "bound_repeats": 6}
 
 
 # --- single env: shots and steps per second ----------------------------------------------------------------------
@@ -183,29 +204,198 @@ def _stats(times: list[float]) -> dict[str, Any]:
 
 # --- the native vector env ---------------------------------------------------------------------------------------
 
-def vector_rate(env_id: str, n: int, seconds: float, **kwargs: Any) -> dict[str, Any]:
+def vector_rate(env_id: str, n: int, seconds: float, rounds: int = 1, between: Callable[[], Any] | None = None,
+                **kwargs: Any) -> dict[str, Any]:
     """Agent steps per second of ``gymnasium.make_vec(env_id, n)`` with seeded uniform random actions (and shots,
-    from ``info["opponent_shots"]``); a table resetting (the step after its episode ended) counts no agent step."""
+    from ``info["opponent_shots"]``); a table resetting (the step after its episode ended) counts no agent step.
+    The CPU time inside the compiled ``play_tables`` calls (the games' kernel: physics, rules, opponents) is timed
+    apart: the rest of the step (the infos, the autoreset's bookkeeping) is Python. ``seconds`` in ``rounds``
+    slices, ``between`` called after each (other timings interleaved with these, under the same load)."""
     import gymnasium as gym
+
+    from billiards_env.envs import _game_kernels as gk
 
     vec = gym.make_vec(env_id, n, **kwargs)
     rng = np.random.default_rng(0)
+    kernel = [0.0]
+    play = gk.play_tables
+
+    def timed_play(*args: Any) -> None:
+        c = time.process_time()
+        play(*args)
+        kernel[0] += time.process_time() - c
+
+    steps = shots = 0
+    wall = cpu = 0.0
     try:
         vec.reset(seed=0)
         vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))  # compile outside the timing
-        steps = shots = 0
-        t0, c0 = time.perf_counter(), time.process_time()
-        while steps == 0 or time.perf_counter() - t0 < seconds:  # one step at least
-            _, _, _, _, info = vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))
-            stepped = int(np.sum(info.get("_shots", np.ones(n, np.bool_))))  # (tables resetting took no shot)
-            steps += stepped
-            shots += stepped + int(np.sum(info.get("opponent_shots", 0)))
-        wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+        for _ in range(rounds):
+            gk.play_tables = timed_play
+            t0, c0 = time.perf_counter(), time.process_time()
+            first = True
+            while first or time.perf_counter() - t0 < seconds / rounds:  # one step at least
+                first = False
+                _, _, _, _, info = vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))
+                stepped = int(np.sum(info.get("_shots", np.ones(n, np.bool_))))  # (tables resetting took no shot)
+                steps += stepped
+                shots += stepped + int(np.sum(info.get("opponent_shots", 0)))
+            wall += time.perf_counter() - t0
+            cpu += time.process_time() - c0
+            gk.play_tables = play
+            if between is not None:
+                between()
         native = bool(getattr(vec.unwrapped, "native", False))
     finally:
+        gk.play_tables = play
         vec.close()
     return {"tables": n, "native": native, "steps": steps, "shots": shots, "wall_s": wall, "cpu_s": cpu,
-            "steps_per_s": steps / wall, "shots_per_s": shots / wall, "steps_per_cpu_s": steps / max(cpu, 1e-9)}
+            "steps_per_s": steps / wall, "shots_per_s": shots / wall, "steps_per_cpu_s": steps / max(cpu, 1e-9),
+            "kernel_cpu_s": kernel[0], "kernel_us_per_shot": 1e6 * kernel[0] / max(shots, 1),
+            "python_share": 1.0 - kernel[0] / max(cpu, 1e-9)}
+
+
+@njit_lazy
+def _replay_shots(kernel: Any, pos: np.ndarray, vel: np.ndarray, ang: np.ndarray, on: np.ndarray, radius: np.ndarray,
+                  mass: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray,
+                  max_events: int) -> int:
+    """Every recorded shot (start states ``pos``, ``vel``, ``ang``, ``on``, one row per shot) through the exact
+    kernel, as the games' kernel calls it; returns the events simulated."""
+    events = 0
+    for i in range(pos.shape[0]):
+        res = kernel(pos[i].copy(), vel[i].copy(), ang[i].copy(), radius, mass, on[i].copy(), pocket_xy, pocket_r,
+                     params, max_events, False)
+        events += res.n_events
+    return events
+
+
+@njit_lazy
+def _replay_decisions(decide: Any, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray,
+                      targets: np.ndarray, counts: np.ndarray, area: np.ndarray, in_hand: np.ndarray,
+                      is_break: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float,
+                      hi: float, max_cut: float) -> int:
+    """Every recorded geometric decision through ``decide`` (``geometric_decision_arrays``), as the games' kernel
+    calls it."""
+    placed = 0
+    for i in range(pos.shape[0]):
+        got = decide(pos[i], on[i], radius, mass, 0, targets[i, :counts[i]].copy(), pocket_xy,
+                                        pocket_r, params, lo, hi, area[i], in_hand[i], is_break[i], max_cut)
+        placed += got[2]
+    return placed
+
+
+class GameRecord:
+    """What the simulation alone costs in the games the native vector env plays (see :func:`physics_bound`).
+
+    Seeded single envs with the geometric opponent (each equal, bit for bit, to a vector env table with the same
+    seed and actions) play ``steps`` agent steps of uniform random actions, every shot's start state (the agent's,
+    the opponent's, breaks) and every geometric decision's inputs recorded. :meth:`replay` then runs the shots
+    through the exact kernel alone and the decisions through ``geometric_decision_arrays`` alone, each in one
+    compiled loop, and adds up their CPU time (call it between the slices of :func:`vector_rate`, so that both run
+    under the same load)."""
+
+    def __init__(self, env_id: str, steps: int, seed: int = 0) -> None:
+        import gymnasium as gym
+
+        from billiards_env.players import geometric as geo_module
+        from billiards_env.players.geometry import MAX_CUT, geometric_decision_arrays, state_model
+
+        env = gym.make(env_id)
+        u = env.unwrapped
+        sim = u.simulator
+        shots: list[tuple[np.ndarray, ...]] = []
+        decisions: list[tuple[Any, ...]] = []
+        run_in_place = sim.run_in_place
+        decide = geo_module.geometric_decision
+
+        def recorded_run(b: Any) -> Any:
+            shots.append((b.pos.copy(), b.vel.copy(), b.ang.copy(), b.on_table.copy()))
+            return run_in_place(b)
+
+        def recorded_decision(pos: Any, on: Any, radius: Any, mass: Any, targets: Any, tm: Any, speed_range: Any,
+                              place_area: Any = None, is_break: bool = False, max_cut: float = MAX_CUT,
+                              cue: int = 0) -> Any:
+            decisions.append((np.array(pos, dtype=float), np.array(on, dtype=np.bool_),
+                              np.asarray(targets, np.int64), place_area, bool(is_break), cue))
+            return decide(pos, on, radius, mass, targets, tm, speed_range, place_area, is_break, max_cut, cue)
+
+        rng = np.random.default_rng(seed)
+        sim.run_in_place = recorded_run
+        geo_module.geometric_decision = recorded_decision
+        try:
+            env.reset(seed=seed)
+            for _ in range(steps):
+                _, _, term, trunc, _ = env.step(rng.uniform(-1.0, 1.0, env.action_space.shape).astype(np.float32))
+                if term or trunc:
+                    env.reset()
+        finally:
+            del sim.run_in_place
+            geo_module.geometric_decision = decide
+        b = u.balls
+        radius = np.ascontiguousarray(b.radius, dtype=float)
+        mass = np.ascontiguousarray(b.mass, dtype=float)
+        pos, vel, ang, on = (np.stack([s[c] for s in shots]) for c in range(4))
+        self.shot_args = (sim._kernels.exact, pos, vel, ang, on, radius, mass, sim._pocket_xy, sim._pocket_r,
+                          sim._params, int(sim.max_events))
+        assert all(d[5] == 0 for d in decisions), "the games' cue ball is row 0"
+        if not decisions:  # (a tiny run whose opponent never shot)
+            decisions.append((pos[0], on[0], np.arange(1, radius.shape[0], dtype=np.int64), None, False, 0))
+        counts = np.array([len(d[2]) for d in decisions], np.int64)
+        targets = np.zeros((len(decisions), radius.shape[0]), np.int64)
+        for i, d in enumerate(decisions):
+            targets[i, :counts[i]] = d[2]
+        tm = state_model(u.state)
+        lo, hi = u.state.settings.speed_range
+        self.decision_args = (
+            geometric_decision_arrays, np.stack([d[0] for d in decisions]), np.stack([d[1] for d in decisions]),
+            radius, mass, targets, counts,
+            np.array([d[3] if d[3] is not None else (0.0, 0.0, 0.0, 0.0) for d in decisions], dtype=float),
+            np.array([d[3] is not None for d in decisions], np.bool_), np.array([d[4] for d in decisions], np.bool_),
+            tm.pocket_xy, tm.pocket_r, tm.params, float(lo), float(hi), MAX_CUT)
+        env.close()
+        self.steps = steps
+        self.n_shots = len(shots)
+        self.n_decisions = len(decisions)
+        self.events = int(_replay_shots(*self.shot_args))  # (compiles the loops)
+        _replay_decisions(*self.decision_args)
+        self.passes = 0
+        self.physics_s = 0.0
+        self.decisions_s = 0.0
+
+    def replay(self) -> None:
+        """One timed pass of the recorded shots and decisions (CPU seconds added up)."""
+        self.physics_s += _timed(lambda: _replay_shots(*self.shot_args))
+        self.decisions_s += _timed(lambda: _replay_decisions(*self.decision_args))
+        self.passes += 1
+
+    def figures(self) -> dict[str, Any]:
+        """Shots and events per agent step, the physics and decisions per shot (the mean of the passes), and the
+        physics bound (:func:`physics_bound`)."""
+        physics = self.physics_s / max(self.passes, 1)
+        deciding = self.decisions_s / max(self.passes, 1)
+        n = self.n_shots
+        return {"steps": self.steps, "shots": n, "events": self.events, "decisions": self.n_decisions,
+                "passes": self.passes, "shots_per_step": n / self.steps, "events_per_shot": self.events / n,
+                "physics_us_per_shot": 1e6 * physics / n, "physics_us_per_event": 1e6 * physics / max(self.events, 1),
+                "decision_us": 1e6 * deciding / max(self.n_decisions, 1),
+                "decisions_us_per_shot": 1e6 * deciding / n, "bound_steps_per_cpu_s": self.steps / physics}
+
+
+def physics_bound(env_id: str, steps: int, repeats: int = 3, seed: int = 0) -> dict[str, Any]:
+    """The physics bound of ``env_id``'s games against the geometric opponent: the agent steps per CPU-second if
+    everything but the simulation (rules, opponent, actions, observations, infos) cost nothing, from ``steps``
+    recorded agent steps replayed ``repeats`` times (:class:`GameRecord`), with the shots and events per step, and
+    the physics and geometric decisions per shot."""
+    rec = GameRecord(env_id, steps, seed)
+    for _ in range(repeats):
+        rec.replay()
+    return rec.figures()
+
+
+def _timed(fn: Callable[[], Any]) -> float:
+    c = time.process_time()
+    fn()
+    return time.process_time() - c
 
 
 # --- the training job: before and after ----------------------------------------------------------------------------
@@ -367,14 +557,18 @@ def training_job(sizes: dict[str, Any]) -> dict[str, Any]:
 def run(quick: bool = False) -> dict[str, Any]:
     sizes = _sizes(quick)
     doc: dict[str, Any] = {"machine": machine_info(), "quick": quick, "sizes": sizes, "single": {},
-                           "decisions": {}, "vector": {}}
+                           "decisions": {}, "vector": {}, "bound": {}, "cores": os.cpu_count() or 1}
     for env_id in GAMES:
         log(f"[games] {env_id}: single env")
         doc["single"][env_id] = single_env_rates(env_id, sizes)
         log(f"[games] {env_id}: decisions")
         doc["decisions"][env_id] = decisions(env_id, sizes, search=env_id == "Billiards9Ball-v0")
-        log(f"[games] {env_id}: native vector env, {sizes['vector_tables']} tables")
-        doc["vector"][env_id] = vector_rate(env_id, sizes["vector_tables"], sizes["vector_seconds"])
+        log(f"[games] {env_id}: native vector env, {sizes['vector_tables']} tables, and the physics bound "
+            f"({sizes['bound_steps']} agent steps recorded, replayed between its slices)")
+        rec = GameRecord(env_id, sizes["bound_steps"])
+        doc["vector"][env_id] = vector_rate(env_id, sizes["vector_tables"], sizes["vector_seconds"],
+                                            rounds=sizes["bound_repeats"], between=rec.replay)
+        doc["bound"][env_id] = rec.figures()
     log("[games] the 9-ball training job's envs, before and after")
     doc["job"] = training_job(sizes)
     doc["end_load"] = load_now()
@@ -406,8 +600,13 @@ def targets(doc: dict[str, Any]) -> list[dict[str, Any]]:
                          "target": "<= 10 ms", "ok": s["wall"] <= TARGETS["search_median_9ball"]})
     for env_id, v in doc["vector"].items():
         want = TARGETS["vector"][env_id]
+        b = doc.get("bound", {}).get(env_id)
+        bound = (f"; physics bound {fmt_rate(b['bound_steps_per_cpu_s'])} per CPU-s, "
+                 f"{fmt_rate(b['bound_steps_per_cpu_s'] * doc.get('cores', 1))}/s on {doc.get('cores', 1)} free cores"
+                 ) if b else ""
         rows.append({"name": f"native vector env, geometric opponent, {v['tables']} tables ({env_id})",
-                     "value": f"{fmt_rate(v['steps_per_s'])} agent steps/s ({fmt_rate(v['shots_per_s'])} shots/s"
+                     "value": f"{fmt_rate(v['steps_per_s'])} agent steps/s ({fmt_rate(v['steps_per_cpu_s'])} per "
+                              f"CPU-s, {fmt_rate(v['shots_per_s'])} shots/s{bound}"
                               f"{'' if v['native'] else '; not native: sub-envs one by one'})",
                      "target": f">= {want:,}", "ok": v["steps_per_s"] >= want})
     return rows
@@ -449,6 +648,31 @@ def render_markdown(doc: dict[str, Any]) -> str:
     for env_id, v in doc["vector"].items():
         lines.append(f"| {env_id} | {v['tables']} | {'yes' if v['native'] else 'no'} | {fmt_rate(v['steps_per_s'])} | "
                      f"{fmt_rate(v['shots_per_s'])} | {fmt_rate(v['steps_per_cpu_s'])} |")
+    if doc.get("bound"):
+        cores = doc.get("cores", 1)
+        lines += ["", "Where a step's CPU time goes, and the physics bound. The compiled `play_tables` (the games' "
+                  "kernel) is timed inside the vector env's steps above; the rest of a step is Python (the infos, "
+                  "built as arrays, and the autoreset). The physics alone: seeded single envs with the geometric "
+                  "opponent (each a vector env table, bit for bit) play uniform random actions with every shot's "
+                  "start state and every geometric decision recorded, then the shots are replayed through the exact "
+                  "kernel alone and the decisions through `geometric_decision_arrays` alone (compiled loops, CPU "
+                  "time), once after each slice of the vector env's timing, so that both see the same load (the "
+                  "mean of the passes). The rest of the kernel (the kernel less the two: the rules, the action "
+                  "types, the observations, the bookkeeping) is small, within the noise of a shared machine (it can "
+                  "come out below zero). The physics bound is the agent steps per CPU-second if everything but the "
+                  f"simulation cost nothing, and that times {cores} on {cores} cores left free.",
+                  "", "| game | shots / agent step | events / shot | kernel us / shot | physics us / shot | "
+                  "geometric decisions us / shot | rest of the kernel us / shot | Python share of a step | "
+                  "physics bound: agent steps / CPU-s | on all cores, per s |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
+        for env_id, b in doc["bound"].items():
+            v = doc["vector"][env_id]
+            rest = v["kernel_us_per_shot"] - b["physics_us_per_shot"] - b["decisions_us_per_shot"]
+            lines.append(f"| {env_id} | {b['shots_per_step']:.2f} | {b['events_per_shot']:.1f} | "
+                         f"{v['kernel_us_per_shot']:.1f} | {b['physics_us_per_shot']:.1f} | "
+                         f"{b['decisions_us_per_shot']:.1f} ({b['decision_us']:.1f} per decision) | {rest:.1f} | "
+                         f"{100 * v['python_share']:.0f}% | {fmt_rate(b['bound_steps_per_cpu_s'])} | "
+                         f"{fmt_rate(b['bound_steps_per_cpu_s'] * cores)} |")
     lines += ["", "## The 9-ball training job's envs", "",
               "Each config's `n_envs` single envs stepped in turn (as SB3's DummyVecEnv steps them), seeded random "
               "actions. Before: the Python of before issue 21 swapped in (`benchmarks/reference_players.py`: the candidate "
@@ -479,4 +703,5 @@ def main(out: Path | None, quick: bool = False) -> dict[str, Any]:
     return doc
 
 
-__all__ = ["run", "targets", "render_markdown", "render", "main", "before_issue_21", "TARGETS"]
+__all__ = ["run", "targets", "render_markdown", "render", "main", "before_issue_21", "physics_bound", "vector_rate",
+           "GameRecord", "TARGETS"]

@@ -21,7 +21,7 @@ single env with the same seed and actions, bit for bit (``tests/envs/test_vector
   (``PoolSession.features``).
 
 Random numbers come from each table's ``numpy.random.Generator`` in the single env's order. What is not compiled
-(the ``features`` observation type, reset options, the info dicts) is done per table in Python by
+(the ``features`` observation type and reset options per table, the infos as arrays) is done in Python by
 :mod:`._vector_games`, from the records these functions write (``R_*`` columns per shot).
 """
 from __future__ import annotations
@@ -39,7 +39,7 @@ from billiards_env.physics.layout import (PLACE_BATCH, PLACE_TRIES, nearest_free
 from billiards_env.physics.outcome import scan_shot
 from billiards_env.physics.spin_collide import strike_ball
 from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_CLEAR, COL_POCKET, COL_SPEED, SPEED_FACTORS,
-                                            geometric_decision_arrays, ghost_shots)
+                                            geometric_decision_cached, ghost_shots)
 from billiards_env.players.slots import (HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET, in_hand_slots, next_shot_ease,
                                          shot_slots)
 from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_KITCHEN, BIH_NO, C_FOUL, C_REASON, C_RESPOT, C_SHOOTER,
@@ -519,7 +519,7 @@ def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, ca
 
 @njit(cache=True)
 def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r, params,
-                   tm_xy, tm_r, tm_params, holes, recs, call, after, buf, act, area, dec_area):
+                   tm_xy, tm_r, tm_params, holes, recs, call, after, buf, act, area, dec_area, wc):
     """``GameTask._opponent_turn`` of table ``k`` with the geometric opponent: its decision, its action in the
     acting type read back, the shot played and judged, until the agent's turn or the end of the game. Returns
     ``(shots, error)``."""
@@ -531,9 +531,9 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
         in_hand = _area(st, cfg, dec_area)
         if not in_hand:
             dec_area[:] = 0.0
-        px, py, placed, angle, speed, kr, rows, status = geometric_decision_arrays(
+        px, py, placed, angle, speed, kr, rows, status = geometric_decision_cached(
             pos[k], on[k], radius, mass, 0, targets, tm_xy, tm_r, tm_params, cfg[K_SPEED_MIN], cfg[K_SPEED_MAX],
-            dec_area, in_hand, st[S_BREAK] != 0, cfg[K_MAX_CUT])
+            dec_area, in_hand, st[S_BREAK] != 0, cfg[K_MAX_CUT], wc[0][k], wc[1][k], wc[2][k])
         if status == 1:
             return n, E_NO_PLACE
         pocket = int(rows[kr, COL_POCKET]) if kr >= 0 else -1
@@ -561,7 +561,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
 
 @njit(cache=True)
 def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
-                params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs):
+                params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs, wc):
     """One ``env.step`` of table ``k`` (see :func:`step_tables`)."""
     call = np.zeros(N_CALL, np.int64)
     after = np.zeros(N_STATE, np.int64)
@@ -616,7 +616,7 @@ def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, o
         else:
             n_opp, err = _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                                         pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_opp[k], call, after, buf,
-                                        a, area, dec_area)
+                                        a, area, dec_area, wc)
             tout[k, T_N_OPP] = n_opp
             if err != E_NONE:
                 tout[k, T_ERROR] = err
@@ -682,7 +682,7 @@ def _order_rack(k, g, pos, rack_slots, mode):
 @njit(cache=True)
 def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r, params,
                  tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets, rack_slots, full,
-                 rec_agent, rec_opp, tout, kc, obs):
+                 rec_agent, rec_opp, tout, kc, obs, wc):
     """One ``env.reset()`` of table ``k`` (no options; see :func:`reset_tables`)."""
     call = np.zeros(N_CALL, np.int64)
     after = np.zeros(N_STATE, np.int64)
@@ -769,7 +769,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
             break
         n_opp, err = _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                                     pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_opp[k], call, after, buf, a,
-                                    area, dec_area)
+                                    area, dec_area, wc)
         tout[k, T_N_OPP] = n_opp
         tout[k, T_LAST] = n_opp if n_opp > 0 else -1
         if err != E_NONE:
@@ -858,7 +858,7 @@ def legal_masks(gst: np.ndarray, out: np.ndarray) -> None:
 @njit(cache=True, parallel=True)
 def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                 pocket_r, params, tm_xy, tm_r, tm_params, holes, layout, rack_slots, full, rec_agent, rec_opp, reward,
-                tout, obs):
+                tout, obs, wc):
     """A step of tables ``rows``, or a reset of those whose ``resets`` is set, spread over numba's threads (one table
     per thread at a time: the result does not depend on their number; one thread runs them one after the other).
 
@@ -867,17 +867,20 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
     A reset: the layout (``layout``: the fixed rows and their points, the random rows and their regions, the pocket
     centres; ``rack_slots``, ``full``: the rack's slots and balls), the game's reset, the opponent's break when it
     breaks. Both record every shot (``rec_agent``, ``rec_opp``) and, for the positions and candidates observation
-    types, write the observation (``obs``)."""
+    types, write the observation (``obs``). ``wc``: each table's cache of its balls' pocket windows for the
+    geometric opponent (``(pos (N, B, 2), windows (N, B, K, 4), have (N, B))``, see
+    :func:`~billiards_env.players.geometry.windows_cached`), kept from call to call: the same decisions, the windows
+    of the balls that did not move since the table's last decision not worked out again."""
     fixed_rows, fixed_xy, rand_rows, regions, pockets = layout
     for q in prange(rows.shape[0]):
         if resets[q]:
             _reset_table(rows[q], pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                          pocket_r, params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions,
-                         pockets, rack_slots, full, rec_agent, rec_opp, tout, kc, obs)
+                         pockets, rack_slots, full, rec_agent, rec_opp, tout, kc, obs, wc)
         else:
             _step_table(rows[q], act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg,
                         pocket_xy, pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout,
-                        obs)
+                        obs, wc)
 
 
 __all__ = ["play_tables", "observe_tables", "legal_masks", "features", "AIM_CANDIDATES", "N_K", "N_J", "N_R", "N_T",

@@ -1,12 +1,16 @@
 """The native vector env's games: 9-ball and 8-ball tables reset and stepped in compiled code, opponents and the
-``candidates`` types included (:mod:`._game_kernels`), and what stays in Python per table: the ``features``
-observation type, resets with options, and the info dicts.
+``candidates`` types included (:mod:`._game_kernels`), and what stays in Python: the ``features`` observation type
+and resets with options (per table), and the infos.
 
 :func:`native_games` says whether an env qualifies (9-ball or 8-ball on the exact solver, playing alone or against
 the geometric player, an action type of the envs' own, nothing drawn); :class:`GameTables` holds the tables' game
 states and runs them for :class:`~billiards_env.envs.vector.BilliardsVectorEnv`, which keeps the ball arrays, the
-generators and the autoreset. The info dicts are built per table as the single env builds them and stacked by
-Gymnasium's own ``VectorEnv._add_info``, in sub-env order, so the vector info is the one ``SyncVectorEnv`` makes.
+generators and the autoreset. The infos are built as arrays, one per key for all the tables
+(:meth:`GameTables.columns` from the kernels' shot records and the game states; the opponent's turns, one dict per
+shot, for all the tables at once), and stacked by :func:`stack_columns` as Gymnasium's ``VectorEnv._add_info``
+stacks the single envs' dicts in sub-env order (dtypes from each key's first value, masks, key order), so the vector
+info is the one ``SyncVectorEnv`` makes; the per-table dicts (:class:`InfoColumns.dicts`) are made only when asked
+for (``BilliardsVectorEnv.sub_infos``).
 """
 from __future__ import annotations
 
@@ -29,7 +33,6 @@ from .actions import AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, AbsoluteAim, Candida
 from .candidates import EASE_SPREAD
 from .config import ConfigError
 from .games import MAX_RERACKS, MAX_TURN_SHOTS, GameTask
-from .info import shot_info
 from .observations import CandidateFeatures, Positions
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -184,6 +187,8 @@ class GameTables:
         self.reward = np.zeros(n)
         self.tout = np.zeros((n, gk.N_T), np.int64)
         self.kc = np.zeros((n, gk.N_KC))  # each table's kick cache (the candidates types)
+        # Each table's cache of its balls' pocket windows (the geometric opponent's decisions; by position).
+        self.windows = (np.zeros((n, nb, 2)), np.zeros((n, nb, tm.pocket_r.shape[0], 4)), np.zeros((n, nb), np.bool_))
         self.n_game = session.n_features
         # One table state per table (views of the batch arrays) for what stays in Python.
         self.states = []
@@ -195,6 +200,7 @@ class GameTables:
         self.ids = t.ball_ids
         self._ids_of: dict[int, tuple[str, ...]] = {}
         self._first = self.ids + (None,)
+        self._first_obj = _object_array(self._first)
         self._radius = r
         self._reset_infos: dict[int, dict[str, Any] | None] = {}
         self._numbers_of: dict[int, tuple[int, ...]] = {}
@@ -229,7 +235,8 @@ class GameTables:
         with _thread_count(threads):
             gk.play_tables(rows, resets, act, self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts,
                            v._gen_list(), self.gst, self.opts, self.cfg, self.icfg, *self.tables, self.layout,
-                           self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs)
+                           self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs,
+                           self.windows)
         self._check(rows)
         for k in rows.tolist():
             self.states[k].changed()
@@ -303,9 +310,14 @@ class GameTables:
 
     # --- info ---------------------------------------------------------------------------------------------------------
     def prepare_infos(self) -> None:
-        """Work out what the info dicts of the tables read from their game states (their legal balls), in one call;
-        before :meth:`reset_info` and :meth:`step_info`."""
+        """Work out what the infos of the tables read from their game states (their legal balls), in one call;
+        before :meth:`columns`."""
         gk.legal_masks(self.gst, self.legal)
+
+    def given_reset_info(self, k: int) -> dict[str, Any] | None:
+        """The info of table ``k``'s last reset when it was a scene set by ``reset(options=...)`` (the template
+        env's own dict), else None."""
+        return self._reset_infos.get(k)
 
     def _numbers(self, mask: int) -> tuple[int, ...]:
         got = self._numbers_of.get(mask)
@@ -319,70 +331,175 @@ class GameTables:
             got = self._ids_of[mask] = tuple(self.ids[i] for i in range(len(self.ids)) if mask >> i & 1)
         return got
 
-    def _turn(self, rec: np.ndarray) -> dict[str, Any]:
-        """An entry of ``info["opponent_turns"]`` (``GameTask._turn_info``)."""
-        r = rec.tolist()
-        foul = bool(r[gk.R_FOUL])
-        reason = pj.REASONS[int(r[gk.R_REASON])]
-        first = int(r[gk.R_FIRST])
-        return {"shooter": int(r[gk.R_SHOOTER]), "pocketed": self._ids(int(r[gk.R_POCKETED])),
-                "scratch": bool(r[gk.R_SCRATCH]), "first_contact": self._first[first], "foul": foul,
-                "foul_reason": reason if foul else None, "call": reason, "turn_over": bool(r[gk.R_TURN_OVER]),
-                "angle": r[gk.R_ANGLE], "speed": r[gk.R_SPEED],
-                "ball_in_hand": pj.ball_in_hand_value(int(r[gk.R_BIH])),
-                "groups": pj.groups_value(int(r[gk.R_GROUPS]))}
+    def _tuples(self, masks: np.ndarray, of: Any) -> np.ndarray:
+        """An object array of ``of(mask)`` (a cached tuple) for each of ``masks``: one call per distinct mask."""
+        out = np.empty(len(masks), dtype=object)
+        if len(masks):
+            uniq, which = np.unique(masks, return_inverse=True)
+            table = np.empty(len(uniq), dtype=object)
+            for j, m in enumerate(uniq.tolist()):
+                table[j] = of(m)
+            out[:] = table[which]
+        return out
 
-    def _game_info(self, k: int, rec: np.ndarray | None) -> dict[str, Any]:
-        """``GameTask._info`` of table ``k`` after its last reset or step (``rec``: the agent's shot, None after a
-        reset)."""
-        st = self.gst[k].tolist()
-        over = bool(st[pj.S_OVER])
-        winner = st[pj.S_WINNER]
-        n_opp = int(self.tout[k, gk.T_N_OPP])
-        turns = [self._turn(self.rec_opp[k, i]) for i in range(n_opp)]
-        if rec is None:
-            foul, reason, turn_over = False, None, False
+    def _turn_lists(self, rows: np.ndarray) -> list[list[dict[str, Any]]]:
+        """``info["opponent_turns"]`` of tables ``rows`` (``GameTask._turn_info`` per opponent shot), built from
+        the shot records of all the tables at once."""
+        counts = self.tout[rows, gk.T_N_OPP]
+        total = int(counts.sum())
+        if total == 0:
+            return [[] for _ in range(len(rows))]
+        starts = np.cumsum(counts) - counts
+        rec = self.rec_opp[np.repeat(rows, counts), np.arange(total) - np.repeat(starts, counts)]
+        ints = rec[:, [gk.R_SHOOTER, gk.R_REASON, gk.R_FIRST, gk.R_BIH, gk.R_GROUPS]].astype(np.int64).T.tolist()
+        flags = (rec[:, [gk.R_FOUL, gk.R_SCRATCH, gk.R_TURN_OVER]] != 0).T.tolist()
+        pocketed = self._tuples(rec[:, gk.R_POCKETED].astype(np.int64), self._ids).tolist()
+        first, reasons = self._first, pj.REASONS
+        turns = [{"shooter": s, "pocketed": p, "scratch": sc, "first_contact": first[f], "foul": fo,
+                  "foul_reason": reasons[r] if fo else None, "call": reasons[r], "turn_over": to, "angle": a,
+                  "speed": sp, "ball_in_hand": _BIH_VALUES[b], "groups": _GROUPS_VALUES[g]}
+                 for s, r, f, b, g, fo, sc, to, p, a, sp in zip(*ints, *flags, pocketed, rec[:, gk.R_ANGLE].tolist(),
+                                                                rec[:, gk.R_SPEED].tolist())]
+        return [turns[s:s + c] for s, c in zip(starts.tolist(), counts.tolist())]
+
+    def columns(self, rows: np.ndarray, step: bool) -> "InfoColumns":
+        """The info of tables ``rows`` (ascending) after their last step (``step``: the game's keys, the agent's
+        shot's call, then :func:`~.info.shot_info`'s keys) or reset (the game's keys: ``GameTask._info`` with no
+        shot), as one array per key (:class:`InfoColumns`), from the kernels' records and the game states; after
+        :meth:`prepare_infos`."""
+        n = self.venv.num_envs
+        st = self.gst[rows]
+        over = st[:, pj.S_OVER] != 0
+        winner = st[:, pj.S_WINNER]
+        cols: dict[str, np.ndarray] = {}
+
+        def put(key: str, values: Any, dtype: Any) -> None:
+            arr = np.full(n, None, dtype=object) if dtype is object else np.zeros(n, dtype=dtype)
+            arr[rows] = values
+            cols[key] = arr
+
+        if step:
+            rec = self.rec_agent[rows]
+            foul = rec[:, gk.R_FOUL] != 0
+            reason = _REASONS[rec[:, gk.R_REASON].astype(np.int64)]
+            put("foul", foul, np.bool_)
+            put("foul_reason", np.where(foul, reason, None), object)
+            put("turn_over", rec[:, gk.R_TURN_OVER] != 0, np.bool_)
         else:
-            foul = bool(rec[gk.R_FOUL])
-            reason = pj.REASONS[int(rec[gk.R_REASON])]
-            turn_over = bool(rec[gk.R_TURN_OVER])
-        info: dict[str, Any] = {
-            "foul": foul,
-            "foul_reason": reason if foul else None,
-            "turn_over": turn_over,
-            "winner": -1 if winner < 0 else winner,
-            "is_success": over and winner == 0,
-            "opponent_shots": n_opp,
-            "opponent_turns": turns,
-            "shooter": st[pj.S_SHOOTER],
-            "legal_targets": () if over else self._numbers(int(self.legal[k])),
-            "ball_in_hand": False if over else pj.ball_in_hand_value(st[pj.S_BIH]),
-            "groups": pj.groups_value(st[pj.S_GROUPS]),
-        }
-        if rec is not None:
-            info["call"] = reason
-        return info
-
-    def reset_info(self, k: int) -> dict[str, Any]:
-        """The info of table ``k``'s last reset."""
-        given = self._reset_infos.get(k)
-        return given if given is not None else self._game_info(k, None)
-
-    def step_info(self, k: int) -> dict[str, Any]:
-        """The info of table ``k``'s last step: the game's, then the agent's shot's (``shot_info``)."""
-        rec = self.rec_agent[k]
-        info = self._game_info(k, rec)
-        r = rec.tolist()
-        first = int(r[gk.R_FIRST])
-        info.update(shot_info(self._ids(int(r[gk.R_POCKETED])), bool(r[gk.R_SCRATCH]), self._first[first],
-                              int(r[gk.R_N_EVENTS]), r[gk.R_TIME], STATUS_NAMES[int(r[gk.R_STATUS])],
-                              int(self.venv.shots[k]), _Played(r[gk.R_ANGLE], r[gk.R_SPEED], r[gk.R_SIDE],
-                                                               r[gk.R_TOP]), self.action_type.spin))
-        return info
+            put("foul", False, np.bool_)
+            put("foul_reason", None, object)
+            put("turn_over", False, np.bool_)
+        put("winner", np.where(winner < 0, -1, winner), np.int64)
+        put("is_success", over & (winner == 0), np.bool_)
+        put("opponent_shots", self.tout[rows, gk.T_N_OPP], np.int64)
+        turns = np.full(n, None, dtype=object)
+        for k, t in zip(rows.tolist(), self._turn_lists(rows)):
+            turns[k] = t
+        cols["opponent_turns"] = turns
+        put("shooter", st[:, pj.S_SHOOTER], np.int64)
+        put("legal_targets", self._tuples(np.where(over, 0, self.legal[rows]), self._numbers), object)
+        put("ball_in_hand", np.where(over, pj.BIH_NO, st[:, pj.S_BIH]), np.int64)  # a code (InfoColumns.BIH)
+        put("groups", _GROUPS[st[:, pj.S_GROUPS]], object)
+        if step:
+            cols["call"] = np.full(n, None, dtype=object)
+            cols["call"][rows] = reason
+            put("pocketed", self._tuples(rec[:, gk.R_POCKETED].astype(np.int64), self._ids), object)
+            put("scratch", rec[:, gk.R_SCRATCH] != 0, np.bool_)
+            put("first_contact", self._first_obj[rec[:, gk.R_FIRST].astype(np.int64)], object)
+            put("n_events", rec[:, gk.R_N_EVENTS].astype(np.int64), np.int64)
+            put("sim_time", rec[:, gk.R_TIME], np.float64)
+            put("status", _STATUS[rec[:, gk.R_STATUS].astype(np.int64)], object)
+            put("shots", self.venv.shots[rows], np.int64)
+            put("angle", rec[:, gk.R_ANGLE], np.float64)
+            put("speed", rec[:, gk.R_SPEED], np.float64)
+            if self.action_type.spin:
+                put("side", rec[:, gk.R_SIDE], np.float64)
+                put("top", rec[:, gk.R_TOP], np.float64)
+        return InfoColumns(rows, cols)
 
     def outcome(self, k: int) -> tuple[float, bool, bool]:
         """Table ``k``'s reward, termination and truncation of its last step."""
         return float(self.reward[k]), bool(self.tout[k, gk.T_TERMINATED]), bool(self.tout[k, gk.T_TRUNCATED])
+
+
+def _object_array(values: Any) -> np.ndarray:
+    out = np.empty(len(values), dtype=object)
+    for i, v in enumerate(values):
+        out[i] = v
+    return out
+
+
+_BIH_VALUES = tuple(pj.ball_in_hand_value(c) for c in range(3))
+_GROUPS_VALUES = tuple(pj.groups_value(c) for c in range(3))
+_BIH = _object_array(_BIH_VALUES)
+_GROUPS = _object_array(_GROUPS_VALUES)
+_REASONS = _object_array(pj.REASONS)
+_STATUS = _object_array(STATUS_NAMES)
+
+
+class InfoColumns:
+    """The infos of some tables (``rows``, ascending) as one array per key, in the info's key order: ``cols[key][k]``
+    is table ``k``'s value (the arrays span every table; other rows are blank). Bool, int64 and float64 arrays hold
+    those Python types' values, object arrays the values themselves; ``ball_in_hand`` holds the state's code
+    (``pool_judge.BIH_*``: ``False``, ``"anywhere"``, ``"kitchen"``)."""
+
+    __slots__ = ("rows", "cols")
+
+    def __init__(self, rows: np.ndarray, cols: dict[str, np.ndarray]) -> None:
+        self.rows = rows
+        self.cols = cols
+
+    def dicts(self) -> list[dict[str, Any]]:
+        """Table ``rows[i]``'s info as the single env returns it (its Python values), for each ``i``."""
+        keys = list(self.cols)
+        rows = self.rows
+        values = []
+        for key, arr in self.cols.items():
+            got = arr[rows]
+            if key == "ball_in_hand":
+                got = _BIH[got]
+            values.append(got.tolist())
+        return [dict(zip(keys, vals)) for vals in zip(*values)]
+
+
+
+def stack_columns(n: int, parts: list[tuple[int, Any]]) -> dict[str, Any]:
+    """The vector info of ``n`` sub-envs from :class:`InfoColumns` of disjoint tables, as Gymnasium's
+    ``VectorEnv._add_info`` stacks the tables' info dicts in its order: ``parts`` ``(position, columns)``, the
+    position of the part's first info among those ``_add_info`` takes (for the key order), ``columns`` an
+    :class:`InfoColumns` or a dict of keys already stacked (``key: (array, mask)``, e.g. ``final_obs``); each key's
+    dtype from the first table that has it (``ball_in_hand``: a bool array, the state names true, when that value is
+    ``False``), a ``_key`` mask of the tables that have it, blanks (0, False, None) elsewhere."""
+    order: list[str] = []
+    seen: set[str] = set()
+    for _, part in sorted(parts, key=lambda p: p[0]):
+        for key in (part.cols if isinstance(part, InfoColumns) else part):
+            if key not in seen:
+                seen.add(key)
+                order.append(key)
+    out: dict[str, Any] = {}
+    for key in order:
+        ready = [p[key] for _, p in parts if not isinstance(p, InfoColumns) and key in p]
+        if ready:
+            out[key], out[f"_{key}"] = ready[0]
+            continue
+        have = [p for _, p in parts if isinstance(p, InfoColumns) and key in p.cols and p.rows.size]
+        if not have:
+            continue
+        first = min(have, key=lambda p: int(p.rows[0]))
+        as_bool = key == "ball_in_hand" and first.cols[key][first.rows[0]] == pj.BIH_NO
+        mask = np.zeros(n, np.bool_)
+        array = None
+        for p in have:
+            v = p.cols[key]
+            if key == "ball_in_hand":
+                v = v != pj.BIH_NO if as_bool else _BIH[v]
+            if array is None:
+                array = np.full(n, None, dtype=object) if v.dtype == object else np.zeros(n, dtype=v.dtype)
+            array[p.rows] = v[p.rows]
+            mask[p.rows] = True
+        out[key], out[f"_{key}"] = array, mask
+    return out
 
 
 def stack_infos(n: int, entries: list[tuple[int, dict[str, Any]]]) -> dict[str, Any]:
@@ -419,15 +536,6 @@ def stack_infos(n: int, entries: list[tuple[int, dict[str, Any]]]) -> dict[str, 
     return out
 
 
-class _Played:
-    """The shot as played, as ``shot_info`` reads it."""
-
-    __slots__ = ("angle", "speed", "side", "top")
-
-    def __init__(self, angle: float, speed: float, side: float, top: float) -> None:
-        self.angle, self.speed, self.side, self.top = angle, speed, side, top
-
-
 class _TableGame:
     """What the observation types read of a table's game (``state.game``): its features."""
 
@@ -443,4 +551,4 @@ class _TableGame:
         return out
 
 
-__all__ = ["GameTables", "native_games", "stack_infos"]
+__all__ = ["GameTables", "InfoColumns", "native_games", "stack_columns", "stack_infos"]

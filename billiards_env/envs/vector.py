@@ -19,8 +19,8 @@ of all tables in compiled array code, and every table's shot in one call of the 
 ``numpy.random.Generator``, seeded as the single env is. 9-ball and 8-ball (``Billiards9Ball-v0``,
 ``Billiards8Ball-v0``) against the geometric opponent or alone run whole games per table in compiled code, the
 opponent's turns inside the step (:mod:`._vector_games`, :mod:`._game_kernels`: the rules compiled, the geometric
-player's decision on arrays, the ``candidates`` types); the ``features`` observation type, reset options and the
-info dicts stay in Python per table. Other opponents, rendering and the ``step`` solver run
+player's decision on arrays, the ``candidates`` types), their infos built as arrays; the ``features`` observation
+type and reset options stay in Python per table. Other opponents, rendering and the ``step`` solver run
 their sub-envs one by one (the same results, at single-env speed; ``not_native`` says why).
 
 Options (keyword arguments besides the env's own config keys): ``autoreset_mode`` (``"next_step"``, Gymnasium's
@@ -48,7 +48,8 @@ from billiards_env.table_state import TableState
 
 from ._pot_fast import compiled_action
 from ._seeding import np_random
-from ._vector_games import GameTables, native_games, stack_infos
+from ._vector_games import GameTables, InfoColumns, native_games, stack_columns, stack_infos
+from ._game_kernels import T_TERMINATED, T_TRUNCATED
 from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP,
                               I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
                               draw_noise, finish_shots, observe_positions, pack_config, place_tables, pot_step,
@@ -107,11 +108,11 @@ class BilliardsVectorEnv(VectorEnv):
         self.games: GameTables | None = None
         #: Why a game runs its sub-envs one by one (None: it does not, or not a game).
         self.not_native: str | None = None
-        #: The native games' info of the last reset or step as one dict per sub-env, as the single env returns it
-        #: (for a sub-env that ended in a same-step autoreset: its last step's; ``{}`` for one not reset), before
-        #: Gymnasium's stacking makes one array per key (whose dtype is the first value's: ``ball_in_hand``'s
-        #: ``False`` and ``"anywhere"`` become bools there). None on the pot task. SB3's adapter reads it.
-        self.sub_infos: list[dict[str, Any]] | None = None
+        # The native games' per-table infos (sub_infos), made when asked for from the last reset or step's columns.
+        self._sub_rows: np.ndarray | None = None
+        self._sub_parts: list[Any] = []
+        self._sub_given: dict[int, dict[str, Any]] = {}
+        self._sub_cache: list[dict[str, Any]] | None = None
         if not self.native and c.task != "pot":
             self.not_native = native_games(t, render_mode)
             self.native = self.not_native is None
@@ -208,12 +209,7 @@ class BilliardsVectorEnv(VectorEnv):
         self._ever_reset = True
         infos: dict[str, Any] = {}
         if self.games is not None:  # the games' reset info, stacked as SyncVectorEnv stacks it
-            self.games.prepare_infos()
-            entries = [(k, self.games.reset_info(k)) for k in rows.tolist()]
-            self.sub_infos = [{} for _ in range(n)]
-            for k, info in entries:
-                self.sub_infos[k] = info
-            infos = stack_infos(n, entries)
+            infos = self._game_infos([(rows, False)], rows)
         return self._obs.copy(), infos
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
@@ -445,34 +441,93 @@ class BilliardsVectorEnv(VectorEnv):
             self._reset_rows(reset_rows, None)
             self._observe(reset_rows)
         reward = np.zeros(n)
+        reward[stepped] = g.reward[stepped]
         term = np.zeros(n, np.bool_)
+        term[stepped] = g.tout[stepped, T_TERMINATED] != 0
         trunc = np.zeros(n, np.bool_)
-        for k in stepped.tolist():
-            reward[k], term[k], trunc[k] = g.outcome(k)
+        trunc[stepped] = g.tout[stepped, T_TRUNCATED] != 0
         done = term | trunc
-        entries: list[tuple[int, dict[str, Any]]] = []
-        g.prepare_infos()
         if mode == AutoresetMode.SAME_STEP:
-            step_infos = {k: g.step_info(k) for k in stepped.tolist()}
+            g.prepare_infos()
+            final = g.columns(stepped, step=True)  # before the ended tables reset
             ended = np.flatnonzero(done)
-            final_obs = {k: row for k, row in zip(ended.tolist(), self._obs[ended])}
+            kept = np.flatnonzero(~done)
             if ended.size:
+                final_obs = np.full(n, None, dtype=object)
+                for k, row in zip(ended.tolist(), self._obs[ended]):  # (rows of a fresh copy)
+                    final_obs[k] = row
                 self._reset_rows(ended, None)
                 self._observe(ended)
-                g.prepare_infos()
-            for k in range(n):
-                info = step_infos[k]
-                if done[k]:
-                    entries.append((k, {"final_obs": final_obs[k], "final_info": info}))
-                    info = g.reset_info(k)
-                entries.append((k, info))
-            self.sub_infos = [step_infos[k] for k in range(n)]
+            extra = None
+            if ended.size:  # each ended table's final entry comes before its reset info
+                extra = (2 * int(ended[0]), {"final_obs": (final_obs, done.copy()),
+                                             "final_info": (stack_columns(n, [(0, InfoColumns(ended, final.cols))]),
+                                                            done.copy())})
+            infos = self._game_infos([(kept, final), (ended, False)], stepped, dicts_of=final, extra=extra)
             self._needs_reset[:] = False
         else:
-            entries = [(k, g.reset_info(k) if resetting[k] else g.step_info(k)) for k in range(n)]
-            self.sub_infos = [info for _, info in entries]
+            infos = self._game_infos([(stepped, True), (reset_rows, False)], np.arange(n))
             self._needs_reset = done
-        return self._obs.copy(), reward, term, trunc, stack_infos(n, entries)
+        return self._obs.copy(), reward, term, trunc, infos
+
+    def _game_infos(self, parts: list[tuple[np.ndarray, Any]], rows: np.ndarray, dicts_of: Any = None,
+                    extra: tuple[int, dict[str, Any]] | None = None) -> dict[str, Any]:
+        """The games' vector info of ``parts`` (``(tables, what)``: ``True`` their step info, ``False`` their reset
+        info, or the :class:`._vector_games.InfoColumns` to take their rows from), stacked as ``SyncVectorEnv``
+        stacks the tables' dicts (``extra``: ``(position, keys already stacked)``, the same-step autoreset's
+        ``final_obs`` and ``final_info``); the per-table dicts of ``rows`` (:attr:`sub_infos`; ``dicts_of``: the
+        columns to take them from instead) are made when asked for."""
+        g = self.games
+        assert g is not None
+        n = self.num_envs
+        g.prepare_infos()
+        built: list[tuple[np.ndarray, InfoColumns]] = []
+        given: dict[int, dict[str, Any]] = {}
+        for tables, what in parts:
+            if not tables.size:
+                continue
+            if isinstance(what, InfoColumns):
+                built.append((tables, InfoColumns(tables, what.cols)))
+                continue
+            if not what:
+                for k in tables.tolist():
+                    info = g.given_reset_info(k)
+                    if info is not None:  # a scene set by reset(options=...): the template env's own info
+                        given[k] = info
+            built.append((tables, g.columns(tables, step=bool(what))))
+        self._sub_rows = rows
+        self._sub_parts = [dicts_of] if dicts_of is not None else [c for _, c in built]
+        self._sub_given = given
+        self._sub_cache = None
+        if given:  # rare (reset options, no autoreset): stack the tables' dicts one by one
+            assert extra is None
+            return stack_infos(n, list(zip(rows.tolist(), self._sub_dicts(rows))))
+        return stack_columns(n, [(2 * int(c.rows[0]) + 1, c) for _, c in built] + ([extra] if extra else []))
+
+    def _sub_dicts(self, rows: np.ndarray) -> list[dict[str, Any]]:
+        """The per-table info dicts of ``rows`` from the last reset or step's parts."""
+        by_row: dict[int, dict[str, Any]] = {}
+        for part in self._sub_parts:
+            for k, info in zip(part.rows.tolist(), part.dicts()):
+                by_row[k] = info
+        by_row.update(self._sub_given)
+        return [by_row[k] for k in rows.tolist()]
+
+    @property
+    def sub_infos(self) -> list[dict[str, Any]] | None:
+        """The native games' info of the last reset or step as one dict per sub-env, as the single env returns it
+        (for a sub-env that ended in a same-step autoreset: its last step's; ``{}`` for one not reset), before
+        Gymnasium's stacking makes one array per key (whose dtype is the first value's: ``ball_in_hand``'s ``False``
+        and ``"anywhere"`` become bools there). None on the pot task or before the first reset. Made when asked
+        for, once per step. SB3's adapter reads it."""
+        if self.games is None or self._sub_rows is None:
+            return None
+        if self._sub_cache is None:
+            out: list[dict[str, Any]] = [{} for _ in range(self.num_envs)]
+            for k, info in zip(self._sub_rows.tolist(), self._sub_dicts(self._sub_rows)):
+                out[k] = info
+            self._sub_cache = out
+        return self._sub_cache
 
     def _step_info(self, rows: np.ndarray, status, sim_time, n_events, first) -> dict[str, np.ndarray]:
         """The single env's step ``info`` of every table, as arrays (rows not in ``rows`` are filler)."""

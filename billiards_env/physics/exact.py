@@ -134,11 +134,16 @@ def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
 def _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm):
     """:func:`_predict_pair` from both balls' states at ``t`` (``i < j``), so that a ball's state is computed once
     for all its pairs."""
+    return _pair_time_s(i, j, t, xi, yi, vxi, vyi, math.hypot(vxi, vyi), xj, yj, vxj, vyj, math.hypot(vxj, vyj),
+                        ball_t, radius, prm)
+
+
+@internal
+def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, radius, prm):
+    """:func:`_pair_time` with both balls' speeds (``hypot`` of their velocities) given."""
     law = prm.law
     a = prm.decel
     k = prm.drag_k
-    si = math.hypot(vxi, vyi)
-    sj = math.hypot(vxj, vyj)
     if si == 0.0 and sj == 0.0:
         return math.inf
     window = min(prm.max_time, ball_t[i], ball_t[j]) - t
@@ -153,7 +158,13 @@ def _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
         reach += distance(si, window, law, a, k)
     if sj > 0.0:
         reach += distance(sj, window, law, a, k)
-    if math.hypot(ax, ay) - dc > reach * (1.0 + 1e-9) + 1e-12:
+    lim = reach * (1.0 + 1e-9) + 1e-12
+    # The same test without the square root first where it is clear-cut (margins far above round-off, so both say
+    # the same): a squared gap beyond ((dc + lim) (1 + 1e-12))^2 (1 + 1e-12) is beyond dc + lim after hypot too.
+    far = (dc + lim) * (1.0 + 1e-12)
+    if ax * ax + ay * ay > far * far * (1.0 + 1e-12):
+        return math.inf
+    if math.hypot(ax, ay) - dc > lim:
         return math.inf
     if si == 0.0 or sj == 0.0:
         # One ball at rest: the other's centre runs along a straight segment of length ``reach`` (its direction is
@@ -309,6 +320,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             v0[i, 1] = 0.0
 
     pair_t = np.empty((n, n))
+    st = np.empty((n, 5))  # the balls' states at the current event (x, y, vx, vy, speed)
     for i in range(n):
         for j in range(n):
             pair_t[i, j] = math.inf
@@ -316,8 +328,10 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         if on_table[i]:
             ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm)
     for i in range(n):
+        rest_i = v0[i, 0] == 0.0 and v0[i, 1] == 0.0
         for j in range(i + 1, n):
-            if on_table[i] and on_table[j]:
+            # Two balls at rest never meet (the pair stays at inf, as _pair_time would say).
+            if on_table[i] and on_table[j] and not (rest_i and v0[j, 0] == 0.0 and v0[j, 1] == 0.0):
                 pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, tstop, ball_t, radius, prm)
 
     cap = 64
@@ -413,6 +427,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         ev_t, ev_int, ev_speed = append_event(ev_t, ev_int, ev_speed, n_events, t, kind, bi, bj, speed)
         n_events += 1
 
+        have_states = False
         for q in range(n_inv):
             i = involved[q]
             if record:
@@ -427,18 +442,44 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 continue
             ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r,
                                                                    prm)
-            xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, tstop, law, a, k)  # once for all pairs of ball i
+            if not have_states:  # every ball's state at t, once for all the involved balls' pairs
+                for m in range(n):
+                    if not on_table[m]:
+                        continue
+                    if v0[m, 0] == 0.0 and v0[m, 1] == 0.0:  # at rest (what _state_at says, without its hypot)
+                        st[m, 0] = p0[m, 0]
+                        st[m, 1] = p0[m, 1]
+                        st[m, 2] = 0.0
+                        st[m, 3] = 0.0
+                        st[m, 4] = 0.0
+                    else:
+                        st[m, 0], st[m, 1], st[m, 2], st[m, 3] = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
+                        st[m, 4] = math.hypot(st[m, 2], st[m, 3])
+                have_states = True
+            xi = st[i, 0]
+            yi = st[i, 1]
+            vxi = st[i, 2]
+            vyi = st[i, 3]
+            rest_i = vxi == 0.0 and vyi == 0.0
             for m in range(n):
                 if m == i:
                     continue
                 if not on_table[m]:
                     pair_t[min(i, m), max(i, m)] = math.inf
                     continue
-                xm, ym, vxm, vym = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
+                xm = st[m, 0]
+                ym = st[m, 1]
+                vxm = st[m, 2]
+                vym = st[m, 3]
+                if rest_i and vxm == 0.0 and vym == 0.0:  # two balls at rest never meet
+                    pair_t[min(i, m), max(i, m)] = math.inf
+                    continue
                 if i < m:
-                    pair_t[i, m] = _pair_time(i, m, t, xi, yi, vxi, vyi, xm, ym, vxm, vym, ball_t, radius, prm)
+                    pair_t[i, m] = _pair_time_s(i, m, t, xi, yi, vxi, vyi, st[i, 4], xm, ym, vxm, vym, st[m, 4],
+                                                ball_t, radius, prm)
                 else:
-                    pair_t[m, i] = _pair_time(m, i, t, xm, ym, vxm, vym, xi, yi, vxi, vyi, ball_t, radius, prm)
+                    pair_t[m, i] = _pair_time_s(m, i, t, xm, ym, vxm, vym, st[m, 4], xi, yi, vxi, vyi, st[i, 4],
+                                                ball_t, radius, prm)
 
     for i in range(n):
         if on_table[i]:

@@ -242,6 +242,39 @@ def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
 
 
 @internal
+def _pair_from_states(i, j, t, xi, yi, vxi, vyi, axi, ayi, hvi, hai, xj, yj, vxj, vyj, axj, ayj, hvj, haj, ball_t,
+                      radius, max_time):
+    """:func:`_predict_pair` from both balls' states at ``t`` (``i < j``: position, velocity, the piece's
+    acceleration, and the ``hypot`` of the velocity and of the acceleration), worked out once per ball for all its
+    pairs."""
+    if vxi == 0.0 and vyi == 0.0 and vxj == 0.0 and vyj == 0.0 and axi == 0.0 and ayi == 0.0 and axj == 0.0 \
+            and ayj == 0.0:
+        return math.inf
+    window = min(max_time, ball_t[i], ball_t[j]) - t
+    if not window > 0.0:
+        return math.inf
+    dc = radius[i] + radius[j]
+    ax = xi - xj
+    ay = yi - yj
+    # Cull pairs too far apart to meet within the window (reach: spin_motion.reach, from the hypots given); on
+    # squares first where clear-cut (margins far above round-off: beyond there, beyond after hypot too).
+    lim = (window * (hvi + 0.5 * hai * window) + window * (hvj + 0.5 * haj * window)) * (1.0 + 1e-9) + 1e-12
+    far = (dc + lim) * (1.0 + 1e-12)
+    if ax * ax + ay * ay > far * far * (1.0 + 1e-12):
+        return math.inf
+    if math.hypot(ax, ay) - dc > lim:
+        return math.inf
+    bx = vxi - vxj
+    by = vyi - vyj
+    cx = 0.5 * (axi - axj)
+    cy = 0.5 * (ayi - ayj)
+    closing_tol = 2.0 * dc * (1e-12 + 1e-14 * (hvi + hvj))
+    tau = first_entry(cx * cx + cy * cy, 2.0 * (bx * cx + by * cy), bx * bx + by * by + 2.0 * (ax * cx + ay * cy),
+                      2.0 * (ax * bx + ay * by), ax * ax + ay * ay - dc * dc, window, closing_tol)
+    return t + tau
+
+
+@internal
 def _slow_run(i, j, slow, slow_with, slow_runs):
     """Count a collision of ``i`` and ``j`` towards their run of slow re-contacts (closing slower than the speed
     floor, one after another with no faster one between); returns the run's length (0 after a fast one).
@@ -452,6 +485,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     cw = np.zeros((2, 3))
     scratch = np.zeros(10)  # for the cushion laws that integrate
     involved = np.empty(n, np.int64)
+    ps = np.empty((n, 6))  # the balls' states at the current event: x, y, vx, vy, |v|, |a|
     t = 0.0
     n_events = 0
     status = STATUS_REST
@@ -607,15 +641,35 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                                                                        length, width, max_time)
             else:
                 ball_t[i] = math.inf
+        have_states = False
         for q in range(n_inv):
             i = involved[q]
+            if on_table[i] and not have_states:  # every ball's state at t, once for all the involved balls' pairs
+                for m in range(n):
+                    if on_table[m]:
+                        x, y, vx, vy, _, _, _ = _state_at(bs, m, t)
+                        ps[m, 0] = x
+                        ps[m, 1] = y
+                        ps[m, 2] = vx
+                        ps[m, 3] = vy
+                        ps[m, 4] = math.hypot(vx, vy)
+                        ps[m, 5] = math.hypot(bs[m, AX], bs[m, AY])
+                have_states = True
             for m in range(n):
                 if m == i:
                     continue
                 lo = min(i, m)
                 hi = max(i, m)
                 if on_table[i] and on_table[m]:
-                    pair_t[lo, hi] = _predict_pair(lo, hi, t, bs, ball_t, radius, max_time)
+                    again = False  # a pair of two involved balls: worked out once (the same inputs the second time)
+                    for h in range(q):
+                        if involved[h] == m:
+                            again = True
+                    if not again:
+                        pair_t[lo, hi] = _pair_from_states(lo, hi, t, ps[lo, 0], ps[lo, 1], ps[lo, 2], ps[lo, 3],
+                                                           bs[lo, AX], bs[lo, AY], ps[lo, 4], ps[lo, 5], ps[hi, 0],
+                                                           ps[hi, 1], ps[hi, 2], ps[hi, 3], bs[hi, AX], bs[hi, AY],
+                                                           ps[hi, 4], ps[hi, 5], ball_t, radius, max_time)
                 else:
                     pair_t[lo, hi] = math.inf
 

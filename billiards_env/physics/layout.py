@@ -426,6 +426,11 @@ def nearest_free(x: float, y: float, discs: np.ndarray, x0: float, x1: float, y0
         ax, ay, ar = discs[a, 0], discs[a, 1], discs[a, 2]
         for b in range(a + 1, nd):
             bx, by, br = discs[b, 0], discs[b, 1], discs[b, 2]
+            # Discs far apart do not cross: tested on squares first where clear-cut (margins far above round-off,
+            # so that the hypot test below would say the same), most pairs without a hypot.
+            far = (ar + br) * (1.0 + 1e-12)
+            if (bx - ax) * (bx - ax) + (by - ay) * (by - ay) > far * far:
+                continue
             d = py_hypot(bx - ax, by - ay)
             if d == 0.0 or d > ar + br or d < abs(ar - br):
                 continue

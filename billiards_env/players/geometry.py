@@ -125,6 +125,29 @@ def windows_of(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Mod
 
 
 @njit(cache=True)
+def windows_cached(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Model, cache_pos: np.ndarray,
+                   cache_win: np.ndarray, cache_have: np.ndarray) -> np.ndarray:
+    """:func:`windows_of` (its samples) with a table's cache of its balls' windows: ball ``j``'s are taken from
+    ``cache_win[j]`` when ``cache_have[j]`` and it stands exactly where they were worked out (``cache_pos[j]``),
+    else worked out and kept. A ball's windows depend on its position alone (the table's model fixed), so they are
+    the same numbers either way."""
+    k_p = tm.pocket_r.shape[0]
+    out = np.zeros((targets.shape[0], k_p, 4))
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if cache_have[j] and cache_pos[j, 0] == pos[j, 0] and cache_pos[j, 1] == pos[j, 1]:
+            out[t] = cache_win[j]
+            continue
+        pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
+                       WINDOW_SAMPLES, out[t])
+        cache_win[j] = out[t]
+        cache_pos[j, 0] = pos[j, 0]
+        cache_pos[j, 1] = pos[j, 1]
+        cache_have[j] = True
+    return out
+
+
+@njit(cache=True)
 def target_windows(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, pocket_xy: np.ndarray,
                    pocket_r: np.ndarray, params: np.ndarray) -> np.ndarray:
     """:func:`windows_of` on a :class:`TableModel`'s arrays (41 samples)."""
@@ -144,7 +167,7 @@ def _speed_to_travel(d: float, v_end: float, tm: Model) -> float:
 def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: float, w_half: float, w_dist: float,
              pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, tm: Model,
              lo: float, hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool,
-             scratch: np.ndarray, floor: float = -math.inf) -> bool:
+             scratch: np.ndarray, floor: float = -math.inf, obj_clear: int = -1) -> bool:
     """The ghost-ball shot from the cue ball at ``(cx, cy)`` sending ball ``j`` into pocket ``p`` through its
     window ``(w_angle, w_half, w_dist)``, written into ``out`` (a row of :data:`N_COLS`); False (and ``out``
     untouched) when there is none: the ghost ball on the cue ball, a cut beyond ``max_cut``, or the ghost ball off
@@ -156,7 +179,9 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     ease (``COL_TOL``): the pocket window seen from the ball scaled by ``(rc + ro) cos(cut) / (d_cue + rc + ro)``;
     the score divides it by 10 when a path is blocked, by 3 when the speed is out of range and by 2 for the
     scratch risk. ``scratch``: a (2, 2) work array. ``floor``: skip (return False) a shot whose ease cannot
-    beat it (the score is at most the tolerance), before its paths and speeds are worked out."""
+    beat it (the score is at most the tolerance), before its paths and speeds are worked out, or whose path is
+    blocked and a tenth of its ease cannot beat it, before its speeds. ``obj_clear``: the object ball's clear path
+    (:func:`object_path_clear`) when known (0 or 1; -1: work it out), the same from every cue position."""
     rc = radius[cue]
     mc = mass[cue]
     ox = pos[j, 0]
@@ -183,8 +208,13 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     tol = w_half * (rc + ro) * cos_cut / (d_cue + rc + ro)
     if tol <= floor:
         return False
-    clear_obj = not segment_blocked_by(ox, oy, ox + ux * w_dist, oy + uy * w_dist, pos, on, radius, cue, j, ro)
+    if obj_clear < 0:
+        clear_obj = object_path_clear(ox, oy, ux, uy, w_dist, pos, on, radius, cue, j)
+    else:
+        clear_obj = obj_clear != 0
     clear = clear_obj and not segment_blocked_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc)
+    if not clear and tol / 10.0 <= floor:  # its score is at most tol / 10: it cannot beat the floor either
+        return False
     collide_into(scratch, 1.0 * cos_cut, 0.0, 0.0, 0.0, -1.0, 0.0, mc, mo, e)
     transfer = scratch[1, 0]  # object ball speed per unit impact speed
     speed = hi
@@ -240,6 +270,15 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     out[COL_SCORE] = score
     out[COL_CLEAR_OBJ] = 1.0 if clear_obj else 0.0
     return True
+
+
+@njit(cache=True)
+def object_path_clear(ox: float, oy: float, ux: float, uy: float, w_dist: float, pos: np.ndarray, on: np.ndarray,
+                      radius: np.ndarray, cue: int, j: int) -> bool:
+    """Whether ball ``j`` at ``(ox, oy)`` rolls ``w_dist`` along ``(ux, uy)`` (its pocket window's centre) without
+    touching a ball of the table other than the cue ball: the object ball's half of :func:`shot_row`'s clear path,
+    the same from wherever the cue ball is."""
+    return not segment_blocked_by(ox, oy, ox + ux * w_dist, oy + uy * w_dist, pos, on, radius, cue, j, radius[j])
 
 
 @njit(cache=True)
@@ -353,9 +392,11 @@ def place_for_shot(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np
     best_score = -1.0
     have = False
     r = radius[cue]
+    obj_clear = np.full(k_p, -1, np.int64)  # the object ball's clear path to each pocket (-1: not worked out yet)
     for t in range(targets.shape[0]):
         j = targets[t]
         contact = r + radius[j]
+        obj_clear[:] = -1
         for p in range(k_p):
             w = windows[t, p]
             if w[WIN_FOUND] == 0.0:
@@ -371,12 +412,17 @@ def place_for_shot(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np
                 if on[j] and j != cue:
                     for q in range(k_p):
                         wq = windows[t, q]
+                        if wq[WIN_FOUND] == 0.0:
+                            continue
+                        if obj_clear[q] < 0:
+                            obj_clear[q] = object_path_clear(pos[j, 0], pos[j, 1], math.cos(wq[WIN_ANGLE]),
+                                                             math.sin(wq[WIN_ANGLE]), wq[WIN_DIST], pos, on, radius,
+                                                             cue, j)
                         # A shot whose ease cannot beat the best place so far, nor this place's best shot, cannot
                         # change the choice: skipped before its paths and speeds.
-                        if wq[WIN_FOUND] != 0.0 and shot_row(row, px, py, j, q, wq[WIN_ANGLE], wq[WIN_HALF],
-                                                             wq[WIN_DIST], pos, on, radius, mass, cue, tm, lo, hi,
-                                                             max_cut, arrive, factors, True, scratch,
-                                                             max(best_score, score)):
+                        if shot_row(row, px, py, j, q, wq[WIN_ANGLE], wq[WIN_HALF], wq[WIN_DIST], pos, on, radius,
+                                    mass, cue, tm, lo, hi, max_cut, arrive, factors, True, scratch,
+                                    max(best_score, score), obj_clear[q]):
                             if row[COL_SCORE] > score:
                                 score = row[COL_SCORE]
                 if score < 0.0:
@@ -410,6 +456,29 @@ def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
     (ball in hand), ``rows`` the ranked ghost-ball shots from where it is played (cut up to
     ``max(max_cut, 88 deg)``), ``shot_row`` the index of the one played (-1: the break or the fallback direct hit),
     ``status`` 0, or 1 when ball in hand found no legal point."""
+    return _decision(pos, on, radius, mass, cue, targets, pocket_xy, pocket_r, params, lo, hi, area, in_hand, is_break,
+                     max_cut, np.zeros((0, 2)), np.zeros((0, 1, 4)), np.zeros(0, np.bool_))  # (no cache)
+
+
+@njit(cache=True)
+def geometric_decision_cached(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                              targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray,
+                              lo: float, hi: float, area: np.ndarray, in_hand: bool, is_break: bool, max_cut: float,
+                              cache_pos: np.ndarray, cache_win: np.ndarray, cache_have: np.ndarray) -> tuple:
+    """:func:`geometric_decision_arrays` with a table's cache of its balls' pocket windows (:func:`windows_cached`:
+    ``cache_pos`` (B, 2), ``cache_win`` (B, K, 4), ``cache_have`` (B,) False at first), kept between the decisions
+    on one table: the balls that have not moved keep theirs. The same decision, bit for bit."""
+    return _decision(pos, on, radius, mass, cue, targets, pocket_xy, pocket_r, params, lo, hi, area, in_hand, is_break,
+                     max_cut, cache_pos, cache_win, cache_have)
+
+
+@njit(cache=True)
+def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, targets: np.ndarray,
+              pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float, hi: float, area: np.ndarray,
+              in_hand: bool, is_break: bool, max_cut: float, cache_pos: np.ndarray, cache_win: np.ndarray,
+              cache_have: np.ndarray) -> tuple:
+    """:func:`geometric_decision_arrays`, with the windows from the cache when one is given (``cache_have`` not
+    empty)."""
     tm = model(pocket_xy, pocket_r, params)
     factors = np.array(SPEED_FACTORS)
     empty = np.empty((0, N_COLS))
@@ -432,7 +501,10 @@ def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
         if j < 0:
             j = cue
         return px, py, in_hand, math.atan2(pos[j, 1] - cy, pos[j, 0] - cx), hi, -1, empty, 0
-    windows = windows_of(pos, radius, targets, tm)
+    if cache_have.shape[0] == 0:
+        windows = windows_of(pos, radius, targets, tm)
+    else:
+        windows = windows_cached(pos, radius, targets, tm, cache_pos, cache_win, cache_have)
     if in_hand:
         backs = np.array(PLACE_BACKS)
         px, py, ok = place_for_shot(pos, on, radius, mass, cue, targets, windows, tm, lo, hi, max_cut, area, backs,
@@ -664,7 +736,8 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
     return Decision((float(px), float(py)) if placed else None, float(angle), float(speed), pocket, int(k), rows)
 
 
-__all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "target_windows", "shot_row",
+__all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "windows_cached",
+           "geometric_decision_cached", "target_windows", "shot_row",
            "rank_rows", "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "pot_chance",
            "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",

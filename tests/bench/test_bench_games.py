@@ -12,7 +12,7 @@ from benchmarks import games
 @pytest.fixture(scope="module")
 def doc():
     tiny = {"seconds": 0.04, "rounds": 1, "games": 1, "steps": 3, "search_every": 1, "vector_tables": 2,
-            "vector_seconds": 0.05, "job_seconds": 0.04}
+            "vector_seconds": 0.05, "job_seconds": 0.04, "bound_steps": 4, "bound_repeats": 1}
     saved = games._sizes
     games._sizes = lambda quick: tiny
     try:
@@ -27,13 +27,17 @@ def test_every_figure_and_target_is_there(doc):
         assert all(r["shots"] >= r["steps"] > 0 for r in doc["single"][env_id].values())
         assert doc["decisions"][env_id]["geometric"]["n"] > 0
         assert doc["vector"][env_id]["native"] and doc["vector"][env_id]["steps"] > 0
+        assert 0.0 < doc["vector"][env_id]["kernel_cpu_s"] <= doc["vector"][env_id]["cpu_s"]
+        b = doc["bound"][env_id]  # the physics bound: the same games' shots replayed alone
+        assert b["shots"] >= b["steps"] > 0 and b["events"] > 0 and b["passes"] == 1
+        assert b["bound_steps_per_cpu_s"] > 0 and b["physics_us_per_shot"] > 0
     assert set(doc["job"]) == set(games.JOB_CONFIGS)
     for j in doc["job"].values():
         assert j["before"]["shots"] > 0 and j["after"]["shots"] > 0 and j["native"]["shots"] > 0
     names = [r["name"] for r in games.targets(doc)]
     assert len(names) == 6 + 2 + 1 + 2
     md = games.render_markdown(doc)
-    assert "## Targets (issue 21)" in md and "training job" in md
+    assert "## Targets (issue 21)" in md and "training job" in md and "physics bound" in md
 
 
 def test_before_is_the_same_behaviour():

@@ -15,12 +15,15 @@ from billiards_env.envs.config import ACTION_TYPES, OBSERVATION_TYPES
 from billiards_env.envs.vector import BilliardsVectorEnv
 
 
-def _same_info(a: dict, b: dict, where: str = "info") -> None:
+def _same_info(a: dict, b: dict, where: str = "info", ordered: bool = False) -> None:
+    """The same keys (``ordered``: in the same order too), arrays, dtypes and masks."""
     assert set(a) == set(b), (where, sorted(a), sorted(b))
+    if ordered:
+        assert list(a) == list(b), (where, list(a), list(b))
     for key in a:
         x, y = a[key], b[key]
         if isinstance(x, dict):
-            _same_info(x, y, f"{where}/{key}")
+            _same_info(x, y, f"{where}/{key}", ordered)
             continue
         assert x.dtype == y.dtype, (where, key, x.dtype, y.dtype)
         if x.dtype == object:
@@ -49,7 +52,8 @@ def _compare(env_id: str, mode: AutoresetMode, steps: int, n: int = 4, seed: int
     obs, info = vec.reset(seed=seed)
     obs_r, info_r = ref.reset(seed=seed)
     assert np.array_equal(obs, obs_r)
-    _same_info(info, info_r)
+    ordered = env_id in GAME_IDS and vec.unwrapped.games is not None  # the games' info keys in Gymnasium's order
+    _same_info(info, info_r, ordered=ordered)
     rng = np.random.default_rng(seed)
     seen = {"done": 0, "scratch": 0, "pocketed": 0}
     needs_reset = np.zeros(n, bool)
@@ -62,7 +66,7 @@ def _compare(env_id: str, mode: AutoresetMode, steps: int, n: int = 4, seed: int
         out, out_r = vec.step(action), ref.step(action)
         for x, y, name in zip(out[:4], out_r[:4], ("obs", "reward", "terminated", "truncated")):
             assert x.dtype == y.dtype and np.array_equal(x, y), (step, name, x, y)
-        _same_info(out[4], out_r[4])
+        _same_info(out[4], out_r[4], ordered=ordered)
         needs_reset = out[2] | out[3]
         seen["done"] += int(needs_reset.sum())
         info = out[4].get("final_info", out[4])
@@ -105,6 +109,53 @@ def test_native_games_equal_single_envs(env_id, mode):
     assert vec.unwrapped.native and vec.unwrapped.games is not None
     seen = _compare(env_id, mode, steps=12, n=3, first_shooter="random")
     assert seen["done"] > 0 and seen["pocketed"] > 0
+
+
+def _same_values(got, want, where: str) -> None:
+    """Equal values of the same Python types (recursing into dicts, lists and tuples)."""
+    assert type(got) is type(want), (where, got, want)
+    if isinstance(want, dict):
+        assert list(got) == list(want), (where, list(got), list(want))
+        for key in want:
+            _same_values(got[key], want[key], f"{where}/{key}")
+    elif isinstance(want, (list, tuple)):
+        assert len(got) == len(want), (where, got, want)
+        for i, (x, y) in enumerate(zip(got, want)):
+            _same_values(x, y, f"{where}[{i}]")
+    else:
+        assert got == want, (where, got, want)
+
+
+@pytest.mark.parametrize("env_id", NATIVE_GAMES)
+def test_native_game_sub_infos_are_the_single_envs_infos(env_id):
+    """``sub_infos`` (the per-table dicts, made only when asked for) is each table's info as its single env returns
+    it, key order, values and types (the opponent's turns included), after a reset and through next-step
+    autoresets."""
+    n = 5
+    kw = {"first_shooter": "random", "opening": "either"}
+    vec = gym.make_vec(env_id, n, **kw)
+    singles = [python_path_env(env_id, **kw) for _ in range(n)]
+    vec.reset(seed=3)
+    want = [env.reset(seed=3 + k)[1] for k, env in enumerate(singles)]
+    _same_values(vec.unwrapped.sub_infos, want, "reset")
+    done = [False] * n
+    rng = np.random.default_rng(4)
+    turns = 0
+    for step in range(10):
+        action = rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32)
+        vec.step(action)
+        want = []
+        for k, env in enumerate(singles):
+            if done[k]:
+                info = env.reset()[1]
+                done[k] = False
+            else:
+                _, _, term, trunc, info = env.step(action[k])
+                done[k] = term or trunc
+            turns += len(info["opponent_turns"])
+            want.append(info)
+        _same_values(vec.unwrapped.sub_infos, want, f"step {step}")
+    assert turns > 0 and vec.unwrapped.sub_infos is vec.unwrapped.sub_infos  # made once per step
 
 
 @pytest.mark.parametrize("kwargs", [

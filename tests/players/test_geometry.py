@@ -170,3 +170,37 @@ def test_ghost_shots_rows_are_ranked_and_complete():
     assert np.all(np.diff(rows[:, COL_SCORE]) <= 0.0)
     keys = [(int(r[COL_TARGET]), int(r[COL_POCKET])) for r in rows]
     assert len(set(keys)) == len(keys)
+
+
+def test_decision_with_a_windows_cache_is_the_same_decision():
+    """``geometric_decision_cached`` (the native games' opponent: each table keeps its balls' pocket windows by
+    position) decides as ``geometric_decision_arrays``, bit for bit, while some balls move between decisions and
+    others stay (their windows then come from the cache)."""
+    from billiards_env.players.geometry import MAX_CUT, geometric_decision_arrays, geometric_decision_cached
+
+    rng = np.random.default_rng(4)
+    table, physics = Table(), PHYSICS["rolling"]
+    tm = table_model(table, physics)
+    n = 10
+    pos = _random_layout(rng, n, table)
+    on = np.ones(n, np.bool_)
+    radius, mass = np.full(n, BALL_RADIUS), np.full(n, 0.17)
+    cache = (np.zeros((n, 2)), np.zeros((n, tm.pocket_r.shape[0], 4)), np.zeros(n, np.bool_))
+    hits = 0
+    for k in range(30):
+        if k:  # a few balls move (a fresh layout drawn, some of its points kept)
+            fresh = _random_layout(rng, n, table)
+            moved = rng.random(n) < 0.3
+            candidate = np.where(moved[:, None], fresh, pos)
+            if all(np.hypot(*(candidate[i] - candidate[j])) >= 2 * R for i in range(n) for j in range(i)):
+                hits += int((~moved[1:]).sum())
+                pos = candidate
+        targets = np.arange(1, n, dtype=np.int64)
+        in_hand = k % 3 == 0
+        area = np.array([R, table.length - R, R, table.width - R] if in_hand else [0.0] * 4)
+        args = (np.ascontiguousarray(pos), on, radius, mass, 0, targets, tm.pocket_xy, tm.pocket_r, tm.params, 0.5,
+                5.0, area, in_hand, False, MAX_CUT)
+        want, got = geometric_decision_arrays(*args), geometric_decision_cached(*args, *cache)
+        for a, b in zip(want, got):
+            assert np.array_equal(np.asarray(a), np.asarray(b))
+    assert hits > 0 and cache[2][1:].all()
