@@ -1,0 +1,134 @@
+"""The position map of the ``candidates_position`` observation type
+(:class:`billiards_env.envs.observations.CuePositionFeatures`): for every pot slot of the ``candidates`` types, on a
+small grid of the action's own ``power`` and ``top`` values, where the cue ball comes to rest, whether it scratches
+on the way, whether the ball drops, and how easy the next shot is from there.
+
+A pool player (and the search player the 9-ball agent is distilled from) chooses among the pots by the position each
+one leaves; the ``candidates`` observation does not say where the cue ball goes. Here every grid point is the
+closed form of :func:`billiards_env.physics.cue_rest.cue_rest` (no simulation) and the next shot's ease is the
+search player's own position term (:func:`billiards_env.players.geometry.places_ease`: the easiest ghost-ball shot's
+chance from the rest point, blocked paths cut down) at the *next* legal balls: the legal balls other than the one
+potted, or, when it was the only one, the lowest-numbered ball left (the 9-ball rotation rule; in 8-ball after the
+group's last ball this reads the lowest ball left, not the 8); a shot that clears the table reads ease 1.
+"""
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numba import njit
+
+from billiards_env.physics.aim import ghost_point
+from billiards_env.physics.cue_rest import MAX_BOUNCES, cue_rest
+from billiards_env.players.geometry import (COL_D_OBJ, COL_OBJ_ANGLE, COL_SPEED, COL_TARGET, MAX_CUT, places_ease,
+                                            state_model)
+
+from .candidates import EASE_SPREAD
+
+if TYPE_CHECKING:  # pragma: no cover
+    from billiards_env.table_state import TableState
+
+#: The ``power`` values (a[1] of the ``candidates`` actions: the slot's own speed times
+#: ``candidate_speed_factor ** a``, clipped to the speed range) of the grid.
+POWERS = (-0.5, 0.0, 0.5)
+#: The ``top`` values (a[3]; side 0: a tip offset of ``top * max_tip_offset`` R, draw below 0) of the grid.
+TOPS = (-1.0, 0.0, 1.0)
+#: Values per grid point: the ball drops, the cue ball scratches, its rest x / length, y / width, the next ease.
+POINT_VALUES = 5
+#: Values per slot appended by the ``candidates_position`` observation (power-major: ``POWERS[i], TOPS[j]`` at
+#: ``POINT_VALUES * (i * len(TOPS) + j)``).
+POSITION_FEATURES = POINT_VALUES * len(POWERS) * len(TOPS)
+_POWERS = np.asarray(POWERS)
+_TOPS = np.asarray(TOPS)
+
+
+@njit(cache=True)
+def rest_grid(cx: float, cy: float, rows: np.ndarray, opos: np.ndarray, contact: np.ndarray, lo: float, hi: float,
+              log_factor: float, max_tip: float, powers: np.ndarray, tops: np.ndarray, rc: float, mc: float, mo: float,
+              length: float, width: float, e_cushion: float, e_ball: float, pocket_xy: np.ndarray,
+              pocket_r: np.ndarray, law: int, a: float, k: float, v_min: float, params: np.ndarray) -> np.ndarray:
+    """For each pot row of ``rows`` (shot rows of :mod:`billiards_env.players.geometry`; ``opos``: its target's
+    position, ``contact``: the cue ball's and the target's radii summed) and each grid point: ``(pots, pocket, x,
+    y)`` of :func:`~billiards_env.physics.cue_rest.cue_rest` at the row's speed times ``exp(power * log_factor)``
+    (clipped to ``[lo, hi]``, as the ``candidates`` action plays it) and tip offset ``top * max_tip``:
+    ``(N, len(powers) * len(tops), 4)``."""
+    n_t = tops.shape[0]
+    out = np.zeros((rows.shape[0], powers.shape[0] * n_t, 4))
+    for i in range(rows.shape[0]):
+        r = rows[i]
+        gx, gy = ghost_point(opos[i, 0], opos[i, 1], r[COL_OBJ_ANGLE], contact[i])
+        for p in range(powers.shape[0]):
+            speed = min(max(r[COL_SPEED] * math.exp(powers[p] * log_factor), lo), hi)
+            for t in range(n_t):
+                x, y, pocket, pots = cue_rest(cx, cy, gx, gy, r[COL_OBJ_ANGLE], r[COL_D_OBJ], speed,
+                                              tops[t] * max_tip, rc, mc, mo, length, width, e_cushion, e_ball,
+                                              pocket_xy, pocket_r, law, a, k, v_min, params, MAX_BOUNCES)
+                o = out[i, p * n_t + t]
+                o[0] = 1.0 if pots else 0.0
+                o[1] = pocket
+                o[2] = x
+                o[3] = y
+    return out
+
+
+def next_targets(state: "TableState", target: int) -> np.ndarray:
+    """The legal balls after ``target`` drops (see the module docstring): rows, int64; empty when none is left."""
+    b = state.balls
+    rest = [t for t in state.view.targets if t != target]
+    if not rest:
+        nums = state.numbers
+        left = [i for i in range(1, len(b.on_table)) if b.on_table[i] and i != target]
+        if left:
+            rest = [min(left, key=lambda i: nums[i])]
+    return np.asarray(rest, dtype=np.int64)
+
+
+def position_features(state: "TableState", cands: object, n_slots: int, speed_range: tuple[float, float],
+                      log_factor: float, max_tip: float) -> np.ndarray:
+    """``(n_slots, POSITION_FEATURES)`` float32: per pot slot of ``cands`` (the cue ball where it lies) and grid
+    point, ``POINT_VALUES`` values: ``1`` if the ball reaches its pocket else 0; ``1`` if the cue ball runs into a
+    pocket else 0; its rest x / length and y / width (a scratch: where it enters the pocket); the next shot's ease
+    from there (0 after a scratch, 1 when the pot clears the table). Slots without a shot from where the cue ball
+    lies (ball in hand, the break, the kick, empty) read 0."""
+    out = np.zeros((n_slots, POSITION_FEATURES), np.float32)
+    rows = getattr(cands, "rows", None)
+    if rows is None or cands.in_hand or cands.break_shot or rows.shape[0] == 0:
+        return out
+    b = state.balls
+    t = state.table
+    ph = state.physics
+    law, acc, kk = ph.path_args
+    targets = rows[:, COL_TARGET].astype(np.int64)
+    contact = b.radius[0] + b.radius[targets]
+    mo = float(b.mass[1]) if len(b.mass) > 1 else float(b.mass[0])
+    grid = rest_grid(float(b.pos[0, 0]), float(b.pos[0, 1]), rows, np.ascontiguousarray(b.pos[targets]),
+                     np.ascontiguousarray(contact, dtype=np.float64), float(speed_range[0]), float(speed_range[1]),
+                     float(log_factor), float(max_tip), _POWERS, _TOPS, float(b.radius[0]), float(b.mass[0]), mo,
+                     float(t.length), float(t.width), float(t.cushion_restitution), float(ph.ball_restitution),
+                     np.ascontiguousarray(t.pocket_xy, dtype=np.float64),
+                     np.ascontiguousarray(t.pocket_radius, dtype=np.float64), int(law), float(acc), float(kk),
+                     float(ph.min_speed), state.simulator._params)
+    tm = state_model(state)
+    sigma = max(float(state.settings.angle_noise), EASE_SPREAD)
+    g = grid.shape[1]
+    for i in range(min(rows.shape[0], n_slots)):
+        j = int(targets[i])
+        nxt = next_targets(state, j)
+        o = out[i].reshape(g, POINT_VALUES)
+        o[:, 0] = grid[i, :, 0]
+        o[:, 1] = grid[i, :, 1] >= 0.0
+        o[:, 2] = np.clip(grid[i, :, 2] / t.length, 0.0, 1.0)
+        o[:, 3] = np.clip(grid[i, :, 3] / t.width, 0.0, 1.0)
+        if nxt.shape[0] == 0:
+            o[:, 4] = np.where(grid[i, :, 1] >= 0.0, 0.0, 1.0)
+            continue
+        on = b.on_table.copy()
+        on[j] = False
+        ease = places_ease(np.ascontiguousarray(grid[i, :, 2:4]), b.pos, on, b.radius, 0, nxt, tm.pocket_xy,
+                           tm.pocket_r, tm.params, sigma, MAX_CUT)
+        o[:, 4] = np.where(grid[i, :, 1] >= 0.0, 0.0, ease)
+    return out
+
+
+__all__ = ["POWERS", "TOPS", "POINT_VALUES", "POSITION_FEATURES", "rest_grid", "next_targets", "position_features"]
