@@ -30,10 +30,12 @@ if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.table_state import TableState
 
 #: The ``power`` values (a[1] of the ``candidates`` actions: the slot's own speed times
-#: ``candidate_speed_factor ** a``, clipped to the speed range) of the grid.
-POWERS = (-0.5, 0.0, 0.5)
-#: The ``top`` values (a[3]; side 0: a tip offset of ``top * max_tip_offset`` R, draw below 0) of the grid.
-TOPS = (-1.0, 0.0, 1.0)
+#: ``candidate_speed_factor ** a``, clipped to the speed range) of the grid: at the default factor 3, the slot's own
+#: speed and 1.6, 2.5 and 3 times it (the search player's speed factors, where its labels lie).
+POWERS = (0.0, 0.43, 0.83, 1.0)
+#: The ``top`` values (a[3]; side 0: a tip offset of ``top * max_tip_offset`` R, draw below 0) of the grid: draw,
+#: none, follow (the search player's tip offsets at the default ``max_tip_offset``).
+TOPS = (-0.7, 0.0, 0.7)
 #: Values per grid point: the ball drops, the cue ball scratches, its rest x / length, y / width, the next ease.
 POINT_VALUES = 5
 #: Values per slot appended by the ``candidates_position`` observation (power-major: ``POWERS[i], TOPS[j]`` at

@@ -22,7 +22,8 @@ formulas, for the ``candidates_position`` observation (:mod:`billiards_env.envs.
    ``w = 0`` keeps ``5/7`` of ``V0``, a rolling ball follows through, a drawn ball comes back); it rolls in a
    straight line until it stops. A cushion met on the way (the parabola's or the line's first crossing of a
    cushion line) is the scene's cushion law (:func:`.cushion_models.cushion_hit`), after which the ball slides
-   again. A pocket is entered when the line (or the slide's chord) crosses its capture circle (a scratch).
+   again. A pocket is entered when the line (or one of the chords the slide's parabola is cut into) crosses its capture
+   circle (a scratch).
    Under the ``rolling`` and ``drag`` laws the path is straight lines reflected off the cushions (normal
    component times the cushion restitution), as in :mod:`.cue_path`.
 
@@ -45,6 +46,8 @@ from .spin_motion import slip, spin_decay_rate, wz_after
 
 #: Cushion bounces followed along the cue ball's path after contact.
 MAX_BOUNCES = 12
+#: Chords a slide's parabola is cut into for the pocket test.
+_SLIDE_CHORDS = 4
 #: A slip below this (m/s) ends the slide (round-off).
 _SLIP_TOL = 1e-9
 #: The arrival speed (m/s) below which the object ball is taken not to drop (as :mod:`.cue_path`: just moving).
@@ -239,9 +242,18 @@ def lone_ball_rest(x: float, y: float, vx: float, vy: float, wx: float, wy: floa
         t_end = min(t_hit, tau)
         nx = x + t_end * (vx + 0.5 * ax * t_end)
         ny = y + t_end * (vy + 0.5 * ay * t_end)
-        pocket, frac = _pocket_on_segment(x, y, nx, ny, pocket_xy, pocket_r)
-        if pocket >= 0:
-            return x + frac * (nx - x), y + frac * (ny - y), pocket
+        sub = 1 if su <= _SLIP_TOL else _SLIDE_CHORDS  # the slide's parabola as chords, the roll's line as one
+        px = x
+        py = y
+        for q in range(1, sub + 1):
+            tq = t_end * q / sub
+            qx = x + tq * (vx + 0.5 * ax * tq)
+            qy = y + tq * (vy + 0.5 * ay * tq)
+            pocket, frac = _pocket_on_segment(px, py, qx, qy, pocket_xy, pocket_r)
+            if pocket >= 0:
+                return px + frac * (qx - px), py + frac * (qy - py), pocket
+            px = qx
+            py = qy
         x = nx
         y = ny
         vx += ax * t_end
