@@ -24,7 +24,7 @@ from billiards_env.physics.cue_rest import MAX_BOUNCES, cue_rest
 from billiards_env.players.geometry import (COL_D_OBJ, COL_OBJ_ANGLE, COL_SPEED, COL_TARGET, MAX_CUT, places_ease,
                                             state_model)
 
-from .candidates import EASE_SPREAD
+from .candidates import EASE_SPREAD, _numbers, _targets
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.table_state import TableState
@@ -74,16 +74,68 @@ def rest_grid(cx: float, cy: float, rows: np.ndarray, opos: np.ndarray, contact:
     return out
 
 
+@njit(cache=True)
+def next_rows(targets: np.ndarray, numbers: np.ndarray, on: np.ndarray, target: int) -> np.ndarray:
+    """The legal balls after ``target`` drops (see the module docstring): the legal balls ``targets`` other than it,
+    else the lowest-numbered ball left on the table (rows, int64; empty when none is left)."""
+    n = 0
+    for t in targets:
+        if t != target:
+            n += 1
+    if n:
+        out = np.empty(n, np.int64)
+        n = 0
+        for t in targets:
+            if t != target:
+                out[n] = t
+                n += 1
+        return out
+    best = -1
+    for i in range(1, on.shape[0]):
+        if on[i] and i != target and (best < 0 or numbers[i] < numbers[best]):
+            best = i
+    if best < 0:
+        return np.empty(0, np.int64)
+    out = np.empty(1, np.int64)
+    out[0] = best
+    return out
+
+
 def next_targets(state: "TableState", target: int) -> np.ndarray:
-    """The legal balls after ``target`` drops (see the module docstring): rows, int64; empty when none is left."""
-    b = state.balls
-    rest = [t for t in state.view.targets if t != target]
-    if not rest:
-        nums = state.numbers
-        left = [i for i in range(1, len(b.on_table)) if b.on_table[i] and i != target]
-        if left:
-            rest = [min(left, key=lambda i: nums[i])]
-    return np.asarray(rest, dtype=np.int64)
+    """:func:`next_rows` of a table state."""
+    return next_rows(_targets(state), _numbers(state), state.balls.on_table, int(target))
+
+
+@njit(cache=True)
+def _position_map(grid: np.ndarray, rows: np.ndarray, pos: np.ndarray, on: np.ndarray, radius: np.ndarray,
+                  targets: np.ndarray, numbers: np.ndarray, length: float, width: float, pocket_xy: np.ndarray,
+                  pocket_r: np.ndarray, params: np.ndarray, sigma: float, n_slots: int) -> np.ndarray:
+    """The observation's values (see :func:`position_features`) of :func:`rest_grid`'s ``grid``."""
+    g = grid.shape[1]
+    out = np.zeros((n_slots, g * POINT_VALUES), np.float32)
+    on2 = on.copy()
+    places = np.empty((g, 2))
+    for i in range(min(rows.shape[0], n_slots)):
+        j = int(rows[i, COL_TARGET])
+        nxt = next_rows(targets, numbers, on, j)
+        on2[:] = on
+        on2[j] = False
+        for q in range(g):
+            places[q, 0] = grid[i, q, 2]
+            places[q, 1] = grid[i, q, 3]
+        if nxt.shape[0]:
+            ease = places_ease(places, pos, on2, radius, 0, nxt, pocket_xy, pocket_r, params, sigma, MAX_CUT)
+        else:
+            ease = np.ones(g)  # the pot clears the table
+        for q in range(g):
+            o = q * POINT_VALUES
+            scratch = grid[i, q, 1] >= 0.0
+            out[i, o] = grid[i, q, 0]
+            out[i, o + 1] = 1.0 if scratch else 0.0
+            out[i, o + 2] = min(max(grid[i, q, 2] / length, 0.0), 1.0)
+            out[i, o + 3] = min(max(grid[i, q, 3] / width, 0.0), 1.0)
+            out[i, o + 4] = 0.0 if scratch else ease[q]
+    return out
 
 
 def position_features(state: "TableState", cands: object, n_slots: int, speed_range: tuple[float, float],
@@ -92,45 +144,28 @@ def position_features(state: "TableState", cands: object, n_slots: int, speed_ra
     point, ``POINT_VALUES`` values: ``1`` if the ball reaches its pocket else 0; ``1`` if the cue ball runs into a
     pocket else 0; its rest x / length and y / width (a scratch: where it enters the pocket); the next shot's ease
     from there (0 after a scratch, 1 when the pot clears the table). Slots without a shot from where the cue ball
-    lies (ball in hand, the break, the kick, empty) read 0."""
-    out = np.zeros((n_slots, POSITION_FEATURES), np.float32)
+    lies (ball in hand, the break, the kick, empty) read 0. Two compiled calls."""
     rows = getattr(cands, "rows", None)
     if rows is None or cands.in_hand or cands.break_shot or rows.shape[0] == 0:
-        return out
+        return np.zeros((n_slots, POSITION_FEATURES), np.float32)
     b = state.balls
     t = state.table
     ph = state.physics
     law, acc, kk = ph.path_args
+    sim = state.simulator
     targets = rows[:, COL_TARGET].astype(np.int64)
     contact = b.radius[0] + b.radius[targets]
     mo = float(b.mass[1]) if len(b.mass) > 1 else float(b.mass[0])
-    grid = rest_grid(float(b.pos[0, 0]), float(b.pos[0, 1]), rows, np.ascontiguousarray(b.pos[targets]),
-                     np.ascontiguousarray(contact, dtype=np.float64), float(speed_range[0]), float(speed_range[1]),
-                     float(log_factor), float(max_tip), _POWERS, _TOPS, float(b.radius[0]), float(b.mass[0]), mo,
-                     float(t.length), float(t.width), float(t.cushion_restitution), float(ph.ball_restitution),
-                     np.ascontiguousarray(t.pocket_xy, dtype=np.float64),
-                     np.ascontiguousarray(t.pocket_radius, dtype=np.float64), int(law), float(acc), float(kk),
-                     float(ph.min_speed), state.simulator._params)
+    grid = rest_grid(float(b.pos[0, 0]), float(b.pos[0, 1]), rows, b.pos[targets], contact, float(speed_range[0]),
+                     float(speed_range[1]), float(log_factor), float(max_tip), _POWERS, _TOPS, float(b.radius[0]),
+                     float(b.mass[0]), mo, float(t.length), float(t.width), float(t.cushion_restitution),
+                     float(ph.ball_restitution), sim._pocket_xy, sim._pocket_r, int(law), float(acc), float(kk),
+                     float(ph.min_speed), sim._params)
     tm = state_model(state)
     sigma = max(float(state.settings.angle_noise), EASE_SPREAD)
-    g = grid.shape[1]
-    for i in range(min(rows.shape[0], n_slots)):
-        j = int(targets[i])
-        nxt = next_targets(state, j)
-        o = out[i].reshape(g, POINT_VALUES)
-        o[:, 0] = grid[i, :, 0]
-        o[:, 1] = grid[i, :, 1] >= 0.0
-        o[:, 2] = np.clip(grid[i, :, 2] / t.length, 0.0, 1.0)
-        o[:, 3] = np.clip(grid[i, :, 3] / t.width, 0.0, 1.0)
-        if nxt.shape[0] == 0:
-            o[:, 4] = np.where(grid[i, :, 1] >= 0.0, 0.0, 1.0)
-            continue
-        on = b.on_table.copy()
-        on[j] = False
-        ease = places_ease(np.ascontiguousarray(grid[i, :, 2:4]), b.pos, on, b.radius, 0, nxt, tm.pocket_xy,
-                           tm.pocket_r, tm.params, sigma, MAX_CUT)
-        o[:, 4] = np.where(grid[i, :, 1] >= 0.0, 0.0, ease)
-    return out
+    return _position_map(grid, rows, b.pos, b.on_table, b.radius, _targets(state), _numbers(state), float(t.length),
+                         float(t.width), tm.pocket_xy, tm.pocket_r, tm.params, sigma, int(n_slots))
 
 
-__all__ = ["POWERS", "TOPS", "POINT_VALUES", "POSITION_FEATURES", "rest_grid", "next_targets", "position_features"]
+__all__ = ["POWERS", "TOPS", "POINT_VALUES", "POSITION_FEATURES", "rest_grid", "next_rows", "next_targets",
+           "position_features"]
