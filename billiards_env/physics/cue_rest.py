@@ -156,23 +156,20 @@ def _first_wall(x: float, y: float, vx: float, vy: float, ax: float, ay: float, 
             if sgn * v > 0.0:
                 return 0.0, c
             continue
-        roots = np.empty(2)
-        n = 0
+        r0 = math.inf
+        r1 = math.inf
         if abs(acc) < 1e-15:
             if v != 0.0:
-                roots[0] = -c0 / v
-                n = 1
+                r0 = -c0 / v
         else:
             disc = v * v - 2.0 * acc * c0
             if disc >= 0.0:
                 sq = math.sqrt(disc)
                 q = -0.5 * (v + (sq if v >= 0.0 else -sq))
                 if q != 0.0:
-                    roots[0] = q / (0.5 * acc)
-                    roots[1] = c0 / q
-                    n = 2
-        for m in range(n):
-            t = roots[m]
+                    r0 = q / (0.5 * acc)
+                    r1 = c0 / q
+        for t in (r0, r1):
             if 0.0 < t <= tmax and t < best and sgn * (v + acc * t) > 0.0:
                 best = t
                 cushion = c
