@@ -88,7 +88,12 @@ def label_episodes(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
     if wrap is not None:
         env = wrap(env)
     model = None
-    if student is not None:
+    if student is not None and student.startswith("scorer:"):  # an agents.scorer policy (DAgger on its states)
+        from .scorer import Scorer
+
+        sc = Scorer.load(Path(student[len("scorer:"):]))
+        model = type("ScorerStudent", (), {"act": staticmethod(lambda env, obs: sc.predict(obs))})()
+    elif student is not None:
         from .evaluate import model_player
 
         spec = model_player(student)

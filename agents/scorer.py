@@ -170,6 +170,60 @@ class Scorer:
         return cls(net)
 
 
+def reinforce(net: Any, episodes: int, env_kwargs: dict[str, Any], lr: float = 3e-4, batch: int = 32,
+              seed: int = 0, log: Any = None) -> dict[str, Any]:
+    """RL fine-tuning of a scorer (REINFORCE): ``episodes`` games of ``Billiards9Ball-v0`` in ``env_kwargs`` (the
+    rule's types, against the geometric player), the options sampled from the softmax of the scores; every decision
+    of a game is credited with its result (+1 won, -1 lost) less a running mean, Adam on ``batch`` games at a time.
+    Decisions without options play action 0 and are not trained. Returns the win rate per batch."""
+    import gymnasium as gym
+    import torch
+
+    import billiards_env  # noqa: F401
+
+    torch.manual_seed(seed)
+    env = gym.make("Billiards9Ball-v0", **env_kwargs)
+    opt = torch.optim.Adam(net.parameters(), lr=lr)
+    base = 0.0
+    wins: list[float] = []
+    pending: list[tuple[Any, float]] = []
+    net.train()
+    for ep in range(int(episodes)):
+        obs, _ = env.reset(seed=seed * 1_000_003 + ep)
+        logps = []
+        done = False
+        info: dict[str, Any] = {}
+        while not done:
+            feats, valid = options(np.asarray(obs, dtype=np.float32).reshape(1, -1))
+            a = np.zeros(env.action_space.shape, np.float32)
+            if valid[0].any():
+                s = net(torch.as_tensor(feats[0])).squeeze(-1).masked_fill(~torch.as_tensor(valid[0]), -1e9)
+                dist = torch.distributions.Categorical(logits=s)
+                k = dist.sample()
+                logps.append(dist.log_prob(k))
+                a = action_of(int(k), a.shape[0])
+            obs, _, term, trunc, info = env.step(a)
+            done = term or trunc
+        g = 1.0 if info.get("is_success", False) else -1.0
+        wins.append(float(g > 0))
+        if logps:
+            pending.append((torch.stack(logps).sum(), g))
+        if len(pending) >= batch:
+            loss = -sum((g_ - base) * lp for lp, g_ in pending) / len(pending)
+            opt.zero_grad()
+            loss.backward()
+            opt.step()
+            base = 0.9 * base + 0.1 * float(np.mean([g_ for _, g_ in pending]))
+            pending = []
+            if log is not None:
+                log(f"reinforce: {ep + 1} games, win rate of the last {batch * 10}: "
+                    f"{np.mean(wins[-batch * 10:]):.3f}")
+    net.eval()
+    env.close()
+    return {"episodes": int(episodes), "win_rate": float(np.mean(wins)) if wins else float("nan"),
+            "win_rate_last_quarter": float(np.mean(wins[-max(len(wins) // 4, 1):])) if wins else float("nan")}
+
+
 def league_player(path: str | Path) -> Any:
     """A saved scorer as a league player (:class:`agents.games.TrainedPlayer` in the position rule's types)."""
     from .games import TrainedPlayer
@@ -185,7 +239,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     import torch
 
     p = argparse.ArgumentParser(prog="python -m agents.scorer", description=main.__doc__)
-    p.add_argument("--labels", type=Path, nargs="+", required=True)
+    p.add_argument("--labels", type=Path, nargs="*", default=[], help="label files to fit on (cross-entropy)")
+    p.add_argument("--init", type=Path, default=None, help="a saved scorer to start from instead of fitting")
+    p.add_argument("--reinforce", type=int, default=0, help="games of RL fine-tuning (REINFORCE) after")
+    p.add_argument("--rl-lr", type=float, default=3e-4)
     p.add_argument("--out", type=Path, required=True)
     p.add_argument("--epochs", type=int, default=60)
     p.add_argument("--hidden", type=int, default=64)
@@ -193,12 +250,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--seed", type=int, default=0)
     args = p.parse_args(argv)
     torch.set_num_threads(1)
-    obs = np.concatenate([np.load(f)["obs"] for f in args.labels])
-    act = np.concatenate([np.load(f)["actions"] for f in args.labels])
-    net, info = fit(obs, act, args.epochs, args.hidden, seed=args.seed)
+    if args.init is not None:
+        net, info = Scorer.load(args.init).net, {"init": str(args.init)}
+    else:
+        if not args.labels:
+            p.error("give --labels to fit on, or --init")
+        obs = np.concatenate([np.load(f)["obs"] for f in args.labels])
+        act = np.concatenate([np.load(f)["actions"] for f in args.labels])
+        net, info = fit(obs, act, args.epochs, args.hidden, seed=args.seed)
+    print(f"scorer: {info}", flush=True)
+    if args.reinforce:
+        from .position_rule import RULE_KWARGS
+
+        kw = {**RULE_KWARGS, "opponent": "geometric", "first_shooter": "random"}
+        rl = reinforce(net, args.reinforce, kw, lr=args.rl_lr, seed=args.seed,
+                       log=lambda m: print(m, flush=True))
+        print(f"reinforce: {rl}", flush=True)
     sc = Scorer(net)
     sc.save(args.out)
-    print(f"scorer: {info}; saved {args.out}")
+    print(f"saved {args.out}")
     if args.games:
         from billiards_env.players import make_player
 
@@ -217,7 +287,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     return 0
 
 
-__all__ = ["options", "option_of", "action_of", "fit", "Scorer", "league_player", "main", "OPTION_FEATURES"]
+__all__ = ["options", "option_of", "action_of", "fit", "reinforce", "Scorer", "league_player", "main", "OPTION_FEATURES"]
 
 
 if __name__ == "__main__":
