@@ -2,16 +2,19 @@
 
 The teacher's choices in the ``candidates`` action type are discrete in effect (a pot slot, one of a few speeds, draw
 / none / follow) and depend on the position each leaves. Cloned into a Gaussian policy (SAC's actor, agents.distill)
-they are averaged where the teacher picks between modes: a follow and a draw shot average to a stun shot that leaves
-the cue ball somewhere neither chose, and the clones stay near parity with the geometric player whichever teacher
-they copy (agents/README.md, "9-ball"). This policy chooses instead: every (pot slot, power, top) of the observation's
-grid is an *option* with its own features (the slot's 12 ``candidates`` values, the grid point's 5 position-map values,
-the power and top, the game's features); one small MLP scores each option (the same weights for all: the options
-are a set) and the policy plays the best (``top`` as the tip, no side). Trained by cross-entropy on the teacher's
-choices mapped to the nearest option (:func:`fit`). Where the observation has no options (the break, ball in hand,
-no pot from where the cue ball lies) it plays action 0, the geometric player's shot.
+they are averaged where the teacher picks between modes: a follow and a draw shot average to a half-follow that
+leaves the cue ball where neither would, and the clones stay below the geometric player whichever teacher they copy
+(agents/README.md, "Distillation"). This policy chooses instead: every (pot slot, power, top) of the observation's
+grid is an *option* with its own features (the slot's 12 ``candidates`` values, the grid point's 5 position-map
+values, the power and top, the game's features); a small MLP scores each option (the same weights for all: the
+options are a set) and the policy plays the best (``top`` as the tip, no side). Trained by cross-entropy on the
+teacher's choices mapped to the nearest option (:func:`fit`); several fits with different seeds can be summed (an
+ensemble). The break is action 0 (the geometric player's full break); where the observation has no options (ball in
+hand, no pot from where the cue ball lies) a fallback policy plays (the SAC clone of the same labels, which learnt
+the teacher's placements), else action 0.
 
-    python -m agents.scorer --labels runs/<distill run>/labels.npz [more.npz ...] --out runs/scorer.pt
+    python -m agents.scorer --labels runs/<distill run>/labels.npz [more.npz ...] --ensemble 3 \
+        --fallback runs/<distill run>/bc_model.zip --out runs/scorer.pt --games 400
 
 A saved scorer plays in the league as ``scorer:<path>`` (:func:`league_player`).
 """
@@ -129,28 +132,50 @@ def fit(obs: np.ndarray, actions: np.ndarray, epochs: int = 60, hidden: int = 64
 
 
 class Scorer:
-    """A trained scorer: ``predict(obs) -> action`` (deterministic: the best option, else action 0), the net's
-    forward pass in numpy (a decision is a few small matrix products: no torch call per shot)."""
+    """A trained scorer: ``predict(obs) -> action``, deterministic. The break: action 0 (the geometric player's full
+    break). With options: the best by the scores summed over ``nets`` (an ensemble of fits; the forward passes in
+    numpy: a decision is a few small matrix products, no torch call per shot). Without (ball in hand, no pot from
+    where the cue ball lies): the ``fallback`` policy (an SB3 model zip in the same types, e.g. the SAC clone of the
+    same teacher, which learnt the teacher's placements), else action 0."""
 
-    def __init__(self, net: Any) -> None:
-        self.net = net.eval()
-        layers = [m for m in net if hasattr(m, "weight")]
-        self._w = [(m.weight.detach().numpy().T.astype(np.float32).copy(), m.bias.detach().numpy().astype(np.float32))
-                   for m in layers]
+    def __init__(self, nets: Any, fallback: str | Path | None = None) -> None:
+        self.nets = list(nets) if isinstance(nets, (list, tuple)) else [nets]
+        for net in self.nets:
+            net.eval()
+        self._w = [[(m.weight.detach().numpy().T.astype(np.float32).copy(), m.bias.detach().numpy().astype(np.float32))
+                    for m in net if hasattr(m, "weight")] for net in self.nets]
+        self.fallback = str(fallback) if fallback else None
+        self._fallback: Any = None
+
+    @property
+    def net(self) -> Any:
+        return self.nets[0]
 
     def scores(self, feats: np.ndarray) -> np.ndarray:
-        """The net's scores of option features ``(M, OPTION_FEATURES)``: linear layers with ReLU between."""
-        h = feats
-        for i, (w, b) in enumerate(self._w):
-            h = h @ w + b
-            if i < len(self._w) - 1:
-                np.maximum(h, 0.0, out=h)
-        return h[:, 0]
+        """The scores of option features ``(M, OPTION_FEATURES)`` summed over the nets (linear layers, ReLU between)."""
+        total = np.zeros(len(feats), np.float32)
+        for layers in self._w:
+            h = feats
+            for i, (w, b) in enumerate(layers):
+                h = h @ w + b
+                if i < len(layers) - 1:
+                    np.maximum(h, 0.0, out=h)
+            total += h[:, 0]
+        return total
 
     def predict(self, obs: np.ndarray) -> np.ndarray:
-        feats, valid = options(np.asarray(obs, dtype=np.float32).reshape(1, -1))
-        if not valid[0].any():
+        o = np.asarray(obs, dtype=np.float32).reshape(1, -1)
+        if o[0, -N_GAME + 2] > 0.5:  # the break (the game's break flag)
             return np.zeros(6, np.float32)
+        feats, valid = options(o)
+        if not valid[0].any():
+            if self.fallback is None:
+                return np.zeros(6, np.float32)
+            if self._fallback is None:
+                from .evaluate import model_player
+
+                self._fallback = model_player(self.fallback)
+            return np.asarray(self._fallback.act(None, o[0]), np.float32).reshape(-1)
         s = self.scores(feats[0])
         s[~valid[0]] = -np.inf
         return action_of(int(np.argmax(s)))
@@ -158,16 +183,20 @@ class Scorer:
     def save(self, path: Path) -> None:
         import torch
 
-        torch.save({"state_dict": self.net.state_dict(), "hidden": self.net[0].out_features}, str(path))
+        torch.save({"state_dicts": [n.state_dict() for n in self.nets], "hidden": self.nets[0][0].out_features,
+                    "fallback": self.fallback}, str(path))
 
     @classmethod
     def load(cls, path: Path) -> "Scorer":
         import torch
 
         d = torch.load(str(path), weights_only=True)
-        net = make_net(int(d["hidden"]))
-        net.load_state_dict(d["state_dict"])
-        return cls(net)
+        nets = []
+        for sd in d["state_dicts"]:
+            net = make_net(int(d["hidden"]))
+            net.load_state_dict(sd)
+            nets.append(net)
+        return cls(nets, d.get("fallback"))
 
 
 def reinforce(net: Any, episodes: int, env_kwargs: dict[str, Any], lr: float = 3e-4, batch: int = 32,
@@ -246,19 +275,29 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--out", type=Path, required=True)
     p.add_argument("--epochs", type=int, default=60)
     p.add_argument("--hidden", type=int, default=64)
+    p.add_argument("--ensemble", type=int, default=1, help="nets fitted with different seeds, their scores summed")
+    p.add_argument("--fallback", type=Path, default=None, help="an SB3 model zip in the same types for the states "
+                   "without options (ball in hand, no pot), e.g. agents.distill's bc_model.zip of the same labels")
     p.add_argument("--games", type=int, default=400, help="league games against the geometric player (0: none)")
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--league-seed", type=int, default=0, help="the league's racks: game k on seed league_seed + k")
     args = p.parse_args(argv)
     torch.set_num_threads(1)
     if args.init is not None:
-        net, info = Scorer.load(args.init).net, {"init": str(args.init)}
+        nets, info = Scorer.load(args.init).nets, {"init": str(args.init)}
     else:
         if not args.labels:
             p.error("give --labels to fit on, or --init")
         obs = np.concatenate([np.load(f)["obs"] for f in args.labels])
         act = np.concatenate([np.load(f)["actions"] for f in args.labels])
-        net, info = fit(obs, act, args.epochs, args.hidden, seed=args.seed)
+        nets, infos = [], []
+        for k in range(max(args.ensemble, 1)):
+            net, one = fit(obs, act, args.epochs, args.hidden, seed=args.seed + k)
+            nets.append(net)
+            infos.append(one)
+        info = {**infos[0], "holdout_agreement": [i["holdout_agreement"] for i in infos]}
     print(f"scorer: {info}", flush=True)
+    net = nets[0]
     if args.reinforce:
         from .position_rule import RULE_KWARGS
 
@@ -266,7 +305,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         rl = reinforce(net, args.reinforce, kw, lr=args.rl_lr, seed=args.seed,
                        log=lambda m: print(m, flush=True))
         print(f"reinforce: {rl}", flush=True)
-    sc = Scorer(net)
+    sc = Scorer(nets, args.fallback)
     sc.save(args.out)
     print(f"saved {args.out}")
     if args.games:
@@ -279,7 +318,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         geo = ("geometric", make_player("geometric", seed=args.seed, game="nine_ball"))
         for noise in ("0", "olympiad"):
             kw = league_env_kwargs([me, geo], True, noise if noise != "0" else 0.0)
-            r = play_pair("nine_ball", me, geo, args.games, args.seed, kw)
+            r = play_pair("nine_ball", me, geo, args.games, args.league_seed, kw)
             lo, hi = wilson_interval(r.wins_a, r.games)
             print(f"scorer vs geometric, noise {noise}: {r.wins_a}-{r.wins_b} = {100 * r.wins_a / r.games:.1f}% "
                   f"[{100 * lo:.0f}, {100 * hi:.0f}], break-and-runs {r.break_and_runs_by[0]} vs "
