@@ -169,16 +169,21 @@ class Scorer:
             return np.zeros(6, np.float32)
         feats, valid = options(o)
         if not valid[0].any():
-            if self.fallback is None:
+            fb = self.load_fallback()
+            if fb is None:
                 return np.zeros(6, np.float32)
-            if self._fallback is None:
-                from .evaluate import model_player
-
-                self._fallback = model_player(self.fallback)
-            return np.asarray(self._fallback.act(None, o[0]), np.float32).reshape(-1)
+            return np.asarray(fb.act(None, o[0]), np.float32).reshape(-1)
         s = self.scores(feats[0])
         s[~valid[0]] = -np.inf
         return action_of(int(np.argmax(s)))
+
+    def load_fallback(self) -> Any:
+        """The fallback policy (loaded once), or None."""
+        if self._fallback is None and self.fallback is not None:
+            from .evaluate import model_player
+
+            self._fallback = model_player(self.fallback)
+        return self._fallback
 
     def save(self, path: Path) -> None:
         import torch
@@ -259,6 +264,7 @@ def league_player(path: str | Path) -> Any:
     from .position_rule import RULE_KWARGS
 
     sc = Scorer.load(Path(path))
+    sc.load_fallback()  # now, not in the first decision that needs it
     return TrainedPlayer(f"scorer({Path(path).name})", sc.predict, RULE_KWARGS)
 
 
