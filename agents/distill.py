@@ -51,12 +51,12 @@ LABEL_CLIP = 0.995
 
 def _teacher(name: str, env: Any, seed: int) -> Any:
     """The baseline player ``name`` of the env's game (or of the pot scenes), or ``position_rule``
-    (:class:`agents.position_rule.PositionRulePlayer`: the hand-written rule on the ``candidates_position``
+    (:class:`agents.option_policies.PositionRulePlayer`: the hand-written rule on the ``candidates_position``
     observation)."""
     from billiards_env.players import make_player
 
     if name == "position_rule":
-        from .position_rule import PositionRulePlayer
+        from .option_policies import PositionRulePlayer
 
         return PositionRulePlayer()
 
@@ -89,7 +89,7 @@ def label_episodes(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
         env = wrap(env)
     model = None
     if student is not None and student.startswith("scorer:"):  # an agents.scorer policy (DAgger on its states)
-        from .scorer import Scorer
+        from .option_policies import Scorer
 
         sc = Scorer.load(Path(student[len("scorer:"):]))
         model = type("ScorerStudent", (), {"act": staticmethod(lambda env, obs: sc.predict(obs))})()

@@ -85,14 +85,14 @@ def load_player(spec: str, seed: int = 0, game: str = "nine_ball") -> tuple[str,
         p = prior_search_player(spec[len("prior:"):], game, seed)
         return p.name, p
     if spec.startswith("scorer:"):  # an option-scoring policy on the candidates_position types (agents.scorer)
-        from .scorer import league_player
+        from .option_policies import scorer_player
 
         if game != "nine_ball":
             raise ValueError(f"{spec}: a scorer plays 9-ball, not {game}")
-        p = league_player(spec[len("scorer:"):])
+        p = scorer_player(spec[len("scorer:"):])
         return p.name, p
     if spec == "position_rule":  # the hand-written rule on the candidates_position observation
-        from .position_rule import league_player as rule_player
+        from .option_policies import rule_player
 
         p = rule_player()
         return p.name, p

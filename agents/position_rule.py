@@ -13,79 +13,10 @@ learn from the same types (agents/README.md, "9-ball").
 """
 from __future__ import annotations
 
-from typing import Any, Sequence
+from typing import Sequence
 
-import numpy as np
-
-from billiards_env.envs.candidates import SLOT_FEATURES
-from billiards_env.envs.position import POINT_VALUES, POSITION_FEATURES, POWERS, TOPS
-
-#: The env kwargs the rule plays in (the 9-ball distillation's types, spin model).
-RULE_KWARGS = {"action_type": "candidates", "observation_type": "candidates_position", "friction": "spin",
-               "spin_action": True, "noise": "olympiad"}
-
-
-def position_action(obs: np.ndarray, n_slots: int = 4, n_balls: int = 10, c: float = 0.3,
-                    min_power: int = 1, n_action: int = 6) -> np.ndarray:
-    """The rule of the module docstring on one ``candidates_position`` observation (``n_slots`` candidate slots,
-    ``n_balls`` balls); ``min_power``: the grid powers left out, softest first. Returns the ``candidates`` action
-    (``n_action`` dims: slot, power, side, top, then placement, 0)."""
-    o = np.asarray(obs, dtype=np.float64).reshape(-1)
-    base = 3 * n_balls
-    slots = o[base:base + SLOT_FEATURES * n_slots].reshape(n_slots, SLOT_FEATURES)
-    grid = o[base + SLOT_FEATURES * n_slots:base + (SLOT_FEATURES + POSITION_FEATURES) * n_slots].reshape(
-        n_slots, len(POWERS) * len(TOPS), POINT_VALUES)
-    act = np.zeros(n_action, np.float32)
-    best, choice = 0.0, None
-    for k in range(n_slots - 1):
-        if slots[k, 0] == 0.0 or slots[k, 2] == -1.0 or not grid[k, :, 2:4].any():
-            continue
-        v = slots[k, 7] * grid[k, :, 0] * (1.0 - grid[k, :, 1]) * (c + grid[k, :, 4])
-        v[:min_power * len(TOPS)] = 0.0
-        g = int(np.argmax(v))
-        if v[g] > best:
-            best, choice = float(v[g]), (k, g)
-    if choice is None:
-        return act
-    k, g = choice
-    act[0] = (k + 0.5) / n_slots
-    act[1] = POWERS[g // len(TOPS)]
-    act[3] = TOPS[g % len(TOPS)]
-    return act
-
-
-class PositionRulePlayer:
-    """:func:`position_action` as a player of the 9-ball env whose observation it is given (``act(env, obs)``: the
-    env must be in :data:`RULE_KWARGS`' types); a distillation teacher (``python -m agents.distill --teacher
-    position_rule``)."""
-
-    name = "position_rule"
-
-    def __init__(self, c: float = 0.3, min_power: int = 1) -> None:
-        self.c = c
-        self.min_power = min_power
-
-    def reset(self, seed: int | None = None) -> None:
-        """No state."""
-
-    def act(self, env: Any, obs: Any) -> np.ndarray:
-        u = env.unwrapped
-        if u.config.observation_type != "candidates_position" or u.config.action_type != "candidates":
-            raise ValueError("position_rule: plays the 'candidates' action on the 'candidates_position' observation, "
-                             f"not {u.config.action_type!r} on {u.config.observation_type!r}")
-        return position_action(obs, u.config.candidate_slots, u.n_balls, self.c, self.min_power,
-                               u.action_space.shape[0])
-
-
-def league_player(c: float = 0.3, min_power: int = 1) -> Any:
-    """The rule as a league player (:class:`agents.games.TrainedPlayer`: it observes the table in its own types and
-    plays on the league's absolute-action env)."""
-    from .games import TrainedPlayer
-
-    n_slots, n_balls = 4, 10
-    return TrainedPlayer(f"position_rule(c={c}, min_power={min_power})",
-                         lambda o: position_action(o, n_slots, n_balls, c, min_power), RULE_KWARGS)
-
+from .option_policies import RULE_KWARGS, PositionRulePlayer, position_action  # noqa: F401
+from .option_policies import rule_player as league_player
 
 def main(argv: Sequence[str] | None = None) -> int:
     """``python -m agents.position_rule``: the rule against the geometric player, without noise and under
