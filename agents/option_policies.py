@@ -173,8 +173,14 @@ class Scorer:
     def save(self, path: Path) -> None:
         import torch
 
+        fallback = self.fallback
+        if fallback is not None:  # kept relative to the scorer's folder where it can be, so the two move together
+            try:
+                fallback = str(Path(fallback).resolve().relative_to(Path(path).resolve().parent))
+            except ValueError:
+                fallback = str(Path(fallback).resolve())
         torch.save({"state_dicts": [n.state_dict() for n in self.nets], "hidden": self.nets[0][0].out_features,
-                    "fallback": self.fallback}, str(path))
+                    "fallback": fallback}, str(path))
 
     @classmethod
     def load(cls, path: Path) -> "Scorer":
@@ -186,7 +192,10 @@ class Scorer:
             net = make_net(int(d["hidden"]))
             net.load_state_dict(sd)
             nets.append(net)
-        return cls(nets, d.get("fallback"))
+        fallback = d.get("fallback")
+        if fallback is not None and not Path(fallback).is_absolute():
+            fallback = str(Path(path).resolve().parent / fallback)
+        return cls(nets, fallback)
 
 
 def reinforce(net: Any, episodes: int, env_kwargs: dict[str, Any], lr: float = 3e-4, batch: int = 32,

@@ -69,3 +69,14 @@ def test_it_learns_a_choice_that_depends_on_the_options_features(tmp_path):
     again = Scorer.load(path)
     for x in o[:20]:
         assert np.array_equal(again.predict(x), sc.predict(x))
+
+
+def test_the_fallback_moves_with_the_scorer(tmp_path):
+    """The fallback policy's path is kept relative to the scorer's folder: both can be moved together."""
+    pytest.importorskip("torch")
+    from agents.option_policies import make_net as mk
+
+    (tmp_path / "a" / "clone").mkdir(parents=True)
+    Scorer([mk(8)], tmp_path / "a" / "clone" / "bc_model.zip").save(tmp_path / "a" / "s.pt")
+    (tmp_path / "a").rename(tmp_path / "b")
+    assert Scorer.load(tmp_path / "b" / "s.pt").fallback == str((tmp_path / "b" / "clone" / "bc_model.zip").resolve())
