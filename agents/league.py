@@ -212,9 +212,14 @@ class GameStats:
 _WARM: set[tuple[str, int]] = set()
 
 
+#: Untimed decisions of each policy before its games (:func:`warm_up`).
+WARM_DECISIONS = 4
+
+
 def warm_up(game: str, policies: Sequence[Any], env_kwargs: dict[str, Any]) -> None:
-    """One untimed decision of each policy on a fresh rack (once per process and policy), so that loading the
-    compiled kernels (numba's cache) is not counted in the decision times."""
+    """A few untimed decisions of each policy on a fresh rack (the break and the positions after it; once per process
+    and policy), so that loading the compiled kernels (numba's cache) and a model's first call are not counted in the
+    decision times. Every game reseeds the players, so this changes no game."""
 
     todo = [p for p in policies if (game, id(p)) not in _WARM]
     if not todo:
@@ -224,8 +229,11 @@ def warm_up(game: str, policies: Sequence[Any], env_kwargs: dict[str, Any]) -> N
     try:
         for p in todo:
             env.reset(seed=0)
-            obs = env.observe(env.unwrapped.agent_selection)
-            Timed(p).act(env.unwrapped.game_env, obs)
+            for _ in range(WARM_DECISIONS):
+                obs = env.observe(env.unwrapped.agent_selection)
+                env.step(Timed(p).act(env.unwrapped.game_env, obs))
+                if any(env.terminations.values()) or any(env.truncations.values()):
+                    break
             _WARM.add((game, id(p)))
     finally:
         env.close()
