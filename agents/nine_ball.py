@@ -12,9 +12,14 @@ Steps:
    player's shots in the agent's action type on the states of games against the geometric player, behaviour
    cloning, DAgger rounds played by the student, then SAC against the geometric player from the cloned policy for the
    config's budget (CPU seconds). Spin model, FastFiz's level-1 noise (``noise: olympiad``), the ``candidates``
-   action and observation types. ``--curriculum``: the earlier RL-only agent (run-out practice, then games).
-2. The league (:mod:`agents.league`, on every core) of random, geometric, search, the trained agent (its best
-   evaluation checkpoint) and the search player with the agent as its prior (:mod:`agents.prior_search`), under the
+   action type and the ``candidates_position`` observation. Then, when the ``distill:`` section asks for it
+   (``scorer_games``), the option scorer (:func:`train_scorer`, :mod:`agents.scorer`): more games labelled by the
+   teacher, a DAgger round played by a first scorer, the SAC clone of all the labels (its fallback from ball in
+   hand) and an ensemble of fits, in ``<run>/scorer.pt``. ``--curriculum``: the earlier RL-only agent (run-out
+   practice, then games).
+2. The league (:mod:`agents.league`, on every core) of random, geometric, search, the trained policy (the option
+   scorer when the run has one, else the SAC agent's best evaluation checkpoint) and the search player with the SAC
+   agent as its prior (:mod:`agents.prior_search`), under the
    spin model, without noise and with ``noise="olympiad"``: head-to-head win rates with Wilson intervals, Elo,
    break-and-run, balls per inning, run-outs from ball in hand, decision times.
 3. Files in ``<out>`` (default ``runs/main/nine_ball``): ``report.md`` / ``report.json`` (every target with its
