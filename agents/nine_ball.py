@@ -421,6 +421,15 @@ def markdown(report: dict[str, Any], leagues: dict[str, dict[str, Any]], trained
                     if "label_wall_seconds" in st else f"{st.get('cpu_seconds', 0):.0f} CPU s")
             lines.append(f"| {st['stage']} | {st.get('labels_total', '-')} | {rate} | {secs} |")
         lines.append("")
+        sc = tr.get("scorer")
+        if sc:
+            agree = ", ".join(f"{100 * a:.0f}%" for a in sc.get("holdout_agreement", []))
+            lines += [f"The league's trained policy is the option scorer `{sc['path']}` (agents.scorer): "
+                      f"{sc['labels']} labels (the distillation's, {sc['extra_games']} more teacher games, "
+                      f"{sc['dagger_games']} games played by a first scorer), {sc['ensemble']} fits (agreement with "
+                      f"the teacher on held-out labels {agree}), the SAC clone of the labels from ball in hand; "
+                      f"{sc['wall_seconds']:.0f} s wall. The SAC agent above is the prior of the search with the "
+                      "learned prior.", ""]
     lines += ["## Targets", "", "| target | figure (win rate [95% Wilson interval]) | verdict |", "|---|---|---|",
               *report.get("targets", target_lines(leagues, trained, prior)), ""]
     lim = limits_text(report, leagues, trained)
