@@ -50,8 +50,15 @@ LABEL_CLIP = 0.995
 # --- labels ---------------------------------------------------------------------------------------------------
 
 def _teacher(name: str, env: Any, seed: int) -> Any:
-    """The baseline player ``name`` of the env's game (or of the pot scenes)."""
+    """The baseline player ``name`` of the env's game (or of the pot scenes), or ``position_rule``
+    (:class:`agents.option_policies.PositionRulePlayer`: the hand-written rule on the ``candidates_position``
+    observation)."""
     from billiards_env.players import make_player
+
+    if name == "position_rule":
+        from .option_policies import PositionRulePlayer
+
+        return PositionRulePlayer()
 
     game = _game_of(env)
     return make_player(name, seed=seed, game=game) if game else make_player(name, seed=seed)
@@ -81,7 +88,12 @@ def label_episodes(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
     if wrap is not None:
         env = wrap(env)
     model = None
-    if student is not None:
+    if student is not None and student.startswith("scorer:"):  # an agents.scorer policy (DAgger on its states)
+        from .option_policies import Scorer
+
+        sc = Scorer.load(Path(student[len("scorer:"):]))
+        model = type("ScorerStudent", (), {"act": staticmethod(lambda env, obs: sc.predict(obs))})()
+    elif student is not None:
         from .evaluate import model_player
 
         spec = model_player(student)
@@ -321,7 +333,8 @@ def build_parser() -> argparse.ArgumentParser:
                                 formatter_class=argparse.RawDescriptionHelpFormatter,
                                 epilog=__doc__.split("\n\n", 1)[1])
     p.add_argument("--config", required=True, help="training config (its env, kwargs, wrappers, algorithm)")
-    p.add_argument("--teacher", default="search", help="a baseline player's name (default search)")
+    p.add_argument("--teacher", default="search", help="a baseline player's name (default search), or "
+                   "position_rule (agents.position_rule, on the candidates_position observation)")
     p.add_argument("--states", type=int, default=4000, help="episodes labelled in all (split over the rounds)")
     p.add_argument("--dagger-rounds", type=int, default=0, help="rounds played by the student after the first")
     p.add_argument("--beta", type=float, default=0.0, help="DAgger: chance the teacher's shot is played")

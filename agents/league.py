@@ -10,7 +10,9 @@ A player is a baseline name (``random``, ``geometric``, ``search``: :mod:`billia
 an SB3 run folder or model zip, or an RLlib checkpoint or run folder (with the ``rllib`` extra), played with
 deterministic actions in its own action and observation types (:class:`agents.games.TrainedPlayer`); ``prior:<run>``
 is the search player with that policy's proposals in place of its sweep, at its own simulation budget
-(:mod:`agents.prior_search`). Every pair
+(:mod:`agents.prior_search`); ``scorer:<file>`` an option-scoring policy of :mod:`agents.scorer` and
+``position_rule`` the hand-written rule of :mod:`agents.position_rule` (9-ball, on the ``candidates_position``
+observation). Every pair
 plays ``--games`` games on the two-player env (:mod:`billiards_env.multi`, absolute action type), seats swapped
 every game so each breaks as often as the other; game ``k`` of a match uses the rack of seed ``seed + k``, so every
 pair meets on the same racks. ``--spin`` plays under the spin model (friction ``spin``, tip offsets in the action);
@@ -81,6 +83,18 @@ def load_player(spec: str, seed: int = 0, game: str = "nine_ball") -> tuple[str,
         from .prior_search import prior_search_player
 
         p = prior_search_player(spec[len("prior:"):], game, seed)
+        return p.name, p
+    if spec.startswith("scorer:"):  # an option-scoring policy on the candidates_position types (agents.scorer)
+        from .option_policies import scorer_player
+
+        if game != "nine_ball":
+            raise ValueError(f"{spec}: a scorer plays 9-ball, not {game}")
+        p = scorer_player(spec[len("scorer:"):])
+        return p.name, p
+    if spec == "position_rule":  # the hand-written rule on the candidates_position observation
+        from .option_policies import rule_player
+
+        p = rule_player()
         return p.name, p
     from .games import trained_player
 
@@ -198,9 +212,14 @@ class GameStats:
 _WARM: set[tuple[str, int]] = set()
 
 
+#: Untimed decisions of each policy before its games (:func:`warm_up`).
+WARM_DECISIONS = 4
+
+
 def warm_up(game: str, policies: Sequence[Any], env_kwargs: dict[str, Any]) -> None:
-    """One untimed decision of each policy on a fresh rack (once per process and policy), so that loading the
-    compiled kernels (numba's cache) is not counted in the decision times."""
+    """A few untimed decisions of each policy on a fresh rack (the break and the positions after it; once per process
+    and policy), so that loading the compiled kernels (numba's cache) and a model's first call are not counted in the
+    decision times. Every game reseeds the players, so this changes no game."""
 
     todo = [p for p in policies if (game, id(p)) not in _WARM]
     if not todo:
@@ -210,8 +229,11 @@ def warm_up(game: str, policies: Sequence[Any], env_kwargs: dict[str, Any]) -> N
     try:
         for p in todo:
             env.reset(seed=0)
-            obs = env.observe(env.unwrapped.agent_selection)
-            Timed(p).act(env.unwrapped.game_env, obs)
+            for _ in range(WARM_DECISIONS):
+                obs = env.observe(env.unwrapped.agent_selection)
+                env.step(Timed(p).act(env.unwrapped.game_env, obs))
+                if any(env.terminations.values()) or any(env.truncations.values()):
+                    break
             _WARM.add((game, id(p)))
     finally:
         env.close()

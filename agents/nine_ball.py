@@ -12,9 +12,14 @@ Steps:
    player's shots in the agent's action type on the states of games against the geometric player, behaviour
    cloning, DAgger rounds played by the student, then SAC against the geometric player from the cloned policy for the
    config's budget (CPU seconds). Spin model, FastFiz's level-1 noise (``noise: olympiad``), the ``candidates``
-   action and observation types. ``--curriculum``: the earlier RL-only agent (run-out practice, then games).
-2. The league (:mod:`agents.league`, on every core) of random, geometric, search, the trained agent (its best
-   evaluation checkpoint) and the search player with the agent as its prior (:mod:`agents.prior_search`), under the
+   action type and the ``candidates_position`` observation. Then, when the ``distill:`` section asks for it
+   (``scorer_games``), the option scorer (:func:`train_scorer`, :mod:`agents.scorer`): more games labelled by the
+   teacher, a DAgger round played by a first scorer, the SAC clone of all the labels (its fallback from ball in
+   hand) and an ensemble of fits, in ``<run>/scorer.pt``. ``--curriculum``: the earlier RL-only agent (run-out
+   practice, then games).
+2. The league (:mod:`agents.league`, on every core) of random, geometric, search, the trained policy (the option
+   scorer when the run has one, else the SAC agent's best evaluation checkpoint) and the search player with the SAC
+   agent as its prior (:mod:`agents.prior_search`), under the
    spin model, without noise and with ``noise="olympiad"``: head-to-head win rates with Wilson intervals, Elo,
    break-and-run, balls per inning, run-outs from ball in hand, decision times.
 3. Files in ``<out>`` (default ``runs/main/nine_ball``): ``report.md`` / ``report.json`` (every target with its
@@ -82,11 +87,74 @@ def train_distilled(out: Path, seconds: float | None, config: Path = DISTILL_CON
         overrides["max_seconds"] = seconds
     cfg = load_train_config(config, overrides=overrides)
     d = cfg.extra.get("distill") or {}
-    return distill(cfg, teacher=d.get("teacher", "search"), states=int(d.get("states", 240)),
-                   dagger_rounds=int(d.get("dagger_rounds", 1)), beta=float(d.get("beta", 0.0)),
-                   bc_epochs=int(d.get("bc_epochs", 60)), rl_seconds=cfg.settings.max_seconds,
-                   actor_delay=int(d.get("actor_delay", 20_000)), workers=workers or os.cpu_count() or 1,
-                   eval_episodes=int(d.get("eval_episodes", 100)), eval_seed=cfg.settings.eval_seed)
+    workers = workers or os.cpu_count() or 1
+    rep = distill(cfg, teacher=d.get("teacher", "search"), states=int(d.get("states", 240)),
+                  dagger_rounds=int(d.get("dagger_rounds", 1)), beta=float(d.get("beta", 0.0)),
+                  bc_epochs=int(d.get("bc_epochs", 60)), rl_seconds=cfg.settings.max_seconds,
+                  actor_delay=int(d.get("actor_delay", 20_000)), workers=workers,
+                  eval_episodes=int(d.get("eval_episodes", 100)), eval_seed=cfg.settings.eval_seed)
+    if int(d.get("scorer_games", 0)) > 0:
+        rep["scorer"] = train_scorer(config, Path(rep["run_dir"]), d, workers)
+        (Path(rep["run_dir"]) / "distill.json").write_text(json.dumps(rep, indent=2, default=str))
+    return rep
+
+
+#: Seeds of the scorer's extra labelling games (apart from the distillation's, 1,000,000 on, and the evaluations').
+SCORER_LABEL_SEED = 1_500_000
+
+
+def train_scorer(config: Path, run_dir: Path, d: dict[str, Any], workers: int) -> dict[str, Any]:
+    """The option scorer (:mod:`agents.scorer`) from the distillation's labels and more: the teacher labels
+    ``scorer_games`` more games it plays, a first scorer is fitted, it plays ``scorer_dagger_games`` games labelled by
+    the teacher (DAgger), the SAC clone of all the labels is made (the scorer's fallback for ball in hand, in
+    ``<run>/clone``) and ``scorer_ensemble`` fits on all the labels are summed into ``<run>/scorer.pt``. Returns its
+    path, the labels and the fits' agreement with the teacher."""
+    import time as _time
+
+    import numpy as np
+
+    from .config import load_train_config, parse_hyperparams
+    from .distill import collect_labels, distill
+    from .option_policies import Scorer, fit
+
+    cfg = load_train_config(config, overrides={"run_root": str(run_dir)})
+    setup = parse_hyperparams(cfg)
+    teacher = d.get("teacher", "search")
+    t0 = _time.perf_counter()
+    keys = ("obs", "actions", "rewards", "success")
+    with np.load(run_dir / "labels.npz") as f:
+        parts = [{k: f[k] for k in keys}]
+    n_games = int(d.get("scorer_games", 0))
+    seeds = range(SCORER_LABEL_SEED, SCORER_LABEL_SEED + n_games)
+    parts.append(collect_labels(cfg.env_id, setup.env_kwargs, None, teacher, seeds, workers=workers))
+    ensemble = max(int(d.get("scorer_ensemble", 3)), 1)
+    epochs = int(d.get("scorer_epochs", 60))
+
+    def merged() -> dict[str, Any]:
+        return {k: np.concatenate([p[k] for p in parts]) for k in keys}
+
+    n_dagger = int(d.get("scorer_dagger_games", 0))
+    if n_dagger > 0:
+        data = merged()
+        first = run_dir / "scorer_round0.pt"
+        Scorer([fit(data["obs"], data["actions"], epochs, seed=0)[0]]).save(first)
+        seeds = range(SCORER_LABEL_SEED + n_games, SCORER_LABEL_SEED + n_games + n_dagger)
+        parts.append(collect_labels(cfg.env_id, setup.env_kwargs, None, teacher, seeds, student=f"scorer:{first}",
+                                    workers=workers))
+    data = merged()
+    labels = run_dir / "scorer_labels.npz"
+    np.savez_compressed(labels, **data)
+    clone = distill(cfg, teacher=teacher, dagger_rounds=0, bc_epochs=int(d.get("bc_epochs", 60)), rl_seconds=0.0,
+                    workers=1, eval_episodes=0, run_dir=run_dir / "clone", quiet=True, labels=labels)
+    nets, agreement = [], []
+    for k in range(ensemble):
+        net, info = fit(data["obs"], data["actions"], epochs, seed=k)
+        nets.append(net)
+        agreement.append(info["holdout_agreement"])
+    path = run_dir / "scorer.pt"
+    Scorer(nets, Path(clone["run_dir"]) / "bc_model.zip").save(path)
+    return {"path": str(path), "labels": int(len(data["obs"])), "extra_games": n_games, "dagger_games": n_dagger,
+            "ensemble": ensemble, "holdout_agreement": agreement, "wall_seconds": _time.perf_counter() - t0}
 
 
 def neutral_baseline(config: Path, episodes: int) -> dict[str, float]:
@@ -296,7 +364,11 @@ def run(out: Path, seconds: float | None, practice_fraction: float, games: int, 
     if curriculum:
         neutral["practice"] = neutral_baseline(PRACTICE_CONFIG, 100)
     curve = plot_learning_curve(run_dir, out / "learning_curve.png", neutral)
-    players = [*BASELINES, model] + ([f"prior:{model}"] if prior else [])
+    scorer = (train_info.get("scorer") or {}).get("path")
+    if scorer is None and (run_dir / "scorer.pt").exists():
+        scorer = str(run_dir / "scorer.pt")
+    # the trained policy of the league: the option scorer when the run has one (agents.scorer), else the SAC model
+    players = [*BASELINES, f"scorer:{scorer}" if scorer else model] + ([f"prior:{model}"] if prior else [])
     leagues = {}
     for name, noise in SETTINGS:
         limits = {"search": search_games, "prior:": search_games}  # the slow players' pairs
@@ -349,6 +421,15 @@ def markdown(report: dict[str, Any], leagues: dict[str, dict[str, Any]], trained
                     if "label_wall_seconds" in st else f"{st.get('cpu_seconds', 0):.0f} CPU s")
             lines.append(f"| {st['stage']} | {st.get('labels_total', '-')} | {rate} | {secs} |")
         lines.append("")
+        sc = tr.get("scorer")
+        if sc:
+            agree = ", ".join(f"{100 * a:.0f}%" for a in sc.get("holdout_agreement", []))
+            lines += [f"The league's trained policy is the option scorer `{sc['path']}` (agents.scorer): "
+                      f"{sc['labels']} labels (the distillation's, {sc['extra_games']} more teacher games, "
+                      f"{sc['dagger_games']} games played by a first scorer), {sc['ensemble']} fits (agreement with "
+                      f"the teacher on held-out labels {agree}), the SAC clone of the labels from ball in hand; "
+                      f"{sc['wall_seconds']:.0f} s wall. The SAC agent above is the prior of the search with the "
+                      "learned prior.", ""]
     lines += ["## Targets", "", "| target | figure (win rate [95% Wilson interval]) | verdict |", "|---|---|---|",
               *report.get("targets", target_lines(leagues, trained, prior)), ""]
     lim = limits_text(report, leagues, trained)

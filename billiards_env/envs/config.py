@@ -171,7 +171,10 @@ class EnvConfig:
                                  "'candidates' (the positions, then the candidate shots of the 'candidates' action "
                                  "type: pocket, cut, distances, ease, clear paths, scratch risk, speed) or "
                                  "'candidates_path' (those, then per candidate shot and window offset the powers "
-                                 "that pot it and that send the cue ball into a pocket after contact).",
+                                 "that pot it and that send the cue ball into a pocket after contact) or "
+                                 "'candidates_position' (the 'candidates' values, then per candidate shot on a grid of "
+                                 "power and top: whether the ball drops, whether the cue ball scratches, where it "
+                                 "comes to rest and how easy the next shot is from there).",
                                  default="positions")
 
     # --- task: reward and episode ---------------------------------------------------------------------------------

@@ -16,6 +16,11 @@
   after contact: at five offsets across the pocket's window, the least ``power`` that pots the ball and the least at
   which the deflected cue ball follows into a pocket (:mod:`billiards_env.envs.cue_path`); for the
   ``candidates_aim`` action type.
+- :class:`CuePositionFeatures` (``"candidates_position"``): the ``candidates`` values, then per slot a *position
+  map*: on a grid of the ``candidates`` action's own ``power`` and ``top`` values, whether the ball drops, whether
+  the cue ball scratches, where it comes to rest and how easy the next shot is from there
+  (:mod:`billiards_env.envs.position`, closed form: :mod:`billiards_env.physics.cue_rest`); for the ``candidates``
+  action type in the games.
 
 A game appends its features (the turn, ball in hand, group...: its session's ``features``,
 :mod:`billiards_env.games`), seen by the shooter or by the player asked for (the two-player env).
@@ -35,6 +40,7 @@ from billiards_env.physics.aim import pocket_bearings, pocket_mouth_axes, wrap_a
 from ._kernels import observation
 from .candidates import EASY_TOLERANCE, SLOT_FEATURES, candidate_slots, slot_features  # noqa: F401
 from .cue_path import OFFSETS, PATH_FEATURES, offset_rows, power_of, thresholds
+from .position import POINT_VALUES, POSITION_FEATURES, POWERS, TOPS, position_features
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.physics.table import Table
@@ -191,8 +197,41 @@ class CuePathFeatures(CandidateFeatures):
         return np.concatenate([super().features(state), self.path_features(state).reshape(-1)])
 
 
+class CuePositionFeatures(CandidateFeatures):
+    """The ``candidates`` observation, then per slot :data:`~billiards_env.envs.position.POSITION_FEATURES` values:
+    for each ``power`` of :data:`~billiards_env.envs.position.POWERS` (``a[1]``) and each ``top`` of
+    :data:`~billiards_env.envs.position.TOPS` (``a[3]``, side 0), power-major, :data:`POINT_VALUES` values in
+    ``[0, 1]``: the ball reaches its pocket (1/0), the cue ball runs into a pocket (1/0), its rest x / length and
+    y / width, the chance of potting the next legal ball from there (the search player's position term; 0 after a
+    scratch, 1 when the pot clears the table). Slots without a shot from where the cue ball lies (ball in hand, the
+    break, the kick, empty) read 0. Closed form, no simulation (:mod:`billiards_env.envs.position`)."""
+
+    name = "candidates_position"
+
+    def __init__(self, config: "EnvConfig", table: "Table", n_balls: int, n_game_features: int = 0) -> None:
+        n_slots = int(config.candidate_slots)
+        self.log_factor = math.log(float(config.candidate_speed_factor))
+        self.max_tip = float(config.max_tip_offset)
+        self._n_pos = POSITION_FEATURES * n_slots
+        super().__init__(config, table, n_balls, n_game_features)
+        self.n_extra = self.n_extra + self._n_pos
+        n = 3 * int(n_balls)
+        low = np.concatenate([np.zeros(n, np.float32), -np.ones(self.n_extra, np.float32),
+                              np.zeros(self.n_game, np.float32)])
+        self.space = spaces.Box(low, np.ones_like(low), dtype=np.float32)
+
+    def position_features(self, state: "TableState") -> np.ndarray:
+        """``(candidate_slots, POSITION_FEATURES)``: the values above."""
+        cands = candidate_slots(state, self.n_slots, self.speed_range)
+        return position_features(state, cands, self.n_slots, self.speed_range, self.log_factor, self.max_tip)
+
+    def features(self, state: "TableState") -> np.ndarray:
+        """The ``candidates`` values, then the position map."""
+        return np.concatenate([super().features(state), self.position_features(state).reshape(-1)])
+
+
 OBSERVATION_TYPES = {"positions": Positions, "features": ShotFeatures, "candidates": CandidateFeatures,
-                     "candidates_path": CuePathFeatures}
+                     "candidates_path": CuePathFeatures, "candidates_position": CuePositionFeatures}
 
 
 def observation_factory(config: "EnvConfig", table: "Table", n_balls: int, n_game_features: int = 0
@@ -201,5 +240,6 @@ def observation_factory(config: "EnvConfig", table: "Table", n_balls: int, n_gam
     return OBSERVATION_TYPES[config.observation_type](config, table, n_balls, n_game_features)
 
 
-__all__ = ["ObservationType", "Positions", "ShotFeatures", "CandidateFeatures", "CuePathFeatures", "OBSERVATION_TYPES",
+__all__ = ["ObservationType", "Positions", "ShotFeatures", "CandidateFeatures", "CuePathFeatures",
+           "CuePositionFeatures", "POINT_VALUES", "POWERS", "TOPS", "OBSERVATION_TYPES",
            "observation_factory", "SLOT_FEATURES"]

@@ -67,7 +67,8 @@ def test_the_whole_job_on_a_tiny_budget(tmp_path, monkeypatch, curriculum):
 
     monkeypatch.setattr("agents.config.load_train_config", tiny)
     cfg = yaml.safe_load(nb.DISTILL_CONFIG.read_text())
-    cfg["distill"].update(states=4, dagger_rounds=1, bc_epochs=2, eval_episodes=2)
+    cfg["distill"].update(states=4, dagger_rounds=1, bc_epochs=2, eval_episodes=2, scorer_games=3,
+                          scorer_dagger_games=2, scorer_ensemble=2, scorer_epochs=2)
     cfg["billiards"]["max_seconds"] = 20
     (tmp_path / "distill.yaml").write_text(yaml.safe_dump(cfg))
     rep = nb.run(tmp_path / "out", 20.0, 0.6, 2, 2, 2, 0, None, 3, False, "test", curriculum=curriculum, workers=2,
@@ -84,3 +85,6 @@ def test_the_whole_job_on_a_tiny_budget(tmp_path, monkeypatch, curriculum):
     else:
         assert [s["stage"] for s in rep["training"]["stages"]] == ["bc", "dagger round 1", "rl fine-tuning"]
         assert "What limits the trained agent" in md
+        scorer = rep["training"]["scorer"]  # the option scorer is the league's trained policy
+        assert scorer["ensemble"] == 2 and scorer["labels"] > 0
+        assert any(n.startswith("scorer(") for n in rep["leagues"]["no_noise"]["elo"])

@@ -183,6 +183,11 @@ def cases() -> Iterator[tuple[str, Callable[[], str]]]:
             candidate_speed_factor=3.0)
     yield c("games/Billiards9Ball-v0/candidates_aim/candidates_path", run_single, "Billiards9Ball-v0", 4, 23,
             action_type="candidates_aim", observation_type="candidates_path")
+    yield c("games/Billiards9Ball-v0/candidates/candidates_position", run_single, "Billiards9Ball-v0", 6, 24,
+            action_type="candidates", observation_type="candidates_position")
+    yield c("games/Billiards9Ball-v0/candidates/candidates_position-spin", run_single, "Billiards9Ball-v0", 6, 25,
+            action_type="candidates", observation_type="candidates_position", friction="spin", spin_action=True,
+            noise="olympiad")
     # Games: against the default opponent, alone, and the other action / observation types.
     for env_id in GAMES:
         yield c(f"games/{env_id}/default", run_single, env_id, 4, 11)

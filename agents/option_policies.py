@@ -1,0 +1,333 @@
+"""Policies that choose among the options of the ``candidates_position`` observation (9-ball): the hand-written
+rule of ``python -m agents.position_rule`` (:func:`position_action`) and the option scorer of ``python -m
+agents.scorer`` (:class:`Scorer`), with their league players (``position_rule``, ``scorer:<file>`` in
+:func:`agents.league.load_player`) and the rule as a distillation teacher. An option is a (pot slot, power, top) of
+the observation's grid (:mod:`billiards_env.envs.position`). The command-line modules (agents/position_rule.py,
+agents/scorer.py) hold what each is for and how it was measured; this module imports neither them nor the league.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from billiards_env.envs.candidates import SLOT_FEATURES
+from billiards_env.envs.position import POINT_VALUES, POSITION_FEATURES, POWERS, TOPS
+
+#: The types the scorer observes and acts in (the 9-ball distillation's, agents.position_rule.RULE_KWARGS).
+N_SLOTS, N_BALLS, N_GAME = 4, 10, 11
+N_GRID = len(POWERS) * len(TOPS)
+#: Features of one option: slot values, grid-point values, power, top, game features.
+OPTION_FEATURES = SLOT_FEATURES + POINT_VALUES + 2 + N_GAME
+_GRID_POWER = np.repeat(np.asarray(POWERS), len(TOPS))
+_GRID_TOP = np.tile(np.asarray(TOPS), len(POWERS))
+
+
+def options(obs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The options of a batch of observations ``(B, d)``: features ``(B, (N_SLOTS - 1) * N_GRID, OPTION_FEATURES)``
+    (option ``k * N_GRID + g``: pot slot ``k``, grid point ``g``) and which exist ``(B, ...)`` (the slot holds a pot
+    from where the cue ball lies, with its map)."""
+    o = np.asarray(obs, dtype=np.float32).reshape(len(obs), -1)
+    base = 3 * N_BALLS
+    slots = o[:, base:base + SLOT_FEATURES * N_SLOTS].reshape(-1, N_SLOTS, SLOT_FEATURES)[:, :N_SLOTS - 1]
+    grid = o[:, base + SLOT_FEATURES * N_SLOTS:base + (SLOT_FEATURES + POSITION_FEATURES) * N_SLOTS].reshape(
+        -1, N_SLOTS, N_GRID, POINT_VALUES)[:, :N_SLOTS - 1]
+    game = o[:, -N_GAME:]
+    b, k = len(o), N_SLOTS - 1
+    feats = np.concatenate([np.broadcast_to(slots[:, :, None, :], (b, k, N_GRID, SLOT_FEATURES)), grid,
+                            np.broadcast_to(_GRID_POWER[None, None, :, None], (b, k, N_GRID, 1)),
+                            np.broadcast_to(_GRID_TOP[None, None, :, None], (b, k, N_GRID, 1)),
+                            np.broadcast_to(game[:, None, None, :], (b, k, N_GRID, N_GAME))], axis=3)
+    valid = (slots[:, :, 0] != 0.0) & (slots[:, :, 2] != -1.0) & grid[:, :, :, 2:4].any(axis=(2, 3))
+    valid = np.broadcast_to(valid[:, :, None], (b, k, N_GRID))
+    return feats.reshape(b, k * N_GRID, OPTION_FEATURES).astype(np.float32), valid.reshape(b, k * N_GRID).copy()
+
+
+def option_of(action: np.ndarray) -> tuple[int, int]:
+    """The option nearest a ``candidates`` action (its slot, and the grid point of the nearest power and top), and
+    -1 for the slot when it is the kick."""
+    k = min(int(abs(float(action[0])) * N_SLOTS), N_SLOTS - 1)
+    if k == N_SLOTS - 1:
+        return -1, 0
+    p = int(np.argmin(np.abs(np.asarray(POWERS) - float(action[1]))))
+    t = int(np.argmin(np.abs(np.asarray(TOPS) - float(action[3])))) if len(action) > 3 else 1
+    return k, p * len(TOPS) + t
+
+
+def action_of(option: int, n_action: int = 6) -> np.ndarray:
+    """The ``candidates`` action of option ``option`` (its slot's middle, power, no side, top)."""
+    a = np.zeros(n_action, np.float32)
+    k, g = divmod(int(option), N_GRID)
+    a[0] = (k + 0.5) / N_SLOTS
+    a[1] = _GRID_POWER[g]
+    a[3] = _GRID_TOP[g]
+    return a
+
+
+def make_net(hidden: int = 64) -> Any:
+    import torch.nn as nn
+
+    return nn.Sequential(nn.Linear(OPTION_FEATURES, hidden), nn.ReLU(), nn.Linear(hidden, hidden), nn.ReLU(),
+                         nn.Linear(hidden, 1))
+
+
+def fit(obs: np.ndarray, actions: np.ndarray, epochs: int = 60, hidden: int = 64, lr: float = 1e-3, seed: int = 0,
+        holdout: float = 0.1) -> tuple[Any, dict[str, Any]]:
+    """Train a scorer on ``(obs, actions)``: the teacher's option (:func:`option_of`) among the state's options by
+    cross-entropy, Adam; states whose teacher chose the kick, or with no options or whose choice is not an option,
+    are left out. Returns the net and its fit (agreement with the teacher on a held-out tenth)."""
+    import torch
+
+    torch.manual_seed(seed)
+    feats, valid = options(obs)
+    target = np.full(len(obs), -1, np.int64)
+    for i, a in enumerate(actions):
+        k, g = option_of(a)
+        if k >= 0 and valid[i, k * N_GRID + g]:
+            target[i] = k * N_GRID + g
+    keep = np.flatnonzero(target >= 0)
+    rng = np.random.default_rng(seed)
+    keep = keep[rng.permutation(len(keep))]
+    n_val = int(holdout * len(keep))
+    val, tr = keep[:n_val], keep[n_val:]
+    x = torch.as_tensor(feats)
+    m = torch.as_tensor(valid)
+    y = torch.as_tensor(target)
+    net = make_net(hidden)
+    opt = torch.optim.Adam(net.parameters(), lr=lr)
+
+    def logits(idx: Any) -> Any:
+        s = net(x[idx]).squeeze(-1)
+        return s.masked_fill(~m[idx], -1e9)
+
+    for _ in range(int(epochs)):
+        perm = tr[rng.permutation(len(tr))]
+        for start in range(0, len(perm), 256):
+            idx = torch.as_tensor(perm[start:start + 256])
+            loss = torch.nn.functional.cross_entropy(logits(idx), y[idx])
+            opt.zero_grad()
+            loss.backward()
+            opt.step()
+    with torch.no_grad():
+        agree_val = float((logits(torch.as_tensor(val)).argmax(1) == y[val]).float().mean()) if n_val else float("nan")
+        agree_tr = float((logits(torch.as_tensor(tr)).argmax(1) == y[tr]).float().mean())
+    return net, {"labels": int(len(obs)), "used": int(len(keep)), "train_agreement": agree_tr,
+                 "holdout_agreement": agree_val, "epochs": int(epochs), "hidden": int(hidden)}
+
+
+class Scorer:
+    """A trained scorer: ``predict(obs) -> action``, deterministic. The break: action 0 (the geometric player's full
+    break). With options: the best by the scores summed over ``nets`` (an ensemble of fits; the forward passes in
+    numpy: a decision is a few small matrix products, no torch call per shot). Without (ball in hand, no pot from
+    where the cue ball lies): the ``fallback`` policy (an SB3 model zip in the same types, e.g. the SAC clone of the
+    same teacher, which learnt the teacher's placements), else action 0."""
+
+    def __init__(self, nets: Any, fallback: str | Path | None = None) -> None:
+        self.nets = list(nets) if isinstance(nets, (list, tuple)) else [nets]
+        for net in self.nets:
+            net.eval()
+        self._w = [[(m.weight.detach().numpy().T.astype(np.float32).copy(), m.bias.detach().numpy().astype(np.float32))
+                    for m in net if hasattr(m, "weight")] for net in self.nets]
+        self.fallback = str(fallback) if fallback else None
+        self._fallback: Any = None
+
+    @property
+    def net(self) -> Any:
+        return self.nets[0]
+
+    def scores(self, feats: np.ndarray) -> np.ndarray:
+        """The scores of option features ``(M, OPTION_FEATURES)`` summed over the nets (linear layers, ReLU between)."""
+        total = np.zeros(len(feats), np.float32)
+        for layers in self._w:
+            h = feats
+            for i, (w, b) in enumerate(layers):
+                h = h @ w + b
+                if i < len(layers) - 1:
+                    np.maximum(h, 0.0, out=h)
+            total += h[:, 0]
+        return total
+
+    def predict(self, obs: np.ndarray) -> np.ndarray:
+        o = np.asarray(obs, dtype=np.float32).reshape(1, -1)
+        if o[0, -N_GAME + 2] > 0.5:  # the break (the game's break flag)
+            return np.zeros(6, np.float32)
+        feats, valid = options(o)
+        if not valid[0].any():
+            fb = self.load_fallback()
+            if fb is None:
+                return np.zeros(6, np.float32)
+            return np.asarray(fb.act(None, o[0]), np.float32).reshape(-1)
+        s = self.scores(feats[0])
+        s[~valid[0]] = -np.inf
+        return action_of(int(np.argmax(s)))
+
+    def load_fallback(self) -> Any:
+        """The fallback policy (loaded once), or None."""
+        if self._fallback is None and self.fallback is not None:
+            from .evaluate import model_player
+
+            self._fallback = model_player(self.fallback)
+        return self._fallback
+
+    def save(self, path: Path) -> None:
+        import torch
+
+        fallback = self.fallback
+        if fallback is not None:  # kept relative to the scorer's folder where it can be, so the two move together
+            try:
+                fallback = str(Path(fallback).resolve().relative_to(Path(path).resolve().parent))
+            except ValueError:
+                fallback = str(Path(fallback).resolve())
+        torch.save({"state_dicts": [n.state_dict() for n in self.nets], "hidden": self.nets[0][0].out_features,
+                    "fallback": fallback}, str(path))
+
+    @classmethod
+    def load(cls, path: Path) -> "Scorer":
+        import torch
+
+        d = torch.load(str(path), weights_only=True)
+        nets = []
+        for sd in d["state_dicts"]:
+            net = make_net(int(d["hidden"]))
+            net.load_state_dict(sd)
+            nets.append(net)
+        fallback = d.get("fallback")
+        if fallback is not None and not Path(fallback).is_absolute():
+            fallback = str(Path(path).resolve().parent / fallback)
+        return cls(nets, fallback)
+
+
+def reinforce(net: Any, episodes: int, env_kwargs: dict[str, Any], lr: float = 3e-4, batch: int = 32,
+              seed: int = 0, log: Any = None) -> dict[str, Any]:
+    """RL fine-tuning of a scorer (REINFORCE): ``episodes`` games of ``Billiards9Ball-v0`` in ``env_kwargs`` (the
+    rule's types, against the geometric player), the options sampled from the softmax of the scores; every decision
+    of a game is credited with its result (+1 won, -1 lost) less a running mean, Adam on ``batch`` games at a time.
+    Decisions without options play action 0 and are not trained. Returns the win rate per batch."""
+    import gymnasium as gym
+    import torch
+
+    import billiards_env  # noqa: F401
+
+    torch.manual_seed(seed)
+    env = gym.make("Billiards9Ball-v0", **env_kwargs)
+    opt = torch.optim.Adam(net.parameters(), lr=lr)
+    base = 0.0
+    wins: list[float] = []
+    pending: list[tuple[Any, float]] = []
+    net.train()
+    for ep in range(int(episodes)):
+        obs, _ = env.reset(seed=seed * 1_000_003 + ep)
+        logps = []
+        done = False
+        info: dict[str, Any] = {}
+        while not done:
+            feats, valid = options(np.asarray(obs, dtype=np.float32).reshape(1, -1))
+            a = np.zeros(env.action_space.shape, np.float32)
+            if valid[0].any():
+                s = net(torch.as_tensor(feats[0])).squeeze(-1).masked_fill(~torch.as_tensor(valid[0]), -1e9)
+                dist = torch.distributions.Categorical(logits=s)
+                k = dist.sample()
+                logps.append(dist.log_prob(k))
+                a = action_of(int(k), a.shape[0])
+            obs, _, term, trunc, info = env.step(a)
+            done = term or trunc
+        g = 1.0 if info.get("is_success", False) else -1.0
+        wins.append(float(g > 0))
+        if logps:
+            pending.append((torch.stack(logps).sum(), g))
+        if len(pending) >= batch:
+            loss = -sum((g_ - base) * lp for lp, g_ in pending) / len(pending)
+            opt.zero_grad()
+            loss.backward()
+            opt.step()
+            base = 0.9 * base + 0.1 * float(np.mean([g_ for _, g_ in pending]))
+            pending = []
+            if log is not None:
+                log(f"reinforce: {ep + 1} games, win rate of the last {batch * 10}: "
+                    f"{np.mean(wins[-batch * 10:]):.3f}")
+    net.eval()
+    env.close()
+    return {"episodes": int(episodes), "win_rate": float(np.mean(wins)) if wins else float("nan"),
+            "win_rate_last_quarter": float(np.mean(wins[-max(len(wins) // 4, 1):])) if wins else float("nan")}
+
+
+def scorer_player(path: str | Path) -> Any:
+    """A saved scorer as a league player (:class:`agents.games.TrainedPlayer` in the position rule's types)."""
+    from .games import TrainedPlayer
+
+    sc = Scorer.load(Path(path))
+    sc.load_fallback()  # now, not in the first decision that needs it
+    return TrainedPlayer(f"scorer({Path(path).name})", sc.predict, RULE_KWARGS)
+
+
+#: The env kwargs the rule plays in (the 9-ball distillation's types, spin model).
+RULE_KWARGS = {"action_type": "candidates", "observation_type": "candidates_position", "friction": "spin",
+               "spin_action": True, "noise": "olympiad"}
+
+
+def position_action(obs: np.ndarray, n_slots: int = 4, n_balls: int = 10, c: float = 0.3,
+                    min_power: int = 1, n_action: int = 6) -> np.ndarray:
+    """The rule of the module docstring on one ``candidates_position`` observation (``n_slots`` candidate slots,
+    ``n_balls`` balls); ``min_power``: the grid powers left out, softest first. Returns the ``candidates`` action
+    (``n_action`` dims: slot, power, side, top, then placement, 0)."""
+    o = np.asarray(obs, dtype=np.float64).reshape(-1)
+    base = 3 * n_balls
+    slots = o[base:base + SLOT_FEATURES * n_slots].reshape(n_slots, SLOT_FEATURES)
+    grid = o[base + SLOT_FEATURES * n_slots:base + (SLOT_FEATURES + POSITION_FEATURES) * n_slots].reshape(
+        n_slots, len(POWERS) * len(TOPS), POINT_VALUES)
+    act = np.zeros(n_action, np.float32)
+    best, choice = 0.0, None
+    for k in range(n_slots - 1):
+        if slots[k, 0] == 0.0 or slots[k, 2] == -1.0 or not grid[k, :, 2:4].any():
+            continue
+        v = slots[k, 7] * grid[k, :, 0] * (1.0 - grid[k, :, 1]) * (c + grid[k, :, 4])
+        v[:min_power * len(TOPS)] = 0.0
+        g = int(np.argmax(v))
+        if v[g] > best:
+            best, choice = float(v[g]), (k, g)
+    if choice is None:
+        return act
+    k, g = choice
+    act[0] = (k + 0.5) / n_slots
+    act[1] = POWERS[g // len(TOPS)]
+    act[3] = TOPS[g % len(TOPS)]
+    return act
+
+
+class PositionRulePlayer:
+    """:func:`position_action` as a player of the 9-ball env whose observation it is given (``act(env, obs)``: the
+    env must be in :data:`RULE_KWARGS`' types); a distillation teacher (``python -m agents.distill --teacher
+    position_rule``)."""
+
+    name = "position_rule"
+
+    def __init__(self, c: float = 0.3, min_power: int = 1) -> None:
+        self.c = c
+        self.min_power = min_power
+
+    def reset(self, seed: int | None = None) -> None:
+        """No state."""
+
+    def act(self, env: Any, obs: Any) -> np.ndarray:
+        u = env.unwrapped
+        if u.config.observation_type != "candidates_position" or u.config.action_type != "candidates":
+            raise ValueError("position_rule: plays the 'candidates' action on the 'candidates_position' observation, "
+                             f"not {u.config.action_type!r} on {u.config.observation_type!r}")
+        return position_action(obs, u.config.candidate_slots, u.n_balls, self.c, self.min_power,
+                               u.action_space.shape[0])
+
+
+def rule_player(c: float = 0.3, min_power: int = 1) -> Any:
+    """The rule as a league player (:class:`agents.games.TrainedPlayer`: it observes the table in its own types and
+    plays on the league's absolute-action env)."""
+    from .games import TrainedPlayer
+
+    n_slots, n_balls = 4, 10
+    return TrainedPlayer(f"position_rule(c={c}, min_power={min_power})",
+                         lambda o: position_action(o, n_slots, n_balls, c, min_power), RULE_KWARGS)
+
+
+
+__all__ = ["options", "option_of", "action_of", "fit", "reinforce", "Scorer", "scorer_player", "OPTION_FEATURES",
+           "RULE_KWARGS", "position_action", "PositionRulePlayer", "rule_player", "make_net", "N_GRID", "N_SLOTS"]
