@@ -511,6 +511,21 @@ def league_env_kwargs(players: Sequence[tuple[str, Any]], spin: bool, noise: str
     return kw
 
 
+def print_vs_geometric(name: str, player: Any, games: int, seed: int, noises: Sequence[str]) -> None:
+    """Play ``player`` against the geometric player on 9-ball, ``games`` games under each of ``noises`` ("0" or a
+    noise name; spin model), and print the win rate with its Wilson interval, break-and-runs and decision time: the
+    check that the option policies' command lines end with."""
+    geo = ("geometric", make_player("geometric", seed=seed, game="nine_ball"))
+    me = (name, player)
+    for noise in noises:
+        kw = league_env_kwargs([me, geo], True, noise if noise != "0" else 0.0)
+        r = play_pair("nine_ball", me, geo, games, seed, kw)
+        lo, hi = wilson_interval(r.wins_a, r.games)
+        print(f"{name} vs geometric, noise {noise}: {r.wins_a}-{r.wins_b} = {100 * r.wins_a / r.games:.1f}% "
+              f"[{100 * lo:.0f}, {100 * hi:.0f}], break-and-runs {r.break_and_runs_by[0]} vs {r.break_and_runs_by[1]}, "
+              f"{r.ms_per_decision[0]:.2f} ms a decision")
+
+
 def setting_text(game: str, kw: dict[str, Any]) -> str:
     """The physics and shot noise the league's games are played under: the two-player env's resolved config (the
     game's defaults where ``kw`` says nothing: three-cushion is played under the spin model by default)."""

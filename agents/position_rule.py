@@ -23,11 +23,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     ``noise="olympiad"``, on the league's racks (seats swapped every game)."""
     import argparse
 
-    import billiards_env  # noqa: F401
-    from billiards_env.players import make_player
-
-    from .evaluate import wilson_interval as wilson
-    from .league import league_env_kwargs, play_pair
+    from .league import print_vs_geometric
 
     p = argparse.ArgumentParser(prog="python -m agents.position_rule", description=main.__doc__)
     p.add_argument("--games", type=int, default=400)
@@ -36,15 +32,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--min-power", type=int, default=1, help="grid powers left out, softest first")
     p.add_argument("--noise", nargs="+", default=["0", "olympiad"])
     args = p.parse_args(argv)
-    rule = ("position_rule", league_player(args.c, args.min_power))
-    geo = ("geometric", make_player("geometric", seed=args.seed, game="nine_ball"))
-    for noise in args.noise:
-        kw = league_env_kwargs([rule, geo], True, noise if noise != "0" else 0.0)
-        r = play_pair("nine_ball", rule, geo, args.games, args.seed, kw)
-        lo, hi = wilson(r.wins_a, r.games)
-        print(f"position rule vs geometric, noise {noise}: {r.wins_a}-{r.wins_b} = {100 * r.wins_a / r.games:.1f}% "
-              f"[{100 * lo:.0f}, {100 * hi:.0f}], break-and-runs {r.break_and_runs_by[0]} vs {r.break_and_runs_by[1]}, "
-              f"{r.ms_per_decision[0]:.2f} ms a decision")
+    print_vs_geometric("position rule", league_player(args.c, args.min_power), args.games, args.seed, args.noise)
     return 0
 
 

@@ -76,20 +76,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     sc.save(args.out)
     print(f"saved {args.out}")
     if args.games:
-        from billiards_env.players import make_player
+        from .league import print_vs_geometric
 
-        from .evaluate import wilson_interval
-        from .league import league_env_kwargs, play_pair
-
-        me = ("scorer", league_player(args.out))
-        geo = ("geometric", make_player("geometric", seed=args.seed, game="nine_ball"))
-        for noise in ("0", "olympiad"):
-            kw = league_env_kwargs([me, geo], True, noise if noise != "0" else 0.0)
-            r = play_pair("nine_ball", me, geo, args.games, args.league_seed, kw)
-            lo, hi = wilson_interval(r.wins_a, r.games)
-            print(f"scorer vs geometric, noise {noise}: {r.wins_a}-{r.wins_b} = {100 * r.wins_a / r.games:.1f}% "
-                  f"[{100 * lo:.0f}, {100 * hi:.0f}], break-and-runs {r.break_and_runs_by[0]} vs "
-                  f"{r.break_and_runs_by[1]}, {r.ms_per_decision[0]:.2f} ms a decision")
+        print_vs_geometric("scorer", league_player(args.out), args.games, args.league_seed, ("0", "olympiad"))
     return 0
 
 

@@ -58,3 +58,17 @@ def test_it_plays_a_game_env_in_its_types():
             break
     with pytest.raises(ValueError, match="candidates_position"):
         rule.act(gym.make("Billiards9Ball-v0", action_type="candidates", observation_type="candidates"), obs)
+
+
+def test_the_command_line_plays_the_geometric_player_and_reports_every_game(capsys):
+    import re
+
+    from agents.position_rule import main
+
+    assert main(["--games", "2", "--noise", "0"]) == 0
+    line = capsys.readouterr().out.strip().splitlines()[-1]
+    m = re.match(r"position rule vs geometric, noise 0: (\d+)-(\d+) = ([\d.]+)% \[(\d+), (\d+)\]", line)
+    assert m, line
+    wins, losses, pct = int(m[1]), int(m[2]), float(m[3])
+    assert wins + losses == 2 and pct == 100 * wins / 2
+    assert int(m[4]) <= pct <= int(m[5])
