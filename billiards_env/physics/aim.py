@@ -72,6 +72,21 @@ def ray_circle_entry(px: float, py: float, ux: float, uy: float, cx: float, cy: 
 
 
 @njit(cache=True)
+def first_pocket_on_ray(x: float, y: float, ux: float, uy: float, limit: float, pocket_xy: np.ndarray,
+                        pocket_r: np.ndarray) -> tuple:
+    """The first pocket whose capture circle the ray from ``(x, y)`` along the unit ``(ux, uy)`` enters within
+    ``limit`` (:func:`ray_circle_entry`; the lower index on a tie): ``(pocket, distance)``, ``(-1, inf)`` if none."""
+    best = math.inf
+    pocket = -1
+    for p in range(pocket_r.shape[0]):
+        t = ray_circle_entry(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
+        if t <= limit and t < best:
+            best = t
+            pocket = p
+    return pocket, best
+
+
+@njit(cache=True)
 def ray_cushion_hit(px: float, py: float, ux: float, uy: float, length: float, width: float,
                     r: float) -> tuple[float, int]:
     """Distance along the ray ``p + t u`` until a ball of radius ``r`` centred on it touches a cushion, and which
@@ -549,14 +564,7 @@ def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, 
         uy = vy / s
         reach = stop_distance(s, law, a, k, v_min)
         t_wall = ray_cushion_hit(x, y, ux, uy, length, width, radius)[0]
-        limit = min(reach, t_wall + 1e-9)
-        best = math.inf
-        pocket = -1
-        for p in range(pocket_r.shape[0]):
-            t = ray_circle_entry(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
-            if t <= limit and t < best:
-                best = t
-                pocket = p
+        pocket = first_pocket_on_ray(x, y, ux, uy, min(reach, t_wall + 1e-9), pocket_xy, pocket_r)[0]
         if pocket >= 0:
             return pocket
         if reach <= t_wall:

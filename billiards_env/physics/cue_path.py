@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .aim import collide_into, ray_circle_entry, ray_cushion_hit
+from .aim import collide_into, first_pocket_on_ray, ray_cushion_hit
 from .motion import launch_speed, speed_after_distance, stop_distance
 
 #: Cushion bounces followed along the cue ball's path (it stops long before them at the speeds the envs allow).
@@ -44,13 +44,7 @@ def path_pocket_speed(x: float, y: float, ux: float, uy: float, s_max: float, ra
             return -1, math.inf, -1
         reach = stop_distance(s, law, a, k, v_min)
         t_wall = ray_cushion_hit(x, y, ux, uy, length, width, radius)[0]
-        best = math.inf
-        pocket = -1
-        for p in range(pocket_r.shape[0]):
-            t = ray_circle_entry(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
-            if t <= t_wall + 1e-9 and t < best:
-                best = t
-                pocket = p
+        pocket, best = first_pocket_on_ray(x, y, ux, uy, t_wall + 1e-9, pocket_xy, pocket_r)
         if pocket >= 0 and best < reach:
             # backwards: the speed to arrive (just moving), then each segment and bounce before it
             need = launch_speed(best, v_min * 1.05 + 1e-6, law, a, k)

@@ -37,7 +37,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .aim import collide_into, ray_circle_entry, ray_cushion_hit
+from .aim import collide_into, first_pocket_on_ray, ray_cushion_hit
 from .codes import ROLLING, SPIN
 from .cushion_models import cushion_hit
 from .motion import launch_speed, speed_after_distance, stop_distance
@@ -101,13 +101,7 @@ def _walk(x: float, y: float, ux: float, uy: float, length: float, speed: float,
     for _ in range(max_bounces + 1):
         reach = left if fixed else stop_distance(s, ROLLING, a, 0.0, v_min)
         t_wall, cushion = ray_cushion_hit(x, y, ux, uy, table_l, table_w, radius)
-        best = math.inf
-        pocket = -1
-        for p in range(pocket_r.shape[0]):
-            t = ray_circle_entry(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
-            if t <= t_wall + 1e-9 and t < best:
-                best = t
-                pocket = p
+        pocket, best = first_pocket_on_ray(x, y, ux, uy, t_wall + 1e-9, pocket_xy, pocket_r)
         if pocket >= 0 and best < reach:
             return x + ux * best, y + uy * best, ux, uy, fx, fy, pocket
         if reach <= t_wall:
@@ -186,13 +180,7 @@ def _pocket_on_segment(x: float, y: float, ex: float, ey: float, pocket_xy: np.n
     d = math.hypot(dx, dy)
     if d < 1e-15:
         return -1, math.inf
-    best = math.inf
-    pocket = -1
-    for p in range(pocket_r.shape[0]):
-        t = ray_circle_entry(x, y, dx / d, dy / d, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
-        if t <= d and t < best:
-            best = t
-            pocket = p
+    pocket, best = first_pocket_on_ray(x, y, dx / d, dy / d, d, pocket_xy, pocket_r)
     return pocket, best / d
 
 

@@ -29,7 +29,7 @@ from .kernel_logs import (append_event, contact_cluster, count_burst, internal, 
 from .roots import first_entry, quadratic_roots_in
 from .cushion_models import cushion_hit
 from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, wall_normal
-from .spin_motion import advance, classify, piece_of, reach, roll_on, slide_end, spin_decay_rate, transition
+from .spin_motion import advance, classify, piece_of, reach, reach_of, roll_on, slide_end, spin_decay_rate, transition
 
 #: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
 #: numba compile a second specialisation of it.
@@ -214,31 +214,9 @@ def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
     next own event (which recomputes the pair anyway)."""
     xi, yi, vxi, vyi, _, _, _ = _state_at(bs, i, t)
     xj, yj, vxj, vyj, _, _, _ = _state_at(bs, j, t)
-    axi = bs[i, AX]
-    ayi = bs[i, AY]
-    axj = bs[j, AX]
-    ayj = bs[j, AY]
-    if vxi == 0.0 and vyi == 0.0 and vxj == 0.0 and vyj == 0.0 and axi == 0.0 and ayi == 0.0 and axj == 0.0 \
-            and ayj == 0.0:
-        return math.inf
-    window = min(max_time, ball_t[i], ball_t[j]) - t
-    if not window > 0.0:
-        return math.inf
-    dc = radius[i] + radius[j]
-    ax = xi - xj
-    ay = yi - yj
-    # Cull pairs too far apart to meet within the window.
-    if math.hypot(ax, ay) - dc > (reach(window, vxi, vyi, axi, ayi) + reach(window, vxj, vyj, axj, ayj)) \
-            * (1.0 + 1e-9) + 1e-12:
-        return math.inf
-    bx = vxi - vxj
-    by = vyi - vyj
-    cx = 0.5 * (axi - axj)
-    cy = 0.5 * (ayi - ayj)
-    closing_tol = 2.0 * dc * (1e-12 + 1e-14 * (math.hypot(vxi, vyi) + math.hypot(vxj, vyj)))
-    tau = first_entry(cx * cx + cy * cy, 2.0 * (bx * cx + by * cy), bx * bx + by * by + 2.0 * (ax * cx + ay * cy),
-                      2.0 * (ax * bx + ay * by), ax * ax + ay * ay - dc * dc, window, closing_tol)
-    return t + tau
+    return _pair_from_states(i, j, t, xi, yi, vxi, vyi, bs[i, AX], bs[i, AY], math.hypot(vxi, vyi),
+                             math.hypot(bs[i, AX], bs[i, AY]), xj, yj, vxj, vyj, bs[j, AX], bs[j, AY],
+                             math.hypot(vxj, vyj), math.hypot(bs[j, AX], bs[j, AY]), ball_t, radius, max_time)
 
 
 @internal
@@ -256,9 +234,9 @@ def _pair_from_states(i, j, t, xi, yi, vxi, vyi, axi, ayi, hvi, hai, xj, yj, vxj
     dc = radius[i] + radius[j]
     ax = xi - xj
     ay = yi - yj
-    # Cull pairs too far apart to meet within the window (reach: spin_motion.reach, from the hypots given); on
+    # Cull pairs too far apart to meet within the window (spin_motion.reach_of, from the hypots given); on
     # squares first where clear-cut (margins far above round-off: beyond there, beyond after hypot too).
-    lim = (window * (hvi + 0.5 * hai * window) + window * (hvj + 0.5 * haj * window)) * (1.0 + 1e-9) + 1e-12
+    lim = (reach_of(window, hvi, hai) + reach_of(window, hvj, haj)) * (1.0 + 1e-9) + 1e-12
     far = (dc + lim) * (1.0 + 1e-12)
     if ax * ax + ay * ay > far * far * (1.0 + 1e-12):
         return math.inf

@@ -163,9 +163,16 @@ def transition(state: int, vx: float, vy: float, wz: float) -> int:
 
 
 @njit(cache=True)
+def reach_of(t: float, speed: float, accel: float) -> float:
+    """An upper bound of how far a ball on a piece moves in ``t`` seconds, from its speed and the magnitude of its
+    acceleration: ``|v| t + |a| t^2 / 2``."""
+    return t * (speed + 0.5 * accel * t)
+
+
+@njit(cache=True)
 def reach(t: float, vx: float, vy: float, ax: float, ay: float) -> float:
-    """An upper bound of how far a ball on a piece moves in ``t`` seconds: ``|v| t + |a| t^2 / 2``."""
-    return t * (math.hypot(vx, vy) + 0.5 * math.hypot(ax, ay) * t)
+    """:func:`reach_of` from the velocity and acceleration vectors."""
+    return reach_of(t, math.hypot(vx, vy), math.hypot(ax, ay))
 
 
 @njit(cache=True)
