@@ -4,8 +4,9 @@ numba's ``omp`` threading layer (the default where GNU OpenMP is present) keeps 
 parallel batch. Between batches a training loop runs Python (the policy, SB3's buffers), and the spinning thread
 burns a core the whole time: a process's CPU clock runs at twice its wall clock on an idle 2-core machine (a CPU
 budget buys half the steps), and on a busy one the spinner takes the core from the main thread (a loop of short
-batches ran 3-5x slower in wall time here). ``PASSIVE`` makes the workers sleep between batches; a batch of the
-envs' size (milliseconds) does not notice the wake-up. A value the user set is kept. libgomp reads the variable
+batches ran 3-5x slower in wall time here). ``PASSIVE`` makes the workers sleep between batches, for a wake-up per
+batch (``python -m benchmarks.openmp_wait``: on idle cores, half the CPU time for about 10% more wall time on
+sub-millisecond batches; a batch of the vector envs' size takes milliseconds). A value the user set is kept. libgomp reads the variable
 once, when it is loaded: importing torch (which loads its own copy under the same name) before this package fixes
 the policy already, so the agents import this package first.
 """
