@@ -90,7 +90,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     p = argparse.ArgumentParser(prog="python -m benchmarks.cue_rest_accuracy", description=__doc__.split("\n\n")[0])
     p.add_argument("--games", type=int, default=12)
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--quick", action="store_true", help="a short run (1 game)")
     args = p.parse_args(argv)
+    if args.quick:
+        args.games = 1
     out = measure(args.games, args.seed)
     print(f"{out['grid_points']} grid points of {out['games']} games")
     for key in ("one_collision_no_cushion", "one_collision_cushions", "second_collision", "another_ball_first"):

@@ -74,7 +74,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("players", nargs="+")
     p.add_argument("--games", type=int, default=60)
     p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--quick", action="store_true", help="a short run (1 game)")
     args = p.parse_args(argv)
+    if args.quick:
+        args.games = 1
     for name, r in measure(args.players, args.games, args.seed).items():
         print(f"{name}: decision {r['median_ms']:.3f} ms median, {r['mean_ms']:.3f} ms mean; observation "
               f"{r['obs_median_ms']:.3f} ms median ({r['decisions']} decisions)")

@@ -74,7 +74,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--rounds", type=int, default=2000, help="parallel batches per process")
     p.add_argument("--python-work", type=int, default=20000, help="Python loop iterations between batches")
     p.add_argument("--repeats", type=int, default=3)
+    p.add_argument("--quick", action="store_true", help="a short run (100 batches, one process a policy)")
     args = p.parse_args(argv)
+    if args.quick:
+        args.rounds, args.repeats = 100, 1
     res = measure(args.rounds, args.python_work, args.repeats)
     print(f"load average {os.getloadavg()[0]:.2f}, {os.cpu_count()} cores; medians of {args.repeats} processes each")
     for policy, r in res.items():
