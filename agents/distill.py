@@ -78,7 +78,8 @@ def label_episodes(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
     action type. The shot played is the teacher's, or with ``student`` (a model zip) the student's except with
     probability ``beta``. Returns ``obs`` (N, d), ``actions`` (N, a), ``rewards`` of the shots played, the
     episodes' ``success`` and ``teacher_played`` (shots where the teacher's action was played, and how many of
-    those episodes it won)."""
+    those episodes it won). On 9-ball's ``candidates_position`` observation also the option scorer's ball-in-hand
+    labels (:func:`agents.option_policies.hand_label`): ``hand_obs`` (M, HAND_PLACES, d), ``hand_target`` (M,)."""
     import gymnasium as gym
 
     import billiards_env  # noqa: F401
@@ -91,14 +92,16 @@ def label_episodes(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
     if student is not None and student.startswith("scorer:"):  # an agents.scorer policy (DAgger on its states)
         from .option_policies import Scorer
 
-        sc = Scorer.load(Path(student[len("scorer:"):]))
-        model = type("ScorerStudent", (), {"act": staticmethod(lambda env, obs: sc.predict(obs))})()
+        model = Scorer.load(Path(student[len("scorer:"):]))
     elif student is not None:
         from .evaluate import model_player
 
         spec = model_player(student)
         model = spec
     obs_l, act_l, rew_l, succ = [], [], [], []
+    hand_obs, hand_target = [], []  # ball-in-hand labels of the option scorer (candidates_position only)
+    u = env.unwrapped
+    hand = _game_of(env) == "nine_ball" and u.config.observation_type == "candidates_position"
     for seed in seeds:
         rng = np.random.default_rng([int(seed), 17])
         obs, info = env.reset(seed=int(seed))
@@ -108,6 +111,13 @@ def label_episodes(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
             label = np.asarray(player.act(env, obs), dtype=np.float32).reshape(-1)
             obs_l.append(np.asarray(obs, dtype=np.float32))
             act_l.append(label)
+            view = u.state.view
+            if hand and view.place_area is not None and not view.break_shot:
+                from .option_policies import hand_label
+
+                o_p, t = hand_label(u.state, u.observation_type, u.action_type, label)
+                hand_obs.append(o_p)
+                hand_target.append(t)
             played = label
             if model is not None and rng.random() >= beta:
                 played = np.asarray(model.act(env, obs), dtype=np.float32).reshape(-1)
@@ -116,8 +126,15 @@ def label_episodes(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
             done = term or trunc
         succ.append(bool(info.get("is_success", False)))
     env.close()
-    return {"obs": np.asarray(obs_l, dtype=np.float32), "actions": np.asarray(act_l, dtype=np.float32),
-            "rewards": np.asarray(rew_l, dtype=np.float32), "success": np.asarray(succ, dtype=bool)}
+    out = {"obs": np.asarray(obs_l, dtype=np.float32), "actions": np.asarray(act_l, dtype=np.float32),
+           "rewards": np.asarray(rew_l, dtype=np.float32), "success": np.asarray(succ, dtype=bool)}
+    if hand:
+        from .option_policies import HAND_PLACES
+
+        d = int(env.observation_space.shape[0])
+        out["hand_obs"] = np.asarray(hand_obs, dtype=np.float32).reshape(-1, HAND_PLACES, d)
+        out["hand_target"] = np.asarray(hand_target, dtype=np.int64)
+    return out
 
 
 def collect_labels(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teacher: str, seeds: Sequence[int],
@@ -139,7 +156,7 @@ def collect_labels(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
             parts = list(pool.map(label_episodes, *zip(*args)))
     else:
         parts = [label_episodes(*a) for a in args]
-    return {k: np.concatenate([p[k] for p in parts]) for k in ("obs", "actions", "rewards", "success")}
+    return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
 
 
 # --- behaviour cloning ------------------------------------------------------------------------------------------

@@ -117,10 +117,13 @@ class TrainedPlayer:
         if not u.action_type.exact_inverse:
             raise ValueError(f"{self.name}: the env's action type ({u.action_type.name}) cannot express every shot; "
                              "play trained policies on an env with an exact type (the league uses 'absolute')")
-        state = u.state
-        o = self._obs_type.observe(state)
-        shot = self._action_type.shot(state, self.predict(o))
+        shot = self.shot(u.state)
         return u.action_from_shot(shot.angle, shot.speed, shot.side, shot.top, shot.place, shot.pocket, shot.push)
+
+    def shot(self, state: Any) -> Any:
+        """The shot (:class:`~billiards_env.envs.actions.CueShot`) the policy means on a table state of the env it
+        plays (its types set up by :meth:`act`): it observes in its own type and acts in its own."""
+        return self._action_type.shot(state, self.predict(self._obs_type.observe(state)))
 
 
 def trained_player(path: str, game: str = "nine_ball") -> TrainedPlayer:

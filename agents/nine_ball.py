@@ -121,23 +121,26 @@ def train_scorer(config: Path, run_dir: Path, d: dict[str, Any], workers: int) -
     setup = parse_hyperparams(cfg)
     teacher = d.get("teacher", "search")
     t0 = _time.perf_counter()
-    keys = ("obs", "actions", "rewards", "success")
     with np.load(run_dir / "labels.npz") as f:
-        parts = [{k: f[k] for k in keys}]
+        parts = [{k: f[k] for k in f.files}]
     n_games = int(d.get("scorer_games", 0))
     seeds = range(SCORER_LABEL_SEED, SCORER_LABEL_SEED + n_games)
     parts.append(collect_labels(cfg.env_id, setup.env_kwargs, None, teacher, seeds, workers=workers))
     ensemble = max(int(d.get("scorer_ensemble", 3)), 1)
     epochs = int(d.get("scorer_epochs", 60))
 
-    def merged() -> dict[str, Any]:
-        return {k: np.concatenate([p[k] for p in parts]) for k in keys}
+    def merged() -> dict[str, Any]:  # the keys every part has (ball-in-hand labels: agents.distill.label_episodes)
+        return {k: np.concatenate([p[k] for p in parts]) for k in parts[0] if all(k in p for p in parts)}
+
+    def fit_all(data: dict[str, Any], seed: int) -> tuple[Any, dict[str, Any]]:
+        return fit(data["obs"], data["actions"], epochs, seed=seed, hand_obs=data.get("hand_obs"),
+                   hand_target=data.get("hand_target"))
 
     n_dagger = int(d.get("scorer_dagger_games", 0))
     if n_dagger > 0:
         data = merged()
         first = run_dir / "scorer_round0.pt"
-        Scorer([fit(data["obs"], data["actions"], epochs, seed=0)[0]]).save(first)
+        Scorer([fit_all(data, 0)[0]]).save(first)
         seeds = range(SCORER_LABEL_SEED + n_games, SCORER_LABEL_SEED + n_games + n_dagger)
         parts.append(collect_labels(cfg.env_id, setup.env_kwargs, None, teacher, seeds, student=f"scorer:{first}",
                                     workers=workers))
@@ -146,15 +149,17 @@ def train_scorer(config: Path, run_dir: Path, d: dict[str, Any], workers: int) -
     np.savez_compressed(labels, **data)
     clone = distill(cfg, teacher=teacher, dagger_rounds=0, bc_epochs=int(d.get("bc_epochs", 60)), rl_seconds=0.0,
                     workers=1, eval_episodes=0, run_dir=run_dir / "clone", quiet=True, labels=labels)
-    nets, agreement = [], []
+    nets, agreement, hand_agreement = [], [], []
     for k in range(ensemble):
-        net, info = fit(data["obs"], data["actions"], epochs, seed=k)
+        net, info = fit_all(data, k)
         nets.append(net)
         agreement.append(info["holdout_agreement"])
+        hand_agreement.append(info.get("hand_holdout_agreement", float("nan")))
     path = run_dir / "scorer.pt"
     Scorer(nets, Path(clone["run_dir"]) / "bc_model.zip").save(path)
     return {"path": str(path), "labels": int(len(data["obs"])), "extra_games": n_games, "dagger_games": n_dagger,
-            "ensemble": ensemble, "holdout_agreement": agreement, "wall_seconds": _time.perf_counter() - t0}
+            "ensemble": ensemble, "holdout_agreement": agreement, "hand_labels": int(len(data.get("hand_target", []))),
+            "hand_holdout_agreement": hand_agreement, "wall_seconds": _time.perf_counter() - t0}
 
 
 def neutral_baseline(config: Path, episodes: int) -> dict[str, float]:
@@ -454,7 +459,7 @@ def add_arguments(p: Any) -> None:
                    help="nine-ball: share of the training budget spent on run-out practice (the rest: games vs "
                         "geometric)")
     g.add_argument("--games", type=int, default=400, help="nine-ball: league games per pair and setting")
-    g.add_argument("--search-games", type=int, default=40, help="nine-ball: games of the pairs with the search "
+    g.add_argument("--search-games", type=int, default=400, help="nine-ball: games of the pairs with the search "
                                                                 "player or the search with the prior (slower)")
     g.add_argument("--runouts", type=int, default=100, help="nine-ball: racks of the run-out test per player")
     g.add_argument("--curriculum", action="store_true", help="nine-ball: the earlier RL-only agent (run-out practice, "

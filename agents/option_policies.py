@@ -7,6 +7,7 @@ agents/scorer.py) hold what each is for and how it was measured; this module imp
 """
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Any
 
@@ -65,6 +66,73 @@ def action_of(option: int, n_action: int = 6) -> np.ndarray:
     return a
 
 
+#: Ball in hand: the places weighed, the search player's own (its ``placement_candidates``, as many as it searches).
+HAND_PLACES = 3
+#: The game features that say the cue ball is in hand (anywhere, in the kitchen): 0 in a placed observation.
+_HAND_FLAGS = (0, 1)
+
+
+def hand_places(state: Any, codec: Any) -> list[tuple[float, float]]:
+    """Ball in hand: the search player's places (:func:`billiards_env.players.search.placement_candidates`, best
+    first, at its own spread), so the teacher's choice of place is among the scorer's options."""
+    from billiards_env.players.context import shot_context
+    from billiards_env.players.search import SearchSettings, placement_candidates
+
+    ctx = shot_context(state, codec)
+    sigma = max(ctx.angle_noise, SearchSettings().ease_noise)
+    return placement_candidates(ctx, HAND_PLACES, sigma=sigma)
+
+
+def placed_observations(state: Any, obs_type: Any, places: list[tuple[float, float]]) -> np.ndarray:
+    """``(len(places), d)``: the observation with the cue ball lying at each place (``state.cue_placed``), the
+    ball-in-hand flags of the game features cleared: the table as the shot from there sees it."""
+    rows = []
+    for place in places:
+        with state.cue_placed(place):
+            rows.append(np.asarray(obs_type.observe(state), dtype=np.float32))
+    out = np.stack(rows) if rows else np.zeros((0, obs_type.space.shape[0]), np.float32)
+    for c in _HAND_FLAGS:
+        out[:, out.shape[1] - N_GAME + c] = 0.0
+    return out
+
+
+def hand_options(obs_places: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The options of one ball-in-hand decision: :func:`options` of each placed observation, flattened
+    (option ``p * n + k``: place ``p``, option ``k`` from there)."""
+    feats, valid = options(obs_places)
+    return feats.reshape(-1, OPTION_FEATURES), valid.reshape(-1)
+
+
+def hand_label(state: Any, obs_type: Any, codec: Any, action: np.ndarray, tol: float = 0.01
+               ) -> tuple[np.ndarray, int]:
+    """A ball-in-hand label: the placed observations of :func:`hand_places` (padded to :data:`HAND_PLACES` with
+    zeros, which have no options) and the option of the teacher's action ``action`` (in ``codec``, a ``candidates``
+    type) among :func:`hand_options`: the place within ``tol`` metres of where the action puts the cue ball, the
+    pot slot there of the same ball and pocket, the grid point nearest its power and top; -1 when there is none
+    (the teacher placed elsewhere, or chose a pot that is not a slot from there)."""
+    places = hand_places(state, codec)
+    obs_p = placed_observations(state, obs_type, places)
+    pad = np.zeros((HAND_PLACES - len(obs_p), obs_p.shape[1]), np.float32)
+    shot = codec.shot(state, action)
+    pot = codec.chosen_pot(state, action)
+    if shot.place is None or pot is None or not places:
+        return np.concatenate([obs_p, pad]), -1
+    d = [math.hypot(p[0] - shot.place[0], p[1] - shot.place[1]) for p in places]
+    p = int(np.argmin(d))
+    target = -1
+    if d[p] <= tol:
+        with state.cue_placed(places[p]):
+            slots = codec.slots(state)
+            same = [j for j in range(min(slots.count, N_SLOTS - 1))
+                    if slots.at(j).target == pot.target and slots.at(j).pocket == pot.pocket]
+        if same:
+            _, g = option_of(np.array([0.0, action[1], 0.0, action[3] if len(action) > 3 else 0.0]))
+            option = same[0] * N_GRID + g
+            if options(obs_p[p:p + 1])[1][0, option]:
+                target = p * (N_SLOTS - 1) * N_GRID + option
+    return np.concatenate([obs_p, pad]), target
+
+
 def make_net(hidden: int = 64) -> Any:
     import torch.nn as nn
 
@@ -72,11 +140,21 @@ def make_net(hidden: int = 64) -> Any:
                          nn.Linear(hidden, 1))
 
 
+def _split(n: int, holdout: float, rng: np.random.Generator, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``keep`` shuffled and cut into a held-out ``holdout`` fraction and the rest."""
+    keep = keep[rng.permutation(len(keep))]
+    n_val = int(holdout * len(keep))
+    return keep[:n_val], keep[n_val:]
+
+
 def fit(obs: np.ndarray, actions: np.ndarray, epochs: int = 60, hidden: int = 64, lr: float = 1e-3, seed: int = 0,
-        holdout: float = 0.1) -> tuple[Any, dict[str, Any]]:
+        holdout: float = 0.1, hand_obs: np.ndarray | None = None, hand_target: np.ndarray | None = None
+        ) -> tuple[Any, dict[str, Any]]:
     """Train a scorer on ``(obs, actions)``: the teacher's option (:func:`option_of`) among the state's options by
     cross-entropy, Adam; states whose teacher chose the kick, or with no options or whose choice is not an option,
-    are left out. Returns the net and its fit (agreement with the teacher on a held-out tenth)."""
+    are left out. With ``hand_obs`` ``(M, HAND_PLACES, d)`` and ``hand_target`` ``(M,)`` (ball-in-hand labels,
+    :func:`hand_label`; -1 left out) the same cross-entropy over each decision's :func:`hand_options`, its batches
+    among the others. Returns the net and its fit (agreement with the teacher on a held-out tenth of each)."""
     import torch
 
     torch.manual_seed(seed)
@@ -86,34 +164,42 @@ def fit(obs: np.ndarray, actions: np.ndarray, epochs: int = 60, hidden: int = 64
         k, g = option_of(a)
         if k >= 0 and valid[i, k * N_GRID + g]:
             target[i] = k * N_GRID + g
-    keep = np.flatnonzero(target >= 0)
     rng = np.random.default_rng(seed)
-    keep = keep[rng.permutation(len(keep))]
-    n_val = int(holdout * len(keep))
-    val, tr = keep[:n_val], keep[n_val:]
-    x = torch.as_tensor(feats)
-    m = torch.as_tensor(valid)
-    y = torch.as_tensor(target)
+    sets = {"": (torch.as_tensor(feats), torch.as_tensor(valid), torch.as_tensor(target),
+                 *_split(len(obs), holdout, rng, np.flatnonzero(target >= 0)))}
+    if hand_obs is not None and len(hand_obs):
+        m, p, d = hand_obs.shape
+        hf, hv = options(hand_obs.reshape(m * p, d))
+        ht = np.asarray(hand_target, dtype=np.int64)
+        sets["hand_"] = (torch.as_tensor(hf.reshape(m, -1, OPTION_FEATURES)), torch.as_tensor(hv.reshape(m, -1)),
+                         torch.as_tensor(ht), *_split(m, holdout, rng, np.flatnonzero(ht >= 0)))
     net = make_net(hidden)
     opt = torch.optim.Adam(net.parameters(), lr=lr)
 
-    def logits(idx: Any) -> Any:
-        s = net(x[idx]).squeeze(-1)
-        return s.masked_fill(~m[idx], -1e9)
+    def logits(key: str, idx: Any) -> Any:
+        x, msk = sets[key][0], sets[key][1]
+        return net(x[idx]).squeeze(-1).masked_fill(~msk[idx], -1e9)
 
     for _ in range(int(epochs)):
-        perm = tr[rng.permutation(len(tr))]
-        for start in range(0, len(perm), 256):
-            idx = torch.as_tensor(perm[start:start + 256])
-            loss = torch.nn.functional.cross_entropy(logits(idx), y[idx])
+        batches = [(key, tr[j:j + 256]) for key, (*_, tr) in sets.items()
+                   for tr in [tr[rng.permutation(len(tr))]] for j in range(0, len(tr), 256)]
+        for b in rng.permutation(len(batches)):
+            key, idx = batches[b]
+            idx = torch.as_tensor(idx)
+            loss = torch.nn.functional.cross_entropy(logits(key, idx), sets[key][2][idx])
             opt.zero_grad()
             loss.backward()
             opt.step()
+    info: dict[str, Any] = {"labels": int(len(obs)), "epochs": int(epochs), "hidden": int(hidden)}
     with torch.no_grad():
-        agree_val = float((logits(torch.as_tensor(val)).argmax(1) == y[val]).float().mean()) if n_val else float("nan")
-        agree_tr = float((logits(torch.as_tensor(tr)).argmax(1) == y[tr]).float().mean())
-    return net, {"labels": int(len(obs)), "used": int(len(keep)), "train_agreement": agree_tr,
-                 "holdout_agreement": agree_val, "epochs": int(epochs), "hidden": int(hidden)}
+        for key, (_, _, y, val, tr) in sets.items():
+            agree = {}
+            for name, idx in (("holdout", val), ("train", tr)):
+                agree[name] = float((logits(key, torch.as_tensor(idx)).argmax(1) == y[idx]).float().mean()) \
+                    if len(idx) else float("nan")
+            info.update({f"{key}used": int(len(val) + len(tr)), f"{key}train_agreement": agree["train"],
+                         f"{key}holdout_agreement": agree["holdout"]})
+    return net, info
 
 
 class Scorer:
@@ -123,7 +209,8 @@ class Scorer:
     where the cue ball lies): the ``fallback`` policy (an SB3 model zip in the same types, e.g. the SAC clone of the
     same teacher, which learnt the teacher's placements), else action 0."""
 
-    def __init__(self, nets: Any, fallback: str | Path | None = None) -> None:
+    def __init__(self, nets: Any, fallback: str | Path | None = None, hand: bool = True) -> None:
+        self.hand = bool(hand)
         self.nets = list(nets) if isinstance(nets, (list, tuple)) else [nets]
         for net in self.nets:
             net.eval()
@@ -162,6 +249,42 @@ class Scorer:
         s[~valid[0]] = -np.inf
         return action_of(int(np.argmax(s)))
 
+    def choose_hand(self, obs_places: np.ndarray) -> tuple[int, int] | None:
+        """Ball in hand: the best ``(place, option)`` of :func:`hand_options` (scored as every option), None when
+        no place has one."""
+        feats, valid = hand_options(obs_places)
+        if not valid.any():
+            return None
+        s = self.scores(feats)
+        s[~valid] = -np.inf
+        return divmod(int(np.argmax(s)), (N_SLOTS - 1) * N_GRID)
+
+    def shot(self, state: Any, obs_type: Any, action_type: Any) -> Any:
+        """The shot (:class:`~billiards_env.envs.actions.CueShot`) this policy plays on a table state, observing in
+        ``obs_type`` and acting in ``action_type`` (:data:`RULE_KWARGS`' types). With the cue ball in hand it weighs
+        the options from each of :func:`hand_places` and plays the best from its place; else :meth:`predict`."""
+        view = state.view
+        if self.hand and view.place_area is not None and not view.break_shot:
+            places = hand_places(state, action_type)
+            pick = self.choose_hand(placed_observations(state, obs_type, places))
+            if pick is not None:
+                p, k = pick
+                with state.cue_placed(places[p]):
+                    shot = action_type.shot(state, action_of(k, action_type.space.shape[0]))
+                return shot._replace(place=places[p])
+        return action_type.shot(state, self.predict(obs_type.observe(state)))
+
+    def act(self, env: Any, obs: np.ndarray) -> np.ndarray:
+        """The action on an env in its own types (:data:`RULE_KWARGS`'): :meth:`predict`, or with the cue ball in
+        hand the :meth:`shot` from its place in the env's action (a ``candidates`` action places the cue ball
+        behind the chosen ghost ball: as near that place as it can say)."""
+        u = env.unwrapped
+        view = u.state.view
+        if self.hand and view.place_area is not None and not view.break_shot:
+            s = self.shot(u.state, u.observation_type, u.action_type)
+            return u.action_from_shot(s.angle, s.speed, s.side, s.top, s.place, s.pocket, s.push)
+        return self.predict(obs)
+
     def load_fallback(self) -> Any:
         """The fallback policy (loaded once), or None."""
         if self._fallback is None and self.fallback is not None:
@@ -180,7 +303,7 @@ class Scorer:
             except ValueError:
                 fallback = str(Path(fallback).resolve())
         torch.save({"state_dicts": [n.state_dict() for n in self.nets], "hidden": self.nets[0][0].out_features,
-                    "fallback": fallback}, str(path))
+                    "fallback": fallback, "hand": self.hand}, str(path))
 
     @classmethod
     def load(cls, path: Path) -> "Scorer":
@@ -195,7 +318,7 @@ class Scorer:
         fallback = d.get("fallback")
         if fallback is not None and not Path(fallback).is_absolute():
             fallback = str(Path(path).resolve().parent / fallback)
-        return cls(nets, fallback)
+        return cls(nets, fallback, bool(d.get("hand", True)))
 
 
 def reinforce(net: Any, episodes: int, env_kwargs: dict[str, Any], lr: float = 3e-4, batch: int = 32,
@@ -252,13 +375,22 @@ def reinforce(net: Any, episodes: int, env_kwargs: dict[str, Any], lr: float = 3
             "win_rate_last_quarter": float(np.mean(wins[-max(len(wins) // 4, 1):])) if wins else float("nan")}
 
 
-def scorer_player(path: str | Path) -> Any:
-    """A saved scorer as a league player (:class:`agents.games.TrainedPlayer` in the position rule's types)."""
+def scorer_player(path: str | Path, hand: bool | None = None) -> Any:
+    """A saved scorer as a league player (a :class:`agents.games.TrainedPlayer` in the position rule's types that
+    plays :meth:`Scorer.shot`: its own place with the cue ball in hand); ``hand`` overrides the saved choice of
+    weighing the places (False: the fallback places, as scorers before it did)."""
     from .games import TrainedPlayer
 
     sc = Scorer.load(Path(path))
+    if hand is not None:
+        sc.hand = bool(hand)
     sc.load_fallback()  # now, not in the first decision that needs it
-    return TrainedPlayer(f"scorer({Path(path).name})", sc.predict, RULE_KWARGS)
+
+    class ScorerPlayer(TrainedPlayer):
+        def shot(self, state: Any) -> Any:
+            return sc.shot(state, self._obs_type, self._action_type)
+
+    return ScorerPlayer(f"scorer({Path(path).name})", sc.predict, RULE_KWARGS)
 
 
 #: The env kwargs the rule plays in (the 9-ball distillation's types, spin model).
@@ -329,5 +461,6 @@ def rule_player(c: float = 0.3, min_power: int = 1) -> Any:
 
 
 
-__all__ = ["options", "option_of", "action_of", "fit", "reinforce", "Scorer", "scorer_player", "OPTION_FEATURES",
+__all__ = ["options", "option_of", "action_of", "fit", "hand_places", "placed_observations", "hand_options",
+           "hand_label", "HAND_PLACES", "reinforce", "Scorer", "scorer_player", "OPTION_FEATURES",
            "RULE_KWARGS", "position_action", "PositionRulePlayer", "rule_player", "make_net", "N_GRID", "N_SLOTS"]

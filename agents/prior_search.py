@@ -117,12 +117,14 @@ class PriorSearchPlayer:
             place, angle, speed = break_shot(ctx)
             return to_action(codec, state, angle, speed, place=place)
         self.policy._types(env)
-        mine = self.policy._action_type.shot(state, self.policy.predict(self.policy._obs_type.observe(state)))
+        mine = self.policy.shot(state)
         st = self.search.settings
         places: list[Any] = [None]
         if ctx.place_area is not None:
             sigma = max(ctx.angle_noise, st.ease_noise)
             own = placement_candidates(ctx, max(st.placements, 1), sigma=sigma)
+            if mine.place is not None:  # the policy's place first (once: a scorer's is one of the search's own)
+                own = [p for p in own if math.hypot(p[0] - mine.place[0], p[1] - mine.place[1]) > 1e-6]
             places = ([mine.place] if mine.place is not None else []) + own
             places = places[:max(st.placements, 1)]
         judge = Judge(ctx) if ctx.game is not None else None
@@ -149,7 +151,14 @@ class PriorSearchPlayer:
 
 
 def prior_search_player(path: str, game: str = "nine_ball", seed: int = 0) -> PriorSearchPlayer:
-    """The search player with the trained policy at ``path`` (a run folder or model zip of ``game``) as its prior."""
+    """The search player with the trained policy at ``path`` (a run folder or model zip of ``game``, or
+    ``scorer:<file>``, an option scorer of 9-ball) as its prior."""
+    if path.startswith("scorer:"):
+        from .option_policies import scorer_player
+
+        if game != "nine_ball":
+            raise ValueError(f"{path}: a scorer plays 9-ball, not {game}")
+        return PriorSearchPlayer(scorer_player(path[len("scorer:"):]), seed)
     from .games import trained_player
 
     return PriorSearchPlayer(trained_player(path, game), seed)

@@ -14,6 +14,7 @@ No Gymnasium and no pygame here.
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Any, Callable, Iterator, NamedTuple
@@ -231,6 +232,20 @@ class TableState:
         finally:
             b.pos[0] = saved
             b.on_table[0] = on
+
+    @contextlib.contextmanager
+    def cue_placed(self, place: tuple[float, float]) -> Iterator[None]:
+        """Within the block the cue ball lies at ``place`` and is played from there: moved (as
+        :meth:`cue_moved_to`) and the view is this one without the ball in hand (its own memo, so facts derived
+        from it, e.g. the candidate shots, are those of the cue ball at ``place``). For players that choose where to
+        put a cue ball in hand by the shots each place leaves."""
+        view = self.view
+        with self.cue_moved_to(place):
+            self._view = dataclasses.replace(view, place_area=None, memo={})
+            try:
+                yield
+            finally:
+                self._view = view
 
 
 def state_of(source: Any) -> TableState:

@@ -377,6 +377,19 @@ class CandidateShots(ActionType):
         """Whether aim value ``a`` picks the kick slot (the last of several)."""
         return self.n_slots > 1 and int(abs(a) * self.n_slots) >= self.n_slots - 1
 
+    def _pot(self, cands: Any, a: float) -> Any:
+        """The pot slot aim value ``a`` plays (the easiest when it picks the kick slot and there is no kick)."""
+        return cands.at(0 if self._kicks(a) else self._slot(a, cands.count))
+
+    def chosen_pot(self, state: "TableState", action: Any) -> Any:
+        """The pot slot (:class:`~billiards_env.envs.candidates.Slot`: its ball and pocket) ``action`` plays on the
+        table now; None for the break, the kick or when there is no candidate."""
+        a = self.parse(action)
+        cands = self.slots(state)
+        if cands.break_shot or (cands.kick is not None and self._kicks(a[0])) or cands.count == 0:
+            return None
+        return self._pot(cands, a[0])
+
     def _speed(self, base: float, a: float) -> float:
         lo, hi = self.speed_range
         return min(max(base * math.exp(a * self.log_factor), lo), hi)
@@ -433,7 +446,7 @@ class CandidateShots(ActionType):
             with state.cue_moved_to(base.place):
                 angle = self._direct(state, cands.targets)
             return base._replace(angle=angle, speed=self._speed(FALLBACK_SPEED, a[1]))
-        slot = cands.at(0 if self._kicks(a[0]) else self._slot(a[0], n))
+        slot = self._pot(cands, a[0])
         if "pocket" in self._declare_at:  # the 8's called pocket: the chosen shot's
             base = base._replace(pocket=slot.pocket)
         if cands.in_hand:

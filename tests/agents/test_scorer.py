@@ -80,3 +80,29 @@ def test_the_fallback_moves_with_the_scorer(tmp_path):
     Scorer([mk(8)], tmp_path / "a" / "clone" / "bc_model.zip").save(tmp_path / "a" / "s.pt")
     (tmp_path / "a").rename(tmp_path / "b")
     assert Scorer.load(tmp_path / "b" / "s.pt").fallback == str((tmp_path / "b" / "clone" / "bc_model.zip").resolve())
+
+
+def test_it_learns_where_to_put_the_cue_ball():
+    """Ball-in-hand labels: the teacher picks the (place, option) with the largest next-shot ease over all places;
+    the union of each decision's options is one softmax, so the scorer learns to compare places too."""
+    pytest.importorskip("torch")
+    from agents.option_policies import HAND_PLACES, hand_options
+
+    rng = np.random.default_rng(2)
+    o, grid = _obs(rng, 4500)
+    m = len(o) // HAND_PLACES
+    hand_obs = o[:m * HAND_PLACES].reshape(m, HAND_PLACES, -1)
+    value = grid[:m * HAND_PLACES, :N_SLOTS - 1, :, 4].reshape(m, -1)
+    target = value.argmax(1)
+    target[:5] = -1  # unmatched labels are left out
+    acts = np.zeros((len(o), 6), np.float32)  # the ordinary labels: all the kick (left out)
+    acts[:, 0] = 0.99
+    net, info = fit(o, acts, epochs=30, hidden=32, hand_obs=hand_obs, hand_target=target)
+    assert info["used"] == 0 and info["hand_used"] == m - 5
+    assert info["hand_holdout_agreement"] > 0.5  # chance: 1 / 108
+    sc = Scorer(net)
+    feats, valid = hand_options(hand_obs[7])
+    assert valid.all() and feats.shape == (HAND_PLACES * (N_SLOTS - 1) * N_GRID, OPTION_FEATURES)
+    p, k = sc.choose_hand(hand_obs[7])
+    assert p * (N_SLOTS - 1) * N_GRID + k == int(np.argmax(sc.scores(feats)))
+    assert sc.choose_hand(np.zeros_like(hand_obs[7])) is None  # no place with an option
