@@ -235,7 +235,8 @@ def plot_learning_curve(run_dir: Path, path: Path, neutral: dict[str, dict[str, 
 
 
 def record_game(model_path: str, path: Path, seed: int) -> dict[str, Any]:
-    """A GIF of the trained agent playing a rack (it breaks) against the geometric player, with the game panel."""
+    """A GIF of the trained agent (an SB3 model, or ``scorer:<file>``: an option scorer) playing a rack (it breaks)
+    against the geometric player, with the game panel."""
     import gymnasium as gym
 
     import billiards_env  # noqa: F401
@@ -243,12 +244,19 @@ def record_game(model_path: str, path: Path, seed: int) -> dict[str, Any]:
 
     from .evaluate import model_player
 
-    spec = model_player(model_path)
-    kw = {k: v for k, v in spec.env_kwargs.items() if k not in ("opponent", "opening", "first_shooter")}
-    env = gym.make(spec.env_id, render_mode="rgb_array_list", **{**GIF_RENDER, **kw, "opponent": "geometric",
-                                                                  "opening": "break", "first_shooter": "agent"})
+    if model_path.startswith("scorer:"):
+        from .option_policies import RULE_KWARGS, Scorer
+
+        policy: Any = Scorer.load(Path(model_path[len("scorer:"):]))
+        env_id, env_kwargs = "Billiards9Ball-v0", RULE_KWARGS
+    else:
+        policy = model_player(model_path)
+        env_id, env_kwargs = policy.env_id, policy.env_kwargs
+    kw = {k: v for k, v in env_kwargs.items() if k not in ("opponent", "opening", "first_shooter")}
+    env = gym.make(env_id, render_mode="rgb_array_list", **{**GIF_RENDER, **kw, "opponent": "geometric",
+                                                            "opening": "break", "first_shooter": "agent"})
     try:
-        return record_gif(env, lambda obs: spec.act(env, obs), path, [seed], max_shots=40)
+        return record_gif(env, lambda obs: policy.act(env, obs), path, [seed], max_shots=40)
     finally:
         env.close()
 
@@ -385,7 +393,7 @@ def run(out: Path, seconds: float | None, practice_fraction: float, games: int, 
     names = list(leagues[SETTINGS[0][0]]["elo"])
     trained = next(n for n in names if n not in BASELINES and not n.startswith("search+prior"))
     prior_name = next((n for n in names if n.startswith("search+prior")), None)
-    gif = record_game(model, out / "game.gif", gif_seed)
+    gif = record_game(f"scorer:{scorer}" if scorer else model, out / "game.gif", gif_seed)
     total = time.perf_counter() - t0
     ms = leagues[SETTINGS[0][0]]["players"][trained]["ms"]
     report = {"command": command, "model": model, "run_dir": str(run_dir), "training": train_info,

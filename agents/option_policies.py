@@ -205,9 +205,11 @@ def fit(obs: np.ndarray, actions: np.ndarray, epochs: int = 60, hidden: int = 64
 class Scorer:
     """A trained scorer: ``predict(obs) -> action``, deterministic. The break: action 0 (the geometric player's full
     break). With options: the best by the scores summed over ``nets`` (an ensemble of fits; the forward passes in
-    numpy: a decision is a few small matrix products, no torch call per shot). Without (ball in hand, no pot from
-    where the cue ball lies): the ``fallback`` policy (an SB3 model zip in the same types, e.g. the SAC clone of the
-    same teacher, which learnt the teacher's placements), else action 0."""
+    numpy: a decision is a few small matrix products, no torch call per shot). With the cue ball in hand and
+    ``hand`` (:meth:`shot`, :meth:`act`): the best option of all :func:`hand_places`, played from its place.
+    Without options (no pot from where the cue ball lies, nor from any place): the ``fallback`` policy (an SB3 model
+    zip in the same types, e.g. the SAC clone of the same teacher), else action 0. :meth:`predict` sees the
+    observation only: with the cue ball in hand it plays the fallback (the scorers before ``hand``)."""
 
     def __init__(self, nets: Any, fallback: str | Path | None = None, hand: bool = True) -> None:
         self.hand = bool(hand)

@@ -16,6 +16,7 @@ so the search itself is untouched: ``python -m agents.league --players search pr
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Any
 
@@ -25,6 +26,8 @@ import numpy as np
 PRIOR_ANGLES = (0.0, 0.0008, -0.0008, 0.002, -0.002, 0.005, -0.005)
 PRIOR_SPEEDS = (1.0, 0.8, 1.25, 0.65, 1.5)
 PRIOR_TIPS = ((0.0, 0.0), (0.0, -0.3), (0.0, 0.3), (-0.25, 0.0), (0.25, 0.0), (0.0, -0.15), (0.0, 0.15))
+#: Shots re-run under noise when the sweep's simulations go to the re-runs (:meth:`PriorSearchPlayer.settings_for`).
+REALLOCATED_TOP_K = 10
 
 
 class _PriorPlayable:
@@ -54,10 +57,11 @@ class PriorSearchPlayer:
     """The search player with a trained policy's proposals (see the module docstring). ``policy``: a
     :class:`agents.games.TrainedPlayer` (it observes in its own types and names the shot it means)."""
 
-    def __init__(self, policy: Any, seed: int | None = 0, settings: Any = None) -> None:
+    def __init__(self, policy: Any, seed: int | None = 0, settings: Any = None, reallocate: bool = True) -> None:
         from billiards_env.players.search import SearchPlayer, SearchSettings
 
         self.policy = policy
+        self.reallocate = reallocate
         self.search = SearchPlayer(seed, settings or SearchSettings())
         self.name = f"search+prior({policy.name})"
 
@@ -69,6 +73,23 @@ class PriorSearchPlayer:
         """Sweep candidates per decision: the proposals' share of the search's budget."""
         st = self.search.settings
         return int(st.sweep_angles) * len(st.sweep_speeds)
+
+    def settings_for(self, state: Any, n_proposals: int) -> Any:
+        """The search's settings for a search with ``n_proposals`` proposals. With ``reallocate`` and a pot to play
+        (the policy's type lists one from where the cue ball is), the sweep shrinks to the proposals and the
+        simulations it frees go to the noisy re-runs (:data:`REALLOCATED_TOP_K` shots, as many samples each as the
+        budget allows): the same simulations per decision, spent on the proposals' margins instead of the
+        directions the policy did not choose. Else the search's own."""
+        st = self.search.settings
+        at = self.policy._action_type
+        slots = at.slots(state) if hasattr(at, "slots") else None
+        if not self.reallocate or slots is None or slots.count == 0 or n_proposals == 0:
+            return st
+        n_speeds = len(st.sweep_speeds)
+        angles = -(-n_proposals // n_speeds)
+        freed = (int(st.sweep_angles) - angles) * n_speeds + st.top_k * st.robust_samples
+        top_k = max(st.top_k, REALLOCATED_TOP_K)
+        return dataclasses.replace(st, sweep_angles=angles, top_k=top_k, robust_samples=freed // top_k)
 
     def proposals(self, state: Any, shot: Any, spin: bool) -> np.ndarray:
         """``(angle, speed, side, top)`` rows: the policy's shot and its variants, then its speed factor and tip
@@ -134,7 +155,8 @@ class PriorSearchPlayer:
                 # the policy's place gets its proposals; the search's own places keep its sweep
                 prop = self.proposals(state, mine, ctx.tip_offsets) if place == mine.place else np.zeros((0, 4))
                 play = _PriorPlayable(playable_shots(state, codec, place), prop)
-                angle, speed, out = search_shot(ctx, st, self.search.rng, None, play, judge)
+                settings = self.settings_for(state, len(prop)) if place == mine.place else st
+                angle, speed, out = search_shot(ctx, settings, self.search.rng, None, play, judge)
             if best is None or out.robust > best[3].robust:
                 best = (place, angle, speed, out, play)
         place, angle, speed, out, play = best

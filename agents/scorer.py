@@ -9,9 +9,12 @@ grid is an *option* with its own features (the slot's 12 ``candidates`` values, 
 values, the power and top, the game's features); a small MLP scores each option (the same weights for all: the
 options are a set) and the policy plays the best (``top`` as the tip, no side). Trained by cross-entropy on the
 teacher's choices mapped to the nearest option (:func:`fit`); several fits with different seeds can be summed (an
-ensemble). The break is action 0 (the geometric player's full break); where the observation has no options (ball in
-hand, no pot from where the cue ball lies) a fallback policy plays (the SAC clone of the same labels, which learnt
-the teacher's placements), else action 0.
+ensemble). The break is action 0 (the geometric player's full break). With the cue ball in hand it chooses the place
+too: the observation is made again with the cue ball lying at each of the search player's own places
+(``option_policies.hand_places``: the teacher searches from the same ones), the options of all places are scored
+together and the best (place, shot, power, top) is played; the teacher's ball-in-hand labels train that choice as
+one softmax over all places (``option_policies.hand_label``). Where no option exists (no pot from where the cue ball
+lies, nor from any place) a fallback policy plays (the SAC clone of the same labels), else action 0.
 
     python -m agents.scorer --labels runs/<distill run>/labels.npz [more.npz ...] --ensemble 3 \
         --fallback runs/<distill run>/bc_model.zip --out runs/scorer.pt --games 400
