@@ -14,12 +14,12 @@ Steps:
    config's budget (CPU seconds). Spin model, FastFiz's level-1 noise (``noise: olympiad``), the ``candidates``
    action type and the ``candidates_position`` observation. Then, when the ``distill:`` section asks for it
    (``scorer_games``), the option scorer (:func:`train_scorer`, :mod:`agents.scorer`): more games labelled by the
-   teacher, a DAgger round played by a first scorer, the SAC clone of all the labels (its fallback from ball in
-   hand) and an ensemble of fits, in ``<run>/scorer.pt``. ``--curriculum``: the earlier RL-only agent (run-out
-   practice, then games).
+   teacher (its place with ball in hand too), a DAgger round played by a first scorer, the SAC clone of all the
+   labels (its fallback where no place has a pot) and an ensemble of fits, in ``<run>/scorer.pt``.
+   ``--curriculum``: the earlier RL-only agent (run-out practice, then games).
 2. The league (:mod:`agents.league`, on every core) of random, geometric, search, the trained policy (the option
-   scorer when the run has one, else the SAC agent's best evaluation checkpoint) and the search player with the SAC
-   agent as its prior (:mod:`agents.prior_search`), under the
+   scorer when the run has one, else the SAC agent's best evaluation checkpoint) and the search player with the
+   trained policy as its prior (:mod:`agents.prior_search`), under the
    spin model, without noise and with ``noise="olympiad"``: head-to-head win rates with Wilson intervals, Elo,
    break-and-run, balls per inning, run-outs from ball in hand, decision times.
 3. Files in ``<out>`` (default ``runs/main/nine_ball``): ``report.md`` / ``report.json`` (every target with its
@@ -381,7 +381,9 @@ def run(out: Path, seconds: float | None, practice_fraction: float, games: int, 
     if scorer is None and (run_dir / "scorer.pt").exists():
         scorer = str(run_dir / "scorer.pt")
     # the trained policy of the league: the option scorer when the run has one (agents.scorer), else the SAC model
-    players = [*BASELINES, f"scorer:{scorer}" if scorer else model] + ([f"prior:{model}"] if prior else [])
+    # the search's prior: the same trained policy
+    trained_spec = f"scorer:{scorer}" if scorer else model
+    players = [*BASELINES, trained_spec] + ([f"prior:{trained_spec}"] if prior else [])
     leagues = {}
     for name, noise in SETTINGS:
         limits = {"search": search_games, "prior:": search_games}  # the slow players' pairs
@@ -436,18 +438,28 @@ def markdown(report: dict[str, Any], leagues: dict[str, dict[str, Any]], trained
         lines.append("")
         sc = tr.get("scorer")
         if sc:
+            from .option_policies import HAND_PLACES
+
             agree = ", ".join(f"{100 * a:.0f}%" for a in sc.get("holdout_agreement", []))
+            hand = ", ".join(f"{100 * a:.0f}%" for a in sc.get("hand_holdout_agreement", []))
             lines += [f"The league's trained policy is the option scorer `{sc['path']}` (agents.scorer): "
                       f"{sc['labels']} labels (the distillation's, {sc['extra_games']} more teacher games, "
-                      f"{sc['dagger_games']} games played by a first scorer), {sc['ensemble']} fits (agreement with "
-                      f"the teacher on held-out labels {agree}), the SAC clone of the labels from ball in hand; "
-                      f"{sc['wall_seconds']:.0f} s wall. The SAC agent above is the prior of the search with the "
-                      "learned prior.", ""]
+                      f"{sc['dagger_games']} games played by a first scorer) and {sc.get('hand_labels', 0)} "
+                      f"ball-in-hand labels (the teacher's place among its {HAND_PLACES} places), {sc['ensemble']} fits "
+                      f"(agreement with the teacher on held-out labels {agree}; on ball-in-hand labels {hand or '-'}), "
+                      f"the SAC clone of the labels where no place has a pot; {sc['wall_seconds']:.0f} s wall. It is "
+                      "also the prior of the search with the learned prior.", ""]
     lines += ["## Targets", "", "| target | figure (win rate [95% Wilson interval]) | verdict |", "|---|---|---|",
               *report.get("targets", target_lines(leagues, trained, prior)), ""]
     lim = limits_text(report, leagues, trained)
     if lim:
         lines += ["What limits the trained agent (figures of this run):", "", *lim, ""]
+    if prior is not None:
+        lines += ["What limits the search with the learned prior: its proposals are shots of the same ghost-ball "
+                  "pots the search already simulates at the same speeds and tips, so without noise (where each "
+                  "candidate's exact outcome decides) the prior adds no shot the search lacks; under noise the "
+                  "simulations the prior frees from the sweep re-run the best shots more often (a surer estimate of "
+                  "each one's chance), which is where it gains (agents/prior_search.py).", ""]
     n = report["neutral"]
     if "vs_geometric" in n:
         lines += [f"Reference (learning curve): the neutral action (the geometric player's own choice in the agent's "

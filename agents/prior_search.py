@@ -8,8 +8,11 @@ spends the sweep's share on the policy's proposals instead: the shot the policy 
 offsets, speed factors, tip offsets), then the policy's speed and spin applied to every other candidate (ball,
 pocket) of its action type. With the cue ball in hand the policy's place is searched first, then the search's own
 best places (as many places in all as the search player searches, each with as many candidates; the search's
-places keep its sweep). AlphaGo's use of a policy network, in pool terms: the prior says where
-to look, the simulation decides.
+places keep its sweep). Under shot noise, when the policy has a pot to play, the sweep shrinks to the proposals and
+the simulations it frees re-run more of the best shots under noise, more times each
+(:meth:`PriorSearchPlayer.settings_for`): the prior narrows the search, the budget buys a surer estimate of each
+shot's chance (CueCard's Monte-Carlo over noisy shots). AlphaGo's use of a policy network, in pool terms: the prior
+says where to look, the simulation decides.
 
 The shots enter through the search's ``playable`` hook (the map of candidates to the shots an action type plays),
 so the search itself is untouched: ``python -m agents.league --players search prior:runs/<run>`` plays it.
@@ -74,16 +77,17 @@ class PriorSearchPlayer:
         st = self.search.settings
         return int(st.sweep_angles) * len(st.sweep_speeds)
 
-    def settings_for(self, state: Any, n_proposals: int) -> Any:
-        """The search's settings for a search with ``n_proposals`` proposals. With ``reallocate`` and a pot to play
-        (the policy's type lists one from where the cue ball is), the sweep shrinks to the proposals and the
-        simulations it frees go to the noisy re-runs (:data:`REALLOCATED_TOP_K` shots, as many samples each as the
-        budget allows): the same simulations per decision, spent on the proposals' margins instead of the
-        directions the policy did not choose. Else the search's own."""
+    def settings_for(self, state: Any, n_proposals: int, noisy: bool = True) -> Any:
+        """The search's settings for a search with ``n_proposals`` proposals. Under shot noise (``noisy``), with
+        ``reallocate`` and a pot to play (the policy's type lists one from where the cue ball is), the sweep shrinks
+        to the proposals and the simulations it frees go to the noisy re-runs (:data:`REALLOCATED_TOP_K` shots, as
+        many samples each as the budget allows): the same simulations per decision, spent on the proposals' margins
+        instead of the directions the policy did not choose. Else the search's own (without noise the re-runs only
+        break ties: 48.5% against the search with them, 50.3% without, over 1000 games)."""
         st = self.search.settings
         at = self.policy._action_type
         slots = at.slots(state) if hasattr(at, "slots") else None
-        if not self.reallocate or slots is None or slots.count == 0 or n_proposals == 0:
+        if not (self.reallocate and noisy) or slots is None or slots.count == 0 or n_proposals == 0:
             return st
         n_speeds = len(st.sweep_speeds)
         angles = -(-n_proposals // n_speeds)
@@ -155,7 +159,8 @@ class PriorSearchPlayer:
                 # the policy's place gets its proposals; the search's own places keep its sweep
                 prop = self.proposals(state, mine, ctx.tip_offsets) if place == mine.place else np.zeros((0, 4))
                 play = _PriorPlayable(playable_shots(state, codec, place), prop)
-                settings = self.settings_for(state, len(prop)) if place == mine.place else st
+                noisy = ctx.angle_noise > 0 or ctx.speed_noise > 0 or ctx.tip_noise > 0
+                settings = self.settings_for(state, len(prop), noisy) if place == mine.place else st
                 angle, speed, out = search_shot(ctx, settings, self.search.rng, None, play, judge)
             if best is None or out.robust > best[3].robust:
                 best = (place, angle, speed, out, play)

@@ -76,3 +76,38 @@ def test_the_league_takes_a_prior_player(policy_zip):
     assert name.startswith("search+prior(")
     kw = league_env_kwargs([(name, player)], spin=False, noise="0")
     assert kw["physics"]["friction"] == "spin" and kw["spin_action"]  # the policy's physics
+
+
+def test_under_noise_the_sweep_pays_for_more_re_runs(policy_zip):
+    """With shot noise the sweep shrinks to the proposals and the re-runs take what it frees: the same simulations
+    a decision (up to rounding); without noise, or without a pot for the policy, the search's own settings."""
+    import gymnasium as gym
+
+    import billiards_env  # noqa: F401
+
+    from agents.prior_search import REALLOCATED_TOP_K, prior_search_player
+
+    prior = prior_search_player(policy_zip, "nine_ball", seed=1)
+    env = gym.make("Billiards9Ball-v0", friction="spin", spin_action=True, opponent=None, noise="olympiad")
+    pos = np.array([[0.6, 0.5], [1.6, 0.7], [1.9, 0.3], [2.1, 1.0], [0.9, 1.0], [1.3, 0.25], [2.3, 0.6],
+                    [1.1, 0.7], [0.4, 1.1], [1.8, 1.05]])
+    obs, _ = env.reset(seed=4, options={"positions": pos, "pocketed": np.zeros(10, bool), "ball_in_hand": False,
+                                        "break_shot": False})
+    state = env.unwrapped.state
+    prior.policy._types(env.unwrapped)
+    rows = prior.proposals(state, prior.policy.shot(state), True)
+    st = prior.search.settings
+    new = prior.settings_for(state, len(rows), noisy=True)
+    sweep = lambda s: s.sweep_angles * len(s.sweep_speeds)  # noqa: E731
+    budget = sweep(st) + st.top_k * st.robust_samples
+    spent = sweep(new) + new.top_k * new.robust_samples
+    assert sweep(new) >= len(rows) > sweep(new) - len(st.sweep_speeds)
+    assert new.top_k == REALLOCATED_TOP_K and new.robust_samples > st.robust_samples
+    assert budget - new.top_k < spent <= budget
+    assert (new.n_geometric, new.angle_offsets, new.speed_factors) == (st.n_geometric, st.angle_offsets,
+                                                                       st.speed_factors)
+    assert prior.settings_for(state, len(rows), noisy=False) is st
+    prior.reallocate = False
+    assert prior.settings_for(state, len(rows), noisy=True) is st
+    prior.reallocate = True
+    assert np.asarray(prior.act(env, obs)) in env.action_space
