@@ -400,17 +400,16 @@ RULE_KWARGS = {"action_type": "candidates", "observation_type": "candidates_posi
                "spin_action": True, "noise": "olympiad"}
 
 
-def position_action(obs: np.ndarray, n_slots: int = 4, n_balls: int = 10, c: float = 0.3,
-                    min_power: int = 1, n_action: int = 6) -> np.ndarray:
-    """The rule of the module docstring on one ``candidates_position`` observation (``n_slots`` candidate slots,
-    ``n_balls`` balls); ``min_power``: the grid powers left out, softest first. Returns the ``candidates`` action
-    (``n_action`` dims: slot, power, side, top, then placement, 0)."""
+def position_value(obs: np.ndarray, n_slots: int = 4, n_balls: int = 10, c: float = 0.3,
+                   min_power: int = 1) -> tuple[float, tuple[int, int] | None]:
+    """The rule's best option on one ``candidates_position`` observation: its value (ease now x drops x no scratch x
+    (``c`` + the next ease); 0 when there is none) and its (pot slot, grid point), None when no option is worth
+    anything; ``min_power``: the grid powers left out, softest first."""
     o = np.asarray(obs, dtype=np.float64).reshape(-1)
     base = 3 * n_balls
     slots = o[base:base + SLOT_FEATURES * n_slots].reshape(n_slots, SLOT_FEATURES)
     grid = o[base + SLOT_FEATURES * n_slots:base + (SLOT_FEATURES + POSITION_FEATURES) * n_slots].reshape(
         n_slots, len(POWERS) * len(TOPS), POINT_VALUES)
-    act = np.zeros(n_action, np.float32)
     best, choice = 0.0, None
     for k in range(n_slots - 1):
         if slots[k, 0] == 0.0 or slots[k, 2] == -1.0 or not grid[k, :, 2:4].any():
@@ -420,6 +419,16 @@ def position_action(obs: np.ndarray, n_slots: int = 4, n_balls: int = 10, c: flo
         g = int(np.argmax(v))
         if v[g] > best:
             best, choice = float(v[g]), (k, g)
+    return best, choice
+
+
+def position_action(obs: np.ndarray, n_slots: int = 4, n_balls: int = 10, c: float = 0.3,
+                    min_power: int = 1, n_action: int = 6) -> np.ndarray:
+    """The rule of the module docstring on one ``candidates_position`` observation (``n_slots`` candidate slots,
+    ``n_balls`` balls): :func:`position_value`'s option, or action 0 when there is none. Returns the ``candidates``
+    action (``n_action`` dims: slot, power, side, top, then placement, 0)."""
+    act = np.zeros(n_action, np.float32)
+    _, choice = position_value(obs, n_slots, n_balls, c, min_power)
     if choice is None:
         return act
     k, g = choice
@@ -465,4 +474,4 @@ def rule_player(c: float = 0.3, min_power: int = 1) -> Any:
 
 __all__ = ["options", "option_of", "action_of", "fit", "hand_places", "placed_observations", "hand_options",
            "hand_label", "HAND_PLACES", "reinforce", "Scorer", "scorer_player", "OPTION_FEATURES",
-           "RULE_KWARGS", "position_action", "PositionRulePlayer", "rule_player", "make_net", "N_GRID", "N_SLOTS"]
+           "RULE_KWARGS", "position_action", "position_value", "PositionRulePlayer", "rule_player", "make_net", "N_GRID", "N_SLOTS"]
