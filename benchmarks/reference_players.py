@@ -4,7 +4,10 @@ the compiled code with: ``ghost_ball_shots``, ``geometric_shot``, ``break_shot``
 player's decision (:func:`reference_geometric_act`), the search player (:class:`ReferenceSearchPlayer`) and the
 ``candidates`` types' slot lists (:func:`reference_candidate_slots` and its parts), with the numpy ``pocket_window``
 (41 sampled directions), ``segment_blocked`` and ``cut_cosine`` they called. Verbatim copies (the search's and the
-slots' imports pointed at the copies here). Kept with the benchmarks, outside the package: not part of the API."""
+slots' imports pointed at the copies here), except that their 2-vector dot products (``np.dot``, ``@``: OpenBLAS's
+rounding, which depends on the CPU's kernel) are :func:`_dot2` (:func:`billiards_env.physics.aim.dot2`: one rounding,
+the one the compiled code and OpenBLAS's Haswell kernel give), so compiled and reference agree on every machine.
+Kept with the benchmarks, outside the package: not part of the API."""
 from __future__ import annotations
 
 import contextlib
@@ -17,7 +20,7 @@ import numpy as np
 from billiards_env.physics import Balls, Physics, Table
 from billiards_env.physics.batch import BatchResult, run_shots
 from billiards_env.rules import ShotInfo, summarize_arrays
-from billiards_env.physics.aim import (WINDOW_SAMPLES, aim_angle, angular_radius, deflected_cue_velocity,
+from billiards_env.physics.aim import (WINDOW_SAMPLES, aim_angle, dot2, angular_radius, deflected_cue_velocity,
                                        direction_vector, ghost_ball_position, object_ball_speed, path_enters_pocket,
                                        ray_circle_entries, ray_circle_entry, ray_cushion_distances)
 from billiards_env.physics.layout import head_spot
@@ -38,11 +41,20 @@ from billiards_env.players.shots import MAX_CUT, ShotCandidate, pot_probability
 
 Vec2 = Any
 
+
+def _dot2(a: Any, b: Any) -> Any:
+    """The dot product of 2-vectors ``a`` and ``b`` rounded as :func:`billiards_env.physics.aim.dot2`; ``a`` may
+    be rows ``(N, 2)`` (then ``(N,)``)."""
+    a = np.asarray(a, dtype=float)
+    bx, by = float(b[0]), float(b[1])
+    if a.ndim == 1:
+        return dot2(float(a[0]), float(a[1]), bx, by)
+    return np.array([dot2(float(x), float(y), bx, by) for x, y in a], dtype=float)
+
 def cut_cosine(aim_direction: Vec2, object_direction: Vec2) -> float:
     """Cosine of the cut angle: between the cue ball's direction at impact and the object ball's direction
     (both unit vectors), clipped to [-1, 1]."""
-    return float(np.clip(np.dot(np.asarray(aim_direction, dtype=float), np.asarray(object_direction, dtype=float)),
-                         -1.0, 1.0))
+    return float(np.clip(_dot2(aim_direction, object_direction), -1.0, 1.0))
 
 
 def cut_angle(aim_direction: Vec2, object_direction: Vec2) -> float:
@@ -103,11 +115,11 @@ def segment_blocked(a: Vec2, b: Vec2, others: np.ndarray, clearance: np.ndarray)
         return False
     a = np.asarray(a, dtype=float)
     ab = np.asarray(b, dtype=float) - a
-    L2 = float(ab @ ab)
+    L2 = float(_dot2(ab, ab))
     if L2 == 0.0:
         d = np.hypot(*(others - a).T)
     else:
-        t = np.clip(((others - a) @ ab) / L2, 0.0, 1.0)
+        t = np.clip(_dot2(others - a, ab) / L2, 0.0, 1.0)
         proj = a + t[:, None] * ab
         d = np.hypot(*(others - proj).T)
     return bool(np.any(d < clearance - 1e-9))
@@ -485,7 +497,7 @@ def next_shot_ease(table: Any, radius: np.ndarray, pos: np.ndarray, on: np.ndarr
                 continue
             v = g - c
             d = np.hypot(v[:, 0], v[:, 1])
-            cos_cut = (v @ u) / np.maximum(d, 1e-12)
+            cos_cut = _dot2(v, u) / np.maximum(d, 1e-12)
             ok = cos_cut >= cos_max
             if not ok.any():
                 continue

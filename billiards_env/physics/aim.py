@@ -196,9 +196,10 @@ def _fma(typingctx, a, b, c):
 
 @njit(cache=True)
 def dot2(ax: float, ay: float, bx: float, by: float) -> float:
-    """The dot product of ``(ax, ay)`` and ``(bx, by)``, rounded as ``numpy.dot`` of two 2-vectors rounds it on
-    x86-64 (OpenBLAS's ddot fuses the second product onto the first): the compiled players and the numpy code they
-    replaced agree bit for bit, and the result no longer depends on the BLAS build."""
+    """The dot product of ``(ax, ay)`` and ``(bx, by)``: ``ax * bx`` rounded, then ``ay * by`` added with one
+    rounding (a fused multiply-add; as OpenBLAS's Haswell ddot rounds a 2-vector dot, which the compiled players
+    replaced). Fixed here, so results do not depend on the BLAS build nor on the kernel a CPU selects (on some CPUs
+    ``numpy.dot`` rounds each product)."""
     return _fma(ay, by, ax * bx)
 
 

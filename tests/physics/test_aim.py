@@ -203,10 +203,17 @@ def test_closed_form_window_is_the_sampled_window():
     assert checked > 20000 and 0.5 * checked < found < checked  # windows and blocked pockets both exercised
 
 
-def test_dot2_rounds_as_numpy_dot_and_cut_cosine_clips():
+def test_dot2_rounds_once_after_the_first_product_and_cut_cosine_clips():
+    """dot2 is ``ax * bx`` rounded, then ``ay * by`` added to it with one rounding (a fused multiply-add): checked
+    against exact rational arithmetic, so it holds on every CPU (numpy's own 2-vector dot is OpenBLAS's, whose
+    rounding depends on the kernel the CPU selects)."""
+    from fractions import Fraction
+
     rng = np.random.default_rng(3)
     a, b = rng.normal(size=(2000, 2)), rng.normal(size=(2000, 2))
-    assert [aim.dot2(x[0], x[1], y[0], y[1]) for x, y in zip(a, b)] == [float(np.dot(x, y)) for x, y in zip(a, b)]
+    want = [float(Fraction(x[1]) * Fraction(y[1]) + Fraction(float(x[0] * y[0]))) for x, y in zip(a, b)]
+    assert [aim.dot2(x[0], x[1], y[0], y[1]) for x, y in zip(a, b)] == want
+    assert sum(w != x[0] * y[0] + x[1] * y[1] for w, x, y in zip(want, a, b)) > 100  # not the plain sum
     u = _unit(20.0)
     assert aim.cut_cosine(u, u * (1.0 + 1e-15)) == 1.0  # clipped into [-1, 1]
     assert aim.cut_cosine(u, -u) == pytest.approx(-1.0)
