@@ -302,8 +302,8 @@ def target_lines(leagues: dict[str, dict[str, Any]], trained: str, prior: str | 
                                                                      else "**missed**")))
         lines.append(f"| {title} | {'; '.join(figures)} | {', '.join(verdicts)} |")
     if decision_ms is not None:
-        lines.append(f"| the trained policy decides in <= 1 ms | {decision_ms:.2f} ms a decision (league mean, its own "
-                     f"observation included) | {'met' if decision_ms <= 1.0 else '**missed**'} |")
+        lines.append(f"| the trained policy decides in <= 1 ms | {decision_ms:.2f} ms a decision (league mean of the slower "
+                     f"setting, its own observations included) | {'met' if decision_ms <= 1.0 else '**missed**'} |")
     if job_seconds is not None:
         lines.append(f"| the 9-ball job <= {TARGET_JOB_SECONDS // 60} min on 2 cores | {job_seconds / 60:.0f} min wall | "
                      f"{'met' if job_seconds <= TARGET_JOB_SECONDS else '**missed**'} |")
@@ -397,7 +397,7 @@ def run(out: Path, seconds: float | None, practice_fraction: float, games: int, 
     prior_name = next((n for n in names if n.startswith("search+prior")), None)
     gif = record_game(f"scorer:{scorer}" if scorer else model, out / "game.gif", gif_seed)
     total = time.perf_counter() - t0
-    ms = leagues[SETTINGS[0][0]]["players"][trained]["ms"]
+    ms = max(rep["players"][trained]["ms"] for rep in leagues.values())  # the slower setting (more ball in hand)
     report = {"command": command, "model": model, "run_dir": str(run_dir), "training": train_info,
               "train_wall_seconds": t_train, "total_wall_seconds": total, "neutral": neutral,
               "workers": workers, "trained_ms_per_decision": ms,
