@@ -140,7 +140,7 @@ def make_net(hidden: int = 64) -> Any:
                          nn.Linear(hidden, 1))
 
 
-def _split(n: int, holdout: float, rng: np.random.Generator, keep: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _split(keep: np.ndarray, holdout: float, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
     """``keep`` shuffled and cut into a held-out ``holdout`` fraction and the rest."""
     keep = keep[rng.permutation(len(keep))]
     n_val = int(holdout * len(keep))
@@ -166,13 +166,13 @@ def fit(obs: np.ndarray, actions: np.ndarray, epochs: int = 60, hidden: int = 64
             target[i] = k * N_GRID + g
     rng = np.random.default_rng(seed)
     sets = {"": (torch.as_tensor(feats), torch.as_tensor(valid), torch.as_tensor(target),
-                 *_split(len(obs), holdout, rng, np.flatnonzero(target >= 0)))}
+                 *_split(np.flatnonzero(target >= 0), holdout, rng))}
     if hand_obs is not None and len(hand_obs):
         m, p, d = hand_obs.shape
         hf, hv = options(hand_obs.reshape(m * p, d))
         ht = np.asarray(hand_target, dtype=np.int64)
         sets["hand_"] = (torch.as_tensor(hf.reshape(m, -1, OPTION_FEATURES)), torch.as_tensor(hv.reshape(m, -1)),
-                         torch.as_tensor(ht), *_split(m, holdout, rng, np.flatnonzero(ht >= 0)))
+                         torch.as_tensor(ht), *_split(np.flatnonzero(ht >= 0), holdout, rng))
     net = make_net(hidden)
     opt = torch.optim.Adam(net.parameters(), lr=lr)
 
@@ -181,8 +181,10 @@ def fit(obs: np.ndarray, actions: np.ndarray, epochs: int = 60, hidden: int = 64
         return net(x[idx]).squeeze(-1).masked_fill(~msk[idx], -1e9)
 
     for _ in range(int(epochs)):
-        batches = [(key, tr[j:j + 256]) for key, (*_, tr) in sets.items()
-                   for tr in [tr[rng.permutation(len(tr))]] for j in range(0, len(tr), 256)]
+        batches = []  # every set's training rows, shuffled, in batches of 256; the batches in a random order
+        for key, (*_, tr) in sets.items():
+            perm = tr[rng.permutation(len(tr))]
+            batches += [(key, perm[j:j + 256]) for j in range(0, len(perm), 256)]
         for b in rng.permutation(len(batches)):
             key, idx = batches[b]
             idx = torch.as_tensor(idx)
