@@ -10,7 +10,9 @@ A player is a baseline name (``random``, ``geometric``, ``search``: :mod:`billia
 an SB3 run folder or model zip, or an RLlib checkpoint or run folder (with the ``rllib`` extra), played with
 deterministic actions in its own action and observation types (:class:`agents.games.TrainedPlayer`); ``prior:<run>``
 is the search player with that policy's proposals in place of its sweep, at its own simulation budget
-(:mod:`agents.prior_search`); ``scorer:<file>`` an option-scoring policy of :mod:`agents.scorer` and
+(:mod:`agents.prior_search`; ``prior-plain:<run>`` the same without spending the sweep's simulations on re-runs
+under noise); ``scorer:<file>`` an option-scoring policy of :mod:`agents.scorer` (``scorer-fallback:<file>``: the
+same that leaves ball in hand to its fallback policy, as scorers before the ball-in-hand places did) and
 ``position_rule`` the hand-written rule of :mod:`agents.position_rule` (9-ball, on the ``candidates_position``
 observation). Every pair
 plays ``--games`` games on the two-player env (:mod:`billiards_env.multi`, absolute action type), seats swapped
@@ -79,18 +81,20 @@ def load_player(spec: str, seed: int = 0, game: str = "nine_ball") -> tuple[str,
     folder: a :class:`agents.games.TrainedPlayer`)."""
     if spec in BASELINES:
         return spec, make_player(spec, seed=seed, game=game)
-    if spec.startswith("prior:"):  # the search player with a trained policy's proposals (agents.prior_search)
-        from .prior_search import prior_search_player
+    for prefix, reallocate in (("prior:", True), ("prior-plain:", False)):
+        if spec.startswith(prefix):  # the search player with a trained policy's proposals (agents.prior_search)
+            from .prior_search import prior_search_player
 
-        p = prior_search_player(spec[len("prior:"):], game, seed)
-        return p.name, p
-    if spec.startswith("scorer:"):  # an option-scoring policy on the candidates_position types (agents.scorer)
-        from .option_policies import scorer_player
+            p = prior_search_player(spec[len(prefix):], game, seed, reallocate=reallocate)
+            return p.name, p
+    for prefix, hand in (("scorer:", None), ("scorer-fallback:", False)):
+        if spec.startswith(prefix):  # an option-scoring policy on the candidates_position types (agents.scorer)
+            from .option_policies import scorer_player
 
-        if game != "nine_ball":
-            raise ValueError(f"{spec}: a scorer plays 9-ball, not {game}")
-        p = scorer_player(spec[len("scorer:"):])
-        return p.name, p
+            if game != "nine_ball":
+                raise ValueError(f"{spec}: a scorer plays 9-ball, not {game}")
+            p = scorer_player(spec[len(prefix):], hand=hand)
+            return p.name, p
     if spec == "position_rule":  # the hand-written rule on the candidates_position observation
         from .option_policies import rule_player
 

@@ -394,7 +394,8 @@ def scorer_player(path: str | Path, hand: bool | None = None) -> Any:
         def shot(self, state: Any) -> Any:
             return sc.shot(state, self._obs_type, self._action_type)
 
-    return ScorerPlayer(f"scorer({Path(path).name})", sc.predict, RULE_KWARGS)
+    name = f"scorer({Path(path).name})" if sc.hand else f"scorer({Path(path).name}, fallback in hand)"
+    return ScorerPlayer(name, sc.predict, RULE_KWARGS)
 
 
 #: The env kwargs the rule plays in (the 9-ball distillation's types, spin model).

@@ -177,18 +177,25 @@ class PriorSearchPlayer:
         return action
 
 
-def prior_search_player(path: str, game: str = "nine_ball", seed: int = 0) -> PriorSearchPlayer:
+def prior_search_player(path: str, game: str = "nine_ball", seed: int = 0,
+                        reallocate: bool = True) -> PriorSearchPlayer:
     """The search player with the trained policy at ``path`` (a run folder or model zip of ``game``, or
-    ``scorer:<file>``, an option scorer of 9-ball) as its prior."""
+    ``scorer:<file>``, an option scorer of 9-ball) as its prior; ``reallocate``: see
+    :meth:`PriorSearchPlayer.settings_for` (False: the league's ``prior-plain:<path>``, named so)."""
     if path.startswith("scorer:"):
         from .option_policies import scorer_player
 
         if game != "nine_ball":
             raise ValueError(f"{path}: a scorer plays 9-ball, not {game}")
-        return PriorSearchPlayer(scorer_player(path[len("scorer:"):]), seed)
-    from .games import trained_player
+        policy = scorer_player(path[len("scorer:"):])
+    else:
+        from .games import trained_player
 
-    return PriorSearchPlayer(trained_player(path, game), seed)
+        policy = trained_player(path, game)
+    p = PriorSearchPlayer(policy, seed, reallocate=reallocate)
+    if not reallocate:
+        p.name += " without reallocation"
+    return p
 
 
 __all__ = ["PriorSearchPlayer", "prior_search_player", "PRIOR_ANGLES", "PRIOR_SPEEDS", "PRIOR_TIPS"]

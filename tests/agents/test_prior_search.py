@@ -111,3 +111,11 @@ def test_under_noise_the_sweep_pays_for_more_re_runs(policy_zip):
     assert prior.settings_for(state, len(rows), noisy=True) is st
     prior.reallocate = True
     assert np.asarray(prior.act(env, obs)) in env.action_space
+
+
+def test_the_league_names_the_prior_without_reallocation_apart(policy_zip):
+    from agents.league import load_player
+
+    name, player = load_player(f"prior-plain:{policy_zip}", 0, "nine_ball")
+    other, _ = load_player(f"prior:{policy_zip}", 0, "nine_ball")
+    assert not player.reallocate and name != other and name.startswith(other)

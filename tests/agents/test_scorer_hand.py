@@ -107,3 +107,20 @@ def test_the_scorer_plays_from_its_own_place():
     sc.hand = False
     assert sc.shot(u.state, u.observation_type, u.action_type).place not in places or len(places) == 0
     env.close()
+
+
+def test_the_league_plays_the_scorer_with_and_without_its_places(tmp_path):
+    from agents.league import load_player
+
+    path = tmp_path / "s.pt"
+    Scorer([make_net(8)]).save(path)
+    a, pa = load_player(f"scorer:{path}")
+    b, pb = load_player(f"scorer-fallback:{path}")
+    assert a != b  # one league can hold both
+    env, obs = _in_hand_env(5)
+    places = hand_places(env.unwrapped.state, env.unwrapped.action_type)
+    pa._types(env.unwrapped)
+    pb._types(env.unwrapped)
+    assert pa.shot(env.unwrapped.state).place in places
+    assert pb.shot(env.unwrapped.state).place not in places
+    env.close()
