@@ -70,6 +70,10 @@ class PairResult:
     break_and_runs_by: tuple[int, int] = (0, 0)  #: break-and-runs of a and of b
     innings: tuple[int, int] = (0, 0)  #: a's and b's innings (visits to the table)
     scored: tuple[float, float] = (0.0, 0.0)  #: what a's and b's shots scored (the game's Verdict.scored)
+    shots: tuple[int, int] = (0, 0)  #: a's and b's shots
+    #: Games over before either player came back to the table (two innings at most: a break-and-run, or a run-out
+    #: by the player who came to the table after the breaker); where both run out from nearly every table, most.
+    no_return: int = 0
 
     @property
     def rate_a(self) -> float:
@@ -318,7 +322,9 @@ def pair_result(a: str, b: str, games: Sequence[GameStats], seconds: float | Non
     return PairResult(a, b, len(games), winners.count(0), winners.count(1), winners.count(-1), sum(bnr), seconds,
                       reasons, (ms(0), ms(1)), (bnr[0], bnr[1]),
                       (sum(g.innings[0] for g in games), sum(g.innings[1] for g in games)),
-                      (sum(g.scored[0] for g in games), sum(g.scored[1] for g in games)))
+                      (sum(g.scored[0] for g in games), sum(g.scored[1] for g in games)),
+                      (sum(g.shots[0] for g in games), sum(g.shots[1] for g in games)),
+                      sum(1 for g in games if g.winner >= 0 and g.innings[0] + g.innings[1] <= 2))
 
 
 def play_pair(game: str, a: tuple[str, Any], b: tuple[str, Any], n_games: int, seed: int,

@@ -335,6 +335,27 @@ def limits_text(report: dict[str, Any], leagues: dict[str, dict[str, Any]], trai
     return out
 
 
+def prior_limits(leagues: dict[str, dict[str, Any]], prior: str) -> list[str]:
+    """What bounds the search with the learned prior against the search player, per setting, from the pair's
+    games: how many were over before either player came back to the table (the game then goes to whoever holds
+    the table after the break, and both break the same way), and how often the search player's innings ended
+    without winning (the misses an opponent can profit from)."""
+    out = []
+    for setting, rep in leagues.items():
+        pair = next((p for p in rep["pairs"] if {p["a"], p["b"]} == {prior, "search"}), None)
+        if pair is None or "no_return" not in pair:
+            continue
+        k = 0 if pair["a"] == "search" else 1
+        wins = pair["wins_a"] if k == 0 else pair["wins_b"]
+        failed = pair["innings"][k] - wins
+        shots = pair["shots"][k]
+        out.append(f"- {setting.replace('_', ' ')}: {pair['no_return']} of {pair['games']} games "
+                   f"({100 * pair['no_return'] / max(pair['games'], 1):.0f}%) were over before either player came "
+                   f"back to the table; the search player's innings ended without the game {failed} times in "
+                   f"{shots} shots (one shot in {shots / max(failed, 1):.0f}, its break included).")
+    return out
+
+
 def _league_model(run_dir: Path) -> Path:
     """The model a run plays the league with: its best evaluation checkpoint (EvalCallback's, on the evaluation
     games against the geometric player: seeds apart from the league's racks), as the one-ball job plays; else the
@@ -455,11 +476,14 @@ def markdown(report: dict[str, Any], leagues: dict[str, dict[str, Any]], trained
     if lim:
         lines += ["What limits the trained agent (figures of this run):", "", *lim, ""]
     if prior is not None:
-        lines += ["What limits the search with the learned prior: its proposals are shots of the same ghost-ball "
-                  "pots the search already simulates at the same speeds and tips, so without noise (where each "
-                  "candidate's exact outcome decides) the prior adds no shot the search lacks; under noise the "
+        lines += ["What limits the search with the learned prior: without noise the search player runs out from "
+                  "nearly every table it gets, so the game goes to whoever holds the table after the break, which "
+                  "every player plays the same (the geometric break): no opponent can win much more than half of "
+                  "the games against it, however it plays after the break. Its proposals are shots of the same "
+                  "ghost-ball pots the search already simulates at the same speeds and tips; under noise the "
                   "simulations the prior frees from the sweep re-run the best shots more often (a surer estimate of "
-                  "each one's chance), which is where it gains (agents/prior_search.py).", ""]
+                  "each one's chance), which is where it gains (agents/prior_search.py). This run's games:", "",
+                  *prior_limits(leagues, prior), ""]
     n = report["neutral"]
     if "vs_geometric" in n:
         lines += [f"Reference (learning curve): the neutral action (the geometric player's own choice in the agent's "

@@ -165,3 +165,19 @@ def test_the_setting_is_the_games_resolved_physics_and_noise():
     assert setting_text("three_cushion", {}).startswith("physics: spin, tip offsets in the action; shot noise: none")
     assert setting_text("nine_ball", {}) == "physics: rolling; shot noise: none"
     assert "angle_noise 0.01" in setting_text("nine_ball", {"angle_noise": 0.01})
+
+
+def test_a_pair_counts_the_games_nobody_came_back_to_the_table():
+    """Games over within two innings (a break-and-run, or the run-out of the player after the breaker) count as
+    ``no_return``; a game with a third inning, or unfinished, does not. Shots are summed per player."""
+    from agents.league import GameStats, pair_result
+
+    def game(k, winner, innings, shots):
+        return GameStats(k, (0, 1), winner, "9 pocketed", shots, innings, (0.0, 0.0), shots, (0.0, 0.0))
+
+    games = [game(0, 0, (1, 0), (5, 0)),  # a breaks and runs out
+             game(1, 1, (1, 1), (1, 7)),  # a's break misses, b runs out
+             game(2, 0, (2, 1), (6, 2)),  # a comes back to the table: a third inning
+             game(3, -1, (1, 1), (1, 3))]  # unfinished
+    res = pair_result("a", "b", games)
+    assert res.no_return == 2 and res.shots == (13, 12) and res.innings == (5, 3)

@@ -10,7 +10,7 @@ os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 import pytest  # noqa: E402
 
 from agents.main import build_parser  # noqa: E402
-from agents.nine_ball import plot_learning_curve, target_lines  # noqa: E402
+from agents.nine_ball import plot_learning_curve, prior_limits, target_lines  # noqa: E402
 
 
 def league(pairs):
@@ -30,6 +30,15 @@ def test_targets_name_each_figure_and_verdict():
     assert "22/40 = **55%**" in prior and "30/40 = **75%**" in prior
     assert "met (interval includes the target), met" in prior  # 55% [40, 69]; 75% [60, 86]
     assert ms.endswith("| met |") and "50 min wall | met |" in job
+
+
+def test_the_prior_limits_are_the_pairs_games():
+    pair = {"a": "search", "b": "prior", "wins_a": 45, "wins_b": 55, "games": 100, "innings": (80, 75),
+            "shots": (700, 650), "no_return": 60}
+    lines = prior_limits({"no_noise": {"pairs": [pair]}, "olympiad": {"pairs": []}}, "prior")
+    assert len(lines) == 1  # the setting without the pair says nothing
+    # 60 of 100 games over before a return; the search's 80 innings, 45 of them won: 35 ended without the game
+    assert "no noise: 60 of 100 games (60%)" in lines[0] and "35 times in 700 shots (one shot in 20" in lines[0]
 
 
 def test_learning_curve_marks_the_two_phases(tmp_path):

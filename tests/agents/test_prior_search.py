@@ -78,22 +78,34 @@ def test_the_league_takes_a_prior_player(policy_zip):
     assert kw["physics"]["friction"] == "spin" and kw["spin_action"]  # the policy's physics
 
 
-def test_under_noise_the_sweep_pays_for_more_re_runs(policy_zip):
-    """With shot noise the sweep shrinks to the proposals and the re-runs take what it frees: the same simulations
-    a decision (up to rounding); without noise, or without a pot for the policy, the search's own settings."""
+#: A table whose 1 is a straight-in at a corner pocket (an easy pot), and one whose easiest pot is a long cut (hard).
+EASY = np.array([[0.6, 0.6], [0.3, 0.3], [1.9, 0.3], [2.1, 1.0], [0.9, 1.0], [1.3, 0.25], [2.3, 0.6], [1.1, 0.7],
+                 [0.4, 1.1], [1.8, 1.05]])
+HARD = np.array([[0.6, 0.5], [1.6, 0.7], [1.9, 0.3], [2.1, 1.0], [0.9, 1.0], [1.3, 0.25], [2.3, 0.6], [1.1, 0.7],
+                 [0.4, 1.1], [1.8, 1.05]])
+
+
+def _noisy_table(pos):
     import gymnasium as gym
 
     import billiards_env  # noqa: F401
 
-    from agents.prior_search import REALLOCATED_TOP_K, prior_search_player
-
-    prior = prior_search_player(policy_zip, "nine_ball", seed=1)
     env = gym.make("Billiards9Ball-v0", friction="spin", spin_action=True, opponent=None, noise="olympiad")
-    pos = np.array([[0.6, 0.5], [1.6, 0.7], [1.9, 0.3], [2.1, 1.0], [0.9, 1.0], [1.3, 0.25], [2.3, 0.6],
-                    [1.1, 0.7], [0.4, 1.1], [1.8, 1.05]])
     obs, _ = env.reset(seed=4, options={"positions": pos, "pocketed": np.zeros(10, bool), "ball_in_hand": False,
                                         "break_shot": False})
+    return env, obs
+
+
+def test_under_noise_the_sweep_pays_for_more_re_runs(policy_zip):
+    """With shot noise, on a table with an easy pot, the sweep shrinks to the proposals and the re-runs take what it
+    frees: the same simulations a decision (up to rounding); without noise, or without a pot for the policy, the
+    search's own settings."""
+    from agents.prior_search import REALLOCATE_POT_CHANCE, REALLOCATED_TOP_K, pot_chance, prior_search_player
+
+    prior = prior_search_player(policy_zip, "nine_ball", seed=1)
+    env, obs = _noisy_table(EASY)
     state = env.unwrapped.state
+    assert pot_chance(state, prior.search.settings.ease_noise) > REALLOCATE_POT_CHANCE
     prior.policy._types(env.unwrapped)
     rows = prior.proposals(state, prior.policy.shot(state), True)
     st = prior.search.settings
@@ -111,6 +123,23 @@ def test_under_noise_the_sweep_pays_for_more_re_runs(policy_zip):
     assert prior.settings_for(state, len(rows), noisy=True) is st
     prior.reallocate = True
     assert np.asarray(prior.act(env, obs)) in env.action_space
+
+
+def test_on_a_hard_table_the_sweep_stays(policy_zip):
+    """Where the easiest pot is a poor chance under the noise the sweep's safeties and kicks are kept: the search's
+    own settings, though the policy has a pot to play."""
+    from agents.prior_search import REALLOCATE_POT_CHANCE, pot_chance, prior_search_player
+
+    prior = prior_search_player(policy_zip, "nine_ball", seed=1)
+    env, _ = _noisy_table(HARD)
+    state = env.unwrapped.state
+    st = prior.search.settings
+    assert pot_chance(state, st.ease_noise) < REALLOCATE_POT_CHANCE
+    prior.policy._types(env.unwrapped)
+    at = prior.policy._action_type
+    assert at.slots(state).count > 0
+    rows = prior.proposals(state, prior.policy.shot(state), True)
+    assert prior.settings_for(state, len(rows), noisy=True) is st
 
 
 def test_the_league_names_the_prior_without_reallocation_apart(policy_zip):
