@@ -11,7 +11,7 @@ an SB3 run folder or model zip, or an RLlib checkpoint or run folder (with the `
 deterministic actions in its own action and observation types (:class:`agents.games.TrainedPlayer`); ``prior:<run>``
 is the search player with that policy's proposals in place of its sweep, at its own simulation budget
 (:mod:`agents.prior_search`; ``prior-plain:<run>`` the same without spending the sweep's simulations on re-runs
-under noise); ``scorer:<file>`` an option-scoring policy of :mod:`agents.scorer` (``scorer-fallback:<file>``: the
+under noise, ``prior-always:<run>`` spending them on every table with a pot, hard ones too); ``scorer:<file>`` an option-scoring policy of :mod:`agents.scorer` (``scorer-fallback:<file>``: the
 same that leaves ball in hand to its fallback policy, as scorers before the ball-in-hand places did) and
 ``position_rule`` the hand-written rule of :mod:`agents.position_rule` (9-ball, on the ``candidates_position``
 observation). Every pair
@@ -85,11 +85,12 @@ def load_player(spec: str, seed: int = 0, game: str = "nine_ball") -> tuple[str,
     folder: a :class:`agents.games.TrainedPlayer`)."""
     if spec in BASELINES:
         return spec, make_player(spec, seed=seed, game=game)
-    for prefix, reallocate in (("prior:", True), ("prior-plain:", False)):
+    for prefix, kw in (("prior:", {}), ("prior-plain:", {"reallocate": False}),
+                       ("prior-always:", {"min_pot_chance": 0.0})):
         if spec.startswith(prefix):  # the search player with a trained policy's proposals (agents.prior_search)
             from .prior_search import prior_search_player
 
-            p = prior_search_player(spec[len(prefix):], game, seed, reallocate=reallocate)
+            p = prior_search_player(spec[len(prefix):], game, seed, **kw)
             return p.name, p
     for prefix, hand in (("scorer:", None), ("scorer-fallback:", False)):
         if spec.startswith(prefix):  # an option-scoring policy on the candidates_position types (agents.scorer)

@@ -77,11 +77,13 @@ class PriorSearchPlayer:
     """The search player with a trained policy's proposals (see the module docstring). ``policy``: a
     :class:`agents.games.TrainedPlayer` (it observes in its own types and names the shot it means)."""
 
-    def __init__(self, policy: Any, seed: int | None = 0, settings: Any = None, reallocate: bool = True) -> None:
+    def __init__(self, policy: Any, seed: int | None = 0, settings: Any = None, reallocate: bool = True,
+                 min_pot_chance: float = REALLOCATE_POT_CHANCE) -> None:
         from billiards_env.players.search import SearchPlayer, SearchSettings
 
         self.policy = policy
         self.reallocate = reallocate
+        self.min_pot_chance = min_pot_chance
         self.search = SearchPlayer(seed, settings or SearchSettings())
         self.name = f"search+prior({policy.name})"
 
@@ -97,7 +99,8 @@ class PriorSearchPlayer:
     def settings_for(self, state: Any, n_proposals: int, noisy: bool = True) -> Any:
         """The search's settings for a search with ``n_proposals`` proposals. Under shot noise (``noisy``), with
         ``reallocate`` and a pot to play (the policy's type lists one from where the cue ball is, and the easiest
-        has at least a :data:`REALLOCATE_POT_CHANCE` chance: :func:`pot_chance`), the sweep shrinks to the proposals and the simulations it frees go to the noisy re-runs (:data:`REALLOCATED_TOP_K` shots, as
+        has at least a ``min_pot_chance`` chance, :data:`REALLOCATE_POT_CHANCE` by default: :func:`pot_chance`), the
+        sweep shrinks to the proposals and the simulations it frees go to the noisy re-runs (:data:`REALLOCATED_TOP_K` shots, as
         many samples each as the budget allows): the same simulations per decision, spent on the proposals' margins
         instead of the directions the policy did not choose. Else the search's own (without noise the re-runs only
         break ties: 48.5% against the search with them, 50.3% without, over 1000 games)."""
@@ -106,8 +109,8 @@ class PriorSearchPlayer:
         slots = at.slots(state) if hasattr(at, "slots") else None
         if not (self.reallocate and noisy) or slots is None or slots.count == 0 or n_proposals == 0:
             return st
-        if pot_chance(state, st.ease_noise) < REALLOCATE_POT_CHANCE:  # a hard table: keep the safeties and kicks
-            return st
+        if self.min_pot_chance > 0.0 and pot_chance(state, st.ease_noise) < self.min_pot_chance:
+            return st  # a hard table: the sweep's safeties and kicks stay
         n_speeds = len(st.sweep_speeds)
         angles = -(-n_proposals // n_speeds)
         freed = (int(st.sweep_angles) - angles) * n_speeds + st.top_k * st.robust_samples
@@ -197,7 +200,8 @@ class PriorSearchPlayer:
 
 
 def prior_search_player(path: str, game: str = "nine_ball", seed: int = 0,
-                        reallocate: bool = True) -> PriorSearchPlayer:
+                        reallocate: bool = True, min_pot_chance: float = REALLOCATE_POT_CHANCE
+                        ) -> PriorSearchPlayer:
     """The search player with the trained policy at ``path`` (a run folder or model zip of ``game``, or
     ``scorer:<file>``, an option scorer of 9-ball) as its prior; ``reallocate``: see
     :meth:`PriorSearchPlayer.settings_for` (False: the league's ``prior-plain:<path>``, named so)."""
@@ -211,7 +215,9 @@ def prior_search_player(path: str, game: str = "nine_ball", seed: int = 0,
         from .games import trained_player
 
         policy = trained_player(path, game)
-    p = PriorSearchPlayer(policy, seed, reallocate=reallocate)
+    p = PriorSearchPlayer(policy, seed, reallocate=reallocate, min_pot_chance=min_pot_chance)
+    if reallocate and min_pot_chance == 0.0:
+        p.name += " reallocating on every table"
     if not reallocate:
         p.name += " without reallocation"
     return p

@@ -140,6 +140,12 @@ def test_on_a_hard_table_the_sweep_stays(policy_zip):
     assert at.slots(state).count > 0
     rows = prior.proposals(state, prior.policy.shot(state), True)
     assert prior.settings_for(state, len(rows), noisy=True) is st
+    from agents.league import load_player
+
+    name, always = load_player(f"prior-always:{policy_zip}", 1, "nine_ball")  # the ablation: reallocate anyway
+    always.policy._types(env.unwrapped)
+    assert name.endswith("reallocating on every table") and always.min_pot_chance == 0.0
+    assert always.settings_for(state, len(rows), noisy=True).top_k > st.top_k
 
 
 def test_the_league_names_the_prior_without_reallocation_apart(policy_zip):
