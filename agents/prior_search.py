@@ -33,8 +33,8 @@ PRIOR_TIPS = ((0.0, 0.0), (0.0, -0.3), (0.0, 0.3), (-0.25, 0.0), (0.25, 0.0), (0
 #: Shots re-run under noise when the sweep's simulations go to the re-runs (:meth:`PriorSearchPlayer.settings_for`).
 REALLOCATED_TOP_K = 10
 #: The pot chance of the easiest shot (under the noise's angle spread) below which the sweep stays under noise: on a
-#: hard table its safeties and kicks are worth more than surer estimates of poor pots (58.4% of 2000 games against
-#: the search with this, 56.5% reallocating on every table with a pot).
+#: hard table its safeties and kicks are worth more than surer estimates of poor pots (with the 9-ball job's scorer,
+#: 55.5% of 1000 games against the search with this, 52.7% reallocating on every table with a pot: agents/README.md).
 REALLOCATE_POT_CHANCE = 0.3
 
 
