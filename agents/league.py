@@ -11,8 +11,9 @@ an SB3 run folder or model zip, or an RLlib checkpoint or run folder (with the `
 deterministic actions in its own action and observation types (:class:`agents.games.TrainedPlayer`); ``prior:<run>``
 is the search player with that policy's proposals in place of its sweep, at its own simulation budget
 (:mod:`agents.prior_search`; ``prior-plain:<run>`` the same without spending the sweep's simulations on re-runs
-under noise, ``prior-always:<run>`` spending them on every table with a pot, hard ones too); ``scorer:<file>`` an option-scoring policy of :mod:`agents.scorer` (``scorer-fallback:<file>``: the
-same that leaves ball in hand to its fallback policy, as scorers before the ball-in-hand places did) and
+under noise, ``prior-always:<run>`` spending them on every table with a pot, hard ones too); ``scorer:<file>`` an
+option-scoring policy of :mod:`agents.scorer` (``scorer-fallback:<file>``: the same that leaves ball in hand to its
+fallback policy, as scorers before the ball-in-hand places did) and
 ``position_rule`` the hand-written rule of :mod:`agents.position_rule` (9-ball, on the ``candidates_position``
 observation). Every pair
 plays ``--games`` games on the two-player env (:mod:`billiards_env.multi`, absolute action type), seats swapped
