@@ -1,7 +1,8 @@
 """pooltool's side of the cross-check of the ``pooltool`` preset (:mod:`benchmarks.pooltool_crosscheck`). Run with
 the pooltool venv's Python, as a script: it reads one JSON document from standard input and prints one.
 
-In: ``{"length", "width", "R", "m", "e_c", "f_c", "cushion_height", "cushion", "scenes": [{"name", "balls": [{"id", "x",
+In: ``{"length", "width", "R", "m", "e_c", "f_c", "cushion_height", "cushion", "pocket_specs" (optional: a
+``PocketTableSpecs``' fields, for a table with pockets instead of the pocketless one), "scenes": [{"name", "balls": [{"id", "x",
 "y"}], "cue": {"ball", "V0", "phi", "a", "b"}}]}`` in pooltool's own frame (the caller maps billiards_env's frame
 onto it): balls at rest, the cue strikes ``ball``.
 Out: ``{"version", "scenes": [{"name", "struck": {"vx", "vy", "wx", "wy", "wz"}, "balls": [{"id", "x", "y", "vx",
@@ -31,8 +32,12 @@ def main() -> int:
     from pooltool.physics.resolve.resolver import default_resolver
 
     R = spec["R"]
-    table = pt.Table.from_table_specs(BilliardTableSpecs(l=spec["length"], w=spec["width"],
-                                                         cushion_height=spec["cushion_height"]))
+    if spec.get("pocket_specs"):  # a pocket table (the pocket cross-check): PocketTableSpecs' fields as given
+        from pooltool.objects import PocketTableSpecs
+        table = pt.Table.from_table_specs(PocketTableSpecs(**spec["pocket_specs"]))
+    else:
+        table = pt.Table.from_table_specs(BilliardTableSpecs(l=spec["length"], w=spec["width"],
+                                                             cushion_height=spec["cushion_height"]))
     resolver = default_resolver()
     if spec.get("cushion") == "mathavan":  # the alternative cushion model, for its own cross-check
         from pooltool.physics.resolve.ball_cushion.mathavan_2010.model import (Mathavan2010Circular,

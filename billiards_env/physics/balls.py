@@ -11,6 +11,7 @@ from numba import njit
 
 from .errors import SceneError
 from .spin_collide import MAX_TIP_OFFSET, strike_ball, strike_spin
+from .pocket_specs import in_mouth
 from .table import Table
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -128,9 +129,9 @@ class Balls:
 
 
 @njit(cache=True)
-def _first_problem(pos, vel, radius, mass, on_table, ang, allow_spin, length, width, tol):
+def _first_problem(pos, vel, radius, mass, on_table, ang, allow_spin, length, width, tol, in_mouth):
     """``(0, -1, -1, 0)`` if every ball is valid; ``(1, i, -1, 0)`` for the first ball with a bad value or off
-    the table; ``(2, i, j, d)`` for the first overlapping pair (centres ``d`` apart); ``(3, i, -1, 0)`` for the
+    the table (``in_mouth[i]``: ball ``i`` lies in a jaw table's pocket mouth, which is on the table); ``(2, i, j, d)`` for the first overlapping pair (centres ``d`` apart); ``(3, i, -1, 0)`` for the
     first ball that spins when ``allow_spin`` is False."""
     n = pos.shape[0]
     for i in range(n):
@@ -140,7 +141,8 @@ def _first_problem(pos, vel, radius, mass, on_table, ang, allow_spin, length, wi
               and mass[i] > 0.0 and math.isfinite(ang[i, 0]) and math.isfinite(ang[i, 1])
               and math.isfinite(ang[i, 2]))
         if ok and on_table[i]:
-            ok = (2.0 * r <= min(length, width) and r <= pos[i, 0] <= length - r and r <= pos[i, 1] <= width - r)
+            ok = (2.0 * r <= min(length, width) and ((r <= pos[i, 0] <= length - r and r <= pos[i, 1] <= width - r)
+                                                     or in_mouth[i]))
         if not ok:
             return 1, i, -1, 0.0
         if not allow_spin and (ang[i, 0] != 0.0 or ang[i, 1] != 0.0 or ang[i, 2] != 0.0):
@@ -171,10 +173,27 @@ def _raise_ball_error(balls: Balls, table: Table, i: int) -> None:
     if 2 * r > min(table.length, table.width):
         raise SceneError(f"ball {bid!r}: radius {r} is too large for a {table.length} x {table.width} table")
     x, y = balls.pos[i]
+    mouths = " or in a pocket's mouth, clear of its jaws" if table.has_jaws else ""
     raise SceneError(
         f"ball {bid!r}: centre ({x}, {y}) is off the table; it must lie in "
-        f"[{r}, {table.length - r}] x [{r}, {table.width - r}] (radius {r} from each cushion)"
+        f"[{r}, {table.length - r}] x [{r}, {table.width - r}] (radius {r} from each cushion){mouths}"
     )
+
+
+def mouth_mask(balls: Balls, table: Table) -> np.ndarray:
+    """Which balls lie in a jaw table's pocket mouths (outside the playing area's ``[r, L - r] x [r, W - r]`` but
+    on the table, clear of the jaws); all False under the capture model."""
+    mask = np.zeros(len(balls), dtype=np.bool_)
+    if not table.has_jaws:
+        return mask
+    segs, tips = table.walls()
+    for i in range(len(balls)):
+        x, y = (float(v) for v in balls.pos[i])
+        r = float(balls.radius[i])
+        if not (r <= x <= table.length - r and r <= y <= table.width - r) and math.isfinite(x) and \
+                math.isfinite(y) and math.isfinite(r):
+            mask[i] = in_mouth(segs, tips, table.pocket_xy, table.pocket_radius, x, y, r, OVERLAP_TOLERANCE)
+    return mask
 
 
 def validate_balls(balls: Balls, table: Table, allow_spin: bool = True) -> None:
@@ -198,7 +217,8 @@ def validate_balls(balls: Balls, table: Table, allow_spin: bool = True) -> None:
                                      np.ascontiguousarray(balls.mass, dtype=float),
                                      np.ascontiguousarray(balls.on_table, dtype=np.bool_),
                                      np.ascontiguousarray(balls.ang, dtype=float), bool(allow_spin),
-                                     float(table.length), float(table.width), OVERLAP_TOLERANCE)
+                                     float(table.length), float(table.width), OVERLAP_TOLERANCE,
+                                     mouth_mask(balls, table))
     if bad == 1:
         _raise_ball_error(balls, table, i)
     if bad == 3:

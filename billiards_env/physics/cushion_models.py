@@ -38,7 +38,7 @@ import math
 
 from .codes import CU_IMPULSE, CU_MATHAVAN, CU_STRONGE
 from .kernel_logs import internal
-from .spin_collide import resolve_cushion_spin, wall_normal
+from .spin_collide import resolve_wall_spin, wall_normal
 from .stronge import BETA, compliant_impact
 
 #: Mathavan's integration: the impulse step is ``max(m v_n / MATHAVAN_STEPS, MATHAVAN_MIN_STEP)`` (pooltool's).
@@ -52,14 +52,15 @@ ENERGY_GUARD = 1e-13
 
 
 @internal
-def contact_normal(cushion, r, h):
-    """The contact normal ``n3 = (c nx, c ny, -s)`` of a ball of radius ``r`` on cushion ``cushion`` whose nose is at
-    height ``h`` (< 0: at the ball's equator, ``c = 1, s = 0``): returns ``(nx, ny, c, s)``."""
-    nx, ny = wall_normal(cushion)
+def contact_normal(nx, ny, d, r, h):
+    """The contact normal ``n3 = (c nx, c ny, -s)`` of a ball of radius ``r`` on a cushion of horizontal normal
+    ``(nx, ny)`` whose nose is at height ``h`` (< 0: at the ball's equator, ``c = 1, s = 0``) and ``d`` from the
+    ball's centre across the table (``r`` for a straight cushion's nose line; ``r`` plus the tip's radius for a jaw
+    tip's axis, as pooltool takes it): the unit vector from the nose to the centre. Returns ``(nx, ny, c, s)``."""
     if h < 0.0:
         return nx, ny, 1.0, 0.0
-    rho = math.hypot(r, h - r)
-    return nx, ny, r / rho, (h - r) / rho
+    rho = math.hypot(d, h - r)
+    return nx, ny, d / rho, (h - r) / rho
 
 
 @internal
@@ -75,9 +76,9 @@ def _apply_contact_impulse(vel, ang, i, r, n3x, n3y, n3z, jx, jy, jz):
 
 
 @internal
-def _impulse_tilted(vel, ang, i, cushion, r, e_c, mu_c, h):
-    """The ``impulse`` law with the nose at height ``h`` (the contact normal tilted)."""
-    nx, ny, c, s = contact_normal(cushion, r, h)
+def _impulse_tilted(vel, ang, i, nx, ny, d, r, e_c, mu_c, h):
+    """The ``impulse`` law with the nose at height ``h``, ``d`` across (the contact normal tilted)."""
+    nx, ny, c, s = contact_normal(nx, ny, d, r, h)
     n3x, n3y, n3z = c * nx, c * ny, -s
     vx = vel[i, 0]
     vy = vel[i, 1]
@@ -105,9 +106,9 @@ def _impulse_tilted(vel, ang, i, cushion, r, e_c, mu_c, h):
 
 
 @internal
-def _stronge(vel, ang, i, cushion, r, e_c, mu_c, h, omega_ratio):
+def _stronge(vel, ang, i, nx, ny, d, r, e_c, mu_c, h, omega_ratio):
     """The ``stronge`` law (see the module docstring)."""
-    nx, ny, c, s = contact_normal(cushion, r, h)
+    nx, ny, c, s = contact_normal(nx, ny, d, r, h)
     n3x, n3y, n3z = c * nx, c * ny, -s
     vx = vel[i, 0]
     vy = vel[i, 1]
@@ -198,9 +199,8 @@ def _mathavan_solve(m, r, h, e_c, mu_s, mu_w, s, scratch):
 
 
 @internal
-def _mathavan(vel, ang, i, cushion, r, m, e_c, mu_c, mu_s, h, scratch):
+def _mathavan(vel, ang, i, nx, ny, r, m, e_c, mu_c, mu_s, h, scratch):
     """The ``mathavan`` law (see the module docstring); ``scratch``: 10 floats."""
-    nx, ny = wall_normal(cushion)
     vx = vel[i, 0]
     vy = vel[i, 1]
     vin = -(vx * nx + vy * ny)
@@ -226,25 +226,34 @@ def _mathavan(vel, ang, i, cushion, r, m, e_c, mu_c, mu_s, h, scratch):
 
 @internal
 def cushion_hit(vel, ang, i, cushion, r, m, e_c, prm, scratch):
-    """Ball ``i`` (radius ``r``, mass ``m``) hits cushion ``cushion`` (0 left, 1 right, 2 bottom, 3 top) under the
-    cushion law of the parameter record ``prm`` (:mod:`.kernel_io`); ``scratch``: 10 floats. Returns the normal
-    speed into the cushion before the hit (0: not moving into it, nothing changed)."""
+    """Ball ``i`` (radius ``r``, mass ``m``) hits cushion ``cushion`` (0 left, 1 right, 2 bottom, 3 top) of a
+    capture table: :func:`wall_hit` with that cushion's normal."""
+    nx, ny = wall_normal(cushion)
+    return wall_hit(vel, ang, i, nx, ny, r, r, m, e_c, prm, scratch)
+
+
+@internal
+def wall_hit(vel, ang, i, nx, ny, d, r, m, e_c, prm, scratch):
+    """Ball ``i`` (radius ``r``, mass ``m``) hits a cushion whose horizontal contact normal (into the table, away
+    from the cushion) is the unit ``(nx, ny)`` (a straight cushion, a rail, a jaw face, or a jaw tip's normal at the
+    contact) ``d`` from the ball's centre across the table (``r``; a tip's: ``r`` plus its radius), under the cushion
+    law of the parameter record ``prm`` (:mod:`.kernel_io`); ``scratch``: 10 floats. Returns the normal speed into the cushion before the hit (0: not moving into it, nothing changed)."""
     model = prm.cushion
     h = prm.cushion_height
     mu_c = prm.cushion_friction
     if model == CU_IMPULSE:
         if h < 0.0:
-            return resolve_cushion_spin(vel, ang, i, cushion, r, e_c, mu_c)
-        return _impulse_tilted(vel, ang, i, cushion, r, e_c, mu_c, h)
+            return resolve_wall_spin(vel, ang, i, nx, ny, r, e_c, mu_c)
+        return _impulse_tilted(vel, ang, i, nx, ny, d, r, e_c, mu_c, h)
     vx = vel[i, 0]
     vy = vel[i, 1]
     wx = ang[i, 0]
     wy = ang[i, 1]
     wz = ang[i, 2]
     if model == CU_STRONGE:
-        speed = _stronge(vel, ang, i, cushion, r, e_c, mu_c, h, prm.omega_ratio)
+        speed = _stronge(vel, ang, i, nx, ny, d, r, e_c, mu_c, h, prm.omega_ratio)
     elif model == CU_MATHAVAN:
-        speed = _mathavan(vel, ang, i, cushion, r, m, e_c, mu_c, prm.mu_slide, h, scratch)
+        speed = _mathavan(vel, ang, i, nx, ny, r, m, e_c, mu_c, prm.mu_slide, h, scratch)
     else:
         return 0.0
     # Never more energy out than in: else the impulse law (see the module docstring).
@@ -256,8 +265,8 @@ def cushion_hit(vel, ang, i, cushion, r, m, e_c, prm, scratch):
         ang[i, 1] = wy
         ang[i, 2] = wz
         if h < 0.0:
-            return resolve_cushion_spin(vel, ang, i, cushion, r, e_c, mu_c)
-        return _impulse_tilted(vel, ang, i, cushion, r, e_c, mu_c, h)
+            return resolve_wall_spin(vel, ang, i, nx, ny, r, e_c, mu_c)
+        return _impulse_tilted(vel, ang, i, nx, ny, d, r, e_c, mu_c, h)
     return speed
 
 

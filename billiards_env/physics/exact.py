@@ -26,6 +26,7 @@ from .kernel_logs import (append_event, contact_cluster, count_burst, internal, 
                           reserve_states)
 from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
 from .roots import first_entry
+from .walls import has_walls, ray_wall_hit, reflect_off, touch_wall, wall_normal_at, without_push_into_walls
 
 #: A typed (non-literal) integer initial value: a literal 0 passed on to a compiled helper would make numba compile
 #: a second specialisation of it for the literal.
@@ -103,7 +104,10 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
             best_d = d
             kind = EV_POCKET
             other = p
-    d, cush = ray_cushion_hit(x, y, ux, uy, prm.length, prm.width, r)
+    if has_walls(prm):  # a jaw table: rails, jaw faces and tips
+        d, cush = ray_wall_hit(x, y, ux, uy, r, prm)
+    else:
+        d, cush = ray_cushion_hit(x, y, ux, uy, prm.length, prm.width, r)
     if d < best_d:
         best_d = d
         kind = EV_CUSHION
@@ -237,8 +241,12 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
         mom_y += mass[m] * v0[m, 1]
     cx = mom_x / total
     cy = mom_y / total
+    walls = has_walls(prm)
     for h in range(count):
         m = involved[h]
+        if walls:
+            cx, cy = without_push_into_walls(p0[m, 0], p0[m, 1], radius[m], cx, cy, prm)
+            continue
         r = radius[m] + 1e-9
         if (p0[m, 0] <= r and cx < 0.0) or (p0[m, 0] >= prm.length - r and cx > 0.0):
             cx = 0.0
@@ -393,7 +401,9 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         elif kind == EV_CUSHION:
             _advance(bi, t, t0, p0, v0, tstop, law, a, k)
             r = radius[bi]
-            if bj == 0:
+            if has_walls(prm):
+                p0[bi, 0], p0[bi, 1] = touch_wall(p0[bi, 0], p0[bi, 1], r, bj, prm)
+            elif bj == 0:
                 p0[bi, 0] = r
             elif bj == 1:
                 p0[bi, 0] = prm.length - r
@@ -407,7 +417,11 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 kind = EV_JAM
                 bj = n_inv
             else:
-                speed = resolve_cushion(v0, bi, bj, e_c)
+                if has_walls(prm):
+                    nx, ny = wall_normal_at(p0[bi, 0], p0[bi, 1], bj, prm)
+                    speed = reflect_off(v0, bi, nx, ny, e_c)
+                else:
+                    speed = resolve_cushion(v0, bi, bj, e_c)
                 _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
         elif kind == EV_POCKET:
             _advance(bi, t, t0, p0, v0, tstop, law, a, k)

@@ -27,8 +27,9 @@ from .kernel_io import N_STATE_COLS_SPIN, KernelResult
 from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
                           reserve_states)
 from .roots import first_entry, quadratic_roots_in
-from .cushion_models import cushion_hit
-from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, wall_normal
+from .cushion_models import wall_hit
+from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, settle_on_wall, wall_normal
+from .walls import has_walls, on_segment, touch_wall, wall_gap, wall_normal_at
 from .spin_motion import advance, classify, piece_of, reach, reach_of, roll_on, slide_end, spin_decay_rate, transition
 
 #: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
@@ -147,7 +148,7 @@ def _path_clear_of(cx, cy, r, x, y, vx, vy, ax, ay, window):
 
 
 @internal
-def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time):
+def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time, prm):
     """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
     t0 = bs[i, T0]
     t_end = bs[i, TEND]
@@ -190,6 +191,15 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
             other = q
     r = radius[i]
     tol = 1e-12 + 1e-14 * math.hypot(vx, vy)
+    if has_walls(prm):  # a jaw table: rails, jaw faces, tips
+        tau, wall = _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm)
+        if tau < best:
+            best = tau
+            kind = EV_CUSHION
+            other = wall
+        if kind >= 0 and t0 + best <= t_end:
+            return t0 + best, kind, other
+        return t_end, _TRANSITION, -1
     for cush in range(4):
         if cush == 0:
             tau = _wall_time(0.5 * ax, vx, x - r, window, tol)
@@ -206,6 +216,37 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     if kind >= 0 and t0 + best <= t_end:
         return t0 + best, kind, other
     return t_end, _TRANSITION, -1
+
+
+@internal
+def _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
+    """First time in ``[0, window]`` at which a ball on ``p + v t + a t^2 / 2`` meets a jaw table's wall
+    (:mod:`.walls`): ``(time, wall)``, ``(inf, -1)`` if none. A segment's distance is a quadratic in ``t``, met
+    where its projection lies on the segment; a tip's is a quartic. Walls farther than ``far`` are skipped."""
+    best = math.inf
+    wall = -1
+    for k in range(prm.n_segs):
+        nx = prm.segs[k, 4]
+        ny = prm.segs[k, 5]
+        c0 = (x - prm.segs[k, 0]) * nx + (y - prm.segs[k, 1]) * ny - r
+        if c0 > far or c0 < -2.0 * r:  # out of reach, or the centre behind the line (not on this side)
+            continue
+        tau = _wall_time(0.5 * (ax * nx + ay * ny), vx * nx + vy * ny, c0, window, tol)
+        if tau < best and on_segment(x + tau * (vx + 0.5 * ax * tau), y + tau * (vy + 0.5 * ay * tau), k, prm):
+            best = tau
+            wall = k
+    for k in range(prm.n_tips):
+        dx = x - prm.tips[k, 0]
+        dy = y - prm.tips[k, 1]
+        rho = r + prm.tips[k, 2]
+        if math.sqrt(dx * dx + dy * dy) - rho > far:
+            continue
+        tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
+                          2.0 * (dx * vx + dy * vy), dx * dx + dy * dy - rho * rho, window, tol)
+        if tau < best:
+            best = tau
+            wall = prm.n_segs + k
+    return best, wall
 
 
 @internal
@@ -340,9 +381,29 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
     cy = mom_y / total
     qx /= total
     qy /= total
+    walls = has_walls(prm)
     for h in range(count):
         m = involved[h]
         r = radius[m] + 1e-9
+        if walls:
+            for wall in range(prm.n_segs + prm.n_tips):
+                g = wall_gap(bs[m, X], bs[m, Y], radius[m], wall, prm)
+                if g <= 1e-9 and g > -radius[m]:
+                    nx, ny = wall_normal_at(bs[m, X], bs[m, Y], wall, prm)
+                    vn = cx * nx + cy * ny
+                    if vn < 0.0:  # into the cushion
+                        cx -= vn * nx
+                        cy -= vn * ny
+                    # As below: the surface velocity's part along n, (z^ x q) . n = qx ny - qy nx, if it drives the
+                    # cluster in, goes with the normal velocity.
+                    sn = qx * ny - qy * nx
+                    vn = cx * nx + cy * ny
+                    if vn <= prm.speed_floor and vn + sn > 0.0:
+                        cx -= vn * nx
+                        cy -= vn * ny
+                        qx -= sn * ny
+                        qy += sn * nx
+            continue
         for wall in range(4):
             if _touching_wall(bs[m, X], bs[m, Y], r, length, width, wall):
                 nx, ny = wall_normal(wall)
@@ -438,7 +499,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     for i in range(n):
         if on_table[i]:
             ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length,
-                                                                   width, max_time)
+                                                                   width, max_time, prm)
     for i in range(n):
         for j in range(i + 1, n):
             if on_table[i] and on_table[j]:
@@ -535,14 +596,22 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
         elif kind == EV_CUSHION:
             _move_to(bs, bi, t)
             r = radius[bi]
-            if bj == 0:
-                bs[bi, X] = r
-            elif bj == 1:
-                bs[bi, X] = length - r
-            elif bj == 2:
-                bs[bi, Y] = r
+            jaws = has_walls(prm)
+            if jaws:  # a rail, jaw face or tip: on it exactly, its normal at the contact
+                bs[bi, X], bs[bi, Y] = touch_wall(bs[bi, X], bs[bi, Y], r, bj, prm)
+                wnx, wny = wall_normal_at(bs[bi, X], bs[bi, Y], bj, prm)
+                reach = r if bj < prm.n_segs else r + prm.tips[bj - prm.n_segs, 2]
             else:
-                bs[bi, Y] = width - r
+                wnx, wny = wall_normal(bj)
+                reach = r
+                if bj == 0:
+                    bs[bi, X] = r
+                elif bj == 1:
+                    bs[bi, X] = length - r
+                elif bj == 2:
+                    bs[bi, Y] = r
+                else:
+                    bs[bi, Y] = width - r
             count_burst(bi, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS:
                 n_inv = _jam_cluster(bi, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin,
@@ -555,21 +624,24 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 cw[0, 0] = bs[bi, WX]
                 cw[0, 1] = bs[bi, WY]
                 cw[0, 2] = bs[bi, WZ]
-                speed = cushion_hit(cv, cw, _ROW0, bj, r, mass[bi], e_c, prm, scratch)
+                speed = wall_hit(cv, cw, _ROW0, wnx, wny, reach, r, mass[bi], e_c, prm, scratch)
                 bs[bi, VX] = cv[0, 0]
                 bs[bi, VY] = cv[0, 1]
                 bs[bi, WX] = cw[0, 0]
                 bs[bi, WY] = cw[0, 1]
                 bs[bi, WZ] = cw[0, 2]
                 _classify_piece(bs, st, bi, r, f_slide, f_roll, f_spin)
-                nx, ny = wall_normal(bj)
+                nx, ny = wnx, wny
                 if bs[bi, VX] * nx + bs[bi, VY] * ny <= floor and bs[bi, AX] * nx + bs[bi, AY] * ny < 0.0:
                     # Pressed on the cushion: it stays on it (see spin_collide).
                     cv[0, 0] = bs[bi, VX]
                     cv[0, 1] = bs[bi, VY]
                     cw[0, 0] = bs[bi, WX]
                     cw[0, 1] = bs[bi, WY]
-                    settle_on_cushion(cv, cw, _ROW0, bj)
+                    if jaws:
+                        settle_on_wall(cv, cw, _ROW0, nx, ny)
+                    else:
+                        settle_on_cushion(cv, cw, _ROW0, bj)
                     bs[bi, VX] = cv[0, 0]
                     bs[bi, VY] = cv[0, 1]
                     bs[bi, WX] = cw[0, 0]
@@ -616,7 +688,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 n_sc += 1
             if on_table[i]:
                 ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, bs, st, radius, pocket_xy, pocket_r,
-                                                                       length, width, max_time)
+                                                                       length, width, max_time, prm)
             else:
                 ball_t[i] = math.inf
         have_states = False

@@ -12,6 +12,11 @@ import numpy as np
 
 from .codes import BALL_BALL_MODELS, CUSHION_MODELS
 from .model import G
+from .pocket_specs import N_SEGMENTS, N_TIPS, SEG_COLS, TIP_COLS
+
+#: Room for a jaw table's cushions in the parameter record (a six-pocket table uses 18 segments and 12 tips).
+MAX_SEGMENTS = N_SEGMENTS
+MAX_TIPS = N_TIPS
 
 if TYPE_CHECKING:  # pragma: no cover
     from .model import Physics
@@ -53,6 +58,12 @@ PARAMS_DTYPE = np.dtype(
         ("omega_ratio", np.float64),  # cushion stronge: tangential / normal frequency ratio
         ("squirt", np.float64),  # squirt throttle of the strike (0: none)
         ("cue_end_mass", np.float64),  # the cue tip's end mass (kg) in the squirt angle
+        # A jaw table's cushions (:mod:`.pocket_specs`); none (0 rows) under the capture model, whose cushions are
+        # the four edges of the playing area.
+        ("n_segs", np.int64),  # straight cushions used: rails, then jaw faces
+        ("segs", np.float64, (MAX_SEGMENTS, SEG_COLS)),  # ax, ay, bx, by, nx, ny (normal to the open side)
+        ("n_tips", np.int64),  # rounded jaw tips used
+        ("tips", np.float64, (MAX_TIPS, TIP_COLS)),  # cx, cy, radius
     ],
     align=True,
 )
@@ -80,6 +91,11 @@ def kernel_params(table: "Table", physics: "Physics", max_time: float) -> np.nda
     r["ball_ball"] = BALL_BALL_MODELS.index(physics.ball_ball)
     r["cushion"] = CUSHION_MODELS.index(physics.cushion)
     r["cushion_height"] = -1.0 if physics.cushion_height is None else physics.cushion_height
+    segs, tips = table.walls()
+    r["n_segs"] = len(segs)
+    r["segs"][: len(segs)] = segs
+    r["n_tips"] = len(tips)
+    r["tips"][: len(tips)] = tips
     return p
 
 

@@ -17,10 +17,12 @@ from .errors import SceneError, check_finite, check_non_negative, check_number, 
 from .model import Physics
 from .result import ShotResult
 from .simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, Simulator, SolverSettings
-from .table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, TABLE_PRESETS, Table, default_pockets
+from .pocket_specs import PocketSpecs
+from .table import (CORNER_POCKET_RADIUS, POCKET_MODELS, SIDE_POCKET_RADIUS, TABLE_PRESETS, Table, capture_table,
+                    default_pockets, jaw_table)
 
 TABLE_FIELDS = {"preset", "length", "width", "cushion_restitution", "pockets", "corner_pocket_radius",
-                "side_pocket_radius"}
+                "side_pocket_radius", "specs"}
 POCKET_FIELDS = {"x", "y", "radius"}
 #: The physics section's fields are :class:`Physics`'s (one set of names and defaults for scenes and envs), and
 #: ``preset``: a named set of them (:data:`.model.PRESETS`) that the fields given override.
@@ -151,35 +153,77 @@ def _string(name: str, value: Any) -> str:
 
 
 def parse_table(value: Any, where: str = "table") -> Table:
-    """A :class:`Table` from a scene's (or an env config's) ``table`` section: ``length``, ``width``,
-    ``cushion_restitution``, and either ``pockets`` (a list of ``{x, y, radius}``, ``[]`` for none) or the radii
-    of the six standard pockets, ``corner_pocket_radius`` and ``side_pocket_radius``; or ``preset`` (``pool``,
-    ``snooker``: the 12 ft table with its pockets, ``carom``: the pocketless match table), whose fields the others
-    given override."""
+    """A :class:`Table` from a scene's (or an env config's) ``table`` section.
+
+    ``preset`` (:data:`.table.TABLE_PRESETS`: ``pool``, ``snooker``, ``carom`` with capture circles or no pockets;
+    ``wpa``, ``pooltool``, ``snooker_match`` with jaws), whose fields the others given override; ``specs`` (the
+    fields of :class:`.pocket_specs.PocketSpecs`, over the preset's); ``pockets``: the pocket model, ``jaws`` (the
+    default with specs) or ``capture``, or a list of capture circles ``{x, y, radius}`` (``[]`` for none);
+    ``length``, ``width``, ``cushion_restitution``; under the capture model the radii of the six standard pockets,
+    ``corner_pocket_radius`` and ``side_pocket_radius``."""
     t = _mapping(where, value, TABLE_FIELDS)
-    kw: dict[str, Any] = {}
+    base: Table | None = None
     if "preset" in t:
         name = _string(f"{where}.preset", t["preset"])
         if name not in TABLE_PRESETS:
             raise SceneError(f"{where}.preset: unknown table {name!r}; use one of {', '.join(TABLE_PRESETS)}")
         base = TABLE_PRESETS[name]()
-        kw = {"length": base.length, "width": base.width, "cushion_restitution": base.cushion_restitution,
-              "pocket_xy": base.pocket_xy, "pocket_radius": base.pocket_radius}
-    for f in ("length", "width", "cushion_restitution"):
+    specs = base.specs if base is not None else None
+    model = base.pocket_model if base is not None else "capture"
+    if "specs" in t:
+        given = t["specs"]
+        if isinstance(given, Mapping):
+            given = {**(specs.to_dict() if specs is not None else {}), **given}
+        specs = PocketSpecs.from_dict(given, f"{where}.specs")
+        model = "jaws"
+    pockets = t.get("pockets")
+    if isinstance(pockets, str):
+        if pockets not in POCKET_MODELS:
+            raise SceneError(f"{where}.pockets: unknown pocket model {pockets!r}; use one of "
+                             f"{', '.join(POCKET_MODELS)}, or a list of capture circles {{x, y, radius}}")
+        model = pockets
+    elif pockets is not None:
+        model = "capture"
+    e_c = check_number(f"{where}.cushion_restitution", t["cushion_restitution"]) if "cushion_restitution" in t \
+        else (base.cushion_restitution if base is not None else Table.cushion_restitution)
+    if model == "jaws":
+        if specs is None:
+            raise SceneError(f"{where}.pockets: 'jaws' needs the table's geometry: give {where}.specs or a preset "
+                             "with jaws (wpa, pooltool, snooker_match)")
+        for f in ("corner_pocket_radius", "side_pocket_radius"):
+            if f in t:
+                raise SceneError(f"{where}.{f}: a jaw table's pocket circles are set in {where}.specs "
+                                 f"({f}, and the pocket's depth); move it there")
+        size = {k: check_positive(f"{where}.{f}", t[f]) for k, f in (("l", "length"), ("w", "width")) if f in t}
+        if size:
+            specs = PocketSpecs.from_dict({**specs.to_dict(), **size}, f"{where}.specs")
+        return jaw_table(specs, e_c)
+    kw: dict[str, Any] = {}
+    if base is not None:
+        if specs is not None and base.has_jaws:  # a jaw preset under the capture model: its calibrated circles
+            base = capture_table(specs, cushion_restitution=e_c)
+        kw = {"length": base.length, "width": base.width, "pocket_xy": base.pocket_xy,
+              "pocket_radius": base.pocket_radius}
+    elif specs is not None:
+        base = capture_table(specs, cushion_restitution=e_c)
+        kw = {"length": base.length, "width": base.width, "pocket_xy": base.pocket_xy,
+              "pocket_radius": base.pocket_radius}
+    kw["cushion_restitution"] = e_c
+    for f in ("length", "width"):
         if f in t:
             kw[f] = check_number(f"{where}.{f}", t[f])
     radii = {f: check_positive(f"{where}.{f}", t[f]) for f in ("corner_pocket_radius", "side_pocket_radius") if f in t}
-    if radii and "pockets" in t:
+    if radii and isinstance(pockets, list):
         raise SceneError(f"{where}: give either 'pockets' (a list) or corner_pocket_radius/side_pocket_radius, "
                          "not both")
     if radii:
         kw["pocket_xy"], kw["pocket_radius"] = default_pockets(
             kw.get("length", Table.length), kw.get("width", Table.width),
             radii.get("corner_pocket_radius", CORNER_POCKET_RADIUS), radii.get("side_pocket_radius", SIDE_POCKET_RADIUS))
-    if "pockets" in t:
-        pockets = t["pockets"]
+    if isinstance(pockets, list) or (pockets is not None and not isinstance(pockets, str)):
         if not isinstance(pockets, list):
-            raise SceneError(f"{where}.pockets: expected a list of {{x, y, radius}} objects ([] for no pockets)")
+            raise SceneError(f"{where}.pockets: expected 'jaws', 'capture' or a list of {{x, y, radius}} objects "
+                             "([] for no pockets)")
         xy = np.zeros((len(pockets), 2))
         r = np.zeros(len(pockets))
         for k, p in enumerate(pockets):
@@ -226,6 +270,9 @@ def parse_solver(value: Any, where: str = "solver") -> SolverSettings:
 
 def table_to_dict(table: Table) -> dict[str, Any]:
     """The ``table`` section that :func:`parse_table` reads back into ``table``."""
+    if table.has_jaws:
+        assert table.specs is not None
+        return {"specs": table.specs.to_dict(), "pockets": "jaws", "cushion_restitution": table.cushion_restitution}
     return {"length": table.length, "width": table.width, "cushion_restitution": table.cushion_restitution,
             "pockets": [{"x": float(x), "y": float(y), "radius": float(r)}
                         for (x, y), r in zip(table.pocket_xy.tolist(), table.pocket_radius.tolist())]}

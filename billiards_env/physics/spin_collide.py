@@ -71,6 +71,14 @@ def resolve_cushion_spin(vel, ang, i: int, cushion: int, r: float, e_c: float, m
     """The cushion impulse on ball ``i`` (cushion 0 left, 1 right, 2 bottom, 3 top); returns the normal
     speed into the cushion before the hit (0 if the ball was not moving into it: then nothing changes)."""
     nx, ny = wall_normal(cushion)
+    return resolve_wall_spin(vel, ang, i, nx, ny, r, e_c, mu_c)
+
+
+@njit(cache=True)
+def resolve_wall_spin(vel, ang, i: int, nx: float, ny: float, r: float, e_c: float, mu_c: float) -> float:
+    """The cushion impulse at the equator on ball ``i`` against a cushion of unit horizontal normal ``(nx, ny)``
+    (into the table); returns the normal speed into the cushion before the hit (0 if the ball was not moving into
+    it: then nothing changes)."""
     vx = vel[i, 0]
     vy = vel[i, 1]
     vn = vx * nx + vy * ny
@@ -113,6 +121,18 @@ def settle_on_cushion(vel, ang, i: int, cushion: int) -> None:
     else:
         vel[i, 1] = 0.0
         ang[i, 0] = 0.0
+
+
+@njit(cache=True)
+def settle_on_wall(vel, ang, i: int, nx: float, ny: float) -> None:
+    """:func:`settle_on_cushion` on a cushion of unit horizontal normal ``(nx, ny)`` (a rail, jaw face or tip): the
+    normal velocity and the spin about the horizontal axis along the cushion, ``(-ny, nx)``, become 0."""
+    vn = vel[i, 0] * nx + vel[i, 1] * ny
+    vel[i, 0] -= vn * nx
+    vel[i, 1] -= vn * ny
+    wt = -ang[i, 0] * ny + ang[i, 1] * nx
+    ang[i, 0] += wt * ny
+    ang[i, 1] -= wt * nx
 
 
 @njit(cache=True)

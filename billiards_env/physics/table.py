@@ -8,6 +8,7 @@ import numpy as np
 
 from .codes import CUSHION_NAMES  # noqa: F401  (re-exported: the cushion ids of event records)
 from .errors import SceneError, check_finite, check_positive, check_unit_interval
+from .pocket_specs import POOLTOOL_7FT, SNOOKER_12FT, WPA_9FT, PocketSpecs, build_walls, pocket_circles
 
 #: Default 9-ft pool table playing area (metres).
 DEFAULT_LENGTH = 2.54
@@ -43,12 +44,22 @@ def default_pockets(
     return centres, radii
 
 
+#: The pocket models (``table.pockets`` in scene files): ``capture`` four full-length cushions and capture circles
+#: on the corners and the middles of the long sides; ``jaws`` rails that stop at the mouths, jaw faces, rounded jaw
+#: tips and pocket circles behind the mouths, built from :class:`.pocket_specs.PocketSpecs`.
+POCKET_MODELS = ("capture", "jaws")
+
+
 @dataclass(frozen=True)
 class Table:
-    """A rectangular table ``[0, length] x [0, width]`` with straight cushions and circular pockets.
+    """A table ``[0, length] x [0, width]`` (between the cushion lines) with its cushions and pockets.
 
-    A ball is pocketed the first instant its centre is within a pocket's capture radius
-    of that pocket's centre. ``pocket_xy`` may be empty (a table without pockets).
+    Two pocket models (:data:`POCKET_MODELS`). ``capture`` (the default): four straight cushions along the
+    whole edges and circular pockets; a ball is pocketed the first instant its centre is within a pocket's capture
+    radius of that pocket's centre; ``pocket_xy`` may be empty (a table without pockets). ``jaws``: the geometry of
+    ``specs`` (:mod:`.pocket_specs`): ball centres may enter the mouths, the jaws deflect them, and a ball is
+    pocketed when its centre enters a pocket circle behind the mouth (``pocket_xy``, ``pocket_radius`` are those
+    circles; ``length`` and ``width`` are ``specs.l`` and ``specs.w``).
     """
 
     length: float = DEFAULT_LENGTH
@@ -56,12 +67,28 @@ class Table:
     cushion_restitution: float = DEFAULT_CUSHION_RESTITUTION
     pocket_xy: np.ndarray = field(default=None)  # type: ignore[assignment]
     pocket_radius: np.ndarray = field(default=None)  # type: ignore[assignment]
+    specs: PocketSpecs | None = None
+    pocket_model: str = "capture"
 
     def __post_init__(self) -> None:
         check_positive("table.length", self.length)
         check_positive("table.width", self.width)
         check_unit_interval("table.cushion_restitution", self.cushion_restitution)
-        if self.pocket_xy is None and self.pocket_radius is None:
+        if self.pocket_model not in POCKET_MODELS:
+            raise SceneError(f"table.pockets: unknown pocket model {self.pocket_model!r}; use one of "
+                             f"{', '.join(POCKET_MODELS)} (or a list of capture circles)")
+        if self.pocket_model == "jaws":
+            if self.specs is None:
+                raise SceneError("table.pockets: the 'jaws' model needs the table's specs (table.specs or a "
+                                 "preset with pockets: wpa, pooltool, snooker_match)")
+            if (self.length, self.width) != (self.specs.l, self.specs.w):
+                raise SceneError(f"table: length x width {self.length} x {self.width} differs from the specs' "
+                                 f"l x w {self.specs.l} x {self.specs.w}; give the size once, in table.specs")
+            if self.pocket_xy is not None or self.pocket_radius is not None:
+                raise SceneError("table.pockets: a jaw table's pockets are its specs' pocket circles; give "
+                                 "corner/side_pocket_radius and _depth in table.specs instead of a pocket list")
+            xy, r = pocket_circles(self.specs)
+        elif self.pocket_xy is None and self.pocket_radius is None:
             xy, r = default_pockets(self.length, self.width)
         elif self.pocket_xy is None or self.pocket_radius is None:
             raise SceneError("table.pockets: give both pocket centres and radii, or neither for the default six")
@@ -82,8 +109,8 @@ class Table:
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Table):
             return NotImplemented
-        return (self.length, self.width, self.cushion_restitution) == (other.length, other.width,
-                                                                       other.cushion_restitution) \
+        return (self.length, self.width, self.cushion_restitution, self.specs, self.pocket_model) == (
+            other.length, other.width, other.cushion_restitution, other.specs, other.pocket_model) \
             and np.array_equal(self.pocket_xy, other.pocket_xy) \
             and np.array_equal(self.pocket_radius, other.pocket_radius)
 
@@ -93,8 +120,21 @@ class Table:
     def n_pockets(self) -> int:
         return int(len(self.pocket_radius))
 
+    @property
+    def has_jaws(self) -> bool:
+        """The ``jaws`` pocket model: rails, jaw faces and tips instead of four full-length cushions."""
+        return self.pocket_model == "jaws"
+
+    def walls(self) -> tuple[np.ndarray, np.ndarray]:
+        """The jaw table's cushion geometry ``(segments (S, 6), tips (C, 3))`` (:func:`.pocket_specs.build_walls`);
+        empty arrays under the ``capture`` model, whose four cushions are the edges of the playing area."""
+        if not self.has_jaws:
+            return np.zeros((0, 6)), np.zeros((0, 3))
+        assert self.specs is not None
+        return build_walls(self.specs)
+
     def with_pockets(self, pocket_xy: np.ndarray, pocket_radius: np.ndarray) -> "Table":
-        """A copy of this table with another pocket list (empty arrays: no pockets)."""
+        """A copy of this table with another pocket list (empty arrays: no pockets) under the capture model."""
         return Table(self.length, self.width, self.cushion_restitution, pocket_xy, pocket_radius)
 
     def without_pockets(self) -> "Table":
@@ -197,5 +237,24 @@ def carom_table(cushion_restitution: float = DEFAULT_CUSHION_RESTITUTION) -> Tab
     return Table(CAROM_LENGTH, CAROM_WIDTH, cushion_restitution, np.zeros((0, 2)), np.zeros(0))
 
 
-#: The named tables of scene files and env configs (``table: {preset: snooker}``).
-TABLE_PRESETS = {"pool": Table, "snooker": snooker_table, "carom": carom_table}
+def jaw_table(specs: PocketSpecs, cushion_restitution: float = DEFAULT_CUSHION_RESTITUTION) -> Table:
+    """The ``jaws`` table of ``specs``: rails, jaw faces, rounded tips and pocket circles."""
+    return Table(specs.l, specs.w, cushion_restitution, specs=specs, pocket_model="jaws")
+
+
+def capture_table(specs: PocketSpecs, ball_radius: float = POOL_BALL_RADIUS,
+                  cushion_restitution: float = DEFAULT_CUSHION_RESTITUTION) -> Table:
+    """The ``capture`` model of ``specs``' table: its size, full-length cushions and capture circles calibrated on
+    its mouths (:func:`capture_radii`) for balls of ``ball_radius``."""
+    corner, side = capture_radii(specs.corner_pocket_width, specs.side_pocket_width, ball_radius)
+    xy, r = default_pockets(specs.l, specs.w, corner, side)
+    return Table(specs.l, specs.w, cushion_restitution, xy, r, specs=specs, pocket_model="capture")
+
+
+#: The named tables of scene files and env configs (``table: {preset: snooker}``): ``pool`` the 9-ft table with
+#: capture circles (the default table), ``snooker`` the 12-ft table with capture circles, ``carom`` no pockets;
+#: with jaws: ``wpa`` a WPA 9-ft table, ``pooltool`` pooltool's 7-ft default table, ``snooker_match`` the 12-ft
+#: table with its rounded pockets (:mod:`.pocket_specs`).
+TABLE_PRESETS = {"pool": Table, "snooker": snooker_table, "carom": carom_table,
+                 "wpa": lambda: jaw_table(WPA_9FT), "pooltool": lambda: jaw_table(POOLTOOL_7FT),
+                 "snooker_match": lambda: jaw_table(SNOOKER_12FT)}

@@ -1,0 +1,300 @@
+"""Pockets as real tables build them: rails that stop at the mouths, straight jaw faces, rounded jaw tips, and a
+pocket circle behind each mouth.
+
+A pocket table is given by the same parameters as pooltool's ``PocketTableSpecs`` (SI units, angles in degrees),
+so that a pooltool table can be copied field by field; ``l`` runs along ``x`` here (pooltool's ``l`` runs along its
+``y``). :func:`build_walls` turns them into the cushion geometry the solvers read:
+
+- **segments** (one-sided lines at cushion height): 6 rails, then 2 jaw faces per pocket in pocket order. A ball
+  meets a segment when its centre is ``R`` from the segment's line on the open side (the side its normal points
+  to) *and* the centre's projection lies on the segment.
+- **tips** (vertical cylinders): 2 per pocket, in pocket order, where a rail turns into a jaw face. A ball meets a
+  tip when its centre is ``R + radius`` from the tip's centre.
+- **pocket circles**: a moving ball is pocketed when its centre enters one (pooltool's criterion).
+
+Wall indices (the ``other`` of a cushion event on a jaw table): rails 0-5 (bottom left of the middle pocket,
+bottom right, top left, top right, the left end ``x = 0``, the right end ``x = l``), jaw faces 6-17 and tips
+18-29, two each per pocket in the pocket order bottom-left, bottom-middle, bottom-right, top-left, top-middle,
+top-right. The construction is pooltool's ``create_pocket_table_cushion_segments`` and
+``create_pocket_table_pockets`` (``objects/table/layout.py``), mapped to this frame: the same points.
+"""
+from __future__ import annotations
+
+import difflib
+import math
+from dataclasses import asdict, dataclass, fields
+from typing import Any, Mapping
+
+import numpy as np
+
+from .errors import SceneError, check_finite, check_non_negative, check_positive
+
+#: Number of rails, jaw faces and tips of a six-pocket table (the wall index ranges above).
+N_RAILS = 6
+N_JAWS = 12
+N_TIPS = 12
+N_SEGMENTS = N_RAILS + N_JAWS
+N_WALLS = N_SEGMENTS + N_TIPS
+#: Columns of a segment row: its end points, then its unit normal towards the open side.
+SEG_COLS = 6
+#: Columns of a tip row: centre and radius.
+TIP_COLS = 3
+#: Pocket angles (degrees) are accepted in this open interval: at -45 the jaw face is square to its rail, at +45
+#: it would lie along the rail.
+ANGLE_LIMIT = 45.0
+
+
+@dataclass(frozen=True)
+class PocketSpecs:
+    """A six-pocket table's geometry in pooltool's parameters (m; angles in degrees). Defaults: pooltool's 7-ft
+    table (``pt.Table.default()``, ``PocketTableSpecs``).
+
+    ``l`` x ``w``: the playing area between the cushion lines; ``cushion_width``: how deep the jaw faces reach
+    into the cushion; ``cushion_height``: the nose height (kept for pooltool's tables; the cushion laws read
+    ``physics.cushion_height``, which the ``pooltool`` physics preset sets to this table's 0.64 * 2R); ``*_pocket_width``: the mouth, jaw point to jaw point (corner: across
+    the 45-degree line); ``*_pocket_angle``: how far the jaw faces turn from the pocket's axis (corner) or from the
+    rail's normal (side), narrowing the throat when positive; ``*_pocket_depth``: how far behind the cushion line
+    the pocket circle's centre lies (corner: along the diagonal); ``*_pocket_radius``: the pocket circle;
+    ``*_jaw_radius``: the rounding of the jaw tip where the rail meets the jaw face.
+    """
+
+    l: float = 1.9812  # noqa: E741  (pooltool's name)
+    w: float = 1.9812 / 2
+    cushion_width: float = 2 * 2.54 / 100
+    cushion_height: float = 0.64 * 2 * 0.028575
+    corner_pocket_width: float = 0.118
+    corner_pocket_angle: float = 5.3
+    corner_pocket_depth: float = 0.0417
+    corner_pocket_radius: float = 0.062
+    corner_jaw_radius: float = 0.02095
+    side_pocket_width: float = 0.137
+    side_pocket_angle: float = 7.14
+    side_pocket_depth: float = 0.0685
+    side_pocket_radius: float = 0.0645
+    side_jaw_radius: float = 0.00795
+
+    def __post_init__(self) -> None:
+        for name in ("l", "w", "cushion_width", "cushion_height", "corner_pocket_width", "corner_pocket_radius",
+                     "side_pocket_width", "side_pocket_radius"):
+            check_positive(f"table.specs.{name}", getattr(self, name))
+        for name in ("corner_pocket_depth", "side_pocket_depth", "corner_jaw_radius", "side_jaw_radius"):
+            check_non_negative(f"table.specs.{name}", getattr(self, name))
+        for name in ("corner_pocket_angle", "side_pocket_angle"):
+            a = check_finite(f"table.specs.{name}", getattr(self, name))
+            if not -ANGLE_LIMIT < a < ANGLE_LIMIT:
+                raise SceneError(f"table.specs.{name}: {a} degrees is outside (-{ANGLE_LIMIT:g}, {ANGLE_LIMIT:g}); "
+                                 "0 is a jaw along the pocket's axis, positive angles narrow the throat")
+        _check_fits(self)
+
+    @classmethod
+    def from_dict(cls, value: Any, where: str = "table.specs") -> "PocketSpecs":
+        """Specs from a mapping of the fields above (every field optional; an unknown one is refused)."""
+        if isinstance(value, PocketSpecs):
+            return value
+        if not isinstance(value, Mapping):
+            raise SceneError(f"{where}: expected a mapping of pocket-table fields ({', '.join(SPEC_FIELDS)}), "
+                             f"got {type(value).__name__}")
+        unknown = [k for k in value if k not in SPEC_FIELDS]
+        if unknown:
+            k = unknown[0]
+            near = difflib.get_close_matches(str(k), SPEC_FIELDS, n=1)
+            hint = f"; did you mean {near[0]!r}?" if near else ""
+            raise SceneError(f"{where}: unknown field {k!r}{hint} Valid fields: {', '.join(SPEC_FIELDS)}")
+        kw = {}
+        for k, v in value.items():
+            kw[k] = check_finite(f"{where}.{k}", v)
+        return cls(**kw)
+
+    def to_dict(self) -> dict[str, float]:
+        return {k: float(v) for k, v in asdict(self).items()}
+
+    def mouths(self) -> tuple[float, float]:
+        """``(corner, side)`` mouth widths, jaw point to jaw point (m)."""
+        return self.corner_pocket_width, self.side_pocket_width
+
+
+SPEC_FIELDS = tuple(f.name for f in fields(PocketSpecs))
+
+
+def _corner_setback(s: PocketSpecs) -> tuple[float, float]:
+    """``(ca, dc)``: the corner jaw's angle from the rail's normal (rad) and the distance from the jaw point (where
+    rail and jaw face lines meet) to the tangent points of the tip's rounding."""
+    ca = math.radians(s.corner_pocket_angle + 45.0)
+    return ca, s.corner_jaw_radius / math.tan((math.pi / 2 + ca) / 2)
+
+
+def _side_setback(s: PocketSpecs) -> tuple[float, float]:
+    sa = math.radians(s.side_pocket_angle)
+    return sa, s.side_jaw_radius / math.tan((math.pi / 2 + sa) / 2)
+
+
+def _check_fits(s: PocketSpecs) -> None:
+    """Refuse specs that make no table: rails of no length, jaw roundings that close their mouth, a pocket circle
+    that a ball coming through the mouth cannot reach."""
+    ca, dc = _corner_setback(s)
+    sa, ds = _side_setback(s)
+    corner_end = s.corner_pocket_width / math.sqrt(2.0) + dc  # where a rail leaves a corner's jaw tip
+    long_half = (s.l - s.side_pocket_width) / 2.0 - ds
+    if not corner_end < long_half:
+        raise SceneError(
+            f"table.specs: the long rails have no length: a corner mouth of {s.corner_pocket_width} m and a side "
+            f"mouth of {s.side_pocket_width} m with their jaw roundings take up more than half of l = {s.l} m; "
+            "make the pockets narrower, the jaw radii smaller or the table longer")
+    if not 2.0 * corner_end < s.w:
+        raise SceneError(
+            f"table.specs: the end rails have no length: two corner mouths of {s.corner_pocket_width} m with their "
+            f"jaw roundings take up more than w = {s.w} m; make the pockets narrower or the table wider")
+    # The two rounded tips of a mouth must leave it open (a jaw radius too large for its mouth closes it).
+    corner_gap = math.sqrt(2.0) * (s.corner_pocket_width / math.sqrt(2.0) + dc + s.corner_jaw_radius) \
+        - 2.0 * s.corner_jaw_radius
+    if not corner_gap > 0.0:
+        raise SceneError(
+            f"table.specs.corner_jaw_radius: {s.corner_jaw_radius} m does not fit a corner mouth of "
+            f"{s.corner_pocket_width} m: the two rounded tips meet and close it; use a smaller radius")
+    side_gap = s.side_pocket_width + 2.0 * ds - 2.0 * s.side_jaw_radius
+    if not side_gap > 0.0:
+        raise SceneError(
+            f"table.specs.side_jaw_radius: {s.side_jaw_radius} m does not fit a side mouth of "
+            f"{s.side_pocket_width} m: the two rounded tips meet and close it; use a smaller radius")
+    # Reachable: the pocket circle covers the throat's axis where the jaw faces end (cushion_width behind the
+    # cushion line), so a ball running down the axis enters it before it leaves the jaws.
+    corner_gap = math.sqrt(2.0) * abs(s.cushion_width - s.corner_pocket_depth / math.sqrt(2.0))
+    if not corner_gap < s.corner_pocket_radius:
+        raise SceneError(
+            f"table.specs.corner_pocket_radius: a circle of {s.corner_pocket_radius} m at depth "
+            f"{s.corner_pocket_depth} m cannot be reached: it misses the throat's axis where the jaws end "
+            f"({corner_gap:.4f} m away); use a radius above {corner_gap:.4f} m or move it closer")
+    side_gap = abs(s.cushion_width - s.side_pocket_depth)
+    if not side_gap < s.side_pocket_radius:
+        raise SceneError(
+            f"table.specs.side_pocket_radius: a circle of {s.side_pocket_radius} m at depth "
+            f"{s.side_pocket_depth} m cannot be reached: it misses the throat's axis where the jaws end "
+            f"({side_gap:.4f} m away); use a radius above {side_gap:.4f} m or move it closer")
+
+
+def pocket_circles(s: PocketSpecs) -> tuple[np.ndarray, np.ndarray]:
+    """The six pocket circles ``(centres (6, 2), radii (6,))`` in the pocket order."""
+    c = s.corner_pocket_depth / math.sqrt(2.0)
+    d = s.side_pocket_depth
+    xy = np.array([[-c, -c], [s.l / 2, -d], [s.l + c, -c], [-c, s.w + c], [s.l / 2, s.w + d], [s.l + c, s.w + c]])
+    r = np.array([s.corner_pocket_radius, s.side_pocket_radius, s.corner_pocket_radius] * 2)
+    return xy, r
+
+
+def _segment(ax: float, ay: float, bx: float, by: float, towards: tuple[float, float]) -> list[float]:
+    """A segment row ``[ax, ay, bx, by, nx, ny]``, its unit normal pointing to the side of ``towards``."""
+    dx, dy = bx - ax, by - ay
+    n = math.hypot(dx, dy)
+    nx, ny = -dy / n, dx / n
+    if (towards[0] - ax) * nx + (towards[1] - ay) * ny < 0.0:
+        nx, ny = -nx, -ny
+    return [ax, ay, bx, by, nx, ny]
+
+
+def build_walls(s: PocketSpecs) -> tuple[np.ndarray, np.ndarray]:
+    """The cushion geometry of ``s``: ``segments (18, 6)`` and ``tips (12, 3)`` in the documented order."""
+    L, W, cw = s.l, s.w, s.cushion_width
+    ca, dc = _corner_setback(s)
+    sa, ds = _side_setback(s)
+    pc = s.corner_pocket_width / math.sqrt(2.0)
+    sw = s.side_pocket_width
+    rc, rs = s.corner_jaw_radius, s.side_jaw_radius
+    centre = (L / 2, W / 2)
+    segs = [
+        _segment(pc + dc, 0.0, (L - sw) / 2 - ds, 0.0, centre),
+        _segment((L + sw) / 2 + ds, 0.0, L - pc - dc, 0.0, centre),
+        _segment(pc + dc, W, (L - sw) / 2 - ds, W, centre),
+        _segment((L + sw) / 2 + ds, W, L - pc - dc, W, centre),
+        _segment(0.0, pc + dc, 0.0, W - pc - dc, centre),
+        _segment(L, pc + dc, L, W - pc - dc, centre),
+    ]
+    tips = []
+    # The bottom-left corner and the bottom-middle pocket in local coordinates; the others are mirror images.
+    corner_jaws = [  # (deep end, tip end) of the jaw face on the bottom rail, then on the left rail
+        ((pc - cw * math.tan(ca), -cw), (pc - dc * math.sin(ca), -dc * math.cos(ca))),
+        ((-cw, pc - cw * math.tan(ca)), (-dc * math.cos(ca), pc - dc * math.sin(ca))),
+    ]
+    corner_tips = [(pc + dc, -rc), (-rc, pc + dc)]
+    side_jaws = [
+        (((L - sw) / 2 + cw * math.sin(sa), -cw), ((L - sw) / 2 + ds * math.sin(sa), -ds * math.cos(sa))),
+        (((L + sw) / 2 - cw * math.sin(sa), -cw), ((L + sw) / 2 - ds * math.sin(sa), -ds * math.cos(sa))),
+    ]
+    side_tips = [(L / 2 - sw / 2 - ds, -rs), (L / 2 + sw / 2 + ds, -rs)]
+    pockets_xy, _ = pocket_circles(s)
+    mirrors = [(False, False), (None, False), (True, False), (False, True), (None, True), (True, True)]
+    for p, (flip_x, flip_y) in enumerate(mirrors):
+        jaws, tip_xy, rad = (side_jaws, side_tips, rs) if flip_x is None else (corner_jaws, corner_tips, rc)
+
+        def m(x: float, y: float, fx: bool | None = flip_x, fy: bool = flip_y) -> tuple[float, float]:
+            return (L - x if fx else x), (W - y if fy else y)
+
+        towards = tuple(pockets_xy[p])
+        for (a, b) in jaws:
+            (ax, ay), (bx, by) = m(*a), m(*b)
+            segs.append(_segment(ax, ay, bx, by, towards))
+        for (x, y) in tip_xy:
+            tips.append([*m(x, y), rad])
+    return np.array(segs, dtype=float), np.array(tips, dtype=float)
+
+
+#: pooltool's 7-ft table (its ``pt.Table.default()``).
+POOLTOOL_7FT = PocketSpecs()
+#: A WPA 9-ft table: 100 x 50 in between the cushion noses, mouths in the middle of the WPA ranges (corner
+#: 4 1/2 - 4 5/8 in, side 5 - 5 1/8 in), jaw angles from the WPA's 142 degrees (corner) and 104 degrees (side)
+#: between the cushion nose and the jaw face, nose height 63.5 % of the ball's diameter; depths, pocket circles and
+#: jaw roundings as pooltool's 7-ft table (the WPA does not fix them).
+WPA_9FT = PocketSpecs(l=2.54, w=1.27, cushion_height=0.635 * 2 * 0.028575, corner_pocket_width=0.1159,
+                      corner_pocket_angle=7.0, side_pocket_width=0.1286, side_pocket_angle=14.0)
+#: A snooker table with its rounded pockets: pooltool's generic snooker table (``SNOOKER_GENERIC``).
+SNOOKER_12FT = PocketSpecs(l=3.569, w=1.778, cushion_width=47.63 / 1000, cushion_height=0.039,
+                           corner_pocket_width=80.14 / 1000, corner_pocket_angle=0.0,
+                           corner_pocket_depth=67.35 / 1000, corner_pocket_radius=88.9 / 1000,
+                           corner_jaw_radius=88.90 / 1000, side_pocket_width=84.57 / 1000, side_pocket_angle=0.0,
+                           side_pocket_depth=51.59 / 1000, side_pocket_radius=53.19 / 1000,
+                           side_jaw_radius=66.90 / 1000)
+
+__all__ = ["PocketSpecs", "SPEC_FIELDS", "build_walls", "pocket_circles", "POOLTOOL_7FT", "WPA_9FT", "SNOOKER_12FT",
+           "N_RAILS", "N_JAWS", "N_TIPS", "N_SEGMENTS", "N_WALLS"]
+
+
+def clear_of_walls(segs: np.ndarray, tips: np.ndarray, x: float, y: float, r: float, tol: float = 0.0) -> bool:
+    """Whether a ball of radius ``r`` at ``(x, y)`` overlaps no rail, jaw face or tip by more than ``tol``."""
+    for ax, ay, bx, by, nx, ny in segs:
+        dx, dy = bx - ax, by - ay
+        s = ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy)
+        gap = (x - ax) * nx + (y - ay) * ny
+        if 0.0 <= s <= 1.0 and -r < gap < r - tol:
+            return False
+    for cx, cy, rad in tips:
+        if math.hypot(x - cx, y - cy) < r + rad - tol:
+            return False
+    return True
+
+
+def in_mouth(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float, y: float,
+             r: float, tol: float = 0.0) -> bool:
+    """Whether a ball centre at ``(x, y)`` outside the playing area ``[r, l - r] x [r, w - r]`` still lies on a
+    jaw table: within a pocket's throat (between its two jaw faces, up to their deep ends, or in its pocket
+    circle) and clear of every wall."""
+    for p in range(len(pocket_r)):
+        inside_circle = math.hypot(x - pocket_xy[p, 0], y - pocket_xy[p, 1]) <= pocket_r[p]
+        quad = np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4],
+                         segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]])
+        if inside_circle or _in_convex(quad, x, y):
+            return clear_of_walls(segs, tips, x, y, r, tol)
+    return False
+
+
+def _in_convex(poly: np.ndarray, x: float, y: float) -> bool:
+    """Whether ``(x, y)`` lies in the convex polygon ``poly`` (vertices in order, either orientation)."""
+    sign = 0.0
+    for k in range(len(poly)):
+        ax, ay = poly[k]
+        bx, by = poly[(k + 1) % len(poly)]
+        c = (bx - ax) * (y - ay) - (by - ay) * (x - ax)
+        if c != 0.0:
+            if sign == 0.0:
+                sign = c
+            elif (c > 0.0) != (sign > 0.0):
+                return False
+    return True
