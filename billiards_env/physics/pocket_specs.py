@@ -129,7 +129,7 @@ def _side_setback(s: PocketSpecs) -> tuple[float, float]:
 
 
 def _check_fits(s: PocketSpecs) -> None:
-    """Refuse specs that make no table: rails of no length, jaw roundings that close their mouth, a pocket circle
+    """Refuse specs that make no table: rails of no length, jaw roundings larger than their mouth, a pocket circle
     that a ball coming through the mouth cannot reach."""
     ca, dc = _corner_setback(s)
     sa, ds = _side_setback(s)
@@ -144,18 +144,15 @@ def _check_fits(s: PocketSpecs) -> None:
         raise SceneError(
             f"table.specs: the end rails have no length: two corner mouths of {s.corner_pocket_width} m with their "
             f"jaw roundings take up more than w = {s.w} m; make the pockets narrower or the table wider")
-    # The two rounded tips of a mouth must leave it open (a jaw radius too large for its mouth closes it).
-    corner_gap = math.sqrt(2.0) * (s.corner_pocket_width / math.sqrt(2.0) + dc + s.corner_jaw_radius) \
-        - 2.0 * s.corner_jaw_radius
-    if not corner_gap > 0.0:
-        raise SceneError(
-            f"table.specs.corner_jaw_radius: {s.corner_jaw_radius} m does not fit a corner mouth of "
-            f"{s.corner_pocket_width} m: the two rounded tips meet and close it; use a smaller radius")
-    side_gap = s.side_pocket_width + 2.0 * ds - 2.0 * s.side_jaw_radius
-    if not side_gap > 0.0:
-        raise SceneError(
-            f"table.specs.side_jaw_radius: {s.side_jaw_radius} m does not fit a side mouth of "
-            f"{s.side_pocket_width} m: the two rounded tips meet and close it; use a smaller radius")
+    # A jaw's rounding must fit its mouth: it runs from the jaw point along the rail and along the jaw face for no
+    # more than the mouth is wide (pooltool's snooker pockets, the roundest here, use 80 % of theirs).
+    for kind, setback, width, radius in (("corner", dc, s.corner_pocket_width, s.corner_jaw_radius),
+                                         ("side", ds, s.side_pocket_width, s.side_jaw_radius)):
+        if not setback <= width:
+            raise SceneError(
+                f"table.specs.{kind}_jaw_radius: {radius} m does not fit a {kind} mouth of {width} m: its rounding "
+                f"runs {setback:.4f} m along the rail, more than the mouth is wide; the largest that fits is "
+                f"{radius * width / setback:.4f} m")
     # Reachable: the pocket circle covers the throat's axis where the jaw faces end (cushion_width behind the
     # cushion line), so a ball running down the axis enters it before it leaves the jaws.
     corner_gap = math.sqrt(2.0) * abs(s.cushion_width - s.corner_pocket_depth / math.sqrt(2.0))
@@ -274,13 +271,15 @@ def clear_of_walls(segs: np.ndarray, tips: np.ndarray, x: float, y: float, r: fl
 def in_mouth(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float, y: float,
              r: float, tol: float = 0.0) -> bool:
     """Whether a ball centre at ``(x, y)`` outside the playing area ``[r, l - r] x [r, w - r]`` still lies on a
-    jaw table: within a pocket's throat (between its two jaw faces, up to their deep ends, or in its pocket
-    circle) and clear of every wall."""
+    jaw table: within a pocket's mouth and throat (the polygon from one jaw face's deep end along it, across to
+    where the rails stop, and back along the other face; or in its pocket circle) and clear of every wall."""
+    rail_ends = np.concatenate([segs[:N_RAILS, 0:2], segs[:N_RAILS, 2:4]])
     for p in range(len(pocket_r)):
         inside_circle = math.hypot(x - pocket_xy[p, 0], y - pocket_xy[p, 1]) <= pocket_r[p]
-        quad = np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4],
-                         segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]])
-        if inside_circle or _in_convex(quad, x, y):
+        stops = [rail_ends[np.argmin(np.hypot(*(rail_ends - tips[2 * p + k, 0:2]).T))] for k in range(2)]
+        mouth = np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4], stops[0], stops[1],
+                          segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]])
+        if inside_circle or _in_convex(mouth, x, y):
             return clear_of_walls(segs, tips, x, y, r, tol)
     return False
 

@@ -1,0 +1,220 @@
+"""The jaw pocket model: the geometry built from pooltool's specs, the solvers meeting rails, jaw faces and tips,
+the laws at those walls, and the specs that make no table refused."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from physics_helpers import EV_CUSHION, EV_POCKET, R, balls, rolling
+
+from billiards_env.physics import Physics, SceneError, Simulator
+from billiards_env.physics.motion import time_for_distance
+from billiards_env.physics.pocket_specs import (N_RAILS, N_SEGMENTS, POOLTOOL_7FT, SNOOKER_12FT, WPA_9FT,
+                                                PocketSpecs, build_walls, pocket_circles)
+from billiards_env.physics.scene import parse_table
+from billiards_env.physics.table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, jaw_table
+
+SPECS = (POOLTOOL_7FT, WPA_9FT, SNOOKER_12FT)
+
+
+@pytest.mark.parametrize("specs", SPECS)
+def test_tips_round_the_corner_between_rail_and_jaw(specs):
+    segs, tips = build_walls(specs)
+    assert segs.shape == (N_SEGMENTS, 6) and tips.shape == (12, 3)
+    assert np.allclose(np.hypot(segs[:, 4], segs[:, 5]), 1.0)
+    # Each tip touches the end of its jaw face (tangent there: the radius to it is normal to the face)...
+    for p in range(6):
+        for k in range(2):
+            jaw = segs[N_RAILS + 2 * p + k]
+            cx, cy, rad = tips[2 * p + k]
+            assert math.hypot(jaw[2] - cx, jaw[3] - cy) == pytest.approx(rad, abs=1e-12)
+            to_tip = np.array([cx - jaw[2], cy - jaw[3]])
+            along = jaw[2:4] - jaw[0:2]
+            cos = abs(to_tip @ along) / (np.linalg.norm(to_tip) * np.linalg.norm(along))
+            # pooltool starts a side jaw's deep end at cw sin(angle) along the rail where the face's line is at
+            # cw tan(angle): a side face turns by under half a degree from the tangent (kept: pooltool's table).
+            assert cos < (1e-12 if p in (0, 2, 3, 5) else 1e-2)
+    # ...and one rail end, tangent to the cushion line there.
+    ends = np.concatenate([segs[:N_RAILS, 0:2], segs[:N_RAILS, 2:4]])
+    for cx, cy, rad in tips:
+        d = np.hypot(ends[:, 0] - cx, ends[:, 1] - cy)
+        assert d.min() == pytest.approx(rad, abs=1e-12)
+
+
+@pytest.mark.parametrize("specs", SPECS)
+def test_rails_lie_on_the_cushion_lines_and_face_the_table(specs):
+    segs, _ = build_walls(specs)
+    centre = np.array([specs.l / 2, specs.w / 2])
+    for ax, ay, bx, by, nx, ny in segs[:N_RAILS]:
+        assert (ay == by == 0.0) or (ay == by == specs.w) or (ax == bx == 0.0) or (ax == bx == specs.l)
+        assert (centre - [ax, ay]) @ [nx, ny] > 0
+    # A jaw face's open side holds its pocket's circle centre (the throat).
+    xy, _ = pocket_circles(specs)
+    for p in range(6):
+        for k in range(2):
+            ax, ay, bx, by, nx, ny = segs[N_RAILS + 2 * p + k]
+            assert (xy[p] - [ax, ay]) @ [nx, ny] > 0
+
+
+def test_pocket_circles_sit_behind_the_mouths_by_their_depth():
+    s = POOLTOOL_7FT
+    xy, r = pocket_circles(s)
+    assert np.allclose(np.hypot(*xy[0]), s.corner_pocket_depth)
+    assert xy[1, 1] == -s.side_pocket_depth and xy[4, 1] == s.w + s.side_pocket_depth
+    assert r.tolist() == [s.corner_pocket_radius, s.side_pocket_radius, s.corner_pocket_radius] * 2
+
+
+def _run(table, physics, pos, vel):
+    b = balls([list(p) for p in pos], velocities=[list(v) for v in vel])
+    return Simulator(table, physics).run(b, record=True)
+
+
+def test_straight_down_the_diagonal_drops_when_the_centre_enters_the_pocket_circle():
+    table = jaw_table(POOLTOOL_7FT)
+    phys = rolling()
+    x0 = 0.4
+    res = _run(table, phys, [(x0, x0)], [(-1.0, -1.0)])
+    assert res.pocket[0] == 0
+    assert list(res.events.kind) == [EV_POCKET]  # between the jaws, touching none
+    d = math.hypot(x0 - table.pocket_xy[0, 0], x0 - table.pocket_xy[0, 1]) - table.pocket_radius[0]
+    expected = time_for_distance(math.sqrt(2.0), d, 0, phys.deceleration, 0.0)
+    assert res.pocketed_at[0] == pytest.approx(expected, rel=1e-12)
+
+
+def test_a_ball_along_the_rail_passes_the_side_mouth_that_a_capture_circle_swallows():
+    y = R + 0.0005
+    jaws = _run(jaw_table(POOLTOOL_7FT), rolling(), [(0.3, y)], [(1.0, 0.0)])
+    capture = _run(parse_table({"preset": "pooltool", "pockets": "capture"}), rolling(), [(0.3, y)], [(1.0, 0.0)])
+    assert capture.pocket[0] == 1  # the capture circle on the side pocket reaches the ball's centre
+    assert jaws.pocket[0] != 1
+
+
+@pytest.mark.parametrize("e_c", [1.0, 0.7])
+def test_a_rail_of_a_jaw_table_reflects_as_a_straight_cushion(e_c):
+    v = np.array([0.6, -0.8])
+    res = _after_first_wall(jaw_table(POOLTOOL_7FT, e_c), (0.4, 0.3), v)
+    assert res.events.other[0] == 0  # the bottom rail left of the middle pocket
+    assert res.events.time[0] == pytest.approx((0.3 - R) / 0.8, rel=1e-12)
+    assert res.balls.vel[0, 0] == pytest.approx(v[0], rel=1e-12)
+    assert res.balls.vel[0, 1] == pytest.approx(-e_c * v[1], rel=1e-12)
+
+
+def _after_first_wall(table, pos, vel, law=None):
+    phys = law or Physics(friction="rolling", mu_roll=0.0)
+    b = balls([list(pos)], velocities=[list(vel)])
+    sim = Simulator(table, phys, max_events=1)
+    res = sim.run(b)
+    assert res.events.kind[0] == EV_CUSHION
+    return res
+
+
+def test_a_jaw_face_reflects_about_its_own_normal():
+    table = jaw_table(POOLTOOL_7FT, 1.0)
+    segs, _ = table.walls()
+    face = segs[N_RAILS + 0]  # the bottom-left corner's jaw on the bottom rail
+    mid = 0.5 * (face[0:2] + face[2:4])
+    n = face[4:6]
+    v = -n * 1.0 + 0.3 * np.array([-n[1], n[0]])
+    start = mid + R * n - v * 0.03  # reaches the face's middle after 0.03 s
+    res = _after_first_wall(table, start, v)
+    assert res.events.other[0] == N_RAILS + 0
+    assert res.events.time[0] == pytest.approx(0.03, rel=1e-9)
+    vel = res.balls.vel[0]
+    expected = v - 2.0 * (v @ n) * n
+    assert np.allclose(vel, expected, atol=1e-12)
+
+
+def test_a_tip_is_met_at_its_radius_plus_the_balls_and_pushes_along_the_line_of_centres():
+    table = jaw_table(POOLTOOL_7FT, 1.0)
+    segs, tips = table.walls()
+    cx, cy, rad = tips[2]  # the middle pocket's left tip
+    n = np.array([math.cos(1.1), math.sin(1.1)])  # a contact normal pointing into the table
+    contact = np.array([cx, cy]) + (R + rad) * n
+    v = np.array([0.2, -1.0])
+    res = _after_first_wall(table, contact - v * 0.05, v)
+    assert res.events.other[0] == N_SEGMENTS + 2
+    assert res.events.time[0] == pytest.approx(0.05, rel=1e-9)
+    assert np.allclose(res.balls.pos[0], contact, atol=1e-12)
+    assert np.allclose(res.balls.vel[0], v - 2.0 * (v @ n) * n, atol=1e-12)
+
+
+@pytest.mark.parametrize("physics", [rolling(), Physics(friction="drag", drag_k=0.3, min_speed=0.01),
+                                     Physics.from_preset("pooltool")], ids=["rolling", "drag", "spin"])
+def test_random_shots_on_jaw_tables_keep_every_ball_clear_of_the_walls_and_lose_energy(physics):
+    rng = np.random.default_rng(5)
+    for specs in (POOLTOOL_7FT, SNOOKER_12FT):
+        table = jaw_table(specs)
+        segs, tips = table.walls()
+        sim = Simulator(table, physics)
+        for _ in range(60):
+            pos = []
+            while len(pos) < 4:
+                p = (rng.uniform(R, specs.l - R), rng.uniform(R, specs.w - R))
+                if all(math.dist(p, q) > 2 * R + 1e-6 for q in pos):
+                    pos.append(p)
+            b = balls(pos).strike("cue", rng.uniform(-math.pi, math.pi), rng.uniform(0.5, 6.0), physics=physics)
+            res = sim.run(b)
+            assert res.status == "rest"
+            for i in np.flatnonzero(res.balls.on_table):
+                x, y = res.balls.pos[i]
+                for ax, ay, bx, by, nx, ny in segs:
+                    s = ((x - ax) * (bx - ax) + (y - ay) * (by - ay)) / ((bx - ax) ** 2 + (by - ay) ** 2)
+                    gap = (x - ax) * nx + (y - ay) * ny
+                    if 0 <= s <= 1 and gap > -R:
+                        assert gap >= R - 1e-9
+                for tx, ty, tr in tips:
+                    assert math.hypot(x - tx, y - ty) >= R + tr - 1e-9
+            again = sim.run(b)  # the same input, bit for bit the same output
+            assert np.array_equal(again.balls.pos, res.balls.pos)
+
+
+def test_a_ball_may_rest_in_a_mouth_and_stays_there():
+    table = jaw_table(POOLTOOL_7FT)
+    y = -0.002  # the centre behind the cushion line, in the middle pocket's mouth, outside its pocket circle
+    res = _run(table, rolling(), [(POOLTOOL_7FT.l / 2, y), (0.5, 0.5)], [(0.0, 0.0), (0.0, 0.0)])
+    assert res.balls.on_table[0] and np.array_equal(res.balls.pos[0], [POOLTOOL_7FT.l / 2, y])
+
+
+def test_a_ball_inside_a_rail_is_refused_with_the_mouths_named():
+    with pytest.raises(SceneError, match="mouth"):
+        _run(jaw_table(POOLTOOL_7FT), rolling(), [(0.5, -0.01)], [(0.0, 0.0)])
+
+
+def test_the_step_solver_refuses_jaws_and_says_what_to_use():
+    with pytest.raises(SceneError, match="exact solver"):
+        Simulator(jaw_table(POOLTOOL_7FT), rolling(), solver="step")
+
+
+@pytest.mark.parametrize("field,value,match", [
+    ("l", -1.0, "table.specs.l: must be > 0"),
+    ("w", 0.0, "table.specs.w: must be > 0"),
+    ("corner_pocket_angle", 50.0, r"corner_pocket_angle: 50.0 degrees is outside \(-45, 45\)"),
+    ("side_jaw_radius", 0.5, "side_jaw_radius: 0.5 m does not fit a side mouth of 0.137 m"),
+    ("corner_pocket_radius", 0.005, "corner_pocket_radius: .* cannot be reached"),
+    ("side_pocket_width", 1.8, "long rails have no length"),
+])
+def test_specs_that_make_no_table_are_refused_naming_the_field(field, value, match):
+    with pytest.raises(SceneError, match=match):
+        PocketSpecs(**{field: value})
+
+
+def test_an_unknown_spec_field_is_refused_with_a_did_you_mean():
+    with pytest.raises(SceneError, match="unknown field 'corner_pocket_widht'; did you mean 'corner_pocket_width'"):
+        parse_table({"specs": {"corner_pocket_widht": 0.12}})
+
+
+def test_scene_tables_with_jaws_and_capture_circles():
+    wpa = parse_table({"preset": "wpa"})
+    assert wpa.has_jaws and wpa.specs == WPA_9FT
+    # The WPA table under the capture model: the default table's calibrated circles (same mouths, same balls).
+    cap = parse_table({"preset": "wpa", "pockets": "capture"})
+    assert not cap.has_jaws
+    assert cap.pocket_radius[0] == pytest.approx(CORNER_POCKET_RADIUS, abs=2e-4)
+    assert cap.pocket_radius[1] == pytest.approx(SIDE_POCKET_RADIUS, abs=2e-4)
+    own = parse_table({"specs": {"l": 2.84, "w": 1.42, "side_pocket_width": 0.14}})
+    assert own.has_jaws and own.length == 2.84 and own.specs.corner_pocket_width == POOLTOOL_7FT.corner_pocket_width
+    with pytest.raises(SceneError, match="'jaws' needs the table's geometry"):
+        parse_table({"pockets": "jaws"})
+    with pytest.raises(SceneError, match="unknown pocket model 'jaw'"):
+        parse_table({"preset": "wpa", "pockets": "jaw"})
