@@ -239,6 +239,66 @@ def run(quick: bool = False, table: Table | None = None, sizes: dict[str, int] |
             "reference": REFERENCE, "same_position_m": SAME_POSITION}
 
 
+def run_pockets(quick: bool = False, sizes: dict[str, int] | None = None) -> list[dict[str, Any]]:
+    """The pocket rung: the same shots on the WPA 9-ft table with jaws (``table: {preset: wpa}``) and with capture
+    circles calibrated on its mouths (``pockets: capture``), under the ``rolling`` model and the ``pooltool``
+    preset. The shots are aimed through the jaw table's mouths (its pocket windows). Per scene: how often the
+    capture circles give the jaws' outcome (same balls pocketed, every other ball within 5 mm; in brackets the same
+    balls pocketed), and the CPU time per shot of each (median of interleaved rounds)."""
+    from billiards_env.physics.table import TABLE_PRESETS
+    from billiards_env.physics.scene import parse_table
+
+    sizes = sizes or _sizes(quick)
+    jaws = TABLE_PRESETS["wpa"]()
+    capture = parse_table({"preset": "wpa", "pockets": "capture"})
+    rng = np.random.default_rng(2027)
+    scenes = {"one ball": one_ball_shots(sizes["shots"], rng, jaws),
+              "9-ball break": break_shots(sizes["breaks"], rng, jaws),
+              "9-ball run-out": runout_shots(sizes["shots"], rng, jaws)}
+    rows = []
+    for model in ("rolling", REFERENCE):
+        ph = rungs()[model]
+        sims = {"jaws": Simulator(jaws, ph), "capture": Simulator(capture, ph)}
+        for fam, shots in scenes.items():
+            log(f"[ladder] pockets: {fam}, {model}: {len(shots)} shots")
+            struck = [s.balls(ph) for s in shots]
+            outcomes = {k: [_outcome(sim.run(b, validate=False)) for b in struck] for k, sim in sims.items()}
+            times: dict[str, list[float]] = {k: [] for k in sims}
+            for r in range(sizes["rounds"]):
+                for k in (("jaws", "capture") if r % 2 == 0 else ("capture", "jaws")):
+                    fresh = [b.copy() for b in struck]
+                    t = time.process_time()
+                    for b in fresh:
+                        sims[k].run_in_place(b)
+                    times[k].append((time.process_time() - t) / len(shots))
+            same = [_same(c, j) for c, j in zip(outcomes["capture"], outcomes["jaws"])]
+            t_j, t_c = statistics.median(times["jaws"]), statistics.median(times["capture"])
+            rows.append({"family": fam, "model": model, "shots": len(shots),
+                         "same_outcome": sum(ok for ok, _ in same) / len(shots),
+                         "same_pocketed": sum(math.isfinite(d) for _, d in same) / len(shots),
+                         "jaws_pocketed": sum(len(o[0]) for o in outcomes["jaws"]) / len(shots),
+                         "capture_pocketed": sum(len(o[0]) for o in outcomes["capture"]) / len(shots),
+                         "jaws_s": t_j, "capture_s": t_c, "ratio": t_j / t_c})
+    return rows
+
+
+def render_pockets(rows: list[dict[str, Any]]) -> list[str]:
+    lines = ["", "## The pocket rung: capture circles against jaws", "",
+             "The same shots on the WPA 9-ft table with jaws (`table: {preset: wpa}`: rails that stop at the "
+             "mouths, jaw faces, rounded tips, pocket circles behind the mouths) and with capture circles "
+             "calibrated on its mouths (`pockets: capture`), aimed through the jaw table's mouths. Same outcome: "
+             "the capture circles pocket the same balls as the jaws and leave every other ball within 5 mm; in "
+             "brackets the same balls pocketed. Time: CPU time per shot (`Simulator.run_in_place`, median of "
+             "interleaved rounds).", "",
+             "| scene | model | shots | same outcome | balls pocketed a shot, jaws / capture | µs a shot, jaws "
+             "/ capture | jaws / capture |", "|---|---|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        lines.append(f"| {r['family']} | `{r['model']}` | {r['shots']} | {100 * r['same_outcome']:.0f}% "
+                     f"({100 * r['same_pocketed']:.0f}%) | {r['jaws_pocketed']:.2f} / {r['capture_pocketed']:.2f} | "
+                     f"{r['jaws_s'] * 1e6:.1f} / {r['capture_s'] * 1e6:.1f} | {r['ratio']:.2f}x |")
+    return lines
+
+
 def render_markdown(doc: dict[str, Any]) -> str:
     fams = list(dict.fromkeys(r["family"] for r in doc["rows"]))
     tips = list(dict.fromkeys(r["tip"] for r in doc["rows"]))
@@ -269,6 +329,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
     lines += table(lambda c: f"{c['time_per_shot_s'] * 1e6:.1f}")
     lines += ["", "Models (fields that differ from `Physics()`):", ""] + \
         [f"- `{m}`: {doc['models'][m]}" for m in models] + [""]
+    if doc.get("pockets"):
+        lines += render_pockets(doc["pockets"]) + [""]
     if "machine" in doc:
         lines += [machine_markdown(doc["machine"], doc.get("end_load")), ""]
     return "\n".join(lines)
@@ -282,6 +344,7 @@ def render(out: Path) -> None:
 def main(out: Path | None, quick: bool = False) -> dict[str, Any]:
     """Measure, print the ladder, and write ``ladder.json`` and ``ladder.md`` into ``out`` if given."""
     doc = {"machine": machine_info(), **run(quick)}
+    doc["pockets"] = run_pockets(quick)
     doc["end_load"] = load_now()
     publish(doc, render_markdown(doc), out, "ladder")
     return doc

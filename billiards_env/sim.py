@@ -12,8 +12,10 @@ import json
 import os
 import sys
 
+from .physics.codes import CUSHION_NAMES
 from .physics.errors import SceneError
 from .physics.model import PRESETS
+from .physics.pocket_specs import WALL_NAMES
 from .physics.scene import Scene
 from .physics.simulate import SOLVERS
 from .physics.step import CONTACT_MODES
@@ -53,7 +55,9 @@ def main(argv: list[str] | None = None) -> int:
         print(f"billiards-sim: error: {exc}", file=sys.stderr)
         return 2
     try:
-        json.dump(result.to_dict(include_events=args.events), sys.stdout, indent=args.indent or None)
+        names = WALL_NAMES if scene.table.has_jaws else CUSHION_NAMES
+        json.dump(result.to_dict(include_events=args.events, cushion_names=names), sys.stdout,
+                  indent=args.indent or None)
         sys.stdout.write("\n")
         sys.stdout.flush()
     except BrokenPipeError:

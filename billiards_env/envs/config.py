@@ -370,6 +370,8 @@ def _section_dict(name: str, value: Any) -> dict[str, Any]:
     """A section object (Table, Physics, SolverSettings) as the mapping its parser reads."""
     if name == "table":
         t = table_to_dict(value)
+        if value.has_jaws:  # its specs say it all
+            return t
         default = Table(t["length"], t["width"], t["cushion_restitution"])
         if value == default:  # the standard six pockets: say so by their radii (readable, and scales with size)
             del t["pockets"]

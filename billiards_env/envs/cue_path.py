@@ -86,7 +86,7 @@ def thresholds(state: "TableState", rows: np.ndarray, v_top: float) -> np.ndarra
                            float(t.cushion_restitution), float(ph.ball_restitution),
                            np.ascontiguousarray(t.pocket_xy, dtype=np.float64),
                            np.ascontiguousarray(t.pocket_radius, dtype=np.float64), int(law), float(acc), float(kk),
-                           float(ph.min_speed), MAX_BOUNCES)
+                           float(ph.min_speed), MAX_BOUNCES, *t.walls())
 
 
 def power_of(speed: Any, base: Any, log_factor: float) -> np.ndarray:

@@ -35,6 +35,7 @@ from numba.extending import intrinsic
 
 from .collide import resolve_ball_ball
 from .motion import speed_after_distance, stop_distance
+from .walls import normal_at, ray_walls_hit
 
 if TYPE_CHECKING:
     from .model import Physics
@@ -105,6 +106,36 @@ def ray_cushion_hit(px: float, py: float, ux: float, uy: float, length: float, w
             best = d
             cushion = 3 if uy > 0.0 else 2
     return best, cushion
+
+
+@njit(cache=True)
+def cushion_ahead(px: float, py: float, ux: float, uy: float, length: float, width: float, r: float,
+                  segs: np.ndarray, tips: np.ndarray) -> tuple[float, int]:
+    """The first cushion a ball of radius ``r`` rolling along the ray meets, as the exact solver sees it:
+    :func:`ray_cushion_hit` on a capture table (no ``segs`` or ``tips``), the first rail, jaw face or jaw tip
+    (:func:`.walls.ray_walls_hit`) on a jaw table. ``(distance, cushion or wall index)``."""
+    if segs.shape[0] > 0 or tips.shape[0] > 0:
+        return ray_walls_hit(px, py, ux, uy, r, segs, tips)
+    return ray_cushion_hit(px, py, ux, uy, length, width, r)
+
+
+@njit(cache=True)
+def bounce_off(vx: float, vy: float, x: float, y: float, cushion: int, length: float, width: float, r: float,
+               e_cushion: float, segs: np.ndarray, tips: np.ndarray) -> tuple[float, float]:
+    """A rolling ball's velocity after it meets ``cushion`` (from :func:`cushion_ahead`) at ``(x, y)``: the normal
+    part reversed and scaled by ``e_cushion`` (the linear model's law, :func:`.walls.reflect_off`)."""
+    if segs.shape[0] > 0 or tips.shape[0] > 0:
+        nx, ny = normal_at(x, y, cushion, segs, tips)
+        vn = vx * nx + vy * ny
+        if vn < 0.0:
+            vx -= (1.0 + e_cushion) * vn * nx
+            vy -= (1.0 + e_cushion) * vn * ny
+        return vx, vy
+    if x <= r + 1e-9 or x >= length - r - 1e-9:
+        vx = -e_cushion * vx
+    if y <= r + 1e-9 or y >= width - r - 1e-9:
+        vy = -e_cushion * vy
+    return vx, vy
 
 
 @njit(cache=True)
@@ -255,15 +286,16 @@ def _window_sample(k: int, div: int, theta_c: float, half: float, step: float) -
 
 @njit(cache=True)
 def _window_sample_ok(ox: float, oy: float, a: float, cx: float, cy: float, pr: float, length: float,
-                      width: float, radius: float) -> bool:
-    """Whether a ball of ``radius`` at ``(ox, oy)`` rolling along direction ``a`` enters the capture circle
-    ``(cx, cy, pr)`` before it touches a cushion (the engine's ray tests, 1e-9 m of slack)."""
+                      width: float, radius: float, segs: np.ndarray, tips: np.ndarray) -> bool:
+    """Whether a ball of ``radius`` at ``(ox, oy)`` rolling along direction ``a`` enters the pocket's circle
+    ``(cx, cy, pr)`` before it touches a cushion (on a jaw table: a rail, jaw face or tip; the engine's ray tests,
+    1e-9 m of slack)."""
     ux = math.cos(a)
     uy = math.sin(a)
     t_in = ray_circle_entry(ox, oy, ux, uy, cx, cy, pr)
     if not math.isfinite(t_in):
         return False
-    return t_in <= ray_cushion_hit(ox, oy, ux, uy, length, width, radius)[0] + 1e-9
+    return t_in <= cushion_ahead(ox, oy, ux, uy, length, width, radius, segs, tips)[0] + 1e-9
 
 
 #: Samples of a window that :func:`window_of` tracks in one 64-bit mask (more: every sample is ray-tested).
@@ -293,7 +325,7 @@ def _mark_crossing(mask: int, angle: float, theta_c: float, half: float, step: f
 
 @njit(cache=True)
 def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, length: float, width: float,
-              samples: int) -> tuple:
+              samples: int, segs: np.ndarray, tips: np.ndarray) -> tuple:
     """:func:`pocket_window` for the capture circle ``(cx, cy, pr)``: ``(centre, half-width, distance, found)``.
 
     The window is the one sampled by ``samples`` directions across the circle's angular size (the widest run of
@@ -303,7 +335,8 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
     line: also where the direction crosses an axis, as the cushion ahead changes). Only the first sample after
     each such direction, and the first, second and last samples (the tangent directions, decided by round-off), are
     ray-tested (:func:`_window_sample_ok`); every other sample has the test of the one before. The result is
-    bit-identical to ray-testing every sample.
+    bit-identical to ray-testing every sample. On a jaw table (``segs``, ``tips``: its walls) every sample is
+    ray-tested against the rails, jaw faces and tips: the window is the run of directions that pass the mouth.
     """
     vx = cx - ox
     vy = cy - oy
@@ -315,7 +348,7 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
     div = samples - 1
     step = (half - (-half)) / div
     # The samples to ray-test, as bits.
-    if samples > _MASK_SAMPLES or not step > 0.0:
+    if samples > _MASK_SAMPLES or not step > 0.0 or segs.shape[0] > 0 or tips.shape[0] > 0:
         mask = -1
     else:
         mask = 1 | 2 | (1 << div)
@@ -350,7 +383,7 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
             flag = False
         elif mask == -1 or (mask >> k) & 1:
             flag = _window_sample_ok(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr, length,
-                                     width, radius)
+                                     width, radius, segs, tips)
         if flag and run_start < 0:
             run_start = k
         elif not flag and run_start >= 0:
@@ -373,12 +406,12 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
 
 @njit(cache=True)
 def pocket_windows(ox: float, oy: float, radius: float, pocket_xy: np.ndarray, pocket_r: np.ndarray, length: float,
-                   width: float, samples: int, out: np.ndarray) -> None:
+                   width: float, samples: int, out: np.ndarray, segs: np.ndarray, tips: np.ndarray) -> None:
     """:func:`window_of` for every pocket: ``out[p] = (centre, half-width, distance, found)`` (``found`` 1.0 or
     0.0; the other columns are 0 without a window)."""
     for p in range(pocket_r.shape[0]):
         c, h, d, ok = window_of(ox, oy, radius, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p], length, width,
-                                samples)
+                                samples, segs, tips)
         out[p, 0] = c
         out[p, 1] = h
         out[p, 2] = d
@@ -388,7 +421,7 @@ def pocket_windows(ox: float, oy: float, radius: float, pocket_xy: np.ndarray, p
 def pocket_window(obj: Vec2, radius: float, table: Table, pocket: int,
                   samples: int = WINDOW_SAMPLES) -> tuple[float, float, float] | None:
     """The directions along which a ball of ``radius`` at ``obj`` rolls into the capture circle of ``pocket``
-    before touching a cushion.
+    before touching a cushion (on a jaw table: into the pocket circle through the mouth, touching no jaw).
 
     ``samples`` directions across the circle's angular size, as tested by the engine's own ray tests. Returns
     ``(centre direction, half-width, distance to the capture circle along the centre)`` of the widest contiguous
@@ -399,9 +432,10 @@ def pocket_window(obj: Vec2, radius: float, table: Table, pocket: int,
     if samples < 2:
         raise ValueError(f"samples: need at least 2 directions across the pocket, got {samples}")
     c = table.pocket_xy[pocket]
+    segs, tips = table.walls()
     centre, half, d_in, found = window_of(float(obj[0]), float(obj[1]), float(radius), float(c[0]), float(c[1]),
                                           float(table.pocket_radius[pocket]), float(table.length),
-                                          float(table.width), int(samples))
+                                          float(table.width), int(samples), segs, tips)
     return (float(centre), float(half), float(d_in)) if found else None
 
 
@@ -555,8 +589,9 @@ def object_ball_speed(impact_speed: float, cut_cos: float, e: float, m_cue: floa
 
 @njit(cache=True)
 def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
-                     max_bounces):
-    """:func:`path_pocket` on plain values (compiled): the pocket index, or -1."""
+                     max_bounces, segs, tips):
+    """:func:`path_pocket` on plain values (compiled): the pocket index, or -1. ``segs``, ``tips``: a jaw table's
+    walls (empty on a capture table)."""
     for _ in range(max_bounces + 1):
         s = math.hypot(vx, vy)
         if s < 1e-6:
@@ -564,7 +599,7 @@ def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, 
         ux = vx / s
         uy = vy / s
         reach = stop_distance(s, law, a, k, v_min)
-        t_wall = ray_cushion_hit(x, y, ux, uy, length, width, radius)[0]
+        t_wall, wall = cushion_ahead(x, y, ux, uy, length, width, radius, segs, tips)
         pocket = first_pocket_on_ray(x, y, ux, uy, min(reach, t_wall + 1e-9), pocket_xy, pocket_r)[0]
         if pocket >= 0:
             return pocket
@@ -574,12 +609,7 @@ def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, 
         x = x + ux * t_wall
         y = y + uy * t_wall
         s_wall = speed_after_distance(s, t_wall, law, a, k)
-        vx = ux * s_wall
-        vy = uy * s_wall
-        if x <= radius + 1e-9 or x >= length - radius - 1e-9:
-            vx = -e_cushion * vx
-        if y <= radius + 1e-9 or y >= width - radius - 1e-9:
-            vy = -e_cushion * vy
+        vx, vy = bounce_off(ux * s_wall, uy * s_wall, x, y, wall, length, width, radius, e_cushion, segs, tips)
     return -1
 
 
@@ -591,7 +621,7 @@ def path_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table, physic
     return int(lone_path_pocket(float(start[0]), float(start[1]), float(velocity[0]), float(velocity[1]),
                             float(radius), float(table.length), float(table.width),
                             float(table.cushion_restitution), table.pocket_xy, table.pocket_radius,
-                            *physics.path_args, physics.min_speed, int(max_bounces)))
+                            *physics.path_args, physics.min_speed, int(max_bounces), *table.walls()))
 
 
 def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table, physics: Physics,
@@ -604,7 +634,7 @@ def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table,
 __all__ = [
     "WINDOW_SAMPLES", "window_of", "pocket_windows", "dot2", "cos_between", "segment_distance",
     "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "ray_circle_entry",
-    "ray_cushion_hit", "ray_cushion_distance", "ray_circle_entries", "ray_cushion_distances", "aim_angle",
+    "ray_cushion_hit", "cushion_ahead", "bounce_off", "ray_cushion_distance", "ray_circle_entries", "ray_cushion_distances", "aim_angle",
     "direction_vector", "wrap_angle", "angular_radius", "ghost_ball_position", "cut_cosine", "cut_angle",
     "offset_aim_angle", "aim_offset", "pocket_window", "pocket_mouth_axes", "pocket_bearings", "segment_blocked",
     "path_clear", "collision_velocities", "deflected_cue_velocity", "object_ball_speed", "path_pocket",

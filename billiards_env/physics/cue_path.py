@@ -18,7 +18,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .aim import collide_into, first_pocket_on_ray, ray_cushion_hit
+from .aim import bounce_off, collide_into, cushion_ahead, first_pocket_on_ray
 from .motion import launch_speed, speed_after_distance, stop_distance
 
 #: Cushion bounces followed along the cue ball's path (it stops long before them at the speeds the envs allow).
@@ -30,12 +30,13 @@ NEVER = math.inf
 @njit(cache=True)
 def path_pocket_speed(x: float, y: float, ux: float, uy: float, s_max: float, radius: float, length: float,
                       width: float, e_cushion: float, pocket_xy: np.ndarray, pocket_r: np.ndarray, law: int, a: float,
-                      k: float, v_min: float, max_bounces: int) -> tuple:
+                      k: float, v_min: float, max_bounces: int, segs: np.ndarray, tips: np.ndarray) -> tuple:
     """The first pocket a lone ball leaving ``(x, y)`` along the unit direction ``(ux, uy)`` at speed ``s_max``
     would enter (straight lines reflected off the cushions: the normal component scaled by ``e_cushion``; up to
     ``max_bounces`` cushions), the least speed it needs at ``(x, y)`` to reach that pocket's capture circle, and the
     cushions it meets first: ``(pocket, speed, bounces)``; ``(-1, inf, -1)`` when it stops first. The path's shape
-    does not depend on the speed, so at any speed below the one returned the ball stops on the table."""
+    does not depend on the speed, so at any speed below the one returned the ball stops on the table. ``segs``,
+    ``tips``: a jaw table's walls (empty on a capture table)."""
     lengths = np.empty(max_bounces + 1)
     factors = np.empty(max_bounces + 1)  # speed after / before each bounce
     s = s_max
@@ -43,7 +44,7 @@ def path_pocket_speed(x: float, y: float, ux: float, uy: float, s_max: float, ra
         if s <= v_min or s < 1e-9:
             return -1, math.inf, -1
         reach = stop_distance(s, law, a, k, v_min)
-        t_wall = ray_cushion_hit(x, y, ux, uy, length, width, radius)[0]
+        t_wall, wall = cushion_ahead(x, y, ux, uy, length, width, radius, segs, tips)
         pocket, best = first_pocket_on_ray(x, y, ux, uy, t_wall + 1e-9, pocket_xy, pocket_r)
         if pocket >= 0 and best < reach:
             # backwards: the speed to arrive (just moving), then each segment and bounce before it
@@ -56,12 +57,7 @@ def path_pocket_speed(x: float, y: float, ux: float, uy: float, s_max: float, ra
         s = speed_after_distance(s, t_wall, law, a, k)
         x = x + ux * t_wall
         y = y + uy * t_wall
-        vx = ux
-        vy = uy
-        if x <= radius + 1e-9 or x >= length - radius - 1e-9:
-            vx = -e_cushion * vx
-        if y <= radius + 1e-9 or y >= width - radius - 1e-9:
-            vy = -e_cushion * vy
+        vx, vy = bounce_off(ux, uy, x, y, wall, length, width, radius, e_cushion, segs, tips)
         f = math.hypot(vx, vy)
         if f < 1e-9:
             return -1, math.inf, -1
@@ -77,7 +73,7 @@ def path_pocket_speed(x: float, y: float, ux: float, uy: float, s_max: float, ra
 def shot_thresholds(cx: float, cy: float, gx: float, gy: float, obj_angle: float, d_obj: float, v_top: float,
                     rc: float, mc: float, mo: float, length: float, width: float, e_cushion: float, e_ball: float,
                     pocket_xy: np.ndarray, pocket_r: np.ndarray, law: int, a: float, k: float, v_min: float,
-                    max_bounces: int) -> tuple:
+                    max_bounces: int, segs: np.ndarray, tips: np.ndarray) -> tuple:
     """For the ghost-ball shot from the cue ball at ``(cx, cy)`` through the ghost point ``(gx, gy)``, sending the
     object ball along ``obj_angle`` for ``d_obj`` to its capture circle: ``(pot, scratch, pocket, bounces)``: the
     least cue launch speed that gets the object ball there, the least at which the cue ball, deflected, reaches a
@@ -101,7 +97,8 @@ def shot_thresholds(cx: float, cy: float, gx: float, gy: float, obj_angle: float
         return pot, math.inf, -1, -1
     s_max = v_cue * speed_after_distance(v_top, d_cue, law, a, k)
     pocket, s, bounces = path_pocket_speed(gx, gy, vel[0, 0] / v_cue, vel[0, 1] / v_cue, s_max, rc, length, width,
-                                           e_cushion, pocket_xy, pocket_r, law, a, k, v_min, max_bounces)
+                                           e_cushion, pocket_xy, pocket_r, law, a, k, v_min, max_bounces, segs,
+                                           tips)
     if pocket < 0:
         return pot, math.inf, -1, -1
     return pot, launch_speed(d_cue, s / v_cue, law, a, k), pocket, bounces
@@ -110,7 +107,8 @@ def shot_thresholds(cx: float, cy: float, gx: float, gy: float, obj_angle: float
 @njit(cache=True)
 def rows_thresholds(cx: float, cy: float, rows: np.ndarray, v_top: float, rc: float, mc: float, mo: float,
                     length: float, width: float, e_cushion: float, e_ball: float, pocket_xy: np.ndarray,
-                    pocket_r: np.ndarray, law: int, a: float, k: float, v_min: float, max_bounces: int) -> np.ndarray:
+                    pocket_r: np.ndarray, law: int, a: float, k: float, v_min: float, max_bounces: int,
+                    segs: np.ndarray, tips: np.ndarray) -> np.ndarray:
     """:func:`shot_thresholds` of many shots from the cue ball at ``(cx, cy)``: ``rows`` ``(N, 4)`` of ghost point
     ``x, y``, object-ball direction and distance to its capture circle (a NaN row: no shot); ``(N, 2)`` of ``pot``
     and ``scratch`` launch speeds (inf: never)."""
@@ -119,7 +117,7 @@ def rows_thresholds(cx: float, cy: float, rows: np.ndarray, v_top: float, rc: fl
         if not math.isfinite(rows[i, 3]):
             continue
         r = shot_thresholds(cx, cy, rows[i, 0], rows[i, 1], rows[i, 2], rows[i, 3], v_top, rc, mc, mo, length,
-                            width, e_cushion, e_ball, pocket_xy, pocket_r, law, a, k, v_min, max_bounces)
+                            width, e_cushion, e_ball, pocket_xy, pocket_r, law, a, k, v_min, max_bounces, segs, tips)
         out[i, 0] = r[0]
         out[i, 1] = r[1]
     return out

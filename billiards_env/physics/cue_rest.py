@@ -21,7 +21,7 @@ formulas, for the ``candidates_position`` observation (:mod:`billiards_env.envs.
    leaves the slide rolling with ``V1 = V0 - 2 u / 7`` (:func:`.spin_motion.roll_on`: the 2/7 law; a stun shot
    ``w = 0`` keeps ``5/7`` of ``V0``, a rolling ball follows through, a drawn ball comes back); it rolls in a
    straight line until it stops. A cushion met on the way (the parabola's or the line's first crossing of a
-   cushion line) is the scene's cushion law (:func:`.cushion_models.cushion_hit`), after which the ball slides
+   cushion line) is the scene's cushion law (:func:`.cushion_models.wall_hit`), after which the ball slides
    again. A pocket is entered when the line (or one of the chords the slide's parabola is cut into) crosses its capture
    circle (a scratch).
    Under the ``rolling`` and ``drag`` laws the path is straight lines reflected off the cushions (normal
@@ -37,9 +37,11 @@ import math
 import numpy as np
 from numba import njit
 
-from .aim import collide_into, first_pocket_on_ray, ray_cushion_hit
+from .aim import bounce_off, collide_into, cushion_ahead, first_pocket_on_ray
 from .codes import ROLLING, SPIN
-from .cushion_models import cushion_hit
+from .cushion_models import wall_hit
+from .spin_collide import wall_normal
+from .walls import has_walls, normal_at, path_wall_time, walls_of
 from .motion import launch_speed, speed_after_distance, stop_distance
 from .spin_collide import ball_hit
 from .spin_motion import slip, spin_decay_rate, wz_after
@@ -88,19 +90,20 @@ def speed_spin_at(speed: float, w0: float, d: float, law: int, a: float, k: floa
 @njit(cache=True)
 def _walk(x: float, y: float, ux: float, uy: float, length: float, speed: float, fixed: bool, radius: float,
           table_l: float, table_w: float, e_cushion: float, pocket_xy: np.ndarray, pocket_r: np.ndarray, a: float,
-          v_min: float, max_bounces: int) -> tuple:
+          v_min: float, max_bounces: int, segs: np.ndarray, tips: np.ndarray) -> tuple:
     """Walk a ball from ``(x, y)`` along ``(ux, uy)``: a fixed path ``length`` (``fixed``; the slide's chord) or
     rolling at ``speed`` until it stops (deceleration ``a``), reflected off the cushions (normal component times
     ``e_cushion``; rolling, the speed too). Returns ``(x, y, ux, uy, flip_x, flip_y, pocket)``: where it ends, its
     direction there, the factors the cushions put on each component of its velocity (sign and restitution), and
-    the pocket whose capture circle it entered (-1: none; ``(x, y)`` is then the entry point)."""
+    the pocket whose capture circle it entered (-1: none; ``(x, y)`` is then the entry point). On a jaw table
+    (``segs``, ``tips``) it reflects off the rails, jaw faces and tips, and the flip factors stay 1."""
     fx = 1.0
     fy = 1.0
     s = speed
     left = length
     for _ in range(max_bounces + 1):
         reach = left if fixed else stop_distance(s, ROLLING, a, 0.0, v_min)
-        t_wall, cushion = ray_cushion_hit(x, y, ux, uy, table_l, table_w, radius)
+        t_wall, cushion = cushion_ahead(x, y, ux, uy, table_l, table_w, radius, segs, tips)
         pocket, best = first_pocket_on_ray(x, y, ux, uy, t_wall + 1e-9, pocket_xy, pocket_r)
         if pocket >= 0 and best < reach:
             return x + ux * best, y + uy * best, ux, uy, fx, fy, pocket
@@ -110,7 +113,9 @@ def _walk(x: float, y: float, ux: float, uy: float, length: float, speed: float,
         y += uy * t_wall
         vx = ux
         vy = uy
-        if cushion <= 1:
+        if segs.shape[0] > 0 or tips.shape[0] > 0:
+            vx, vy = bounce_off(vx, vy, x, y, cushion, table_l, table_w, radius, e_cushion, segs, tips)
+        elif cushion <= 1:
             vx = -e_cushion * vx
             fx = -e_cushion * fx
         else:
@@ -223,7 +228,10 @@ def lone_ball_rest(x: float, y: float, vx: float, vy: float, wx: float, wy: floa
             tau = s / f_roll
         else:
             return x, y, -1
-        t_hit, cushion = _first_wall(x, y, vx, vy, ax, ay, tau, r, table_l, table_w)
+        if has_walls(prm):  # a jaw table: its rails, jaw faces and tips
+            t_hit, cushion = path_wall_time(x, y, vx, vy, ax, ay, r, tau, 1e-12, math.inf, prm)
+        else:
+            t_hit, cushion = _first_wall(x, y, vx, vy, ax, ay, tau, r, table_l, table_w)
         t_end = min(t_hit, tau)
         nx = x + t_end * (vx + 0.5 * ax * t_end)
         ny = y + t_end * (vy + 0.5 * ay * t_end)
@@ -255,7 +263,14 @@ def lone_ball_rest(x: float, y: float, vx: float, vy: float, wx: float, wy: floa
             ang[0, 0] = wx
             ang[0, 1] = wy
             ang[0, 2] = wz
-            cushion_hit(vel, ang, 0, cushion, r, m, e_c, prm, scratch)
+            if has_walls(prm):
+                segs, tips = walls_of(prm)
+                nx_, ny_ = normal_at(x, y, cushion, segs, tips)
+                d = r if cushion < segs.shape[0] else r + tips[cushion - segs.shape[0], 2]
+            else:
+                nx_, ny_ = wall_normal(cushion)
+                d = r
+            wall_hit(vel, ang, 0, nx_, ny_, d, r, m, e_c, prm, scratch)
             vx, vy = vel[0, 0], vel[0, 1]
             wx, wy, wz = ang[0, 0], ang[0, 1], ang[0, 2]
         elif su <= _SLIP_TOL or f_slide <= 0.0:
@@ -311,10 +326,11 @@ def cue_rest(cx: float, cy: float, gx: float, gy: float, obj_angle: float, d_obj
     if law != ROLLING:  # drag: walk the drag law's stop distance as a fixed path
         reach = stop_distance(s, law, a, k, v_min)
         x, y, _, _, _, _, pocket = _walk(gx, gy, vel[0, 0] / s, vel[0, 1] / s, reach, 0.0, True, rc, table_l,
-                                         table_w, e_cushion, pocket_xy, pocket_r, a, v_min, max_bounces)
+                                         table_w, e_cushion, pocket_xy, pocket_r, a, v_min, max_bounces,
+                                         *walls_of(params[0]))
         return x, y, pocket, pots
     x, y, _, _, _, _, pocket = _walk(gx, gy, vel[0, 0] / s, vel[0, 1] / s, 0.0, s, False, rc, table_l, table_w,
-                                     e_cushion, pocket_xy, pocket_r, a, v_min, max_bounces)
+                                     e_cushion, pocket_xy, pocket_r, a, v_min, max_bounces, *walls_of(params[0]))
     return x, y, pocket, pots
 
 

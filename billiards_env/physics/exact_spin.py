@@ -26,10 +26,10 @@ from .collide import JAM_EVENTS
 from .kernel_io import N_STATE_COLS_SPIN, KernelResult
 from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
                           reserve_states)
-from .roots import first_entry, quadratic_roots_in
+from .roots import first_entry
 from .cushion_models import wall_hit
 from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, settle_on_wall, wall_normal
-from .walls import has_walls, on_segment, touch_wall, wall_gap, wall_normal_at
+from .walls import has_walls, path_clear_of, path_wall_time, touch_wall, wall_gap, wall_normal_at, wall_time
 from .spin_motion import advance, classify, piece_of, reach, reach_of, roll_on, slide_end, spin_decay_rate, transition
 
 #: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
@@ -96,58 +96,6 @@ def _move_to(bs, i, t):
 
 
 @internal
-def _wall_time(c2, c1, c0, window, tol):
-    """First time in ``[0, window]`` at which the wall distance ``c2 t^2 + c1 t + c0`` (positive on the table)
-    reaches 0 from above; ``inf`` if none. A ball touching the wall (``c0 <= 0``) counts at once if it moves
-    into it, or if it is not moving away (``|c1| <= tol``) while its acceleration presses it in (``c2 < 0``)."""
-    if c0 <= 0.0:
-        if c1 < -tol or (c2 < 0.0 and c1 <= tol):
-            return 0.0
-        if c2 < 0.0:  # moving away now, pulled back later: the larger root
-            disc = c1 * c1 - 4.0 * c2 * c0
-            root = (-c1 - math.sqrt(max(disc, 0.0))) / (2.0 * c2)
-            return root if root <= window else math.inf
-        return math.inf
-    n, r1, _ = quadratic_roots_in(c2, c1, c0, 0.0, window)
-    return r1 if n > 0 else math.inf
-
-
-@internal
-def _segment_distance(px, py, x0, y0, x1, y1):
-    """Distance from the point ``p`` to the segment from ``(x0, y0)`` to ``(x1, y1)``."""
-    ex = x1 - x0
-    ey = y1 - y0
-    ee = ex * ex + ey * ey
-    s = 0.0
-    if ee > 0.0:
-        s = min(max(((px - x0) * ex + (py - y0) * ey) / ee, 0.0), 1.0)
-    return math.hypot(px - x0 - s * ex, py - y0 - s * ey)
-
-
-@internal
-def _path_clear_of(cx, cy, r, x, y, vx, vy, ax, ay, window):
-    """Whether a ball's centre on ``p + v t + a t^2 / 2``, ``t`` in ``[0, window]``, stays farther than ``r`` (and a
-    margin far above round-off) from ``c``: then the pocket's quartic has no root and need not be solved. The path
-    is a quadratic Bezier curve, inside the triangle of its control points ``p``, ``p + v T / 2`` and its end
-    (``T = window``); the test is the distance from ``c`` to that triangle (0 if ``c`` is inside)."""
-    if not window < math.inf:
-        return False
-    x1 = x + 0.5 * vx * window
-    y1 = y + 0.5 * vy * window
-    x2 = x + window * (vx + 0.5 * ax * window)
-    y2 = y + window * (vy + 0.5 * ay * window)
-    # Inside the triangle (or on its edge): the same side of all three edges.
-    d0 = (x1 - x) * (cy - y) - (y1 - y) * (cx - x)
-    d1 = (x2 - x1) * (cy - y1) - (y2 - y1) * (cx - x1)
-    d2 = (x - x2) * (cy - y2) - (y - y2) * (cx - x2)
-    if (d0 >= 0.0 and d1 >= 0.0 and d2 >= 0.0) or (d0 <= 0.0 and d1 <= 0.0 and d2 <= 0.0):
-        return False
-    d = min(_segment_distance(cx, cy, x, y, x1, y1), _segment_distance(cx, cy, x1, y1, x2, y2),
-            _segment_distance(cx, cy, x, y, x2, y2))
-    return d > r * (1.0 + 1e-9) + 1e-9
-
-
-@internal
 def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time, prm):
     """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
     t0 = bs[i, T0]
@@ -180,7 +128,7 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
             tau = 0.0
         elif math.sqrt(dx * dx + dy * dy) - pocket_r[q] > far:
             continue
-        elif _path_clear_of(pocket_xy[q, 0], pocket_xy[q, 1], pocket_r[q], x, y, vx, vy, ax, ay, window):
+        elif path_clear_of(pocket_xy[q, 0], pocket_xy[q, 1], pocket_r[q], x, y, vx, vy, ax, ay, window):
             continue
         else:
             tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
@@ -192,7 +140,7 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     r = radius[i]
     tol = 1e-12 + 1e-14 * math.hypot(vx, vy)
     if has_walls(prm):  # a jaw table: rails, jaw faces, tips
-        tau, wall = _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm)
+        tau, wall = path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm)
         if tau < best:
             best = tau
             kind = EV_CUSHION
@@ -202,13 +150,13 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
         return t_end, _TRANSITION, -1
     for cush in range(4):
         if cush == 0:
-            tau = _wall_time(0.5 * ax, vx, x - r, window, tol)
+            tau = wall_time(0.5 * ax, vx, x - r, window, tol)
         elif cush == 1:
-            tau = _wall_time(-0.5 * ax, -vx, length - r - x, window, tol)
+            tau = wall_time(-0.5 * ax, -vx, length - r - x, window, tol)
         elif cush == 2:
-            tau = _wall_time(0.5 * ay, vy, y - r, window, tol)
+            tau = wall_time(0.5 * ay, vy, y - r, window, tol)
         else:
-            tau = _wall_time(-0.5 * ay, -vy, width - r - y, window, tol)
+            tau = wall_time(-0.5 * ay, -vy, width - r - y, window, tol)
         if tau < best:
             best = tau
             kind = EV_CUSHION
@@ -216,37 +164,6 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     if kind >= 0 and t0 + best <= t_end:
         return t0 + best, kind, other
     return t_end, _TRANSITION, -1
-
-
-@internal
-def _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
-    """First time in ``[0, window]`` at which a ball on ``p + v t + a t^2 / 2`` meets a jaw table's wall
-    (:mod:`.walls`): ``(time, wall)``, ``(inf, -1)`` if none. A segment's distance is a quadratic in ``t``, met
-    where its projection lies on the segment; a tip's is a quartic. Walls farther than ``far`` are skipped."""
-    best = math.inf
-    wall = -1
-    for k in range(prm.n_segs):
-        nx = prm.segs[k, 4]
-        ny = prm.segs[k, 5]
-        c0 = (x - prm.segs[k, 0]) * nx + (y - prm.segs[k, 1]) * ny - r
-        if c0 > far or c0 < -2.0 * r:  # out of reach, or the centre behind the line (not on this side)
-            continue
-        tau = _wall_time(0.5 * (ax * nx + ay * ny), vx * nx + vy * ny, c0, window, tol)
-        if tau < best and on_segment(x + tau * (vx + 0.5 * ax * tau), y + tau * (vy + 0.5 * ay * tau), k, prm):
-            best = tau
-            wall = k
-    for k in range(prm.n_tips):
-        dx = x - prm.tips[k, 0]
-        dy = y - prm.tips[k, 1]
-        rho = r + prm.tips[k, 2]
-        if math.sqrt(dx * dx + dy * dy) - rho > far:
-            continue
-        tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
-                          2.0 * (dx * vx + dy * vy), dx * dx + dy * dy - rho * rho, window, tol)
-        if tau < best:
-            best = tau
-            wall = prm.n_segs + k
-    return best, wall
 
 
 @internal

@@ -35,6 +35,11 @@ N_JAWS = 12
 N_TIPS = 12
 N_SEGMENTS = N_RAILS + N_JAWS
 N_WALLS = N_SEGMENTS + N_TIPS
+#: Pocket names in the pocket order, and each wall's name (a cushion event's ``other`` on a jaw table).
+POCKET_NAMES = ("bottom-left", "bottom-middle", "bottom-right", "top-left", "top-middle", "top-right")
+WALL_NAMES = (("rail bottom-left", "rail bottom-right", "rail top-left", "rail top-right", "rail left", "rail right")
+              + tuple(f"jaw {p} {side}" for p in POCKET_NAMES for side in ("a", "b"))
+              + tuple(f"tip {p} {side}" for p in POCKET_NAMES for side in ("a", "b")))
 #: Columns of a segment row: its end points, then its unit normal towards the open side.
 SEG_COLS = 6
 #: Columns of a tip row: centre and radius.
@@ -250,7 +255,7 @@ SNOOKER_12FT = PocketSpecs(l=3.569, w=1.778, cushion_width=47.63 / 1000, cushion
                            side_pocket_depth=51.59 / 1000, side_pocket_radius=53.19 / 1000,
                            side_jaw_radius=66.90 / 1000)
 
-__all__ = ["PocketSpecs", "SPEC_FIELDS", "build_walls", "pocket_circles", "POOLTOOL_7FT", "WPA_9FT", "SNOOKER_12FT",
+__all__ = ["POCKET_NAMES", "WALL_NAMES", "PocketSpecs", "SPEC_FIELDS", "build_walls", "pocket_circles", "POOLTOOL_7FT", "WPA_9FT", "SNOOKER_12FT",
            "N_RAILS", "N_JAWS", "N_TIPS", "N_SEGMENTS", "N_WALLS"]
 
 

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Sequence
 
 import numpy as np
 
@@ -29,8 +29,9 @@ class EventLog:
     def __len__(self) -> int:
         return len(self.time)
 
-    def as_dicts(self, ids: tuple[str, ...]) -> list[dict[str, Any]]:
-        """The events as JSON-ready dicts naming balls by id."""
+    def as_dicts(self, ids: tuple[str, ...], cushion_names: Sequence[str] = CUSHION_NAMES) -> list[dict[str, Any]]:
+        """The events as JSON-ready dicts naming balls by id and cushions by ``cushion_names`` (a jaw table's:
+        :data:`.pocket_specs.WALL_NAMES`)."""
         out = []
         for t, k, b, o, s in zip(self.time.tolist(), self.kind.tolist(), self.ball.tolist(),
                                  self.other.tolist(), self.speed.tolist()):
@@ -38,7 +39,7 @@ class EventLog:
             if k == EV_COLLISION:
                 ev["other"] = ids[o]
             elif k == EV_CUSHION:
-                ev["cushion"] = CUSHION_NAMES[o]
+                ev["cushion"] = cushion_names[o]
             elif k == EV_POCKET:
                 ev["pocket"] = o
             elif k == EV_JAM:
@@ -82,8 +83,9 @@ class ShotResult:
                 return o if b == ball else b
         return -1
 
-    def to_dict(self, include_events: bool = False) -> dict[str, Any]:
-        """The result as the JSON document ``billiards-sim`` prints."""
+    def to_dict(self, include_events: bool = False, cushion_names: Sequence[str] = CUSHION_NAMES) -> dict[str, Any]:
+        """The result as the JSON document ``billiards-sim`` prints (``cushion_names``: see
+        :meth:`EventLog.as_dicts`)."""
         b = self.balls
         balls = []
         spin = self.motion_state is not None
@@ -109,7 +111,7 @@ class ShotResult:
             out["n_tunnelled"] = int(self.n_tunnelled)
         out["balls"] = balls
         if include_events:
-            out["events"] = self.events.as_dicts(b.ids)
+            out["events"] = self.events.as_dicts(b.ids, cushion_names)
             if spin:
                 self._add_event_states(out["events"])
         return out

@@ -1,9 +1,11 @@
 """A jaw table's cushions in the compiled solvers: when a ball meets a rail, a jaw face or a jaw tip, and the
 contact normal there (numba).
 
-The geometry is the parameter record's ``segs`` (one-sided straight cushions: ``ax, ay, bx, by, nx, ny``, the unit
-normal pointing to the open side) and ``tips`` (rounded jaw tips: ``cx, cy, radius``), built by
-:func:`.pocket_specs.build_walls`. A wall index is a segment's row, or ``n_segs`` plus a tip's row.
+The geometry is two arrays, ``segs`` (one-sided straight cushions: ``ax, ay, bx, by, nx, ny``, the unit normal
+pointing to the open side) and ``tips`` (rounded jaw tips: ``cx, cy, radius``), built by
+:func:`.pocket_specs.build_walls`; the solvers read them from the parameter record (``prm.segs[:prm.n_segs]``,
+through the ``prm`` forms below), the players from their table model. A wall index is a segment's row, or the
+number of segments plus a tip's row.
 
 - A ball of radius ``r`` meets a segment when its centre is ``r`` from the segment's line, moving towards it, with
   the centre's projection on the segment (between its ends, inclusive).
@@ -19,6 +21,7 @@ from __future__ import annotations
 import math
 
 from .kernel_logs import internal
+from .roots import first_entry, quadratic_roots_in
 
 #: A ball whose centre's projection lies this far (m) beyond a segment's end still counts as on the segment: the
 #: rounding of a projection computed at the contact point (a ball meeting a rail exactly where its jaw tip begins).
@@ -32,12 +35,24 @@ def has_walls(prm):
 
 
 @internal
+def walls_of(prm):
+    """The record's walls as ``(segs, tips)`` arrays (views)."""
+    return prm.segs[:prm.n_segs], prm.tips[:prm.n_tips]
+
+
+@internal
 def on_segment(x, y, k, prm):
     """Whether the projection of ``(x, y)`` on segment ``k``'s line lies between its ends."""
-    ax = prm.segs[k, 0]
-    ay = prm.segs[k, 1]
-    dx = prm.segs[k, 2] - ax
-    dy = prm.segs[k, 3] - ay
+    return on_seg(x, y, prm.segs[k])
+
+
+@internal
+def on_seg(x, y, seg):
+    """:func:`on_segment` for the segment row ``seg``."""
+    ax = seg[0]
+    ay = seg[1]
+    dx = seg[2] - ax
+    dy = seg[3] - ay
     ll = dx * dx + dy * dy
     s = ((x - ax) * dx + (y - ay) * dy) / ll
     slack = END_SLACK / math.sqrt(ll)
@@ -45,31 +60,32 @@ def on_segment(x, y, k, prm):
 
 
 @internal
-def ray_segment_hit(px, py, ux, uy, r, k, prm):
-    """Distance along the ray ``p + d u`` (``u`` a unit vector) until a ball of radius ``r`` meets segment ``k``;
-    ``inf`` if it never does. A ball already within ``r`` of the line and moving into it meets it at once."""
-    nx = prm.segs[k, 4]
-    ny = prm.segs[k, 5]
+def ray_segment_hit(px, py, ux, uy, r, seg):
+    """Distance along the ray ``p + d u`` (``u`` a unit vector) until a ball of radius ``r`` meets the segment row
+    ``seg``; ``inf`` if it never does. A ball already within ``r`` of the line and moving into it meets it at
+    once."""
+    nx = seg[4]
+    ny = seg[5]
     un = ux * nx + uy * ny
     if not un < 0.0:
         return math.inf
-    gap = (px - prm.segs[k, 0]) * nx + (py - prm.segs[k, 1]) * ny - r
+    gap = (px - seg[0]) * nx + (py - seg[1]) * ny - r
     if gap < -r:  # the centre is behind the line: the ball is not on this segment's side
         return math.inf
     d = max(gap / -un, 0.0)
-    if on_segment(px + d * ux, py + d * uy, k, prm):
+    if on_seg(px + d * ux, py + d * uy, seg):
         return d
     return math.inf
 
 
 @internal
-def ray_tip_hit(px, py, ux, uy, r, k, prm):
-    """Distance along the ray until a ball of radius ``r`` meets tip ``k`` (its centre ``r + radius`` from the tip's
-    centre), moving towards it; ``inf`` if it never does. A ball already that close and approaching meets it at
-    once."""
-    dx = px - prm.tips[k, 0]
-    dy = py - prm.tips[k, 1]
-    rho = r + prm.tips[k, 2]
+def ray_tip_hit(px, py, ux, uy, r, tip):
+    """Distance along the ray until a ball of radius ``r`` meets the tip row ``tip`` (its centre ``r + radius``
+    from the tip's centre), moving towards it; ``inf`` if it never does. A ball already that close and approaching
+    meets it at once."""
+    dx = px - tip[0]
+    dy = py - tip[1]
+    rho = r + tip[2]
     b = ux * dx + uy * dy
     if not b < 0.0:
         return math.inf
@@ -84,30 +100,42 @@ def ray_tip_hit(px, py, ux, uy, r, k, prm):
 
 @internal
 def ray_wall_hit(px, py, ux, uy, r, prm):
+    """The first wall of the record ``prm`` the ray meets (:func:`ray_walls_hit`)."""
+    return ray_walls_hit(px, py, ux, uy, r, prm.segs[:prm.n_segs], prm.tips[:prm.n_tips])
+
+
+@internal
+def ray_walls_hit(px, py, ux, uy, r, segs, tips):
     """The first wall the ray meets: ``(distance, wall index)``, ``(inf, -1)`` if none; the lower index on a tie."""
     best = math.inf
     wall = -1
-    for k in range(prm.n_segs):
-        d = ray_segment_hit(px, py, ux, uy, r, k, prm)
+    for k in range(segs.shape[0]):
+        d = ray_segment_hit(px, py, ux, uy, r, segs[k])
         if d < best:
             best = d
             wall = k
-    for k in range(prm.n_tips):
-        d = ray_tip_hit(px, py, ux, uy, r, k, prm)
+    for k in range(tips.shape[0]):
+        d = ray_tip_hit(px, py, ux, uy, r, tips[k])
         if d < best:
             best = d
-            wall = prm.n_segs + k
+            wall = segs.shape[0] + k
     return best, wall
 
 
 @internal
 def wall_normal_at(x, y, wall, prm):
     """The unit contact normal (away from the wall) of a ball centred at ``(x, y)`` touching ``wall``."""
-    if wall < prm.n_segs:
-        return prm.segs[wall, 4], prm.segs[wall, 5]
-    k = wall - prm.n_segs
-    dx = x - prm.tips[k, 0]
-    dy = y - prm.tips[k, 1]
+    return normal_at(x, y, wall, prm.segs[:prm.n_segs], prm.tips[:prm.n_tips])
+
+
+@internal
+def normal_at(x, y, wall, segs, tips):
+    """:func:`wall_normal_at` on the arrays."""
+    if wall < segs.shape[0]:
+        return segs[wall, 4], segs[wall, 5]
+    k = wall - segs.shape[0]
+    dx = x - tips[k, 0]
+    dy = y - tips[k, 1]
     d = math.hypot(dx, dy)
     return dx / d, dy / d
 
@@ -170,5 +198,100 @@ def reflect_off(vel, i, nx, ny, e_c):
     return -vn
 
 
-__all__ = ["has_walls", "on_segment", "ray_segment_hit", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
+@internal
+def _segment_distance(px, py, x0, y0, x1, y1):
+    """Distance from the point ``p`` to the segment from ``(x0, y0)`` to ``(x1, y1)``."""
+    ex = x1 - x0
+    ey = y1 - y0
+    ee = ex * ex + ey * ey
+    s = 0.0
+    if ee > 0.0:
+        s = min(max(((px - x0) * ex + (py - y0) * ey) / ee, 0.0), 1.0)
+    return math.hypot(px - x0 - s * ex, py - y0 - s * ey)
+
+
+@internal
+def path_clear_of(cx, cy, r, x, y, vx, vy, ax, ay, window):
+    """Whether a ball's centre on ``p + v t + a t^2 / 2``, ``t`` in ``[0, window]``, stays farther than ``r`` (and a
+    margin far above round-off) from ``c``: then the pocket's quartic has no root and need not be solved. The path
+    is a quadratic Bezier curve, inside the triangle of its control points ``p``, ``p + v T / 2`` and its end
+    (``T = window``); the test is the distance from ``c`` to that triangle (0 if ``c`` is inside)."""
+    if not window < math.inf:
+        return False
+    x1 = x + 0.5 * vx * window
+    y1 = y + 0.5 * vy * window
+    x2 = x + window * (vx + 0.5 * ax * window)
+    y2 = y + window * (vy + 0.5 * ay * window)
+    # Inside the triangle (or on its edge): the same side of all three edges.
+    d0 = (x1 - x) * (cy - y) - (y1 - y) * (cx - x)
+    d1 = (x2 - x1) * (cy - y1) - (y2 - y1) * (cx - x1)
+    d2 = (x - x2) * (cy - y2) - (y - y2) * (cx - x2)
+    if (d0 >= 0.0 and d1 >= 0.0 and d2 >= 0.0) or (d0 <= 0.0 and d1 <= 0.0 and d2 <= 0.0):
+        return False
+    d = min(_segment_distance(cx, cy, x, y, x1, y1), _segment_distance(cx, cy, x1, y1, x2, y2),
+            _segment_distance(cx, cy, x, y, x2, y2))
+    return d > r * (1.0 + 1e-9) + 1e-9
+
+
+@internal
+def wall_time(c2, c1, c0, window, tol):
+    """First time in ``[0, window]`` at which the wall distance ``c2 t^2 + c1 t + c0`` (positive on the table)
+    reaches 0 from above; ``inf`` if none. A ball touching the wall (``c0 <= 0``) counts at once if it moves
+    into it, or if it is not moving away (``|c1| <= tol``) while its acceleration presses it in (``c2 < 0``)."""
+    if c0 <= 0.0:
+        if c1 < -tol or (c2 < 0.0 and c1 <= tol):
+            return 0.0
+        if c2 < 0.0:  # moving away now, pulled back later: the larger root
+            disc = c1 * c1 - 4.0 * c2 * c0
+            root = (-c1 - math.sqrt(max(disc, 0.0))) / (2.0 * c2)
+            return root if root <= window else math.inf
+        return math.inf
+    n, r1, _ = quadratic_roots_in(c2, c1, c0, 0.0, window)
+    return r1 if n > 0 else math.inf
+
+
+@internal
+def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
+    """First time in ``[0, window]`` at which a ball on ``p + v t + a t^2 / 2`` meets a jaw table's wall
+    (:mod:`.walls`): ``(time, wall)``, ``(inf, -1)`` if none. A segment's distance is a quadratic in ``t``, met
+    where its projection lies on the segment; a tip's is a quartic. Walls farther than ``far`` are skipped."""
+    best = math.inf
+    wall = -1
+    # The path within the window lies in the triangle of its control points (a quadratic Bezier curve): a segment
+    # whose line all three clear (margins far above round-off) is not met, without solving for it.
+    bounded = window < math.inf
+    x1 = x + 0.5 * vx * window if bounded else 0.0
+    y1 = y + 0.5 * vy * window if bounded else 0.0
+    x2 = x + window * (vx + 0.5 * ax * window) if bounded else 0.0
+    y2 = y + window * (vy + 0.5 * ay * window) if bounded else 0.0
+    for k in range(prm.n_segs):
+        nx = prm.segs[k, 4]
+        ny = prm.segs[k, 5]
+        c0 = (x - prm.segs[k, 0]) * nx + (y - prm.segs[k, 1]) * ny - r
+        if c0 > far or c0 < -2.0 * r:  # out of reach, or the centre behind the line (not on this side)
+            continue
+        if bounded and c0 > 1e-9 and (x1 - prm.segs[k, 0]) * nx + (y1 - prm.segs[k, 1]) * ny - r > 1e-9 and \
+                (x2 - prm.segs[k, 0]) * nx + (y2 - prm.segs[k, 1]) * ny - r > 1e-9:
+            continue
+        tau = wall_time(0.5 * (ax * nx + ay * ny), vx * nx + vy * ny, c0, window, tol)
+        if tau < best and on_segment(x + tau * (vx + 0.5 * ax * tau), y + tau * (vy + 0.5 * ay * tau), k, prm):
+            best = tau
+            wall = k
+    for k in range(prm.n_tips):
+        dx = x - prm.tips[k, 0]
+        dy = y - prm.tips[k, 1]
+        rho = r + prm.tips[k, 2]
+        if math.sqrt(dx * dx + dy * dy) - rho > far or \
+                path_clear_of(prm.tips[k, 0], prm.tips[k, 1], rho, x, y, vx, vy, ax, ay, window):
+            continue
+        tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
+                          2.0 * (dx * vx + dy * vy), dx * dx + dy * dy - rho * rho, window, tol)
+        if tau < best:
+            best = tau
+            wall = prm.n_segs + k
+    return best, wall
+
+
+__all__ = ["path_clear_of", "wall_time", "path_wall_time", "has_walls", "walls_of", "on_segment", "on_seg", "ray_segment_hit", "ray_tip_hit", "ray_wall_hit",
+           "ray_walls_hit", "normal_at", "wall_normal_at",
            "touch_wall", "wall_gap", "without_push_into_walls", "reflect_off", "END_SLACK"]

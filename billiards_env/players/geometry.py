@@ -65,13 +65,21 @@ class Model(NamedTuple):
     k: float
     v_min: float  #: the speed below which a ball stops
     ball_e: float  #: ball-ball restitution
+    segs: np.ndarray  #: (S, 6) a jaw table's rails and jaw faces (:mod:`billiards_env.physics.walls`); (0, 6) if none
+    tips: np.ndarray  #: (C, 3) its jaw tips; (0, 3) if none
+
+
+#: Where a jaw table's walls start in a :class:`TableModel`'s ``params``: ``n_segs, n_tips``, then the segment rows
+#: and the tip rows, flattened.
+WALLS_AT = 8
 
 
 class TableModel(NamedTuple):
     """The table and the motion law as plain arrays, what the compiled functions take (:func:`table_model`):
     ``pocket_xy`` (K, 2), ``pocket_r`` (K,) and ``params`` = ``(length, width, cushion restitution, law, a, k,
-    min speed, ball restitution)`` (``law, a, k``: :attr:`billiards_env.physics.Physics.path_args`). Three arrays,
-    so that a call costs no more than passing three arrays."""
+    min speed, ball restitution)`` (``law, a, k``: :attr:`billiards_env.physics.Physics.path_args`), then a jaw
+    table's walls (``n_segs, n_tips`` and their rows; ``0, 0`` on a capture table). Three arrays, so that a call
+    costs no more than passing three arrays."""
 
     pocket_xy: np.ndarray
     pocket_r: np.ndarray
@@ -82,8 +90,10 @@ def table_model(table, physics) -> TableModel:
     """The :class:`TableModel` of a :class:`~billiards_env.physics.Table` and a
     :class:`~billiards_env.physics.Physics`."""
     law, a, k = physics.path_args
-    params = np.array([table.length, table.width, table.cushion_restitution, law, a, k, physics.min_speed,
-                       physics.ball_restitution], dtype=np.float64)
+    segs, tips = table.walls()
+    params = np.concatenate([np.array([table.length, table.width, table.cushion_restitution, law, a, k,
+                                       physics.min_speed, physics.ball_restitution, len(segs), len(tips)],
+                                      dtype=np.float64), segs.ravel(), tips.ravel()])
     # Copies: writeable arrays (the table's are read-only), so every caller hits the same compiled signature.
     return TableModel(np.array(table.pocket_xy, dtype=np.float64), np.array(table.pocket_radius, dtype=np.float64),
                       params)
@@ -104,8 +114,13 @@ def state_model(state: Any) -> TableModel:
 @njit(cache=True)
 def model(pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray) -> Model:
     """The :class:`Model` of a :class:`TableModel`'s arrays."""
+    n_segs = int(params[WALLS_AT]) if params.shape[0] > WALLS_AT else 0
+    n_tips = int(params[WALLS_AT + 1]) if params.shape[0] > WALLS_AT else 0
+    at = WALLS_AT + 2
+    segs = params[at:at + 6 * n_segs].reshape((n_segs, 6))
+    tips = params[at + 6 * n_segs:at + 6 * n_segs + 3 * n_tips].reshape((n_tips, 3))
     return Model(params[0], params[1], params[2], pocket_xy, pocket_r, int(params[3]), params[4], params[5],
-                 params[6], params[7])
+                 params[6], params[7], segs, tips)
 
 
 # --- windows ----------------------------------------------------------------------------------------------------
@@ -120,7 +135,7 @@ def windows_of(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Mod
     for t in range(targets.shape[0]):
         j = targets[t]
         pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width, samples,
-                       out[t])
+                       out[t], tm.segs, tm.tips)
     return out
 
 
@@ -139,7 +154,7 @@ def windows_cached(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm:
             out[t] = cache_win[j]
             continue
         pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
-                       WINDOW_SAMPLES, out[t])
+                       WINDOW_SAMPLES, out[t], tm.segs, tm.tips)
         cache_win[j] = out[t]
         cache_pos[j, 0] = pos[j, 0]
         cache_pos[j, 1] = pos[j, 1]
@@ -236,7 +251,7 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
             collide_into(scratch, v_imp * cdx, v_imp * cdy, 0.0, 0.0, -ux, -uy, mc, mo, e)
             r_try = lone_path_pocket(gx, gy, scratch[0, 0], scratch[0, 1], rc, tm.length, tm.width, tm.cushion_e,
                                      tm.pocket_xy, tm.pocket_r, tm.law, tm.decel, tm.k, tm.v_min,
-                                     SCRATCH_BOUNCES) >= 0
+                                     SCRATCH_BOUNCES, tm.segs, tm.tips) >= 0
         if not reachable or (risk and not r_try):
             speed = s_try
             v0 = v_need
@@ -539,11 +554,11 @@ def _ball_windows(j: int, pos: np.ndarray, radius: np.ndarray, tm: Model, base_p
     if pos[j, 0] == base_pos[j, 0] and pos[j, 1] == base_pos[j, 1]:
         if not base_have[j]:
             pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
-                           WINDOW_SAMPLES, base_win[j])
+                           WINDOW_SAMPLES, base_win[j], tm.segs, tm.tips)
             base_have[j] = True
         return base_win[j]
     pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width, WINDOW_SAMPLES,
-                   fresh)
+                   fresh, tm.segs, tm.tips)
     return fresh
 
 

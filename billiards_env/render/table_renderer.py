@@ -415,8 +415,12 @@ class TableRenderer:
         self._paint_pocket_liners(surface)
         self._paint_cloth(surface)
         self._paint_markings(surface)
-        self._paint_cushions(surface)
-        self._paint_pockets(surface)
+        if self.table.has_jaws:  # pocket circles behind the mouths, then the rails and jaws over their edges
+            self._paint_pockets(surface)
+            self._paint_jaw_cushions(surface)
+        else:
+            self._paint_cushions(surface)
+            self._paint_pockets(surface)
         self._paint_sights(surface)
         if self.tray_height_px:
             self._paint_tray(surface)
@@ -473,7 +477,7 @@ class TableRenderer:
     def _paint_cloth(self, surface: pygame.Surface) -> None:
         """The cushion band (black where no cushion covers it: pocket throats) and the lit cloth."""
         ppm, o = self.pixels_per_metre, self._origin
-        band = CUSHION_WIDTH * ppm
+        band = (self.table.specs.cushion_width if self.table.has_jaws else CUSHION_WIDTH) * ppm
         outer = pygame.Rect(int(round(o - band)), int(round(o - band)),
                             int(round((self.length * ppm) + 2 * band)), int(round((self.width * ppm) + 2 * band)))
         surface.fill(C.POCKET_LINER, outer)  # what no cushion covers is pocket opening
@@ -503,6 +507,36 @@ class TableRenderer:
             pygame.draw.aaline(surface, mix(C.CUSHION, (0, 0, 0), 0.45), nose[0].tolist(), nose[1].tolist())
             back = pts[2:]
             pygame.draw.aaline(surface, C.RAIL_DARK, back[0].tolist(), back[1].tolist())
+
+    def _paint_jaw_cushions(self, surface: pygame.Surface) -> None:
+        """A jaw table's cushions as the solver sees them: each rail with the jaw faces and rounded tips at its
+        ends (:meth:`jaw_cushion_polygons`)."""
+        for poly in self.jaw_cushion_polygons():
+            pts = self.to_pixels_float(poly).tolist()
+            pygame.draw.polygon(surface, C.CUSHION, pts)
+            pygame.draw.aalines(surface, mix(C.CUSHION, (0, 0, 0), 0.45), True, pts)
+
+    def jaw_cushion_polygons(self, arc_points: int = 8) -> list[np.ndarray]:
+        """One polygon (metres) per rail of a jaw table: from the deep end of the jaw face at its start, along the
+        face to its tip, round the tip to the rail, along the rail, and back the same way at its other end."""
+        segs, tips = self.table.walls()
+        rails, jaws = segs[:6], segs[6:]
+        polys = []
+        for ax, ay, bx, by, nx, ny in rails:
+            pts: list[np.ndarray] = []
+            for end, other in ((np.array([ax, ay]), np.array([bx, by])), (np.array([bx, by]), np.array([ax, ay]))):
+                k = int(np.argmin(np.hypot(tips[:, 0] - end[0], tips[:, 1] - end[1])))
+                centre, rad = tips[k, :2], tips[k, 2]
+                jaw = jaws[k]
+                arc_from = np.arctan2(*(jaw[2:4] - centre)[::-1])
+                arc_to = np.arctan2(*(end - centre)[::-1])
+                sweep = (arc_to - arc_from + np.pi) % (2 * np.pi) - np.pi  # the short way round
+                arc = [centre + rad * np.array([np.cos(arc_from + sweep * q), np.sin(arc_from + sweep * q)])
+                       for q in np.linspace(0.0, 1.0, arc_points)]
+                side = [jaw[0:2]] + arc
+                pts.extend(side if not pts else side[::-1])
+            polys.append(np.array(pts))
+        return polys
 
     def _cushion_quads(self) -> list[np.ndarray]:
         """Cushion pieces as (4,2) quads in metres: nose start, nose end, back end, back start."""

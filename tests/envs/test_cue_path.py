@@ -16,6 +16,10 @@ from billiards_env.envs.candidates import candidate_slots
 from billiards_env.physics.batch import run_shots
 
 
+#: A capture table's (no) jaw walls: segments and tips.
+NO_WALLS = (np.zeros((0, 6)), np.zeros((0, 3)))
+
+
 def _env(**kw):
     return gym.make("BilliardsOneBall-v0", action_type="candidates_aim", observation_type="candidates_path",
                     candidate_slots=7, candidate_speed_factor=3.0, **kw)
@@ -28,13 +32,13 @@ def test_a_ball_rolled_at_a_pocket_needs_the_speed_of_its_distance():
     pocket_r = np.array([0.06])
     a = 0.098  # rolling deceleration
     p, s, bounces = path_pocket_speed(0.5, 0.5, u, u, 5.0, 0.028575, 2.54, 1.27, 0.85, pocket_xy, pocket_r, 0, a,
-                                      0.0, 0.0, 40)
+                                      0.0, 0.0, 40, *NO_WALLS)
     d = math.hypot(0.5, 0.5) - 0.06
     assert p == 0 and bounces == 0
     assert s == pytest.approx(math.sqrt(2 * a * d + (1.05e-6) ** 2), rel=1e-6)
     # too slow to get there: it stops first
     assert path_pocket_speed(0.5, 0.5, u, u, 0.9 * s, 0.028575, 2.54, 1.27, 0.85, pocket_xy, pocket_r, 0, a, 0.0,
-                             0.0, 40)[0] == -1
+                             0.0, 40, *NO_WALLS)[0] == -1
 
 
 def test_after_a_cushion_the_speed_needed_counts_the_bounce():
@@ -42,7 +46,7 @@ def test_after_a_cushion_the_speed_needed_counts_the_bounce():
     e, a, r = 0.85, 0.098, 0.028575
     pocket_xy = np.array([[0.5, 0.3]])
     p, s, bounces = path_pocket_speed(1.0, 0.3, 1.0, 0.0, 10.0, r, 2.54, 1.27, e, pocket_xy, np.array([0.05]), 0, a,
-                                      0.0, 0.0, 40)
+                                      0.0, 0.0, 40, *NO_WALLS)
     to_wall = 2.54 - r - 1.0
     back = 2.54 - r - 0.5 - 0.05
     arrive = math.sqrt((1.05e-6) ** 2 + 2 * a * back)

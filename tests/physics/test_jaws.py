@@ -218,3 +218,27 @@ def test_scene_tables_with_jaws_and_capture_circles():
         parse_table({"pockets": "jaws"})
     with pytest.raises(SceneError, match="unknown pocket model 'jaw'"):
         parse_table({"preset": "wpa", "pockets": "jaw"})
+
+
+def test_a_steep_side_pot_the_capture_circle_offers_is_no_window_through_the_jaws():
+    from billiards_env.physics.aim import pocket_window
+
+    jaws = jaw_table(WPA_9FT)
+    capture = parse_table({"preset": "wpa", "pockets": "capture"})
+    obj = (WPA_9FT.l / 2 - 0.45, 0.08)  # low along the rail: the middle pocket seen nearly edge-on
+    assert pocket_window(obj, R, capture, 1) is not None
+    assert pocket_window(obj, R, jaws, 1) is None
+
+
+@pytest.mark.parametrize("obj,pocket", [((0.6, 0.4), 0), ((1.1, 0.5), 1), ((2.2, 1.0), 5), ((0.9, 0.15), 1)])
+def test_every_direction_of_a_jaw_window_drops_the_ball_in_the_engine(obj, pocket):
+    from billiards_env.physics.aim import pocket_window
+
+    table = jaw_table(WPA_9FT)
+    win = pocket_window(obj, R, table, pocket)
+    assert win is not None
+    centre, half, _ = win
+    sim = Simulator(table, rolling())
+    for a in np.linspace(centre - 0.9 * half, centre + 0.9 * half, 7):
+        res = sim.run(balls([list(obj)]).strike("cue", float(a), 2.0))
+        assert res.pocket[0] == pocket
