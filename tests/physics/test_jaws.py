@@ -242,3 +242,15 @@ def test_every_direction_of_a_jaw_window_drops_the_ball_in_the_engine(obj, pocke
     for a in np.linspace(centre - 0.9 * half, centre + 0.9 * half, 7):
         res = sim.run(balls([list(obj)]).strike("cue", float(a), 2.0))
         assert res.pocket[0] == pocket
+
+
+def test_the_batch_api_plays_a_jaw_table_as_the_simulator_does():
+    from billiards_env.physics.batch import run_shots
+
+    sim = Simulator(parse_table({"preset": "wpa"}), rolling())
+    b = balls([[0.5, 0.5], [0.3, 0.3]])
+    angles = np.linspace(-3.0, 3.0, 48)
+    res = run_shots(sim, b, angles, np.full(len(angles), 2.0))
+    single = np.array([sim.run(b.strike(0, float(a), 2.0)).balls.pos for a in angles])
+    assert res.pocketed.any()
+    assert np.array_equal(single, res.pos)
