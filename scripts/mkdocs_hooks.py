@@ -1,0 +1,12 @@
+"""MkDocs hook: the docstrings' reST roles (:class:`X`, :func:`~a.b.f`...) shown as plain code in the API pages.
+
+The package's docstrings are written for ``help()`` and Sphinx-style readers; mkdocstrings renders them as
+Markdown, where a role would show as ``:class:`` before the name. This drops the role (and a leading ``~``).
+"""
+import re
+
+_ROLE = re.compile(r":(?:py:)?(?:class|mod|func|meth|data|attr|exc|obj|const):<code>~?")
+
+
+def on_page_content(html, page, config, files):
+    return _ROLE.sub("<code>", html)
