@@ -109,7 +109,8 @@ def test_no_issue_numbers_where_users_read():
 
 
 #: Results pages: the figures they hold name the date and the commit they were measured at.
-RESULTS = ["docs/benchmarks.md", "docs/training.md", "docs/games.md",
+RESULTS = ["docs/benchmarks.md", "docs/training.md", "docs/games.md", "docs/rllib.md", "docs/stability.md",
+           "docs/physics-engine.md",
            *sorted(f"docs/{p}" for p in NAV if p.startswith("bench/"))]
 
 
