@@ -241,7 +241,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         for st in dist["stages"]:
             if "success_rate" in st:
                 print(f"  {st['stage']:<16} {100 * st['success_rate']:5.1f}% on {st['episodes']} tables")
-    print("targets (issue 22, one ball):")
+    print("targets (one ball):")
     lines = target_lines(rep, total, cpu)
     for line in lines:
         print(line)

@@ -617,7 +617,7 @@ def render_markdown(doc: dict[str, Any]) -> str:
     lines = ["# Games at engine speed", "",
              f"Measured by `python -m benchmarks --only games{' --quick' if doc['quick'] else ''}` on {m['time']} "
              "(all figures from this one run).", "", machine_markdown(m, doc.get("end_load")), "",
-             "## Targets (issue 21)", "", "| | measured | target | |", "|---|---|---|---|"]
+             "## Targets", "", "| | measured | target | |", "|---|---|---|---|"]
     for r in targets(doc):
         lines.append(f"| {r['name']} | {r['value']} | {r['target']} | {'pass' if r['ok'] else '**miss**'} |")
     lines += ["", "## Single env", "",
@@ -675,8 +675,9 @@ def render_markdown(doc: dict[str, Any]) -> str:
                          f"{fmt_rate(b['bound_steps_per_cpu_s'] * cores)} |")
     lines += ["", "## The 9-ball training job's envs", "",
               "Each config's `n_envs` single envs stepped in turn (as SB3's DummyVecEnv steps them), seeded random "
-              "actions. Before: the Python of before issue 21 swapped in (`benchmarks/reference_players.py`: the candidate "
-              "slot lists, the next shot's ease, the geometric opponent, observed for at every shot); after: the "
+              "actions. Before: the Python of before the games were compiled swapped in "
+              "(`benchmarks/reference_players.py`: the candidate slot lists, the next shot's ease, the geometric "
+              "opponent, observed for at every shot); after: the "
               "envs as they are. Interleaved rounds in this one run.", "",
               "The native vector env of the same `n_envs` tables (`gymnasium.make_vec`, one thread) is what "
               "`agents.train` steps through `agents.vec.BilliardsVecEnv` where it applies (no env wrapper).", "",

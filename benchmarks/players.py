@@ -212,7 +212,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
              f"{m['time']} (all figures from this one run).", "", machine_markdown(m, doc.get("end_load")), "",
              "Tables: every decision of seeded games with the built-in geometric opponent (the agent plays the "
              "geometric player's shot, or a seeded random action one time in four); breaks and ball in hand "
-             "included. Today's Python: `benchmarks/reference_players.py` (the players before issue 21).", "",
+             "included. Today's Python: `benchmarks/reference_players.py` (the players before their geometry was "
+             "compiled).", "",
              "## Targets", "", "| | measured | target | |", "|---|---|---|---|"]
     for r in targets(doc):
         lines.append(f"| {r['name']} | {r['value']} | {r['target']} | {'pass' if r['ok'] else '**miss**'} |")

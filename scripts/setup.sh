@@ -3,6 +3,8 @@
 # nothing changed. Torch goes first, pinned to the CPU build (a loose requirement would pull a CUDA build).
 # `--rllib`: the same plus the rllib extra (Ray RLlib) in .venv-rllib. Ray pins its own Gymnasium (1.2.2 for
 # ray 2.60), so it gets a venv of its own: .venv keeps the newest Gymnasium and no Ray.
+# `--docs`: only the docs extra (MkDocs, Material, mkdocstrings) in .venv-docs, for `mkdocs build` (the site reads
+# the package's source without importing it: no numba, no torch, no kernels to compile).
 # It says what it is doing at each step (a first set-up takes a few minutes, ~90 s of it compiling kernels).
 # TORCH_INDEX_URL: where torch comes from (e.g. PyTorch's CPU wheel index, see the README), if the default index
 # would give a CUDA build (PyPI on Linux does).
@@ -16,6 +18,25 @@ if [ "${1:-}" = "--rllib" ]; then
   EXTRAS=agents,rllib,dev
 fi
 say() { echo "setup: $*"; }
+if [ "${1:-}" = "--docs" ]; then
+  VENV=.venv-docs
+  if [ ! -x "$VENV/bin/python" ]; then
+    say "creating $VENV"
+    "$PY" -m venv "$VENV"
+  fi
+  stamp=$VENV/.setup-stamp
+  want=$(cat pyproject.toml scripts/setup.sh | sha256sum | cut -c1-16)
+  if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
+    say "installing the docs extra into $VENV (MkDocs, Material, mkdocstrings: ~40 s, 170 MB)"
+    "$VENV/bin/python" -m pip install -q --upgrade pip
+    mapfile -t reqs < <(sed -n '/^docs = \[/,/^\]/p' pyproject.toml | grep -o '"[^"]*"' | tr -d '"')  # the docs extra
+    "$VENV/bin/python" -m pip install -q "${reqs[@]}"
+    echo "$want" > "$stamp"
+  else
+    say "$VENV is up to date"
+  fi
+  exit 0
+fi
 if [ ! -x "$VENV/bin/python" ]; then
   say "creating $VENV"
   "$PY" -m venv "$VENV"

@@ -37,7 +37,7 @@ def test_every_figure_and_target_is_there(doc):
     names = [r["name"] for r in games.targets(doc)]
     assert len(names) == 6 + 2 + 1 + 2
     md = games.render_markdown(doc)
-    assert "## Targets (issue 21)" in md and "training job" in md and "physics bound" in md
+    assert "## Targets" in md and "training job" in md and "physics bound" in md
 
 
 def test_before_is_the_same_behaviour():

@@ -65,6 +65,9 @@ RULES: list[Rule] = [
              "--no-progress", slow=True, timeout=600),
     Rule(r"bash scripts/setup\.sh", "the set-up: idempotent where the venv is made (CI); quick then",
          slow=True, timeout=900, cwd="root"),
+    Rule(r"\.venv-docs/bin/mkdocs build", "the docs site (scripts/test.sh builds it too): strictly, into a temporary "
+         "folder, in .venv-docs", add='--site-dir "$(mktemp -d)"', venv=".venv-docs", slow=True, timeout=300,
+         cwd="root"),
     Rule(r"pip install", "install commands: every package they name is installed (or is an extra of "
                          "pyproject.toml), not reinstalled", kind="pip"),
     Rule(r"python -m agents\.train --resume", "resume with a total budget above what the tiny run spent (a total "

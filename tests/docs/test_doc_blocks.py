@@ -26,7 +26,7 @@ from doc_blocks import LANGS, Block, commands, read_blocks
 
 ROOT = Path(__file__).resolve().parents[2]
 #: The Markdown files whose blocks run.
-DOCS = ["README.md", "agents/README.md", *sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "docs").glob("*.md")),
+DOCS = ["README.md", "agents/README.md", *sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "docs").rglob("*.md")),
         "configs/envs/README.md"]
 #: Copied into each sandbox (their code writes next to itself: run folders, reports); the rest is linked.
 COPIED = ("agents", "benchmarks", "docs")
