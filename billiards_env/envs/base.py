@@ -43,7 +43,7 @@ from ._pot_fast import pot_fast_step
 from ._seeding import np_random
 from .actions import AbsoluteAim, ActionType, action_factory
 from .config import ConfigError, EnvConfig, load_config
-from .info import OPPONENT_TURNS, blank_info, info_schema, shot_info
+from .info import OPPONENT_TURNS, blank_info, info_schema, info_words, shot_info
 from .observations import observation_factory
 from .games import task_factory
 from .tasks import Driver
@@ -235,6 +235,12 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             self._animate_step([(played.trajectory, view)] + self._animations)
         self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
         return self.observation_type.observe(self.state), reward, terminated, truncated, info
+
+    def info_words(self, info: dict[str, Any], ids: Sequence[str] | None = None) -> dict[str, Any]:
+        """``info`` in words (:func:`~billiards_env.envs.info.info_words`): the balls as ids, the codes as names.
+        ``ids``: the rows' ids, by default the rows' now (three-cushion orders its rows shooter first, so a shot's
+        rows are those of its shooter: give the ids as that shot saw them)."""
+        return info_words(info, self.info_schema, tuple(self.ball_ids if ids is None else ids))
 
     def _play(self, shot: CueShot, by: str = "agent") -> PlayedShot:
         """Play ``shot`` through the shot path with the env's noise (``np_random``) and recording; ``by``:

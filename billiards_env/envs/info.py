@@ -71,9 +71,10 @@ def info_schema(config: "EnvConfig") -> dict[str, InfoSpec]:
     """Every key of the info of an env made with ``config``, in order, with its form: the same at reset and at
     every step (``opponent_turns`` aside, with ``opponent_infos=True``)."""
     n = config.n_object_balls + 1
-    out = {"is_success": flag("the pot task: the table cleared without a scratch on the last shot; a game: the agent "
-                              "won")}
-    if config.task in GAMES:
+    game = config.task in GAMES
+    out = {"is_success": flag("the agent won the game" if game else
+                              "the table cleared without a scratch on the last shot")}
+    if game:
         out.update(game_keys(config.task, n))
     out.update(shot_keys(n))
     return out
@@ -104,7 +105,36 @@ def shot_info(pocketed: np.ndarray, scratch: bool, first_contact: int, n_events:
     }
 
 
+#: Keys whose value is a ball row (-1 none).
+ROW_KEYS = ("first_contact",)
+
+
+def info_words(info: dict[str, Any], schema: dict[str, InfoSpec], ids: tuple[str, ...]) -> dict[str, Any]:
+    """``info`` in words, for people and logs: masks over the rows as tuples of the ball ids (``ids``, the rows'),
+    rows as an id (None for -1), codes as their names (None for -1), other arrays as tuples; the entries of
+    ``opponent_turns`` alike. The reverse of the schema's forms, losing nothing."""
+    out: dict[str, Any] = {}
+    for key, value in info.items():
+        spec = schema.get(key)
+        if key == OPPONENT_TURNS:
+            out[key] = [info_words(t, schema, ids) for t in value]
+        elif spec is None:
+            out[key] = value
+        elif spec.names:
+            out[key] = spec.names[value] if value >= 0 else None
+        elif key in ROW_KEYS:
+            out[key] = ids[value] if value >= 0 else None
+        elif spec.shape == (len(ids),) and spec.dtype is np.bool_:
+            out[key] = tuple(ids[i] for i in np.flatnonzero(value))
+        elif spec.shape:
+            out[key] = tuple(np.asarray(value).tolist())
+        else:
+            out[key] = value
+    return out
+
+
 #: The keys :func:`shot_info` writes, in order.
 SHOT_INFO_KEYS = tuple(shot_keys(1))
 
-__all__ = ["info_schema", "shot_keys", "game_keys", "blank_info", "shot_info", "SHOT_INFO_KEYS", "OPPONENT_TURNS"]
+__all__ = ["info_schema", "shot_keys", "game_keys", "blank_info", "shot_info", "info_words", "SHOT_INFO_KEYS",
+           "OPPONENT_TURNS", "ROW_KEYS"]
