@@ -8,7 +8,7 @@ states and runs them for :class:`~billiards_env.envs.vector.BilliardsVectorEnv`,
 generators and the autoreset. The infos are built as arrays, one per key for all the tables
 (:meth:`GameTables.columns` from the kernels' shot records and the game states; the opponent's turns, one dict per
 shot, for all the tables at once), and stacked by :func:`stack_columns` as Gymnasium's ``VectorEnv._add_info``
-stacks the single envs' dicts in sub-env order (dtypes from each key's first value, masks, key order), so the vector
+stacks the single envs' dicts in sub-env order (the schema's dtypes and shapes, masks, key order), so the vector
 info is the one ``SyncVectorEnv`` makes; the per-table dicts (:class:`InfoColumns.dicts`) are made only when asked
 for (``BilliardsVectorEnv.sub_infos``).
 """

@@ -93,6 +93,8 @@ class BilliardsVectorEnv(VectorEnv):
         c = t.config
         self.metadata = {**type(self).metadata, "render_fps": c.render_fps, "autoreset_mode": self.autoreset_mode}
         self.single_observation_space = t.observation_space
+        #: The info's keys and forms (every sub-env's: :func:`~.info.info_schema`, ``docs/infos.md``).
+        self.info_schema = t.info_schema
         self.single_action_space = t.action_space
         self.observation_space = batch_space(t.observation_space, self.num_envs)
         self.action_space = batch_space(t.action_space, self.num_envs)
@@ -157,8 +159,6 @@ class BilliardsVectorEnv(VectorEnv):
         # Shots and scoring.
         self._spin_model = t._spin
         self._positions_obs = bool(self._icfg[I_POSITIONS_OBS])
-        #: The info's keys and forms (the single env's, :func:`~.info.info_schema`).
-        self.info_schema = t.info_schema
         self._bits = np.arange(nb, dtype=np.int64)  # a pocketed bit mask -> its row mask
         # Per-sub-env random generators (as each single env's np_random), and the compiled code's view of them.
         self._rngs: list[np.random.Generator | None] = [None] * n
@@ -515,8 +515,7 @@ class BilliardsVectorEnv(VectorEnv):
     def sub_infos(self) -> list[dict[str, Any]] | None:
         """The native games' info of the last reset or step as one dict per sub-env, as the single env returns it
         (for a sub-env that ended in a same-step autoreset: its last step's; ``{}`` for one not reset), before
-        Gymnasium's stacking makes one array per key (whose dtype is the first value's: ``ball_in_hand``'s ``False``
-        and ``"anywhere"`` become bools there). None on the pot task or before the first reset. Made when asked
+        Gymnasium's stacking makes one array per key. None on the pot task or before the first reset. Made when asked
         for, once per step. SB3's adapter reads it."""
         if self.games is None or self._sub_rows is None:
             return None

@@ -200,3 +200,28 @@ def test_pot_and_game_schemas_share_the_shot_keys():
     game = info_schema(load_config(ENV_CLASSES["Billiards9Ball-v0"].scene))
     shot = [k for k in pot if k != "is_success"]
     assert list(game)[-len(shot):] == shot and list(game)[0] == list(pot)[0] == "is_success"
+
+
+@pytest.mark.parametrize("env_id", IDS)
+def test_an_episodes_infos_stack_and_go_to_hdf5(env_id, tmp_path):
+    """What Minari's DataCollector(record_infos=True) does with the infos: each step's info checked against the
+    reset's (its own check where Minari is installed: same keys, Python types, array shapes and dtypes), each key
+    stacked over the episode into one array of the schema's dtype, written to HDF5 and read back equal."""
+    h5py = pytest.importorskip("h5py")
+    env = gym.make(env_id)
+    infos = rollout_infos(env, seeds=(0,), steps=6)
+    try:
+        from minari.data_collector.data_collector import _check_infos_same_shape
+    except ImportError:  # (Minari absent or moved: the keys, types and forms are checked above)
+        _check_infos_same_shape = None
+    if _check_infos_same_shape is not None:
+        assert all(_check_infos_same_shape(infos[0], info) for info in infos[1:])
+    schema = env.unwrapped.info_schema
+    with h5py.File(tmp_path / "infos.h5", "w") as f:
+        for key, spec in schema.items():
+            stacked = np.stack([info[key] for info in infos])
+            assert stacked.dtype == spec.dtype and stacked.shape == (len(infos), *spec.shape)
+            f.create_dataset(key, data=stacked)
+    with h5py.File(tmp_path / "infos.h5", "r") as f:
+        for key in schema:
+            assert np.array_equal(f[key][()], np.stack([info[key] for info in infos]))
