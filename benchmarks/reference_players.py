@@ -22,8 +22,11 @@ from billiards_env.physics.batch import BatchResult, run_shots
 from billiards_env.rules import ShotInfo, summarize_arrays
 from billiards_env.physics.aim import (WINDOW_SAMPLES, aim_angle, dot2, angular_radius, deflected_cue_velocity,
                                        direction_vector, ghost_ball_position, object_ball_speed, path_enters_pocket,
-                                       ray_circle_entries, ray_circle_entry, ray_cushion_distances)
+                                       ray_circle_entries, ray_circle_entry, ray_cushion_distances,
+                                       cushion_ahead)
 from billiards_env.physics.layout import head_spot
+from billiards_env.physics.pocket_specs import N_RAILS
+from billiards_env.physics.walls import on_rail_span
 from billiards_env.physics.motion import launch_speed, speed_after_distance, stop_distance
 from billiards_env.players.context import ShotContext, shot_context
 
@@ -85,7 +88,12 @@ def pocket_window(obj: Vec2, radius: float, table: Table, pocket: int,
     angles = theta_c + np.linspace(-half, half, samples)
     ux, uy = np.cos(angles), np.sin(angles)
     t_in = ray_circle_entries(obj[0], obj[1], ux, uy, c[0], c[1], pr)
-    t_wall = ray_cushion_distances(obj[0], obj[1], ux, uy, table.length, table.width, radius)
+    segs, tips = table.walls()
+    if len(segs) or len(tips):  # a jaw table: the first rail, jaw face or tip along each direction
+        t_wall = np.array([cushion_ahead(float(obj[0]), float(obj[1]), float(x), float(y), table.length, table.width,
+                                         radius, segs, tips)[0] for x, y in zip(ux, uy)])
+    else:
+        t_wall = ray_cushion_distances(obj[0], obj[1], ux, uy, table.length, table.width, radius)
     ok = np.isfinite(t_in) & (t_in <= t_wall + 1e-9)
     if not ok.any():
         return None
@@ -891,6 +899,9 @@ def reference_kick_candidates(state: Any, targets: tuple[int, ...], rng: tuple[f
         for _, p in kick_points(cue, b.pos[j], t, rc, t.cushion_restitution):
             if np.any(np.hypot(*(t.pocket_xy - p).T) < t.pocket_radius + 2.0 * rc):
                 continue  # the bounce would pass a pocket's mouth
+            segs, _ = t.walls()
+            if len(segs) and not on_rail_span(float(p[0]), float(p[1]), rc, segs, N_RAILS, 2.0 * rc):
+                continue  # on a jaw table: the bounce point must be on a rail, clear of its ends
             if segment_blocked(cue, p, opos, orad) or segment_blocked(p, b.pos[j], opos, orad):
                 continue
             d = float(np.hypot(*(p - cue))) + float(np.hypot(*(b.pos[j] - p)))

@@ -20,6 +20,8 @@ from __future__ import annotations
 
 import math
 
+from numba import njit
+
 from .kernel_logs import internal
 from .roots import first_entry, quadratic_roots_in
 
@@ -292,6 +294,25 @@ def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
     return best, wall
 
 
-__all__ = ["path_clear_of", "wall_time", "path_wall_time", "has_walls", "walls_of", "on_segment", "on_seg", "ray_segment_hit", "ray_tip_hit", "ray_wall_hit",
+@njit(cache=True)
+def on_rail_span(x, y, r, segs, n_rails, margin):
+    """Whether a ball of radius ``r`` centred at ``(x, y)`` touching a cushion line bounces off a rail (one of the
+    first ``n_rails`` segments) at least ``margin`` from the rail's ends, not in a pocket's mouth: where a one-rail
+    kick on a jaw table may meet the cushion."""
+    for k in range(n_rails):
+        nx = segs[k, 4]
+        ny = segs[k, 5]
+        if abs((x - segs[k, 0]) * nx + (y - segs[k, 1]) * ny - r) > 1e-9:
+            continue
+        dx = segs[k, 2] - segs[k, 0]
+        dy = segs[k, 3] - segs[k, 1]
+        length = math.hypot(dx, dy)
+        s = ((x - segs[k, 0]) * dx + (y - segs[k, 1]) * dy) / length
+        if margin <= s <= length - margin:
+            return True
+    return False
+
+
+__all__ = ["on_rail_span", "path_clear_of", "wall_time", "path_wall_time", "has_walls", "walls_of", "on_segment", "on_seg", "ray_segment_hit", "ray_tip_hit", "ray_wall_hit",
            "ray_walls_hit", "normal_at", "wall_normal_at",
            "touch_wall", "wall_gap", "without_push_into_walls", "reflect_off", "END_SLACK"]

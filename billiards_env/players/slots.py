@@ -17,6 +17,8 @@ from numba import njit
 
 from billiards_env.physics.aim import segment_blocked_by
 from billiards_env.physics.motion import launch_speed
+from billiards_env.physics.pocket_specs import N_RAILS
+from billiards_env.physics.walls import on_rail_span
 
 from .geometry import (ARRIVE_SPEED, COL_CUT, COL_SCORE, FALLBACK_CUT, MAX_CUT, N_COLS, SPEED_FACTORS, WIN_ANGLE,
                        WIN_DIST, WIN_FOUND, WIN_HALF, ghost_shots_from, model, pot_chance, windows_of)
@@ -132,7 +134,9 @@ def kick_candidates(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, targets
                 py = w
                 if not (rc < px < tm.length - rc):
                     continue
-            near_pocket = False
+            # Near a pocket: within two ball radii of its capture circle, or on a jaw table off the rails' spans
+            # (in a mouth, or nearer than two ball radii to where a rail ends).
+            near_pocket = tm.segs.shape[0] > 0 and not on_rail_span(px, py, rc, tm.segs, N_RAILS, 2.0 * rc)
             for q in range(tm.pocket_r.shape[0]):
                 if math.hypot(tm.pocket_xy[q, 0] - px, tm.pocket_xy[q, 1] - py) < tm.pocket_r[q] + 2.0 * rc:
                     near_pocket = True
