@@ -663,12 +663,13 @@ def demo_events(app: PlayApp, power: float = 0.5, max_shots: int = 4) -> Iterato
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from billiards_env.registration import ENV_IDS
+    from billiards_env.registration import ENV_IDS, env_id_arg
 
     p = argparse.ArgumentParser(prog="billiards-play", description=__doc__.split("\n\n")[0].split(": ", 1)[1],
                                 epilog=__doc__.split("\n\n", 1)[1],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--env", default="BilliardsOneBall-v0", choices=list(ENV_IDS), help="scene or game to play")
+    p.add_argument("--env", default="BilliardsOneBall-v0", type=env_id_arg, choices=list(ENV_IDS),
+                   help="scene or game to play")
     p.add_argument("--opponent", default=None, choices=list(OPPONENTS),
                    help="games: the opponent, a baseline player or 'human' (two people take turns); default: the "
                         "env's (geometric)")
