@@ -281,10 +281,13 @@ def read_yaml(path: str | os.PathLike[str]) -> dict[str, Any]:
 
     p = Path(path)
     try:
-        text = p.read_text()
+        text = p.read_text(encoding="utf-8")
     except OSError as exc:
         raise ConfigError(f"config {str(path)!r}: cannot read the file ({exc.strerror}); give the path of a YAML "
                           f"file such as {scene_path('one_ball')}") from None
+    except UnicodeDecodeError as exc:
+        raise ConfigError(f"config {str(path)!r}: not UTF-8 text (byte {exc.start} is {exc.object[exc.start]:#04x}); "
+                          "save the file as UTF-8 YAML (e.g. `iconv -f latin1 -t utf-8`)") from None
     try:
         data = yaml.safe_load(text)
     except yaml.YAMLError as exc:
