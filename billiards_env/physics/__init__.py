@@ -7,7 +7,7 @@ pockets and cushions, ghost ball, cut angle, pocket windows, clear paths, the cu
 solver, the players and the renderer share.
 """
 from . import aim
-from .balls import BALL_MASS, BALL_RADIUS, OVERLAP_TOLERANCE, Balls, validate_balls
+from .balls import BALL_MASS, BALL_RADIUS, MAX_BALL_SPEED, OVERLAP_TOLERANCE, Balls, validate_balls
 from .errors import SceneError
 from .model import G, Physics
 from .result import EventLog, ShotResult
@@ -16,7 +16,8 @@ from .table import Table, default_pockets
 from .trajectory import Trajectory
 
 __all__ = [
-    "aim", "BALL_MASS", "BALL_RADIUS", "OVERLAP_TOLERANCE", "Balls", "validate_balls", "SceneError", "G", "Physics",
+    "aim", "BALL_MASS", "BALL_RADIUS", "MAX_BALL_SPEED", "OVERLAP_TOLERANCE", "Balls", "validate_balls", "SceneError",
+    "G", "Physics",
     "EventLog", "ShotResult", "SOLVERS", "Simulator", "kinetic_energy", "momentum", "simulate", "Table",
     "default_pockets", "Trajectory",
 ]
