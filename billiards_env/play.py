@@ -57,6 +57,8 @@ BREAKERS = ("alternate", "you", "opponent", "random")
 #: The turn log under the panel of a game: lines shown and their height (px).
 LOG_LINES = 6
 LOG_LINE = 18
+#: Log lines one notch of the mouse wheel scrolls.
+WHEEL_LINES = 2
 
 class PlayApp:
     """The interactive game: an env in ``render_mode="human"`` drawing into this app's pygame window, its
@@ -244,13 +246,17 @@ class PlayApp:
 
     @staticmethod
     def _opponent_turns(info: dict[str, Any], calls: list[Any]) -> list[dict[str, Any]]:
-        """The opponent's shots of a step or reset: ``info["opponent_turns"]`` if the env gives it, else the calls
-        recorded after the first ``skip`` ones (the human's own shot)."""
-        turns = info.get("opponent_turns")
-        if turns is not None:
-            return [dict(t) for t in turns]
+        """The opponent's shots of a step or reset: the referee's calls recorded for them (the last
+        ``info["opponent_shots"]`` calls: their game over and winner included), else ``info["opponent_turns"]``
+        with the game's end taken from ``info["winner"]``."""
         n = int(info.get("opponent_shots", 0) or 0)
-        return [call_turn(c) for c in calls[len(calls) - n:]] if n else []
+        if n and len(calls) >= n:
+            return [call_turn(c) for c in calls[len(calls) - n:]]
+        turns = [dict(t) for t in info.get("opponent_turns") or ()]
+        winner = info.get("winner", -1)
+        if turns and winner in (0, 1):  # the game ended on the opponent's last shot
+            turns[-1].update(game_over=True, winner=winner)
+        return turns
 
     def _new_turn(self) -> None:
         """Before a shot: pick up the cue ball if in hand, forget the called pocket, aim at the target."""
@@ -309,16 +315,20 @@ class PlayApp:
         finally:
             self.skipping = False
         self.last_info = info
+        own_line = ""
         if self.is_game:
+            from billiards_env.render.turn_log import turn_line
+
             own = call_turn(self._calls[0]) if self._calls else _info_turn(info, shooter)
             self.log.add([own] + self._opponent_turns(info, self._calls), self._names())
+            own_line = turn_line(own, self._names())[0].split(": ", 1)[-1]
         self.shots += 1
         self.total += float(reward)
         self.opponent_shots += int(info.get("opponent_shots", 0))
         if terminated or truncated:
             self.done = True
             self.success = bool(info["is_success"])
-        self.status = self._game_status(info) if self.is_game else self._scene_status(info, float(reward))
+        self.status = self._game_status(info, own_line) if self.is_game else self._scene_status(info, float(reward))
         self._new_turn()
         return info
 
@@ -330,10 +340,12 @@ class PlayApp:
             out += (" - table cleared!" if self.success else " - episode over") + " (R or click: new)"
         return out
 
-    def _game_status(self, info: dict[str, Any]) -> str:
+    def _game_status(self, info: dict[str, Any], own: str = "") -> str:
+        """The status after a shot: its speed and what it did (``own``: its turn-log words, e.g. "no point (2
+        cushions) - turn over"), the opponent's reply, who is to shoot or who won."""
         hud = self.core.task.hud()
         names = hud["players"]
-        out = f"shot {self.shots}: {info['speed']:.2f} m/s"
+        out = f"shot {self.shots}: {info['speed']:.2f} m/s" + (f", {own}" if own else "")
         if self.opponent_shots and info.get("opponent_shots"):
             n = info["opponent_shots"]
             out += f"; {names[1]} played {n} shot{'s' if n > 1 else ''}"
@@ -358,7 +370,11 @@ class PlayApp:
             self.running = False
         elif e.type == pg.KEYDOWN:
             self._key(e)
+        elif e.type == pg.MOUSEWHEEL:
+            self.log.scroll(WHEEL_LINES * int(e.y))  # wheel up: older lines
         elif e.type == pg.MOUSEBUTTONDOWN:
+            if e.button in (4, 5):  # the wheel as buttons (older SDL): MOUSEWHEEL scrolls
+                return
             if self.done:
                 self.reset()
             elif e.button == 1:
@@ -427,7 +443,11 @@ class PlayApp:
 
     def _key(self, e: Any) -> None:
         pg = self.pg
-        if e.key == pg.K_ESCAPE and self.dragging:
+        scroll = {pg.K_PAGEUP: self.log.page(), pg.K_PAGEDOWN: -self.log.page(), pg.K_HOME: len(self.log.lines),
+                  pg.K_END: -len(self.log.lines)}
+        if e.key in scroll:
+            self.log.scroll(scroll[e.key])
+        elif e.key == pg.K_ESCAPE and self.dragging:
             self.dragging, self.power = False, 0.0
         elif e.key in (pg.K_ESCAPE, pg.K_q):
             self.running = False
@@ -587,18 +607,28 @@ def SKIP_KEYS(pg: Any) -> tuple[int, ...]:  # noqa: N802 - a constant that needs
 
 
 def call_turn(verdict: Any) -> dict[str, Any]:
-    """A session's :class:`~billiards_env.games.session.Verdict` (or a pool :class:`~billiards_env.rules.Call`) as a
-    turn-log entry (the keys of the env's ``info["opponent_turns"]``, plus ``turn_over``, ``game_over``, ``winner``
-    and ``push_out``); the balls kept down where the game pockets balls."""
+    """A session's :class:`~billiards_env.games.session.Verdict` (or a ruleset's call) as a turn-log entry: the keys
+    of the env's ``info["opponent_turns"]`` (with the game's own: snooker's ``points``, ``foul_points``;
+    three-cushion's ``point``, ``cushions``), plus ``turn_over``, ``game_over``, ``winner`` and ``push_out``. The
+    balls potted: pool's kept down (not re-spotted), snooker's every ball that dropped (its points count)."""
     call = getattr(verdict, "call", verdict)
+    game: dict[str, Any] = {}
+    if hasattr(call, "reds_potted"):  # snooker
+        pocketed: tuple[Any, ...] = ("red",) * int(call.reds_potted) + tuple(call.colours_potted)
+        game = {"points": int(call.points), "foul_points": int(call.foul_points)}
+    elif hasattr(call, "cushions"):  # three-cushion
+        pocketed = ()
+        game = {"point": bool(call.point), "cushions": int(call.cushions)}
+    else:
+        respot = getattr(call, "respot", ())
+        pocketed = tuple(n for n in getattr(call, "pocketed", ()) if n not in respot)
     over = getattr(verdict, "game_over", getattr(call, "game_over", False))
-    respot = getattr(call, "respot", ())
     return {
-        "pocketed": tuple(n for n in getattr(call, "pocketed", ()) if n not in respot),
+        "pocketed": pocketed,
         "foul": bool(call.foul), "foul_reason": call.reason if call.foul else None, "call": call.reason,
         "scratch": bool(getattr(call, "cue_pocketed", False)), "shooter": int(call.shooter),
-        "turn_over": bool(call.turn_over), "game_over": bool(over), "winner": call.winner,
-        "push_out": bool(getattr(call, "push_out", False)),
+        "turn_over": bool(call.turn_over), "game_over": bool(over), "winner": getattr(verdict, "winner", None),
+        "push_out": bool(getattr(call, "push_out", False)), **game,
     }
 
 
@@ -608,7 +638,8 @@ def _info_turn(info: dict[str, Any], shooter: int) -> dict[str, Any]:
     return {"pocketed": info.get("pocketed", ()), "foul": info.get("foul", False),
             "foul_reason": info.get("foul_reason"), "call": info.get("call"), "scratch": info.get("scratch", False),
             "shooter": shooter, "turn_over": info.get("turn_over"),
-            "game_over": winner in (0, 1) and not info.get("opponent_shots"), "winner": winner}
+            "game_over": winner in (0, 1) and not info.get("opponent_shots"), "winner": winner,
+            **{k: info[k] for k in ("points", "foul_points", "point", "cushions") if k in info}}
 
 
 # --- scripted play (--demo, tests) ------------------------------------------------------------------------------
