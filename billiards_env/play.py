@@ -1,4 +1,4 @@
-"""``billiards-play``: play a billiards scene, or a game of 9-ball or 8-ball, with the mouse.
+"""``billiards-play``: play a billiards scene, or a game (9-ball, 8-ball, snooker, three-cushion), with the mouse.
 
 Aim: move the mouse; the cue and its aim line follow from the cue ball towards the pointer.
 Shoot: press the left button, drag away from the press point to set the power (the bar below the table),
@@ -10,9 +10,15 @@ Spin (--spin): the arrow keys move the cue tip on the cue-ball diagram (right of
 diagram; C centres it.
 A drag too short to shoot says so (drag further from the press point). Space (or S) skips the rest of the
 animation (e.g. the opponent's reply).
-Keys: R starts a new episode (a new game), Esc / Q (or closing the window) quits.
+Keys: R starts a new episode (a new game), Esc / Q (or closing the window) quits. The turn log under a game's
+panel scrolls: mouse wheel, Page Up / Page Down, Home (the first shot) / End (the newest).
 
-Games: --opponent geometric|search|random plays against a baseline player (its shots animate after yours),
+Games: --env Billiards9Ball-v0, Billiards8Ball-v0, BilliardsSnooker-v0 or BilliardsThreeCushion-v0. Snooker: the
+cue ball starts in hand in the D (drag it there); pot a red, then a colour; the log names the balls potted and
+their points, a foul the points it gives away. Three-cushion: no pockets and no ball in hand; you play the white,
+the opponent the yellow; a point needs both other balls met and three cushions before the second; the log gives
+the point (or not) and the cushions of every shot.
+--opponent geometric|search|random plays against a baseline player (its shots animate after yours),
 --opponent human lets two people play at one window, taking turns. The break alternates between the players from
 game to game (you break the first; --breaker you|opponent|random chooses otherwise). The panel under the table
 shows whose turn it is, the groups, ball in hand, the last call and the score; below it, the turn log gives each
@@ -106,8 +112,10 @@ class PlayApp:
             self.core = self.env.unwrapped
             self.is_game = hasattr(self.core.task, "state")
             if opponent is not None and not self.is_game:
-                raise ValueError(f"opponent: {env_id} is not a game; --opponent applies to Billiards9Ball-v0 and "
-                                 "Billiards8Ball-v0")
+                from billiards_env.games import GAMES
+
+                raise ValueError(f"opponent: {env_id} is not a game; --opponent applies to the games: "
+                                 f"{', '.join(g.env_id for g in GAMES.values())}")
         except BaseException:
             pygame.display.quit()
             raise

@@ -151,3 +151,13 @@ def test_wheel_and_page_keys_scroll_the_window_log():
     app.handle(E(pygame.KEYDOWN, key=pygame.K_PAGEUP, mod=0, unicode="", scancode=0))
     assert app.log.offset == play.LOG_LINES - 1
     app.close()
+
+
+def test_the_help_names_every_game_it_offers():
+    from billiards_env.games import GAMES
+
+    text = play.build_parser().format_help()
+    assert "9-ball or 8-ball" not in text
+    for game in GAMES.values():
+        assert game.env_id in text and game.title in text.split("\n\n")[1]  # the summary line names each game
+    assert "Page Up" in text and "wheel" in text  # the log's scroll keys
