@@ -6,6 +6,7 @@ the reference) and ``step`` (the lecture's per-frame algorithm). :mod:`.aim`: th
 pockets and cushions, ghost ball, cut angle, pocket windows, clear paths, the cue ball's deflection) that the
 solver, the players and the renderer share.
 """
+from . import compile_notice  # noqa: F401  (first: one line on stderr when a cold cache makes the kernels compile)
 from . import aim
 from .balls import BALL_MASS, BALL_RADIUS, MAX_BALL_SPEED, OVERLAP_TOLERANCE, Balls, validate_balls
 from .errors import SceneError
