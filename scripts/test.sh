@@ -10,9 +10,11 @@ rllib=0
 if [ $# -eq 0 ] && [ "${BILLIARDS_SKIP_RLLIB:-0}" != "1" ]; then rllib=1; fi
 if [ $rllib -eq 1 ]; then
   if [ -x .venv-rllib/bin/python ]; then
-    echo "test: the RLlib tests too, in .venv-rllib (set up already; checked). Skip them: BILLIARDS_SKIP_RLLIB=1 bash scripts/test.sh"
+    echo "test: the RLlib tests too, in .venv-rllib (set up already; checked)." \
+         "Skip them: BILLIARDS_SKIP_RLLIB=1 bash scripts/test.sh"
   else
-    echo "test: the RLlib tests too: this first sets up .venv-rllib (Ray RLlib and the CPU torch: 2.1 GB, ~4 minutes)." \
+    echo "test: the RLlib tests too: this first sets up .venv-rllib" \
+         "(Ray RLlib and the CPU torch: 2.1 GB, ~4 minutes)." \
          "Skip them: BILLIARDS_SKIP_RLLIB=1 bash scripts/test.sh (or pass pytest args, e.g. bash scripts/test.sh -q)"
   fi
 else

@@ -108,7 +108,8 @@ class GameSession(ABC):
     @classmethod
     def options(cls, overrides: Any = None) -> Any:
         """The ruleset's options: the env's defaults, then ``overrides`` (a mapping; the options class refuses an
-        unknown key with the allowed ones, the same for every game: :func:`~billiards_env.rules.errors.check_keywords`)."""
+        unknown key with the allowed ones, the same for every game:
+        :func:`~billiards_env.rules.errors.check_keywords`)."""
         if overrides is not None and not isinstance(overrides, Mapping):
             raise RulesError(f"rules must be a mapping of option names to values, got {type(overrides).__name__} "
                              f"{overrides!r}; e.g. {{'{fields(cls.options_type)[0].name}': ...}}")

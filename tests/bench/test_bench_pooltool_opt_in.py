@@ -18,7 +18,8 @@ def test_a_missing_pooltool_is_not_installed_unless_asked(monkeypatch, tmp_path)
     assert "the comparison with pooltool is left out" in note and "--with-pooltool" in note and "734 MB" in note
 
 
-@pytest.mark.parametrize("argv, allowed", [([], False), (["--with-pooltool"], True), (["--no-pooltool-setup"], False)])
+@pytest.mark.parametrize("argv, allowed", [([], False), (["--with-pooltool"], True),
+                                           (["--no-pooltool-setup"], False)])
 def test_only_with_pooltool_allows_the_setup(monkeypatch, argv, allowed):
     import benchmarks.__main__ as cli
     from benchmarks import speed
