@@ -46,6 +46,8 @@ from typing import Any, Callable, Mapping
 import cloudpickle
 import yaml
 
+from billiards_env.registration import check_env_id
+
 SECTION = "billiards"
 ALGOS = ("sac", "td3", "ppo", "a2c", "ddpg")
 OFF_POLICY = ("sac", "td3", "ddpg")
@@ -169,6 +171,10 @@ def load_train_config(path: str | Path | Mapping[str, Any], env_id: str | None =
         chosen = env_entries[0]
     if chosen not in data:
         raise TrainConfigError(f"{source}: no entry for env {chosen!r}; entries: {env_entries}")
+    try:
+        check_env_id(chosen)
+    except ValueError as exc:
+        raise TrainConfigError(f"{source}: {exc}") from None
     hyper = copy.deepcopy(dict(data[chosen]))
     if hyper_overrides:
         for k, v in hyper_overrides.items():

@@ -25,6 +25,8 @@ from typing import Any
 
 import numpy as np
 
+from billiards_env.registration import env_id_arg
+
 from .processes import process_pool
 
 DEFAULT_EPISODES = 100
@@ -142,7 +144,8 @@ def default_dataset_id(env_id: str, expert: str) -> str:
 
 def main(argv: list[str] | None = None) -> int:
     p = argparse.ArgumentParser(prog="python -m agents.dataset", description=__doc__.split("\n\n")[0])
-    p.add_argument("--env", default="Billiards9Ball-v0", help="registered id (default Billiards9Ball-v0)")
+    p.add_argument("--env", default="Billiards9Ball-v0", type=env_id_arg,
+                   help="registered id (default Billiards9Ball-v0)")
     p.add_argument("--env-kwargs", default="{}", help="JSON of env kwargs, e.g. '{\"noise\": \"olympiad\"}'")
     p.add_argument("--expert", default="search", help="random, geometric, search, or a trained run folder")
     p.add_argument("--episodes", type=int, default=DEFAULT_EPISODES)

@@ -32,6 +32,7 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from billiards_env.players import BASELINES, make_player
+from billiards_env.registration import env_id_arg
 
 from .config import ALGOS
 from .player_spec import PlayerSpec, env_factory
@@ -459,7 +460,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--players", nargs="+", default=list(BASELINES),
                    help="baseline names (random, geometric, search) and/or run folders / model .zip files / RLlib "
                         "checkpoints")
-    p.add_argument("--env", help="env id (default: the first model's, else BilliardsOneBall-v0)")
+    p.add_argument("--env", type=env_id_arg, help="env id (default: the first model's, else BilliardsOneBall-v0)")
     p.add_argument("--env-kwargs", nargs="*", metavar="KEY=VALUE", help="scene overrides for the baselines")
     p.add_argument("--episodes", type=int, default=500)
     p.add_argument("--seed", type=int, default=100_000, help="episode k uses reset(seed=seed + k)")

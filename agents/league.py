@@ -563,6 +563,9 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
     only); returns (and writes under ``out``) the report. The games are cut into chunks played on ``workers`` local
     processes, or on Ray workers with ``address``; the results do not depend on how (each game is seeded by its
     index, :func:`play_games`)."""
+    if n_games < 1 or any(v < 1 for v in (pair_games or {}).values()):
+        raise ValueError(f"games per pair must be at least 1, got {min([n_games, *(pair_games or {}).values()])}; "
+                         "a league of no games has no result to report")
     say = (lambda *a: None) if quiet else (lambda *a: print(*a, flush=True))
     players = [load_player(s, seed, game) for s in specs]
     kw = league_env_kwargs(players, spin, noise, env_kwargs)
@@ -645,6 +648,17 @@ def run_league(game: str, specs: Sequence[str], n_games: int, seed: int, noise: 
     return report
 
 
+def positive_int(text: str) -> int:
+    """An argparse type: a whole number >= 1 (``--games 0`` is refused by argparse with this message)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value} (a league of no games has no result)")
+    return value
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="python -m agents.league", description=__doc__.split("\n\n")[0],
                                 formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -652,8 +666,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--game", choices=sorted(GAMES), default="nine_ball")
     p.add_argument("--players", nargs="+", default=["random", "geometric", "search"],
                    help="baseline names or trained model paths")
-    p.add_argument("--games", type=int, default=40, help="games per pair")
-    p.add_argument("--search-games", type=int, default=None, help="games of the pairs with the search player "
+    p.add_argument("--games", type=positive_int, default=40, help="games per pair")
+    p.add_argument("--search-games", type=positive_int, default=None, help="games of the pairs with the search player "
                    "(default: --games)")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--noise", default="0", help="'olympiad' (FastFiz level-1 noise), 'fastfiz' (the older "

@@ -11,7 +11,9 @@ spin model's speed (against pooltool) and speed against error (``spin.md/.json``
 vector env, the search player, the single env and the first call against the targets of issue 12
 (``batch.md/.json``).
 ``--quick`` runs a small configuration of everything (about a minute); the full run takes about four minutes on
-two cores. ``--only env`` also prints a table of ``env.step`` throughput per id (``--env-seconds``,
+two cores. The comparisons with pooltool run where pooltool is installed (``.venv-pooltool``); a missing pooltool
+is installed only with ``--with-pooltool`` (about 734 MB), otherwise those comparisons are left out with a line
+saying how to include them. ``--only env`` also prints a table of ``env.step`` throughput per id (``--env-seconds``,
 ``--env-ids``, ``--env-compare``).
 """
 from __future__ import annotations
@@ -41,8 +43,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--pooltool-python", default=None,
                     help="python of the pooltool venv (default .venv-pooltool/bin/python in the repo, or "
                          "$BILLIARDS_BENCH_POOLTOOL_PYTHON)")
-    ap.add_argument("--no-pooltool-setup", action="store_true",
-                    help="do not run benchmarks/pooltool_setup.sh when the pooltool venv is missing")
+    setup = ap.add_mutually_exclusive_group()
+    setup.add_argument("--with-pooltool", action="store_true",
+                       help="install pooltool if its venv is missing (benchmarks/pooltool_setup.sh: about 734 MB in "
+                            ".venv-pooltool, a few minutes) and include the comparison with it; without this flag a "
+                            "missing pooltool is never installed: its comparison is left out, saying so")
+    setup.add_argument("--no-pooltool-setup", action="store_true",
+                       help="never install pooltool (the default; kept for older commands)")
     ap.add_argument("--env-seconds", type=float, default=None,
                     help="env section: timing per env id and wrapping (default 3 s, 1 s with --quick)")
     ap.add_argument("--env-ids", nargs="+", default=None, help="env section: the ids to time (default: all)")
@@ -88,15 +95,15 @@ def main(argv: list[str] | None = None) -> int:
     rest = tuple(s for s in ("speed", "env", "pooltool", "latency") if s in only)
     if rest:
         speed.main(out, quick=args.quick, sections=rest, pooltool_python=args.pooltool_python,
-                   allow_setup=not args.no_pooltool_setup, env_seconds=args.env_seconds,
+                   allow_setup=args.with_pooltool, env_seconds=args.env_seconds,
                    env_ids=tuple(args.env_ids) if args.env_ids else None, env_compare=args.env_compare,
                    accuracy=acc)
     if "spin" in only:
         spin.main(out, quick=args.quick, pooltool_python=args.pooltool_python,
-                  allow_setup=not args.no_pooltool_setup)
+                  allow_setup=args.with_pooltool)
     if "batch" in only:
         batch.main(out, quick=args.quick, pooltool_python=args.pooltool_python,
-                   allow_setup=not args.no_pooltool_setup)
+                   allow_setup=args.with_pooltool)
     if "players" in only:
         players.main(out, quick=args.quick)
     if "ladder" in only:

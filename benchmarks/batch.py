@@ -242,7 +242,7 @@ def run_first_call(cold: int, warm: int) -> dict[str, Any]:
     return out
 
 
-def run(quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict[str, Any]:
+def run(quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = False) -> dict[str, Any]:
     n = _sizes(quick)
     doc: dict[str, Any] = {"machine": machine_info(), "quick": quick, "command": COMMAND + (" --quick" if quick else ""),
                            "time": time.strftime("%Y-%m-%d %H:%M:%S")}
@@ -361,7 +361,7 @@ def render(out: Path) -> None:
     rerender(out, "batch", render_markdown)
 
 
-def main(out: Path | None, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict:
+def main(out: Path | None, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = False) -> dict:
     """Measure everything and print the targets; write ``batch.json`` and ``batch.md`` into ``out`` if given."""
     doc = run(quick, pooltool_python, allow_setup)
     if out is not None:

@@ -20,6 +20,8 @@ SCRIPT = Path(__file__).with_name("pooltool_bench.py")
 REPO = Path(__file__).resolve().parents[1]
 SETUP = REPO / "benchmarks" / "pooltool_setup.sh"
 DEFAULT_VENV = REPO / ".venv-pooltool"
+#: What the setup script installs, for the messages that offer it.
+SETUP_SIZE = "a venv of about 734 MB in .venv-pooltool, a few minutes"
 
 
 class PooltoolUnavailable(RuntimeError):
@@ -47,16 +49,18 @@ def _has_pooltool(py: Path) -> str | None:
     return r.stdout.strip() if r.returncode == 0 else None
 
 
-def ensure_pooltool(py: Path, allow_setup: bool = True) -> tuple[str | None, str]:
+def ensure_pooltool(py: Path, allow_setup: bool = False) -> tuple[str | None, str]:
     """``(version, note)``: pooltool's version in ``py``, running the setup script if it is missing."""
     version = _has_pooltool(py)
     if version:
         return version, ""
     if not allow_setup:
-        return None, f"pooltool is not installed at {py} (run `bash benchmarks/pooltool_setup.sh`)"
+        return None, (f"pooltool is not installed at {py}, so the comparison with pooltool is left out; "
+                      f"`python -m benchmarks --with-pooltool` installs it ({SETUP_SIZE}) and includes it (or run "
+                      "`bash benchmarks/pooltool_setup.sh` once)")
     if py != DEFAULT_VENV / "bin" / "python" or not SETUP.exists():
         return None, f"pooltool is not installed at {py} and there is no setup script to run here"
-    log(f"[pooltool] {py} missing: running {SETUP} (a few minutes at most)")
+    log(f"[pooltool] {py} missing: --with-pooltool, so running {SETUP} ({SETUP_SIZE})")
     try:
         r = subprocess.run(["bash", str(SETUP), str(DEFAULT_VENV)], capture_output=True, text=True, timeout=900)
     except (OSError, subprocess.TimeoutExpired) as exc:
@@ -72,7 +76,7 @@ class PooltoolSession:
     """A pooltool process holding the shots; :meth:`time` times one kind of shot on request."""
 
     def __init__(self, kinds: list[tuple[str, list[Shot]]], table_length: float, table_width: float,
-                 python: str | None = None, allow_setup: bool = True, timeout: float = 600.0) -> None:
+                 python: str | None = None, allow_setup: bool = False, timeout: float = 600.0) -> None:
         py = pooltool_python(python)
         version, note = ensure_pooltool(py, allow_setup)
         if not version:

@@ -30,6 +30,7 @@ from typing import Any, Sequence
 
 from agents.rllib.algorithm import build_algorithm, init_ray
 from agents.rllib.config import VECTORIZE_MODES, load_rllib_config
+from billiards_env.registration import env_id_arg
 
 from .common import fmt_rate, load_now, machine_info, machine_markdown, write_json
 
@@ -102,7 +103,7 @@ def markdown(rows: list[dict[str, Any]], env_id: str, args: argparse.Namespace, 
 
 def main(argv: Sequence[str] | None = None) -> int:
     p = argparse.ArgumentParser(prog="python -m benchmarks.rllib_throughput", description=__doc__.split("\n\n")[0])
-    p.add_argument("--env", default="BilliardsOneBall-v0")
+    p.add_argument("--env", default="BilliardsOneBall-v0", type=env_id_arg)
     p.add_argument("--runners", type=int, nargs="+", default=[0, 1, 2], help="numbers of env runners to measure")
     p.add_argument("--envs-per-runner", type=int, default=16)
     p.add_argument("--modes", nargs="+", choices=VECTORIZE_MODES, default=["vector_entry_point"],

@@ -307,7 +307,7 @@ def run_latency(quick: bool, env_id: str = "BilliardsOneBall-v0") -> dict[str, A
 
 # ------------------------------------------------------------------------------------------------ pooltool
 
-def run_pooltool_section(quick: bool, python: str | None = None, allow_setup: bool = True,
+def run_pooltool_section(quick: bool, python: str | None = None, allow_setup: bool = False,
                          table: Table | None = None) -> dict[str, Any]:
     """pooltool and our solver on the same shots, in interleaved rounds of the same run."""
     from .pooltool_runner import PooltoolSession, PooltoolUnavailable
@@ -566,7 +566,7 @@ def render(out: Path) -> None:
 
 
 def main(out: Path | None, quick: bool = False, sections: tuple[str, ...] = ("speed", "env", "pooltool", "latency"),
-         pooltool_python: str | None = None, allow_setup: bool = True, env_seconds: float | None = None,
+         pooltool_python: str | None = None, allow_setup: bool = False, env_seconds: float | None = None,
          env_ids: tuple[str, ...] | None = None, env_compare: bool = False,
          accuracy: dict[str, Any] | None = None) -> dict[str, Any]:
     """Measure ``sections`` and print the targets they measured (``accuracy``: this run's accuracy doc, if it ran).

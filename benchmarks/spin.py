@@ -241,7 +241,7 @@ def render(out: Path) -> None:
     rerender(out, "spin", render_markdown)
 
 
-def main(out: Path | None, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = True) -> dict:
+def main(out: Path | None, quick: bool = False, pooltool_python: str | None = None, allow_setup: bool = False) -> dict:
     """Run both parts; write ``spin.json`` and ``spin.md`` into ``out`` if given, else print the report."""
     table = Table()
     doc = {"machine": machine_info(), "quick": quick}

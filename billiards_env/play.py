@@ -1,4 +1,4 @@
-"""``billiards-play``: play a billiards scene, or a game of 9-ball or 8-ball, with the mouse.
+"""``billiards-play``: play a billiards scene, or a game (9-ball, 8-ball, snooker, three-cushion), with the mouse.
 
 Aim: move the mouse; the cue and its aim line follow from the cue ball towards the pointer.
 Shoot: press the left button, drag away from the press point to set the power (the bar below the table),
@@ -10,9 +10,15 @@ Spin (--spin): the arrow keys move the cue tip on the cue-ball diagram (right of
 diagram; C centres it.
 A drag too short to shoot says so (drag further from the press point). Space (or S) skips the rest of the
 animation (e.g. the opponent's reply).
-Keys: R starts a new episode (a new game), Esc / Q (or closing the window) quits.
+Keys: R starts a new episode (a new game), Esc / Q (or closing the window) quits. The turn log under a game's
+panel scrolls: mouse wheel, Page Up / Page Down, Home (the first shot) / End (the newest).
 
-Games: --opponent geometric|search|random plays against a baseline player (its shots animate after yours),
+Games: --env Billiards9Ball-v0, Billiards8Ball-v0, BilliardsSnooker-v0 or BilliardsThreeCushion-v0. Snooker: the
+cue ball starts in hand in the D (drag it there); pot a red, then a colour; the log names the balls potted and
+their points, a foul the points it gives away. Three-cushion: no pockets and no ball in hand; you play the white,
+the opponent the yellow; a point needs both other balls met and three cushions before the second; the log gives
+the point (or not) and the cushions of every shot.
+--opponent geometric|search|random plays against a baseline player (its shots animate after yours),
 --opponent human lets two people play at one window, taking turns. The break alternates between the players from
 game to game (you break the first; --breaker you|opponent|random chooses otherwise). The panel under the table
 shows whose turn it is, the groups, ball in hand, the last call and the score; below it, the turn log gives each
@@ -57,6 +63,8 @@ BREAKERS = ("alternate", "you", "opponent", "random")
 #: The turn log under the panel of a game: lines shown and their height (px).
 LOG_LINES = 6
 LOG_LINE = 18
+#: Log lines one notch of the mouse wheel scrolls.
+WHEEL_LINES = 2
 
 class PlayApp:
     """The interactive game: an env in ``render_mode="human"`` drawing into this app's pygame window, its
@@ -104,8 +112,10 @@ class PlayApp:
             self.core = self.env.unwrapped
             self.is_game = hasattr(self.core.task, "state")
             if opponent is not None and not self.is_game:
-                raise ValueError(f"opponent: {env_id} is not a game; --opponent applies to Billiards9Ball-v0 and "
-                                 "Billiards8Ball-v0")
+                from billiards_env.games import GAMES
+
+                raise ValueError(f"opponent: {env_id} is not a game; --opponent applies to the games: "
+                                 f"{', '.join(g.env_id for g in GAMES.values())}")
         except BaseException:
             pygame.display.quit()
             raise
@@ -244,14 +254,18 @@ class PlayApp:
 
     @staticmethod
     def _opponent_turns(info: dict[str, Any], calls: list[Any], words: Any) -> list[dict[str, Any]]:
-        """The opponent's shots of a step or reset: ``info["opponent_turns"]`` if the env gives it (with
-        ``opponent_infos``; put in words by ``words``, the env's ``info_words``), else the calls recorded after the
-        first ``skip`` ones (the human's own shot)."""
-        turns = info.get("opponent_turns")
-        if turns is not None:
-            return [words(t) for t in turns]
+        """The opponent's shots of a step or reset: the referee's calls recorded for them (the last
+        ``info["opponent_shots"]`` calls: their game over and winner included), else ``info["opponent_turns"]``
+        (with ``opponent_infos``; put in words by ``words``, the env's ``info_words``) with the game's end taken
+        from ``info["winner"]``."""
         n = int(info.get("opponent_shots", 0) or 0)
-        return [call_turn(c) for c in calls[len(calls) - n:]] if n else []
+        if n and len(calls) >= n:
+            return [call_turn(c) for c in calls[len(calls) - n:]]
+        turns = [words(t) for t in info.get("opponent_turns") or ()]
+        winner = info.get("winner", -1)
+        if turns and winner in (0, 1):  # the game ended on the opponent's last shot
+            turns[-1].update(game_over=True, winner=winner)
+        return turns
 
     def _words(self, turn: dict[str, Any]) -> dict[str, Any]:
         """A shot of the env's info (masks over the rows, reason codes) as a turn-log entry (ids, reasons)."""
@@ -314,16 +328,20 @@ class PlayApp:
         finally:
             self.skipping = False
         self.last_info = info
+        own_line = ""
         if self.is_game:
+            from billiards_env.render.turn_log import turn_line
+
             own = call_turn(self._calls[0]) if self._calls else {**self._words(info), **_info_turn(info, shooter)}
             self.log.add([own] + self._opponent_turns(info, self._calls, self._words), self._names())
+            own_line = turn_line(own, self._names())[0].split(": ", 1)[-1]
         self.shots += 1
         self.total += float(reward)
         self.opponent_shots += int(info.get("opponent_shots", 0))
         if terminated or truncated:
             self.done = True
             self.success = bool(info["is_success"])
-        self.status = self._game_status(info) if self.is_game else self._scene_status(info, float(reward))
+        self.status = self._game_status(info, own_line) if self.is_game else self._scene_status(info, float(reward))
         self._new_turn()
         return info
 
@@ -336,10 +354,12 @@ class PlayApp:
             out += (" - table cleared!" if self.success else " - episode over") + " (R or click: new)"
         return out
 
-    def _game_status(self, info: dict[str, Any]) -> str:
+    def _game_status(self, info: dict[str, Any], own: str = "") -> str:
+        """The status after a shot: its speed and what it did (``own``: its turn-log words, e.g. "no point (2
+        cushions) - turn over"), the opponent's reply, who is to shoot or who won."""
         hud = self.core.task.hud()
         names = hud["players"]
-        out = f"shot {self.shots}: {info['speed']:.2f} m/s"
+        out = f"shot {self.shots}: {info['speed']:.2f} m/s" + (f", {own}" if own else "")
         if self.opponent_shots and info.get("opponent_shots"):
             n = info["opponent_shots"]
             out += f"; {names[1]} played {n} shot{'s' if n > 1 else ''}"
@@ -364,7 +384,11 @@ class PlayApp:
             self.running = False
         elif e.type == pg.KEYDOWN:
             self._key(e)
+        elif e.type == pg.MOUSEWHEEL:
+            self.log.scroll(WHEEL_LINES * int(e.y))  # wheel up: older lines
         elif e.type == pg.MOUSEBUTTONDOWN:
+            if e.button in (4, 5):  # the wheel as buttons (older SDL): MOUSEWHEEL scrolls
+                return
             if self.done:
                 self.reset()
             elif e.button == 1:
@@ -433,7 +457,11 @@ class PlayApp:
 
     def _key(self, e: Any) -> None:
         pg = self.pg
-        if e.key == pg.K_ESCAPE and self.dragging:
+        scroll = {pg.K_PAGEUP: self.log.page(), pg.K_PAGEDOWN: -self.log.page(), pg.K_HOME: len(self.log.lines),
+                  pg.K_END: -len(self.log.lines)}
+        if e.key in scroll:
+            self.log.scroll(scroll[e.key])
+        elif e.key == pg.K_ESCAPE and self.dragging:
             self.dragging, self.power = False, 0.0
         elif e.key in (pg.K_ESCAPE, pg.K_q):
             self.running = False
@@ -593,18 +621,29 @@ def SKIP_KEYS(pg: Any) -> tuple[int, ...]:  # noqa: N802 - a constant that needs
 
 
 def call_turn(verdict: Any) -> dict[str, Any]:
-    """A session's :class:`~billiards_env.games.session.Verdict` (or a pool :class:`~billiards_env.rules.Call`) as a
-    turn-log entry in words (``pocketed``, ``foul``, ``foul_reason``, ``call``, ``scratch``, ``shooter``, plus
-    ``turn_over``, ``game_over``, ``winner`` and ``push_out``); the balls kept down where the game pockets balls."""
+    """A session's :class:`~billiards_env.games.session.Verdict` (or a ruleset's call) as a turn-log entry in words
+    (``pocketed``, ``foul``, ``foul_reason``, ``call``, ``scratch``, ``shooter``, with the game's own: snooker's
+    ``points``, ``foul_points``; three-cushion's ``point``, ``cushions``), plus ``turn_over``, ``game_over``,
+    ``winner`` and ``push_out``. The balls potted: pool's kept down (not re-spotted), snooker's every ball that
+    dropped (its points count)."""
     call = getattr(verdict, "call", verdict)
+    game: dict[str, Any] = {}
+    if hasattr(call, "reds_potted"):  # snooker
+        pocketed: tuple[Any, ...] = ("red",) * int(call.reds_potted) + tuple(call.colours_potted)
+        game = {"points": int(call.points), "foul_points": int(call.foul_points)}
+    elif hasattr(call, "cushions"):  # three-cushion
+        pocketed = ()
+        game = {"point": bool(call.point), "cushions": int(call.cushions)}
+    else:
+        respot = getattr(call, "respot", ())
+        pocketed = tuple(n for n in getattr(call, "pocketed", ()) if n not in respot)
     over = getattr(verdict, "game_over", getattr(call, "game_over", False))
-    respot = getattr(call, "respot", ())
     return {
-        "pocketed": tuple(n for n in getattr(call, "pocketed", ()) if n not in respot),
+        "pocketed": pocketed,
         "foul": bool(call.foul), "foul_reason": call.reason if call.foul else None, "call": call.reason,
         "scratch": bool(getattr(call, "cue_pocketed", False)), "shooter": int(call.shooter),
-        "turn_over": bool(call.turn_over), "game_over": bool(over), "winner": call.winner,
-        "push_out": bool(getattr(call, "push_out", False)),
+        "turn_over": bool(call.turn_over), "game_over": bool(over), "winner": getattr(verdict, "winner", None),
+        "push_out": bool(getattr(call, "push_out", False)), **game,
     }
 
 
@@ -667,12 +706,13 @@ def demo_events(app: PlayApp, power: float = 0.5, max_shots: int = 4) -> Iterato
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from billiards_env.registration import ENV_IDS
+    from billiards_env.registration import ENV_IDS, env_id_arg
 
     p = argparse.ArgumentParser(prog="billiards-play", description=__doc__.split("\n\n")[0].split(": ", 1)[1],
                                 epilog=__doc__.split("\n\n", 1)[1],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--env", default="BilliardsOneBall-v0", choices=list(ENV_IDS), help="scene or game to play")
+    p.add_argument("--env", default="BilliardsOneBall-v0", type=env_id_arg, choices=list(ENV_IDS),
+                   help="scene or game to play")
     p.add_argument("--opponent", default=None, choices=list(OPPONENTS),
                    help="games: the opponent, a baseline player or 'human' (two people take turns); default: the "
                         "env's (geometric)")

@@ -29,6 +29,38 @@ def vector_entry_point(env_id: str) -> str:
     return f"billiards_env.envs.vector:{name.removesuffix('Env')}VectorEnv"
 
 
+def check_env_id(env_id: str) -> str:
+    """``env_id`` if Gymnasium knows it (ours, or another registered id), else a :class:`ValueError` in one line with
+    a did-you-mean and our ids: what every command-line tool prints instead of Gymnasium's ``NameNotFound``."""
+    import difflib
+
+    known: list[str] = list(ENV_IDS)
+    try:
+        from gymnasium.envs.registration import registry
+    except ImportError:  # pragma: no cover - physics-only use without gymnasium
+        pass
+    else:
+        if env_id in registry:
+            return env_id
+        known += [k for k in registry if k not in ENVS]
+    if env_id in ENVS:
+        return env_id
+    close = difflib.get_close_matches(str(env_id), known, n=1)
+    hint = f"did you mean {close[0]!r}? " if close else ""
+    raise ValueError(f"unknown env id {env_id!r}; {hint}the billiards ids: {', '.join(ENV_IDS)}")
+
+
+def env_id_arg(text: str) -> str:
+    """An argparse ``type`` for an ``--env`` option: :func:`check_env_id`, so a typo is argparse's one-line error
+    (exit 2) with the did-you-mean."""
+    import argparse
+
+    try:
+        return check_env_id(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
 def register_envs() -> None:
     """Register every id with Gymnasium, with its native vector env as ``vector_entry_point`` (so
     ``gymnasium.make_vec(id, n)`` returns it); idempotent; a no-op without Gymnasium: physics-only use."""
@@ -41,4 +73,4 @@ def register_envs() -> None:
             register(id=env_id, entry_point=entry_point, vector_entry_point=vector_entry_point(env_id))
 
 
-__all__ = ["ENVS", "SCENES", "ENV_IDS", "register_envs", "vector_entry_point"]
+__all__ = ["ENVS", "SCENES", "ENV_IDS", "check_env_id", "env_id_arg", "register_envs", "vector_entry_point"]

@@ -2,13 +2,29 @@
 # The test command: set up (scripts/setup.sh) and run the default test set headless. Extra args go to pytest
 # (e.g. `scripts/test.sh -m slow` for the long tests).
 # Without args it also runs the RLlib path in .venv-rllib (`scripts/setup.sh --rllib`; Ray RLlib pins Gymnasium
-# 1.2.2 while .venv has the newest): the RLlib tests, and the env tests again on Ray's Gymnasium; and it builds the
-# docs site strictly (`mkdocs build --strict` in .venv-docs, `scripts/setup.sh --docs`: a broken link, a page
-# missing from the nav or an API reference that does not resolve fails it) into site/.
+# 1.2.2 while .venv has the newest): the RLlib tests, and the env tests again on Ray's Gymnasium. It says so first
+# (Ray is 2.1 GB to install); BILLIARDS_SKIP_RLLIB=1 (or any pytest args) leaves that part out. Without args it also
+# builds the docs site strictly (`mkdocs build --strict` in .venv-docs, `scripts/setup.sh --docs`: a broken link, a
+# page missing from the nav or an API reference that does not resolve fails it) into site/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+rllib=0
+if [ $# -eq 0 ] && [ "${BILLIARDS_SKIP_RLLIB:-0}" != "1" ]; then rllib=1; fi
+if [ $rllib -eq 1 ]; then
+  if [ -x .venv-rllib/bin/python ]; then
+    echo "test: the RLlib tests too, in .venv-rllib (set up already; checked)." \
+         "Skip them: BILLIARDS_SKIP_RLLIB=1 bash scripts/test.sh"
+  else
+    echo "test: the RLlib tests too: this first sets up .venv-rllib" \
+         "(Ray RLlib and the CPU torch: 2.1 GB, ~4 minutes)." \
+         "Skip them: BILLIARDS_SKIP_RLLIB=1 bash scripts/test.sh (or pass pytest args, e.g. bash scripts/test.sh -q)"
+  fi
+else
+  echo "test: the default test set in .venv (the RLlib tests and .venv-rllib left out)"
+fi
 bash scripts/setup.sh
-if [ $# -eq 0 ]; then bash scripts/setup.sh --rllib; bash scripts/setup.sh --docs; fi
+if [ $rllib -eq 1 ]; then bash scripts/setup.sh --rllib; fi
+if [ $# -eq 0 ]; then bash scripts/setup.sh --docs; fi
 export SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy
 status=0
 if [ $# -eq 0 ]; then
@@ -16,7 +32,7 @@ if [ $# -eq 0 ]; then
   NO_MKDOCS_2_WARNING=1 .venv-docs/bin/mkdocs build --strict || status=$?  # not --quiet: it hides the warnings strict counts
 fi
 .venv/bin/python -m pytest -n 2 "$@" || status=$?
-if [ $# -eq 0 ]; then
+if [ $rllib -eq 1 ]; then
   .venv-rllib/bin/python -m pytest -n 2 -q tests/envs tests/multi || status=$?
   BILLIARDS_REQUIRE_RAY=1 .venv-rllib/bin/python -m pytest -q tests/agents/test_rllib.py \
     tests/agents/test_rllib_config.py || status=$?

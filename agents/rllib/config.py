@@ -35,6 +35,8 @@ from typing import Any, Mapping
 
 import yaml
 
+from billiards_env.registration import check_env_id
+
 SECTION = "billiards"
 RLLIB = "rllib"
 #: Online algorithms of RLlib that take the envs' continuous (Box) actions.
@@ -195,6 +197,10 @@ def load_rllib_config(path: str | Path | Mapping[str, Any] | None = None,
         sections[name] = _section(name, body, source)
     for name, body in (section_overrides or {}).items():
         sections[name] = {**sections.get(name, {}), **_section(name, body, "override")}
+    try:
+        check_env_id(settings.env_id)
+    except ValueError as exc:
+        raise RLlibConfigError(f"{source}: {SECTION}.env_id: {exc}") from None
     env = sections.get("environment", {})
     for reserved in ("env", "env_config"):
         if reserved in env:

@@ -37,6 +37,8 @@ from typing import Any, Sequence
 import numpy as np
 import yaml
 
+from billiards_env.registration import env_id_arg
+
 from .config import (ALGOS, SELF_PLAY, VECTORIZE_MODES, RLlibConfig, RLlibConfigError, load_rllib_config,
                      parse_assignments)
 
@@ -424,7 +426,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--config", help="RLlib training config YAML ('rllib:' AlgorithmConfig sections + 'billiards:')")
     p.add_argument("--resume", help="run folder (or checkpoint inside one) to continue")
     p.add_argument("--algo", help=f"algorithm: {', '.join(ALGOS)} (default PPO)")
-    p.add_argument("--env", help="registered env id (default BilliardsOneBall-v0)")
+    p.add_argument("--env", type=env_id_arg, help="registered env id (default BilliardsOneBall-v0)")
     p.add_argument("--env-kwargs", nargs="*", metavar="KEY=VALUE", help="env options (merged over the config's)")
     p.add_argument("--self-play", choices=SELF_PLAY, help="games: both seats learn, one shared policy or one each")
     p.add_argument("--num-env-runners", type=int, help="sampling actors (0: sample in this process)")

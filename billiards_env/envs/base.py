@@ -19,7 +19,7 @@ scenes given through ``reset(options=...)`` are validated there.
 from __future__ import annotations
 
 import contextlib
-from typing import Any, Callable, ClassVar, Iterator, Sequence
+from typing import Any, Callable, ClassVar, Iterator, Mapping, Sequence
 
 import gymnasium as gym
 import numpy as np
@@ -63,6 +63,13 @@ def frame_shares(durations: list[float], cap: int) -> list[int]:
         spare = cap - 2 * n
         return [2 + int(spare * d / total) for d in durations]
     return [0] * max(n - cap, 0) + [1] * min(n, cap)
+
+def check_options_mapping(options: Any) -> None:
+    """Refuse reset ``options`` that are not a dict (``options=[1, 2]``) with what to give instead."""
+    if not isinstance(options, Mapping):
+        raise ValueError(f"reset options must be a dict, got {type(options).__name__} {options!r}; e.g. "
+                         "reset(options={'positions': ...}) or reset() for the usual start")
+
 
 class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     """Base class of the billiards environments (see the subclasses for each id's manual).
@@ -462,7 +469,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         """Set up ``balls`` (default: the env's) from reset ``options`` (checked), placing at random from ``rng``
         (default: ``np_random``) when no positions are given."""
         b = self.balls if balls is None else balls
-        unknown = sorted(set(options) - {"positions", "pocketed"} - set(self.task.option_keys))
+        check_options_mapping(options)
+        unknown = sorted(set(options) - {"positions", "pocketed"} - set(self.task.option_keys), key=str)
         if unknown:
             extra = "".join(f", {k!r}" for k in self.task.option_keys)
             raise ValueError(f"reset options: unknown key(s) {unknown}; allowed: 'positions' ((N,2) metres, rows "
@@ -645,4 +653,4 @@ def make_policy(policy: Any, env: gym.Env) -> Callable[[np.ndarray], np.ndarray]
                     f"{type(policy).__name__}")
 
 
-__all__: Sequence[str] = ["BilliardsEnv", "RENDER_MODES", "make_policy"]
+__all__: Sequence[str] = ["BilliardsEnv", "RENDER_MODES", "check_options_mapping", "make_policy"]

@@ -31,7 +31,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from billiards_env.games import GAMES, game_spec
-from billiards_env.physics.balls import BALL_MASS, BALL_RADIUS
+from billiards_env.physics.balls import BALL_MASS, BALL_RADIUS, MAX_BALL_SPEED
 from billiards_env.physics.errors import SceneError
 from billiards_env.physics.layout import rack_fits
 from billiards_env.physics.model import Physics
@@ -293,10 +293,13 @@ def read_yaml(path: str | os.PathLike[str]) -> dict[str, Any]:
 
     p = Path(path)
     try:
-        text = p.read_text()
+        text = p.read_text(encoding="utf-8")
     except OSError as exc:
         raise ConfigError(f"config {str(path)!r}: cannot read the file ({exc.strerror}); give the path of a YAML "
                           f"file such as {scene_path('one_ball')}") from None
+    except UnicodeDecodeError as exc:
+        raise ConfigError(f"config {str(path)!r}: not UTF-8 text (byte {exc.start} is {exc.object[exc.start]:#04x}); "
+                          "save the file as UTF-8 YAML (e.g. `iconv -f latin1 -t utf-8`)") from None
     try:
         data = yaml.safe_load(text)
     except yaml.YAMLError as exc:
@@ -575,6 +578,9 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _require(cfg.speed_max > cfg.speed_min, "speed_max",
              f"must be greater than speed_min ({cfg.speed_min} m/s), got {cfg.speed_max}; the speed range is "
              "[speed_min, speed_max]")
+    _require(cfg.speed_max <= MAX_BALL_SPEED, "speed_max",
+             f"{cfg.speed_max} m/s is faster than any ball can move here (at most {MAX_BALL_SPEED:g} m/s; the hardest "
+             "break is about 15 m/s)")
     _require(cfg.max_events >= 1, "max_events", f"must be >= 1, got {cfg.max_events}")
     _require(cfg.max_shots >= 1, "max_shots", f"must be >= 1, got {cfg.max_shots}")
     _require(64 <= cfg.render_width <= 8192, "render_width", f"must be 64..8192 pixels, got {cfg.render_width}")

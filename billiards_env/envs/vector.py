@@ -53,7 +53,7 @@ from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_
                               I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
                               draw_noise, finish_shots, observe_positions, pack_config, place_tables, pot_step,
                               pot_step_spin, prepare_shots)
-from .base import RENDER_MODES, BilliardsEnv
+from .base import RENDER_MODES, BilliardsEnv, check_options_mapping
 from .config import ConfigError
 
 
@@ -191,6 +191,8 @@ class BilliardsVectorEnv(VectorEnv):
             seeds = list(seed)
             if len(seeds) != n:
                 raise ValueError(f"seed: {len(seeds)} seeds for num_envs={n}; give one per sub-env, an int or None")
+        if options:
+            check_options_mapping(options)
         options = dict(options) if options else {}
         mask = options.pop("reset_mask", None)
         if mask is None:

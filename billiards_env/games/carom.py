@@ -15,13 +15,14 @@ import numpy as np
 
 from billiards_env.physics.layout import CAROM_IDS, carom_start_positions
 from billiards_env.physics.outcome import ShotOutcome
+from billiards_env.rules.errors import RulesError
 from billiards_env.rules.three_cushion import (REASONS, ThreeCushion, ThreeCushionCall, ThreeCushionOptions,
                                                ThreeCushionState, summarize_carom)
 from billiards_env.table_state import ShotView, TableState
 
 from .hud import base_hud
 from .infos import InfoSpec, flag, integer
-from .session import GameSession, Verdict
+from .session import GameSession, Verdict, flag_option, pair_option
 
 #: Drawing numbers of the white, the yellow and the red (the renderer's plain carom balls).
 CAROM_NUMBERS = {"white": 23, "yellow": 24, "red": 25}
@@ -79,10 +80,14 @@ class CaromSession(GameSession):
     def setup(self, options: dict[str, Any], shooter: int) -> None:
         """A table set up by hand (positions in the rows white, yellow, red): ``score`` (default 0-0) and
         ``break_shot`` (default False)."""
+        score = pair_option(options, "score")
+        goal = self.rules.options.target_points
+        if max(score) >= goal:
+            raise ValueError(f"reset options['score']: {score} reaches target_points={goal}, where the game is over; "
+                             f"give scores below {goal}, or a higher target with rules={{'target_points': ...}}")
         try:
-            state = ThreeCushionState(shooter=shooter, score=tuple(int(x) for x in options.get("score", (0, 0))),
-                                      break_shot=bool(options.get("break_shot", False)))
-        except Exception as exc:  # RulesError, or a score that is not two numbers
+            state = ThreeCushionState(shooter=shooter, score=score, break_shot=flag_option(options, "break_shot"))
+        except RulesError as exc:
             raise ValueError(f"reset options: {exc}") from None
         self.set_state(state)
         self.arrange(shooter)

@@ -24,7 +24,7 @@ from billiards_env.table_state import Area, RectArea, ShotView, TableState
 
 from .hud import base_hud
 from .infos import InfoSpec, code
-from .session import GameSession, Verdict
+from .session import GameSession, Verdict, flag_option
 
 #: The game features every pool game observes (see :meth:`PoolSession.features`).
 N_POOL_FEATURES = 11
@@ -94,11 +94,9 @@ class PoolSession(GameSession):
         try:
             state = GameState(self.spec.name, self.numbers_on(), shooter=shooter,
                               ball_in_hand=options.get("ball_in_hand", False), groups=options.get("groups"),
-                              break_shot=options.get("break_shot", False))
+                              break_shot=flag_option(options, "break_shot"))
         except RulesError as exc:
             raise ValueError(f"reset options: {exc}") from None
-        if not isinstance(state.break_shot, (bool, np.bool_)):
-            raise ValueError(f"reset options['break_shot']: expected True or False, got {state.break_shot!r}")
         self.set_state(state)
 
     def open_with_ball_in_hand(self, first: int) -> None:

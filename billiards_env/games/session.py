@@ -14,16 +14,40 @@ from __future__ import annotations
 
 import contextlib
 from abc import ABC, abstractmethod
-from typing import Any, ClassVar, Iterator, NamedTuple
+from dataclasses import fields
+from typing import Any, ClassVar, Iterator, Mapping, NamedTuple
 
 import numpy as np
 
 from billiards_env.physics.outcome import ShotOutcome
+from billiards_env.rules.errors import RulesError, check_keywords
 from billiards_env.table_state import ShotView, TableState
 
 from .hud import Score
 from .infos import InfoSpec, mask_of
 from .registry import GameSpec
+
+
+def pair_option(options: Mapping[str, Any], key: str, default: tuple[int, int] = (0, 0)) -> tuple[int, int]:
+    """Reset option ``key`` (e.g. ``score``) as two whole numbers >= 0, or a ValueError saying what to give."""
+    value = options.get(key, default)
+    try:
+        pair = tuple(value) if not isinstance(value, (str, bytes)) else ()
+    except TypeError:
+        pair = ()
+    if len(pair) != 2 or not all(isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_)) and x >= 0
+                                 for x in pair):
+        raise ValueError(f"reset options[{key!r}]: expected two whole numbers >= 0 (player 0's, player 1's), "
+                         f"got {value!r}")
+    return int(pair[0]), int(pair[1])
+
+
+def flag_option(options: Mapping[str, Any], key: str, default: bool = False) -> bool:
+    """Reset option ``key`` (e.g. ``break_shot``) as True or False, or a ValueError saying what to give."""
+    value = options.get(key, default)
+    if not isinstance(value, (bool, np.bool_)):
+        raise ValueError(f"reset options[{key!r}]: expected True or False, got {value!r}")
+    return bool(value)
 
 
 class Verdict(NamedTuple):
@@ -87,8 +111,14 @@ class GameSession(ABC):
     @classmethod
     def options(cls, overrides: Any = None) -> Any:
         """The ruleset's options: the env's defaults, then ``overrides`` (a mapping; the options class refuses an
-        unknown key with the allowed ones)."""
-        return cls.options_type(**{**cls.env_option_defaults, **dict(overrides or {})})
+        unknown key with the allowed ones, the same for every game:
+        :func:`~billiards_env.rules.errors.check_keywords`)."""
+        if overrides is not None and not isinstance(overrides, Mapping):
+            raise RulesError(f"rules must be a mapping of option names to values, got {type(overrides).__name__} "
+                             f"{overrides!r}; e.g. {{'{fields(cls.options_type)[0].name}': ...}}")
+        given = dict(overrides or {})
+        check_keywords(cls.options_type, given)
+        return cls.options_type(**{**cls.env_option_defaults, **given})
 
     @classmethod
     def make_rules(cls, overrides: Any = None) -> Any:

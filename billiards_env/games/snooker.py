@@ -17,6 +17,7 @@ import numpy as np
 from billiards_env.physics.layout import (SNOOKER_COLOURS, SNOOKER_IDS, d_geometry, nearest_point_in_d,
                                           spot_snooker_colours)
 from billiards_env.physics.outcome import ShotOutcome
+from billiards_env.rules.errors import RulesError
 from billiards_env.rules.snooker import (COLOUR_VALUES, IN_D, ON_COLOUR, ON_NAMES, ON_RED, REASONS, RED_VALUE,
                                          VALUE_NAMES, Snooker,
                                          SnookerCall, SnookerOptions, SnookerShotInfo, SnookerState, SnookerSummary,
@@ -25,7 +26,7 @@ from billiards_env.table_state import HalfDiscArea, ShotView, TableState
 
 from .hud import base_hud
 from .infos import InfoSpec, code, code_of, integer
-from .session import GameSession, Verdict
+from .session import GameSession, Verdict, pair_option
 
 #: The most points of a frame without fouls (15 reds with blacks, then the colours): the features' scale.
 MAX_BREAK = 147.0
@@ -41,7 +42,7 @@ class SnookerSession(GameSession):
     ruleset = Snooker
     options_type = SnookerOptions
     n_features = N_SNOOKER_FEATURES
-    option_keys = ("ball_in_hand", "on", "score", "reds_left")
+    option_keys = ("ball_in_hand", "on", "score")  # the reds: those on the table (positions, pocketed)
     reasons = REASONS
     players = {"random": "billiards_env.players.random:RandomPlayer",
                "geometric": "billiards_env.players.snooker:SnookerGeometricPlayer",
@@ -79,9 +80,9 @@ class SnookerSession(GameSession):
         colours = tuple(c for c in SNOOKER_COLOURS if on_table[self.row_of[c]])
         on = options.get("on", ON_RED if reds else (colours[0] if colours else ON_RED))
         try:
-            state = SnookerState(shooter=shooter, score=tuple(options.get("score", (0, 0))), on=on, reds=reds,
+            state = SnookerState(shooter=shooter, score=pair_option(options, "score"), on=on, reds=reds,
                                  colours=colours, ball_in_hand=options.get("ball_in_hand", False))
-        except Exception as exc:  # RulesError, or a score that is not two numbers
+        except RulesError as exc:
             raise ValueError(f"reset options: {exc}") from None
         self.set_state(state)
 

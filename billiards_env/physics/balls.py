@@ -22,6 +22,10 @@ BALL_MASS = 0.17  #: pool ball mass (kg)
 #: Largest overlap (m) accepted between two balls in an input scene: touching balls built from rounded
 #: decimal coordinates may overlap by rounding error, anything beyond is a placement error.
 OVERLAP_TOLERANCE = 1e-9
+#: The fastest a ball may move (m/s): a shot's speed and every ball's velocity in a scene are at most this. The
+#: hardest cue shots (a power break) reach about 12-15 m/s, so 50 m/s leaves room for any real shot and refuses
+#: absurd values (1e300 m/s would otherwise "run" to rest in zero time, its motion lost to rounding).
+MAX_BALL_SPEED = 50.0
 
 
 @dataclass
@@ -105,6 +109,7 @@ class Balls:
                 raise SceneError(f"{name}: must be a finite number, got {v!r}")
         if speed < 0:
             raise SceneError(f"shot.speed: must be >= 0, got {speed}")
+        check_speed("shot.speed", speed)
         if side * side + top * top > MAX_TIP_OFFSET ** 2:
             raise SceneError(f"shot.side, shot.top: the tip offset ({side}, {top}) is {math.hypot(side, top):.4g} "
                              f"ball radii from the centre; it must be at most {MAX_TIP_OFFSET} "
@@ -196,6 +201,14 @@ def mouth_mask(balls: Balls, table: Table) -> np.ndarray:
     return mask
 
 
+def check_speed(name: str, speed: float) -> float:
+    """``speed`` (m/s) if at most :data:`MAX_BALL_SPEED`, else a :class:`SceneError` with the bound."""
+    if speed > MAX_BALL_SPEED:
+        raise SceneError(f"{name}: {speed:g} m/s is faster than any ball can move here (at most {MAX_BALL_SPEED:g} "
+                         "m/s; the hardest break is about 15 m/s)")
+    return speed
+
+
 def validate_balls(balls: Balls, table: Table, allow_spin: bool = True) -> None:
     """Raise :class:`SceneError` naming the first bad ball: non-finite values, non-positive radius or mass,
     a centre off the table, two balls overlapping, repeated ids, or (``allow_spin`` False: a friction law
@@ -211,6 +224,10 @@ def validate_balls(balls: Balls, table: Table, allow_spin: bool = True) -> None:
                              (balls.on_table, "on_table", (n,)), (balls.ang, "angular velocity", (n, 3))):
         if np.shape(arr) != shape:
             raise SceneError(f"balls: {name} array has shape {np.shape(arr)}, expected {shape}")
+    speeds = np.hypot(balls.vel[:, 0], balls.vel[:, 1])
+    fast = np.flatnonzero(np.isfinite(speeds) & (speeds > MAX_BALL_SPEED))  # non-finite: reported below
+    if fast.size:
+        check_speed(f"ball {balls.ids[int(fast[0])]!r}: velocity", float(speeds[fast[0]]))
     bad, i, j, dist = _first_problem(np.ascontiguousarray(balls.pos, dtype=float),
                                      np.ascontiguousarray(balls.vel, dtype=float),
                                      np.ascontiguousarray(balls.radius, dtype=float),

@@ -28,7 +28,7 @@ from typing import Iterator, NamedTuple
 import numpy as np
 from numba import njit
 
-from .balls import Balls, validate_balls
+from .balls import MAX_BALL_SPEED, Balls, check_speed, validate_balls
 from .batch_rows import store_row
 from .codes import EVENT_KINDS
 from .errors import SceneError
@@ -242,6 +242,9 @@ def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int =
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
         raise SceneError(f"shot {k}: angle {ang_k[k]} and speed {spd_k[k]} must be finite, with speed >= 0")
+    fast = np.flatnonzero(spd_k > MAX_BALL_SPEED)
+    if fast.size:
+        check_speed(f"shot {int(fast[0])}: speed", float(spd_k[fast[0]]))
     sd = _as_rows("side", 0.0 if side is None else side, n)
     tp = _as_rows("top", 0.0 if top is None else top, n)
     if not spin and (sd.any() or tp.any()):

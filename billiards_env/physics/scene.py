@@ -12,7 +12,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from .balls import BALL_MASS, BALL_RADIUS, Balls, validate_balls
+from .balls import BALL_MASS, BALL_RADIUS, Balls, check_speed, validate_balls
 from .errors import SceneError, check_finite, check_non_negative, check_number, check_positive
 from .model import Physics
 from .result import ShotResult
@@ -313,7 +313,7 @@ def _shot(value: Any, balls: Balls, physics: Physics) -> Shot:
         if f not in s:
             raise SceneError(f"shot: missing '{f}' (angle in radians, speed in m/s)")
     angle = check_finite("shot.angle", s["angle"])
-    speed = check_non_negative("shot.speed", s["speed"])
+    speed = check_speed("shot.speed", check_non_negative("shot.speed", s["speed"]))
     side = check_finite("shot.side", s.get("side", 0.0))
     top = check_finite("shot.top", s.get("top", 0.0))
     if (side != 0.0 or top != 0.0) and physics.friction != "spin":

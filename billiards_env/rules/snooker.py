@@ -41,7 +41,7 @@ from numba import njit
 from ..physics.codes import EV_COLLISION, EV_POCKET
 from ..physics.layout import SNOOKER_COLOURS
 from ..physics.outcome import first_contact_row
-from .errors import RulesError
+from .errors import RulesError, checked_keywords
 
 SNOOKER = "snooker"
 #: Ball values: the cue ball 0, a red 1, the colours 2..7 in the order of :data:`SNOOKER_COLOURS`.
@@ -341,6 +341,7 @@ def _check_pair(name: str, value: object) -> tuple[int, int]:
     return int(v[0]), int(v[1])
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class SnookerOptions:
     """Options of :class:`Snooker`.

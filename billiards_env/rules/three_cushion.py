@@ -36,7 +36,7 @@ from numba import njit
 
 from ..physics.codes import EV_COLLISION, EV_CUSHION
 from ..physics.layout import CAROM_IDS
-from .errors import RulesError
+from .errors import RulesError, checked_keywords
 
 THREE_CUSHION = "three_cushion"
 #: The cushions the cue ball must touch before it meets the second ball.
@@ -193,6 +193,7 @@ def _check_int(name: str, value: object, lo: int) -> None:
         raise RulesError(f"ThreeCushionOptions.{name}: must be an integer >= {lo}, got {value!r}")
 
 
+@checked_keywords
 @dataclass(frozen=True)
 class ThreeCushionOptions:
     """Options of :class:`ThreeCushion` (defaults: the UMB rules, with a shorter game).

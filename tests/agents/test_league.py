@@ -181,3 +181,25 @@ def test_a_pair_counts_the_games_nobody_came_back_to_the_table():
              game(3, -1, (1, 1), (1, 3))]  # unfinished
     res = pair_result("a", "b", games)
     assert res.no_return == 2 and res.shots == (13, 12) and res.innings == (5, 3)
+
+
+def test_no_games_is_refused_with_a_clear_message(capsys):
+    """``--games 0`` (or ``--search-games 0``): argparse's one-line error and exit 2, not a ZeroDivisionError."""
+    for flag in ("--games", "--search-games"):
+        with pytest.raises(SystemExit) as exit_:
+            main(["--game", "snooker", "--players", "random", "geometric", flag, "0"])
+        assert exit_.value.code == 2
+        err = capsys.readouterr().err
+        assert f"argument {flag}: must be at least 1, got 0" in err and "Traceback" not in err
+    from agents.league import run_league
+
+    with pytest.raises(ValueError, match="games per pair must be at least 1, got 0"):
+        run_league("snooker", ["random", "geometric"], 0, 0, "0", None, quiet=True)
+
+
+def test_a_rules_typo_in_snooker_gives_the_did_you_mean(capsys):
+    assert main(["--game", "snooker", "--players", "random", "geometric", "--games", "1",
+                 "--rules", '{"target_pionts": 5}']) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("league: error: ") and "unknown option 'target_pionts'" in err
+    assert "valid options:" in err and "\n" not in err

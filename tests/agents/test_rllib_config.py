@@ -99,5 +99,5 @@ def test_the_cli_reports_bad_input_with_exit_status_2(capsys):
 
     assert main(["--config", "/nonexistent/rllib.yaml"]) == 2
     assert "cannot read" in capsys.readouterr().err
-    assert main(["--env", "NoSuchEnv-v0", "--set", "lr=1"]) == 2
+    assert main(["--env", "BilliardsOneBall-v0", "--set", "lr=1"]) == 2
     assert "section.key=value" in capsys.readouterr().err

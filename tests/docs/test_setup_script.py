@@ -19,3 +19,48 @@ def test_setup_says_each_step():
     assert any(line.startswith("setup: .venv is up to date") or line.startswith("setup: installing billiards_env")
                for line in lines), lines
     assert any(line.startswith("setup: compiling the physics kernels") for line in lines), lines
+
+
+def _test_sh(tmp_path: Path, rllib_venv: bool, args: list[str], env: dict[str, str]) -> tuple[str, list[str]]:
+    """``scripts/test.sh`` in a copy whose set-up script and venvs' pythons only record their calls: what it says
+    first, and what it ran."""
+    (tmp_path / "scripts").mkdir()
+    (tmp_path / "scripts" / "test.sh").write_text((ROOT / "scripts" / "test.sh").read_text())
+    calls = tmp_path / "calls"
+    stub = '#!/usr/bin/env bash\necho "{venv} $*" >> {calls}\n'
+    make_rllib = (f'mkdir -p .venv-rllib/bin; printf \'{stub.format(venv=".venv-rllib", calls=calls)}\' '
+                  '> .venv-rllib/bin/python; chmod +x .venv-rllib/bin/python')
+    (tmp_path / "scripts" / "setup.sh").write_text(f'echo "setup $*" >> {calls}\n'
+                                                   f'if [ "${{1:-}}" = --rllib ]; then {make_rllib}; fi\n')
+    for venv in (".venv",) + ((".venv-rllib",) if rllib_venv else ()):
+        py = tmp_path / venv / "bin" / "python"
+        py.parent.mkdir(parents=True)
+        py.write_text(stub.format(venv=venv, calls=calls))
+        py.chmod(0o755)
+    proc = subprocess.run(["bash", str(tmp_path / "scripts" / "test.sh"), *args], capture_output=True, text=True,
+                          env={"PATH": "/usr/bin:/bin", **env}, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    return proc.stdout, calls.read_text().splitlines()
+
+
+def test_test_sh_says_it_sets_up_rllib_before_it_starts(tmp_path):
+    out, calls = _test_sh(tmp_path, False, [], {})
+    first = out.splitlines()[0]
+    assert first.startswith("test: the RLlib tests too: this first sets up .venv-rllib") and "2.1 GB" in first
+    assert "BILLIARDS_SKIP_RLLIB=1" in first
+    assert calls[:2] == ["setup ", "setup --rllib"]
+    assert any(c.startswith(".venv-rllib -m pytest") for c in calls)
+
+
+def test_test_sh_says_when_the_rllib_venv_is_there_already(tmp_path):
+    out, calls = _test_sh(tmp_path, True, [], {})
+    assert out.splitlines()[0].startswith("test: the RLlib tests too, in .venv-rllib (set up already; checked)")
+    assert "setup --rllib" in calls
+
+
+@pytest.mark.parametrize("args, env", [([], {"BILLIARDS_SKIP_RLLIB": "1"}), (["-q"], {})])
+def test_test_sh_can_leave_rllib_out(tmp_path, args, env):
+    out, calls = _test_sh(tmp_path, False, args, env)
+    assert out.splitlines()[0] == "test: the default test set in .venv (the RLlib tests and .venv-rllib left out)"
+    assert "setup --rllib" not in calls and not any(c.startswith(".venv-rllib") for c in calls)
+    assert any(c.startswith(".venv -m pytest -n 2") for c in calls)

@@ -158,6 +158,19 @@ def test_bad_config_files(tmp_path):
         gym.make("BilliardsOneBall-v0", config=str(notmap))
 
 
+def test_a_config_file_that_is_not_utf8_names_the_file_and_the_fix(tmp_path, capsys):
+    latin = tmp_path / "latin1.yaml"
+    latin.write_bytes("# r\xe9glage\nplacement: random\n".encode("latin-1"))
+    with pytest.raises(ConfigError, match=r"config '.*latin1.yaml': not UTF-8 text \(byte 3 is 0xe9\); save the file "
+                                          r"as UTF-8"):
+        gym.make("BilliardsOneBall-v0", config=str(latin))
+    from billiards_env import play
+
+    assert play.main(["--demo", "--config", str(latin)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("billiards-play: error: config ") and "not UTF-8 text" in err and "\n" not in err
+
+
 def test_infeasible_layouts_fail_at_make_time():
     with pytest.raises(ConfigError, match="could not place"):
         gym.make("BilliardsThreeBalls-v0", n_object_balls=15, ball_gap=0.5)

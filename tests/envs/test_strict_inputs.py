@@ -39,6 +39,48 @@ def test_game_reset_options_need_positions_and_valid_values():
     assert u.state.view.place_area is not None
 
 
+@pytest.mark.parametrize("env_id, options, message", [
+    ("BilliardsThreeCushion-v0", {"score": (20, 0)}, r"reset options\['score'\]: \(20, 0\) reaches target_points=10, "
+     r"where the game is over; give scores below 10"),
+    ("BilliardsThreeCushion-v0", {"score": "x"}, r"reset options\['score'\]: expected two whole numbers >= 0 "
+     r"\(player 0's, player 1's\), got 'x'"),
+    ("BilliardsThreeCushion-v0", {"score": (1, -2)}, r"expected two whole numbers >= 0 .*got \(1, -2\)"),
+    ("BilliardsThreeCushion-v0", {"break_shot": 5}, r"reset options\['break_shot'\]: expected True or False, got 5"),
+    ("BilliardsSnooker-v0", {"reds_left": 99}, r"reset options: unknown key\(s\) \['reds_left'\]; allowed: "
+     r"'positions'.*'score'"),
+    ("BilliardsSnooker-v0", {"score": "x"}, r"reset options\['score'\]: expected two whole numbers"),
+    ("Billiards8Ball-v0", {"break_shot": "yes"}, r"reset options\['break_shot'\]: expected True or False, got 'yes'"),
+])
+def test_every_games_reset_options_are_checked(env_id, options, message):
+    env = gym.make(env_id, opponent=None)
+    env.reset(seed=0)
+    pos = env.unwrapped.balls.pos.copy()
+    with pytest.raises(ValueError, match=message):
+        env.reset(options={"positions": pos, **options})
+    env.close()
+
+
+@pytest.mark.parametrize("env_id", ["BilliardsOneBall-v0", "Billiards9Ball-v0"])
+def test_reset_options_must_be_a_dict(env_id):
+    env = gym.make(env_id)
+    with pytest.raises(ValueError, match=r"reset options must be a dict, got list \[1, 2\]; e.g. "
+                                         r"reset\(options=\{'positions': ...\}\)"):
+        env.reset(options=[1, 2])
+    venv = gym.make_vec(env_id, 2, vectorization_mode="vector_entry_point")
+    with pytest.raises(ValueError, match="reset options must be a dict, got list"):
+        venv.reset(options=[1, 2])
+    env.close()
+    venv.close()
+
+
+def test_a_three_cushion_score_below_the_target_still_sets_up_the_table():
+    env = gym.make("BilliardsThreeCushion-v0", opponent=None)
+    env.reset(seed=0)
+    pos = env.unwrapped.balls.pos.copy()
+    _, info = env.reset(options={"positions": pos, "score": (9, 3), "break_shot": False})
+    assert info["score"] == (9, 3) and info["winner"] == -1
+
+
 @pytest.mark.parametrize("kwargs,message", [
     ({"place": (5.0, 5.0)}, r"outside the ball-in-hand area x in \[0.02857, 0.635\]"),
     ({"place": (math.nan, 0.6)}, "place must be finite"),

@@ -8,7 +8,7 @@ import pytest
 
 from billiards_env.physics import kinetic_energy, momentum
 from billiards_env.physics.layout import rack_balls
-from billiards_env.physics.simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME
+from billiards_env.physics.simulate import DEFAULT_DT, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, Simulator
 from physics_helpers import (EV_COLLISION, EV_CUSHION, EV_STOP, L, R, W, assert_valid_final_state, balls, carom,
                              collision_velocities, collisions, drag, events_of, frictionless, max_overlap, one_ball,
                              pool, rolling, rolling_time_for_distance, run)
@@ -278,11 +278,24 @@ def _assert_bounded_work(res) -> None:
         assert res.n_steps <= round(DEFAULT_MAX_TIME / DEFAULT_DT) + 1
 
 
+def _unchecked(table, physics, b, solver):
+    """Run past the input checks (speeds above MAX_BALL_SPEED are refused there): the kernels themselves must
+    still end such a shot within their caps."""
+    return Simulator(table, physics, solver=solver).run(b, validate=False)
+
+
+def _fast(b, row: int, angle: float, speed: float):
+    """``b`` with ball ``row`` moving at ``speed`` (set directly: ``strike`` refuses speeds beyond the bound)."""
+    out = b.copy()
+    out.vel[row] = (speed * math.cos(angle), speed * math.sin(angle))
+    return out
+
+
 @pytest.mark.parametrize("solver", ["exact", "step"])
 def test_absurd_speed_terminates_with_a_cap(solver):
     # e_c = 1: nothing can stop a 1e6 m/s ball within 600 s (rolling needs 1e6 / 0.098 s), so a cap must report.
     table = carom(e_c=1.0)
-    res = run(table, rolling(), one_ball(1.0, 0.6, 0.3, 1e6), solver=solver)
+    res = _unchecked(table, rolling(), _fast(balls([[1.0, 0.6]]), 0, 0.3, 1e6), solver)
     _assert_bounded_work(res)
     assert res.status in ("time_cap", "event_cap")
     assert_valid_final_state(res, table)
@@ -293,10 +306,19 @@ def test_absurd_speed_terminates_with_a_cap(solver):
 @pytest.mark.parametrize("solver", ["exact", "step"])
 def test_absurd_speed_break_terminates(solver):
     table = pool()
-    res = run(table, rolling(), rack_balls(table).strike("cue", 0.0, 1e6), solver=solver)
+    res = _unchecked(table, rolling(), _fast(rack_balls(table), 0, 0.0, 1e6), solver)
     _assert_bounded_work(res)
     assert res.status in ("rest", "time_cap", "event_cap")
     assert_valid_final_state(res, table, overlap_tol=1e-9 if solver == "exact" else 1e-6)
+
+
+def test_absurd_speeds_are_refused_at_the_input():
+    """What the kernels survive is not what a scene may ask for: a strike beyond MAX_BALL_SPEED is refused with it."""
+    from billiards_env.physics import MAX_BALL_SPEED, SceneError
+
+    with pytest.raises(SceneError, match=rf"shot.speed: 1e\+06 m/s .*at most {MAX_BALL_SPEED:g} m/s"):
+        one_ball(1.0, 0.6, 0.3, 1e6)
+    assert np.linalg.norm(one_ball(1.0, 0.6, 0.3, MAX_BALL_SPEED).vel[0]) == pytest.approx(MAX_BALL_SPEED)
 
 
 def test_event_cap_is_reported():

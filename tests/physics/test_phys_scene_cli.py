@@ -64,6 +64,9 @@ BAD = {
     "cushion_restitution_negative": (_mutate(_set(["table", "cushion_restitution"], -0.1)), ["cushion_restitution"]),
     "unknown_shot_ball": (_mutate(_set(["shot", "ball"], "ghost")), ["ghost"]),
     "negative_shot_speed": (_mutate(_set(["shot", "speed"], -1.0)), ["speed"]),
+    # Finite but beyond any ball's speed (MAX_BALL_SPEED): refused with the bound, not "run" to rest in no time.
+    "absurd_shot_speed": (_mutate(_set(["shot", "speed"], 1e300)), ["shot.speed", "1e+300 m/s", "at most 50 m/s"]),
+    "ball_velocity_too_fast": (_mutate(_set(["balls", 1, "vx"], 80.0)), ["ball '1'", "80 m/s", "at most 50 m/s"]),
     "unknown_solver": (_mutate(_set(["solver"], {"name": "rk4"})), ["rk4"]),
     "malformed_json": ('{"balls": [{"x": 0.5, "y": 0.5}', ["json"]),
     "empty_balls": (_mutate(_set(["balls"], [])), ["balls"]),
@@ -266,6 +269,27 @@ def test_python_api_rejects_bad_scene_file(name, tmp_path):
     path = _write(tmp_path / "scene.json", API_BAD[name])
     with pytest.raises(SceneError):
         Scene.load(path)
+
+
+def test_the_speed_bound_holds_in_the_batch_api_and_the_env_config():
+    """The bound lives with the balls' validation (``physics.balls.MAX_BALL_SPEED``): the batch API and an env's
+    ``speed_max`` meet the same limit; a shot at the limit itself is played."""
+    from billiards_env.physics import MAX_BALL_SPEED
+    from billiards_env.physics.batch import run_shots
+
+    scene = Scene.from_dict(BASE)
+    sim, balls = scene.simulator(), scene.balls
+    with pytest.raises(SceneError, match=r"shot 1: speed: 1e\+300 m/s is faster than any ball can move here \(at most "
+                                         r"50 m/s"):
+        run_shots(sim, balls, [0.0, 0.0], [2.0, 1e300])
+    res = run_shots(sim, balls, [0.0], [MAX_BALL_SPEED])
+    assert res.status[0] == 0 and res.time[0] > 0.0  # 0: at rest
+    gym = pytest.importorskip("gymnasium")
+    import billiards_env  # noqa: F401
+    from billiards_env.envs.config import ConfigError
+
+    with pytest.raises(ConfigError, match=r"speed_max: 1000.0 m/s is faster than any ball can move here \(at most 50"):
+        gym.make("BilliardsOneBall-v0", speed_max=1000.0)
 
 
 def test_python_api_scene_round_trip_matches_direct_simulation():

@@ -356,19 +356,30 @@ def test_slow_cue_into_touching_cluster(solver, dt, contact, speed):
 
 
 # ------------------------------------------------------------------------------------------- speed range
-SPEEDS = [1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0, 100.0, 1e3]
+#: Up to MAX_BALL_SPEED (50 m/s), the fastest a scene may ask for; the kernels beyond it: tests/physics
+#: test_phys_hard_cases.py (1e6 m/s, past the input checks).
+SPEEDS = [1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 1.0, 10.0, 50.0]
 
 
 @pytest.mark.parametrize("speed", SPEEDS)
 @pytest.mark.parametrize("friction", ["rolling", "drag"])
 def test_speed_range_exact(speed, friction):
-    """Speeds from 1e-6 to 1e3 m/s into a touching rack: invariants hold (fast shots end at the time cap or the
-    event cap, and say so)."""
+    """Speeds from 1e-6 to 50 m/s (the bound) into a touching rack: invariants hold (the fastest shot ends at the
+    time cap or the event cap, and says so)."""
     d = scene_dict(RACK, shot=(0.02, speed), friction=friction, drag_k=1.0, min_speed=1e-7, e_ball=0.95,
-                   max_time=2.0 if speed >= 100 else 60.0, max_events=20_000)
+                   max_time=2.0 if speed >= 50 else 60.0, max_events=20_000)
     rep, res = assert_invariants(d)
-    if speed < 100:
+    if speed < 50:
         assert res.status == "rest"
+
+
+@pytest.mark.parametrize("speed", [100.0, 1e3, 1e300])
+def test_speeds_beyond_the_bound_are_refused_by_the_scene(speed):
+    from billiards_env.physics import SceneError
+    from billiards_env.physics.scene import Scene
+
+    with pytest.raises(SceneError, match=r"shot.speed: .* m/s is faster than any ball can move here \(at most 50"):
+        Scene.from_dict(scene_dict(RACK, shot=(0.02, speed)))
 
 
 @pytest.mark.parametrize("speed", SPEEDS)
