@@ -130,7 +130,7 @@ def classify(env: Any, geo: dict[str, Any], angle: float, speed: float, info: di
         if best_p >= 0:
             out["reach_margin"] = float(stop_distance(v_obj, *law, physics.min_speed) - geo["windows"][best_p][2])
             out["pocket_kind"] = pocket_kind(table, best_p)
-    potted = "1" in info.get("pocketed", ()) or 1 in info.get("pocketed", ())
+    potted = bool(info["pocketed"][1])  # a mask over the rows: row 1 the object ball
     if info.get("is_success"):
         kind = "success"
     elif info.get("scratch"):

@@ -201,7 +201,7 @@ def run_player(spec: PlayerSpec, episodes: int, seed: int, progress: Callable[[i
                 shots += 1
                 ret += float(r)
                 scratches += int(bool(info.get("scratch")))
-                pots += sum(1 for b in info.get("pocketed", ()) if b != "cue")
+                pots += int(np.count_nonzero(info["pocketed"][1:]))  # a mask over the rows; row 0 the cue ball
                 done = term or trunc
             rows.append({"seed": seed + k, "success": bool(info.get("is_success")), "shots": shots,
                          "scratches": scratches, "pots": pots, "return": ret, "all_potted": pots >= n_obj})

@@ -71,8 +71,8 @@ class BilliardsVecEnv(VecEnv):
         return obs, reward.astype(np.float32), dones, infos
 
     def _infos(self, info: dict[str, Any]) -> list[dict[str, Any]]:
-        """One info dict per env: the games' own dicts (the vector env's ``sub_infos``: Gymnasium's stacked arrays
-        keep only the first value's dtype), else the stacked arrays taken apart."""
+        """One info dict per env: the games' own dicts (the vector env's ``sub_infos``, made once), else the stacked
+        arrays taken apart."""
         subs = self.venv.unwrapped.sub_infos
         if subs is not None:
             return [dict(d) for d in subs]
@@ -119,7 +119,10 @@ def _per_env(info: dict[str, Any], n: int) -> list[dict[str, Any]]:
             for k in rows:
                 out[k][key] = nested[k]
             continue
-        items = value.tolist() if isinstance(value, np.ndarray) and value.dtype != object else list(value)
+        if isinstance(value, np.ndarray) and value.dtype != object:  # a row per env: scalars, or arrays (masks)
+            items = value.tolist() if value.ndim == 1 else [v.copy() for v in value]
+        else:
+            items = list(value)
         for k in rows:
             out[k][key] = items[k]
     return out

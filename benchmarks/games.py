@@ -237,7 +237,7 @@ def vector_rate(env_id: str, n: int, seconds: float, rounds: int = 1, between: C
             while first or time.perf_counter() - t0 < seconds / rounds:  # one step at least
                 first = False
                 _, _, _, _, info = vec.step(rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32))
-                stepped = int(np.sum(info.get("_shots", np.ones(n, np.bool_))))  # (tables resetting took no shot)
+                stepped = int(np.sum(info["shots"] > 0))  # (a table resetting took no shot: its info says 0 shots)
                 steps += stepped
                 shots += stepped + int(np.sum(info.get("opponent_shots", 0)))
             wall += time.perf_counter() - t0
@@ -497,7 +497,7 @@ class _VectorStepper:
             first = False
             a = self.rng.uniform(-1.0, 1.0, vec.action_space.shape).astype(np.float32)
             _, _, _, _, info = vec.step(a)
-            stepped = info.get("_shots", np.ones(vec.num_envs, np.bool_))
+            stepped = info["shots"] > 0  # (a table resetting took no shot: its reset info says 0 shots)
             self.steps += int(np.sum(stepped))
             self.shots += int(np.sum(stepped)) + int(np.sum(info.get("opponent_shots", 0)))
         return time.perf_counter() - t0, time.process_time() - c0

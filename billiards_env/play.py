@@ -200,7 +200,7 @@ class PlayApp:
         self.dragging, self.press, self.power = False, None, 0.0
         self.skipping = self.too_soft = False
         if self.is_game:
-            turns = self._opponent_turns(info, self._calls)
+            turns = self._opponent_turns(info, self._calls, self._words)
             self.log.add(turns, self._names())
         self._new_turn()
         base = "aim with the mouse; press, drag and release to shoot"
@@ -243,14 +243,19 @@ class PlayApp:
         return player_names(task)
 
     @staticmethod
-    def _opponent_turns(info: dict[str, Any], calls: list[Any]) -> list[dict[str, Any]]:
-        """The opponent's shots of a step or reset: ``info["opponent_turns"]`` if the env gives it, else the calls
-        recorded after the first ``skip`` ones (the human's own shot)."""
+    def _opponent_turns(info: dict[str, Any], calls: list[Any], words: Any) -> list[dict[str, Any]]:
+        """The opponent's shots of a step or reset: ``info["opponent_turns"]`` if the env gives it (with
+        ``opponent_infos``; put in words by ``words``, the env's ``info_words``), else the calls recorded after the
+        first ``skip`` ones (the human's own shot)."""
         turns = info.get("opponent_turns")
         if turns is not None:
-            return [dict(t) for t in turns]
+            return [words(t) for t in turns]
         n = int(info.get("opponent_shots", 0) or 0)
         return [call_turn(c) for c in calls[len(calls) - n:]] if n else []
+
+    def _words(self, turn: dict[str, Any]) -> dict[str, Any]:
+        """A shot of the env's info (masks over the rows, reason codes) as a turn-log entry (ids, reasons)."""
+        return self.core.info_words(turn)
 
     def _new_turn(self) -> None:
         """Before a shot: pick up the cue ball if in hand, forget the called pocket, aim at the target."""
@@ -310,8 +315,8 @@ class PlayApp:
             self.skipping = False
         self.last_info = info
         if self.is_game:
-            own = call_turn(self._calls[0]) if self._calls else _info_turn(info, shooter)
-            self.log.add([own] + self._opponent_turns(info, self._calls), self._names())
+            own = call_turn(self._calls[0]) if self._calls else {**self._words(info), **_info_turn(info, shooter)}
+            self.log.add([own] + self._opponent_turns(info, self._calls, self._words), self._names())
         self.shots += 1
         self.total += float(reward)
         self.opponent_shots += int(info.get("opponent_shots", 0))
@@ -323,7 +328,8 @@ class PlayApp:
         return info
 
     def _scene_status(self, info: dict[str, Any], reward: float) -> str:
-        potted = ", ".join(b for b in info["pocketed"] if b != "cue") or "nothing"
+        ids = self.core.ball_ids
+        potted = ", ".join(ids[i] for i in np.flatnonzero(info["pocketed"]) if i != 0) or "nothing"
         out = f"shot {self.shots}: {info['speed']:.2f} m/s, potted {potted}" + (
             ", SCRATCH (cue ball re-spotted)" if info["scratch"] else "") + f", reward {reward:+.2f}"
         if self.done:
@@ -603,12 +609,10 @@ def call_turn(verdict: Any) -> dict[str, Any]:
 
 
 def _info_turn(info: dict[str, Any], shooter: int) -> dict[str, Any]:
-    """The human's own shot as a turn-log entry, from a game step's info (when no call was recorded)."""
+    """What a game step's info says of the human's own shot besides its words (``env.info_words``; when no call
+    was recorded): its shooter and whether it ended the game."""
     winner = info.get("winner", -1)
-    return {"pocketed": info.get("pocketed", ()), "foul": info.get("foul", False),
-            "foul_reason": info.get("foul_reason"), "call": info.get("call"), "scratch": info.get("scratch", False),
-            "shooter": shooter, "turn_over": info.get("turn_over"),
-            "game_over": winner in (0, 1) and not info.get("opponent_shots"), "winner": winner}
+    return {"shooter": shooter, "game_over": winner in (0, 1) and not info.get("opponent_shots"), "winner": winner}
 
 
 # --- scripted play (--demo, tests) ------------------------------------------------------------------------------

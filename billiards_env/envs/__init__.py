@@ -11,7 +11,7 @@ from gymnasium.envs.registration import load_env_creator
 from billiards_env.registration import ENVS
 
 from .base import RENDER_MODES, BilliardsEnv
-from .config import ConfigError, EnvConfig, load_config
+from .config import ConfigError, EnvConfig, UnknownKeyError, load_config
 from .eight_ball import EightBallEnv
 from .nine_ball import NineBallEnv
 from .one_ball import OneBallEnv
@@ -21,5 +21,5 @@ from .three_balls import ThreeBallsEnv
 #: Registered id -> environment class (the ids are billiards_env.registration.ENV_IDS).
 ENV_CLASSES: dict[str, type[BilliardsEnv]] = {env_id: load_env_creator(entry) for env_id, entry in ENVS.items()}
 
-__all__ = ["BilliardsEnv", "OneBallEnv", "ThreeBallsEnv", "RackEnv", "EnvConfig", "ConfigError", "load_config",
-           "RENDER_MODES", "ENV_CLASSES"]
+__all__ = ["BilliardsEnv", "OneBallEnv", "ThreeBallsEnv", "RackEnv", "EnvConfig", "ConfigError", "UnknownKeyError",
+           "load_config", "RENDER_MODES", "ENV_CLASSES"]

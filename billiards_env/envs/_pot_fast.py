@@ -13,7 +13,6 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from billiards_env.physics.batch import new_outputs
-from billiards_env.physics.codes import STATUS_NAMES
 
 from billiards_env.shot_path import CueShot, draw_noise
 
@@ -52,9 +51,8 @@ class PotFastStep:
         self.consts = (b.radius[None], b.mass[None], sim._pocket_xy, sim._pocket_r, sim._params, sim.max_events,
                        self.cfg, self.icfg)
         self.noise = np.zeros((1, 4))
-        self.names: dict[int, tuple[str, ...]] = {}
-        self.first_ids = env.ball_ids + (None,)  # index -1 -> None
-        self.tip = env.action_type.spin
+        self.masks: dict[int, np.ndarray] = {}  # a pocketed bit mask -> its row mask
+        self.rows = np.arange(nb)
 
     def step(self, env: "BilliardsEnv", action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
         """``env.step(action)`` for a pot env (the caller has checked that a step is allowed)."""
@@ -75,14 +73,12 @@ class PotFastStep:
         terminated = i[O_TERMINATED] != 0
         truncated = i[O_TRUNCATED] != 0
         mask = i[O_POCKETED]
-        pocketed = self.names.get(mask)
+        pocketed = self.masks.get(mask)
         if pocketed is None:
-            ids = env.ball_ids
-            pocketed = self.names[mask] = tuple(ids[r] for r in range(len(ids)) if mask >> r & 1)
+            pocketed = self.masks[mask] = (mask >> self.rows) & 1 != 0
         info = {"is_success": i[O_SUCCESS] != 0}
-        info.update(shot_info(pocketed, i[O_SCRATCH] != 0, self.first_ids[int(out[5][0])], int(out[2][0]),
-                              float(out[1][0]), STATUS_NAMES[int(out[0][0])], env.shots,
-                              CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP]), self.tip))
+        info.update(shot_info(pocketed.copy(), i[O_SCRATCH] != 0, int(out[5][0]), int(out[2][0]), float(out[1][0]),
+                              int(out[0][0]), env.shots, CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP])))
         env._needs_reset = terminated or truncated
         env.state.changed()
         obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env.state)

@@ -8,7 +8,7 @@ states and runs them for :class:`~billiards_env.envs.vector.BilliardsVectorEnv`,
 generators and the autoreset. The infos are built as arrays, one per key for all the tables
 (:meth:`GameTables.columns` from the kernels' shot records and the game states; the opponent's turns, one dict per
 shot, for all the tables at once), and stacked by :func:`stack_columns` as Gymnasium's ``VectorEnv._add_info``
-stacks the single envs' dicts in sub-env order (dtypes from each key's first value, masks, key order), so the vector
+stacks the single envs' dicts in sub-env order (the schema's dtypes and shapes, masks, key order), so the vector
 info is the one ``SyncVectorEnv`` makes; the per-table dicts (:class:`InfoColumns.dicts`) are made only when asked
 for (``BilliardsVectorEnv.sub_infos``).
 """
@@ -20,7 +20,6 @@ import numpy as np
 
 from billiards_env.games.pool import EightBallSession, NineBallSession
 from billiards_env.physics.batch import _thread_count, use_parallel
-from billiards_env.physics.codes import STATUS_NAMES
 from billiards_env.physics.errors import SceneError
 from billiards_env.physics.layout import DIAMOND_ORDER, RACK_ORDER, foot_spot, head_spot, head_string_x
 from billiards_env.players.geometric import GeometricPlayer
@@ -33,6 +32,7 @@ from .actions import AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, AbsoluteAim, Candida
 from .candidates import EASE_SPREAD
 from .config import ConfigError
 from .games import MAX_RERACKS, MAX_TURN_SHOTS, GameTask
+from .info import OPPONENT_TURNS
 from .observations import CandidateFeatures, Positions
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -198,12 +198,10 @@ class GameTables:
             st.game = _TableGame(self, k)
             self.states.append(st)
         self.ids = t.ball_ids
-        self._ids_of: dict[int, tuple[str, ...]] = {}
-        self._first = self.ids + (None,)
-        self._first_obj = _object_array(self._first)
+        self._bits = np.arange(nb, dtype=np.int64)  # a bit mask over the rows -> its row mask
+        self._numbers = np.asarray(t.state.numbers, np.int64)  # a bit mask over the numbers -> its row mask
         self._radius = r
         self._reset_infos: dict[int, dict[str, Any] | None] = {}
-        self._numbers_of: dict[int, tuple[int, ...]] = {}
         self.legal = np.zeros(n, np.int64)
 
     # --- what Python parts read --------------------------------------------------------------------------------------
@@ -319,32 +317,13 @@ class GameTables:
         env's own dict), else None."""
         return self._reset_infos.get(k)
 
-    def _numbers(self, mask: int) -> tuple[int, ...]:
-        got = self._numbers_of.get(mask)
-        if got is None:
-            got = self._numbers_of[mask] = pj.numbers_of(mask)
-        return got
-
-    def _ids(self, mask: int) -> tuple[str, ...]:
-        got = self._ids_of.get(mask)
-        if got is None:
-            got = self._ids_of[mask] = tuple(self.ids[i] for i in range(len(self.ids)) if mask >> i & 1)
-        return got
-
-    def _tuples(self, masks: np.ndarray, of: Any) -> np.ndarray:
-        """An object array of ``of(mask)`` (a cached tuple) for each of ``masks``: one call per distinct mask."""
-        out = np.empty(len(masks), dtype=object)
-        if len(masks):
-            uniq, which = np.unique(masks, return_inverse=True)
-            table = np.empty(len(uniq), dtype=object)
-            for j, m in enumerate(uniq.tolist()):
-                table[j] = of(m)
-            out[:] = table[which]
-        return out
+    def _row_masks(self, masks: np.ndarray) -> np.ndarray:
+        """Boolean arrays over the rows of bit masks over the rows, ``(len(masks), n_balls)``."""
+        return (masks.astype(np.int64)[:, None] >> self._bits) & 1 != 0
 
     def _turn_lists(self, rows: np.ndarray) -> list[list[dict[str, Any]]]:
-        """``info["opponent_turns"]`` of tables ``rows`` (``GameTask._turn_info`` per opponent shot), built from
-        the shot records of all the tables at once."""
+        """``info["opponent_turns"]`` (with ``opponent_infos``) of tables ``rows`` (``GameTask._turn_info`` per
+        opponent shot), built from the shot records of all the tables at once."""
         counts = self.tout[rows, gk.T_N_OPP]
         total = int(counts.sum())
         if total == 0:
@@ -353,68 +332,66 @@ class GameTables:
         rec = self.rec_opp[np.repeat(rows, counts), np.arange(total) - np.repeat(starts, counts)]
         ints = rec[:, [gk.R_SHOOTER, gk.R_REASON, gk.R_FIRST, gk.R_BIH, gk.R_GROUPS]].astype(np.int64).T.tolist()
         flags = (rec[:, [gk.R_FOUL, gk.R_SCRATCH, gk.R_TURN_OVER]] != 0).T.tolist()
-        pocketed = self._tuples(rec[:, gk.R_POCKETED].astype(np.int64), self._ids).tolist()
-        first, reasons = self._first, pj.REASONS
-        turns = [{"shooter": s, "pocketed": p, "scratch": sc, "first_contact": first[f], "foul": fo,
-                  "foul_reason": reasons[r] if fo else None, "call": reasons[r], "turn_over": to, "angle": a,
-                  "speed": sp, "ball_in_hand": _BIH_VALUES[b], "groups": _GROUPS_VALUES[g]}
+        pocketed = list(self._row_masks(rec[:, gk.R_POCKETED]))
+        turns = [{"shooter": s, "pocketed": p, "scratch": sc, "first_contact": f, "foul": fo,
+                  "foul_reason": r if fo else -1, "call": r, "turn_over": to, "angle": a, "speed": sp,
+                  "ball_in_hand": b, "groups": g}
                  for s, r, f, b, g, fo, sc, to, p, a, sp in zip(*ints, *flags, pocketed, rec[:, gk.R_ANGLE].tolist(),
                                                                 rec[:, gk.R_SPEED].tolist())]
         return [turns[s:s + c] for s, c in zip(starts.tolist(), counts.tolist())]
 
     def columns(self, rows: np.ndarray, step: bool) -> "InfoColumns":
-        """The info of tables ``rows`` (ascending) after their last step (``step``: the game's keys, the agent's
-        shot's call, then :func:`~.info.shot_info`'s keys) or reset (the game's keys: ``GameTask._info`` with no
-        shot), as one array per key (:class:`InfoColumns`), from the kernels' records and the game states; after
-        :meth:`prepare_infos`."""
+        """The info of tables ``rows`` (ascending) after their last step (``step``) or reset (no shot of the agent
+        yet: its keys blank), one array per key of the schema (``info_schema``: the single env's keys, dtypes and
+        shapes, in its order), from the kernels' records and the game states; after :meth:`prepare_infos`."""
         n = self.venv.num_envs
+        schema = self.venv.info_schema
         st = self.gst[rows]
         over = st[:, pj.S_OVER] != 0
         winner = st[:, pj.S_WINNER]
-        cols: dict[str, np.ndarray] = {}
+        cols = {k: np.zeros((n, *spec.shape), spec.dtype) for k, spec in schema.items()}
 
-        def put(key: str, values: Any, dtype: Any) -> None:
-            arr = np.full(n, None, dtype=object) if dtype is object else np.zeros(n, dtype=dtype)
-            arr[rows] = values
-            cols[key] = arr
+        def put(key: str, values: Any) -> None:
+            cols[key][rows] = values
 
+        counts = self.tout[rows, gk.T_N_OPP]
+        turn = np.arange(self.cap) < counts[:, None]  # the opponent's shots of each table's reply
+        opp = self.rec_opp[rows]
+        put("is_success", over & (winner == 0))
+        put("winner", np.where(winner < 0, -1, winner))
+        put("shooter", st[:, pj.S_SHOOTER])
+        put("legal_targets", (np.where(over, 0, self.legal[rows])[:, None] >> self._numbers) & 1 != 0)
+        put("opponent_shots", counts)
+        put("opponent_pocketed", self._row_masks(np.bitwise_or.reduce(
+            np.where(turn, opp[:, :, gk.R_POCKETED], 0).astype(np.int64), axis=1)))
+        put("opponent_fouls", (turn & (opp[:, :, gk.R_FOUL] != 0)).sum(axis=1))
+        put("ball_in_hand", np.where(over, pj.BIH_NO, st[:, pj.S_BIH]))
+        put("groups", st[:, pj.S_GROUPS])
         if step:
             rec = self.rec_agent[rows]
             foul = rec[:, gk.R_FOUL] != 0
-            reason = _REASONS[rec[:, gk.R_REASON].astype(np.int64)]
-            put("foul", foul, np.bool_)
-            put("foul_reason", np.where(foul, reason, None), object)
-            put("turn_over", rec[:, gk.R_TURN_OVER] != 0, np.bool_)
+            reason = rec[:, gk.R_REASON].astype(np.int64)
+            put("foul", foul)
+            put("foul_reason", np.where(foul, reason, -1))
+            put("call", reason)
+            put("turn_over", rec[:, gk.R_TURN_OVER] != 0)
+            put("pocketed", self._row_masks(rec[:, gk.R_POCKETED]))
+            put("scratch", rec[:, gk.R_SCRATCH] != 0)
+            put("first_contact", rec[:, gk.R_FIRST])
+            put("n_events", rec[:, gk.R_N_EVENTS])
+            put("sim_time", rec[:, gk.R_TIME])
+            put("status", rec[:, gk.R_STATUS])
+            put("shots", self.venv.shots[rows])
+            for key, col in (("angle", gk.R_ANGLE), ("speed", gk.R_SPEED), ("side", gk.R_SIDE), ("top", gk.R_TOP)):
+                put(key, rec[:, col])
         else:
-            put("foul", False, np.bool_)
-            put("foul_reason", None, object)
-            put("turn_over", False, np.bool_)
-        put("winner", np.where(winner < 0, -1, winner), np.int64)
-        put("is_success", over & (winner == 0), np.bool_)
-        put("opponent_shots", self.tout[rows, gk.T_N_OPP], np.int64)
-        turns = np.full(n, None, dtype=object)
-        for k, t in zip(rows.tolist(), self._turn_lists(rows)):
-            turns[k] = t
-        cols["opponent_turns"] = turns
-        put("shooter", st[:, pj.S_SHOOTER], np.int64)
-        put("legal_targets", self._tuples(np.where(over, 0, self.legal[rows]), self._numbers), object)
-        put("ball_in_hand", np.where(over, pj.BIH_NO, st[:, pj.S_BIH]), np.int64)  # a code (InfoColumns.BIH)
-        put("groups", _GROUPS[st[:, pj.S_GROUPS]], object)
-        if step:
-            cols["call"] = np.full(n, None, dtype=object)
-            cols["call"][rows] = reason
-            put("pocketed", self._tuples(rec[:, gk.R_POCKETED].astype(np.int64), self._ids), object)
-            put("scratch", rec[:, gk.R_SCRATCH] != 0, np.bool_)
-            put("first_contact", self._first_obj[rec[:, gk.R_FIRST].astype(np.int64)], object)
-            put("n_events", rec[:, gk.R_N_EVENTS].astype(np.int64), np.int64)
-            put("sim_time", rec[:, gk.R_TIME], np.float64)
-            put("status", _STATUS[rec[:, gk.R_STATUS].astype(np.int64)], object)
-            put("shots", self.venv.shots[rows], np.int64)
-            put("angle", rec[:, gk.R_ANGLE], np.float64)
-            put("speed", rec[:, gk.R_SPEED], np.float64)
-            if self.action_type.spin:
-                put("side", rec[:, gk.R_SIDE], np.float64)
-                put("top", rec[:, gk.R_TOP], np.float64)
+            for key in ("foul_reason", "call", "first_contact", "status"):
+                put(key, schema[key].blank)
+        if self.venv.template.config.opponent_infos:
+            turns = np.full(n, None, dtype=object)
+            for k, t in zip(rows.tolist(), self._turn_lists(rows)):
+                turns[k] = t
+            cols[OPPONENT_TURNS] = turns
         return InfoColumns(rows, cols)
 
     def outcome(self, k: int) -> tuple[float, bool, bool]:
@@ -422,26 +399,10 @@ class GameTables:
         return float(self.reward[k]), bool(self.tout[k, gk.T_TERMINATED]), bool(self.tout[k, gk.T_TRUNCATED])
 
 
-def _object_array(values: Any) -> np.ndarray:
-    out = np.empty(len(values), dtype=object)
-    for i, v in enumerate(values):
-        out[i] = v
-    return out
-
-
-_BIH_VALUES = tuple(pj.ball_in_hand_value(c) for c in range(3))
-_GROUPS_VALUES = tuple(pj.groups_value(c) for c in range(3))
-_BIH = _object_array(_BIH_VALUES)
-_GROUPS = _object_array(_GROUPS_VALUES)
-_REASONS = _object_array(pj.REASONS)
-_STATUS = _object_array(STATUS_NAMES)
-
-
 class InfoColumns:
     """The infos of some tables (``rows``, ascending) as one array per key, in the info's key order: ``cols[key][k]``
-    is table ``k``'s value (the arrays span every table; other rows are blank). Bool, int64 and float64 arrays hold
-    those Python types' values, object arrays the values themselves; ``ball_in_hand`` holds the state's code
-    (``pool_judge.BIH_*``: ``False``, ``"anywhere"``, ``"kitchen"``)."""
+    is table ``k``'s value (the arrays span every table; other rows are blank), of the schema's dtype and shape
+    (``opponent_turns``, with ``opponent_infos``: an object array of lists)."""
 
     __slots__ = ("rows", "cols")
 
@@ -450,17 +411,14 @@ class InfoColumns:
         self.cols = cols
 
     def dicts(self) -> list[dict[str, Any]]:
-        """Table ``rows[i]``'s info as the single env returns it (its Python values), for each ``i``."""
+        """Table ``rows[i]``'s info as the single env returns it (Python scalars, arrays), for each ``i``."""
         keys = list(self.cols)
         rows = self.rows
         values = []
-        for key, arr in self.cols.items():
+        for arr in self.cols.values():
             got = arr[rows]
-            if key == "ball_in_hand":
-                got = _BIH[got]
-            values.append(got.tolist())
+            values.append(list(got) if got.ndim > 1 else got.tolist())
         return [dict(zip(keys, vals)) for vals in zip(*values)]
-
 
 
 def stack_columns(n: int, parts: list[tuple[int, Any]]) -> dict[str, Any]:
@@ -468,8 +426,8 @@ def stack_columns(n: int, parts: list[tuple[int, Any]]) -> dict[str, Any]:
     ``VectorEnv._add_info`` stacks the tables' info dicts in its order: ``parts`` ``(position, columns)``, the
     position of the part's first info among those ``_add_info`` takes (for the key order), ``columns`` an
     :class:`InfoColumns` or a dict of keys already stacked (``key: (array, mask)``, e.g. ``final_obs``); each key's
-    dtype from the first table that has it (``ball_in_hand``: a bool array, the state names true, when that value is
-    ``False``), a ``_key`` mask of the tables that have it, blanks (0, False, None) elsewhere."""
+    array of its columns' dtype and shape, a ``_key`` mask of the tables that have it, blanks (0, False, None)
+    elsewhere."""
     order: list[str] = []
     seen: set[str] = set()
     for _, part in sorted(parts, key=lambda p: p[0]):
@@ -486,16 +444,12 @@ def stack_columns(n: int, parts: list[tuple[int, Any]]) -> dict[str, Any]:
         have = [p for _, p in parts if isinstance(p, InfoColumns) and key in p.cols and p.rows.size]
         if not have:
             continue
-        first = min(have, key=lambda p: int(p.rows[0]))
-        as_bool = key == "ball_in_hand" and first.cols[key][first.rows[0]] == pj.BIH_NO
         mask = np.zeros(n, np.bool_)
         array = None
         for p in have:
             v = p.cols[key]
-            if key == "ball_in_hand":
-                v = v != pj.BIH_NO if as_bool else _BIH[v]
             if array is None:
-                array = np.full(n, None, dtype=object) if v.dtype == object else np.zeros(n, dtype=v.dtype)
+                array = np.full(n, None, dtype=object) if v.dtype == object else np.zeros(v.shape, dtype=v.dtype)
             array[p.rows] = v[p.rows]
             mask[p.rows] = True
         out[key], out[f"_{key}"] = array, mask

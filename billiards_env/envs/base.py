@@ -27,7 +27,9 @@ import numpy as np
 from billiards_env.physics.balls import Balls, validate_balls
 from billiards_env.physics.errors import SceneError
 from billiards_env.games import GAMES
+from billiards_env.games.infos import mask_of
 from billiards_env.games.session import GameSession
+from billiards_env.physics.codes import STATUS_NAMES
 from billiards_env.physics.layout import (CAROM_IDS, DIAMOND_ORDER, RACK_ORDER, carom_start_positions,
                                           diamond_positions, foot_spot, head_spot, head_string_x, place_random,
                                           rack_rows, snooker_balls, triangle_positions)
@@ -41,7 +43,7 @@ from ._pot_fast import pot_fast_step
 from ._seeding import np_random
 from .actions import AbsoluteAim, ActionType, action_factory
 from .config import ConfigError, EnvConfig, load_config
-from .info import shot_info
+from .info import OPPONENT_TURNS, blank_info, info_schema, info_words, shot_info
 from .observations import observation_factory
 from .games import task_factory
 from .tasks import Driver
@@ -115,6 +117,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.observation_type = observation_factory(c, c.table, n, self.task.n_features)
         self.action_space = self.action_type.space
         self.observation_space = self.observation_type.space
+        #: Every key of ``info`` with its dtype, shape and meaning: the same keys at reset and at every step
+        #: (:func:`~billiards_env.envs.info.info_schema`; ``docs/infos.md``).
+        self.info_schema = info_schema(c)
         self._driver = Driver(self._play, self._opponent_shot)
         self._exact_type: ActionType | None = None  # see _acting_type()
 
@@ -195,7 +200,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._orientations = None
         self._needs_reset = False
         self.state.changed()
-        info = self.task.reset(self.state, self.np_random, options, self._driver)
+        info = blank_info(self.info_schema)  # the schema's keys: the task's, and no shot yet
+        info.update(self.task.reset(self.state, self.np_random, options, self._driver))
         if self.render_mode == "rgb_array_list":
             self._frames = [self._draw_state()]
         elif self.render_mode == "human":
@@ -219,16 +225,22 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         played = self._play(shot, "agent")
         view = self._shot_view
         self.shots += 1
-        ids = self.ball_ids  # as the shot saw them (a game may reorder the rows when the turn passes)
         reward, terminated, truncated, info = self.task.on_shot(self.state, played, self.shots, self._driver)
         o = played.outcome
-        info.update(shot_info(tuple(ids[i] for i in o.pocketed), o.scratch,
-                              ids[o.first_contact] if o.first_contact >= 0 else None, o.n_events, o.sim_time,
-                              o.status, self.shots, played.shot, self.action_type.spin))
+        info.update(shot_info(mask_of(o.pocketed, self.n_balls), o.scratch, o.first_contact, o.n_events, o.sim_time,
+                              STATUS_NAMES.index(o.status), self.shots, played.shot))
+        if OPPONENT_TURNS in info:  # (opponent_infos) last, as at reset
+            info[OPPONENT_TURNS] = info.pop(OPPONENT_TURNS)
         if self._record:  # the agent's shot, then the opponent's reply in a game
             self._animate_step([(played.trajectory, view)] + self._animations)
         self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
         return self.observation_type.observe(self.state), reward, terminated, truncated, info
+
+    def info_words(self, info: dict[str, Any], ids: Sequence[str] | None = None) -> dict[str, Any]:
+        """``info`` in words (:func:`~billiards_env.envs.info.info_words`): the balls as ids, the codes as names.
+        ``ids``: the rows' ids, by default the rows' now (three-cushion orders its rows shooter first, so a shot's
+        rows are those of its shooter: give the ids as that shot saw them)."""
+        return info_words(info, self.info_schema, tuple(self.ball_ids if ids is None else ids))
 
     def _play(self, shot: CueShot, by: str = "agent") -> PlayedShot:
         """Play ``shot`` through the shot path with the env's noise (``np_random``) and recording; ``by``:

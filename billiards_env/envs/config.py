@@ -82,6 +82,12 @@ class ConfigError(SceneError):
     """A bad environment configuration: the message names the key and says how to fix it (a ``ValueError``)."""
 
 
+class UnknownKeyError(ConfigError, TypeError):
+    """An unknown keyword argument (a config key given to the constructor or ``gym.make`` that does not exist): a
+    :class:`ConfigError` and, as Python's own ``got an unexpected keyword argument`` error, a ``TypeError``, so
+    wrappers that try a keyword and fall back on a ``TypeError`` (TorchRL's ``GymEnv`` tries ``frameskip``) work."""
+
+
 def _doc(text: str, **kw: Any) -> Any:
     return field(metadata={"doc": text}, **kw)
 
@@ -211,6 +217,12 @@ class EnvConfig:
                                   "of potting the easiest next shot (its ghost-ball tolerance against the angle "
                                   "noise, at least 0.002 rad: billiards_env.envs.candidates.next_shot_ease): "
                                   "position play; 0 = off.", default=0.0)
+    opponent_infos: bool = _doc("Games: True adds info['opponent_turns'], the opponent's reply shot by shot (a list "
+                                "of dicts, one per shot: shooter, pocketed, scratch, first_contact, foul, "
+                                "foul_reason, call, turn_over, angle, speed and the game's own keys, in the forms of "
+                                "docs/infos.md); its length varies, so it is off by default (the fixed keys "
+                                "opponent_shots, opponent_pocketed and opponent_fouls sum the reply up).",
+                                default=False)
 
     # --- rendering --------------------------------------------------------------------------------------------
     render_width: int = _doc("Width (px) of rendered frames; the height follows the table's aspect.", default=800)
@@ -299,7 +311,7 @@ def read_yaml(path: str | os.PathLike[str]) -> dict[str, Any]:
 
 #: Keys that only a game reads: given for a scene without rules they are refused (they would do nothing).
 GAME_KEYS = ("opponent", "first_shooter", "opening", "rules", "win_reward", "loss_penalty", "foul_penalty",
-             "position_reward")
+             "position_reward", "opponent_infos")
 
 
 def _check_game_keys(cfg: EnvConfig, given: set[str]) -> EnvConfig:
@@ -391,6 +403,22 @@ def _section_input(key: str, value: Any, source: str) -> dict[str, Any]:
     return dict(value)
 
 
+def _unknown_key(key: str, source: str) -> ConfigError:
+    """The error for an unknown key ``key`` from ``source``: a keyword argument's in Python's words (an
+    :class:`UnknownKeyError`, a ``TypeError`` too), a file's or mapping's as a :class:`ConfigError`; either says
+    where a renamed key went, or the closest valid key, and lists the valid keys."""
+    keyword = source == "keyword arguments"
+    head = f"__init__() got an unexpected keyword argument {key!r}" if keyword else \
+        f"unknown config key {key!r} (from {source})"
+    if key in RENAMED:
+        return (UnknownKeyError if keyword else ConfigError)(f"{head}: it is now {RENAMED[key]}")
+    close = difflib.get_close_matches(key, list(_FIELDS) + sorted(PHYSICS_FIELDS), n=1)
+    hint = f"did you mean {close[0]!r}? " if close else ""
+    return (UnknownKeyError if keyword else ConfigError)(
+        f"{head}; {hint}valid keys: {', '.join(_FIELDS)} (and the physics fields "
+        f"{', '.join(sorted(PHYSICS_FIELDS))})")
+
+
 def _merge(raw: dict[str, Any], layer: Mapping[str, Any], source: str) -> None:
     """Apply one config layer to ``raw`` (plain data): sections merge field by field, physics fields given on
     their own go into the physics section, anything unknown raises."""
@@ -409,13 +437,8 @@ def _merge(raw: dict[str, Any], layer: Mapping[str, Any], source: str) -> None:
             raw[key] = value
         elif key in PHYSICS_FIELDS:
             flat_physics[key] = value
-        elif key in RENAMED:
-            raise ConfigError(f"unknown config key {key!r} (from {source}): it is now {RENAMED[key]}")
         else:
-            close = difflib.get_close_matches(key, list(_FIELDS) + sorted(PHYSICS_FIELDS), n=1)
-            hint = f"did you mean {close[0]!r}? " if close else ""
-            raise ConfigError(f"unknown config key {key!r} (from {source}); {hint}valid keys: "
-                              f"{', '.join(_FIELDS)} (and the physics fields {', '.join(sorted(PHYSICS_FIELDS))})")
+            raise _unknown_key(key, source)
     if "preset" in flat_physics and "physics" not in layer:
         raw["physics"] = {}
     for key, value in flat_physics.items():

@@ -56,8 +56,8 @@ class EightBallEnv(BilliardsEnv):
     ## Episode End
 
     Terminated when the game is over (``info["winner"]``: 0 the agent, 1 the opponent, -1 while it goes on), or with ``opponent=None`` at the agent's first foul or
-    miss; truncated after ``max_shots`` (150) shots of the agent. ``info`` as in ``Billiards9Ball-v0``, plus
-    ``groups`` (player 0's, player 1's).
+    miss; truncated after ``max_shots`` (150) shots of the agent. ``info`` as in ``Billiards9Ball-v0`` (``groups``: 0
+    open table, 1 the agent has the solids, 2 the stripes).
 
     ## Arguments
 

@@ -4,7 +4,8 @@ alone.
 A :class:`GameTask` runs a :class:`~billiards_env.games.session.GameSession` on the env's table state (the rules'
 state, the calls, the respots, the score), and when the turn passes it lets the opponent shoot until it is the
 agent's turn again or the game is over: one ``env.step`` is one shot of the agent plus the opponent's reply
-(``info["opponent_turns"]`` describes each of its shots). With ``opponent=None`` the agent plays alone and the
+(``info["opponent_shots"]``, ``opponent_pocketed`` and ``opponent_fouls`` sum it up; with ``opponent_infos=True``
+``info["opponent_turns"]`` describes each of its shots). With ``opponent=None`` the agent plays alone and the
 episode ends at its first foul or miss (run-out practice). In two-player mode (:mod:`billiards_env.multi`) nobody
 plays automatically.
 
@@ -21,6 +22,7 @@ from typing import TYPE_CHECKING, Any, Callable
 import numpy as np
 
 from billiards_env.games import GameSpec, game_spec
+from billiards_env.games.infos import code_of, mask_of
 from billiards_env.games.session import GameSession, Verdict
 from billiards_env.physics.aim import aim_angle
 from billiards_env.players import make_player
@@ -28,6 +30,7 @@ from billiards_env.shot_path import CueShot, PlayedShot
 from billiards_env.table_state import TableState
 
 from .candidates import next_shot_ease
+from .info import OPPONENT_TURNS
 from .tasks import Driver, PotTask, Task
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -242,47 +245,54 @@ class GameTask(Task):
             shot = driver.opponent_shot()
             self.before_shot(shot)
             played = driver.play(shot, "opponent")
-            ids = s.table.ids  # as the shot saw them (a game may reorder the rows when the turn passes)
-            turns.append(self._turn_info(self._judge(s.table, played), played, ids))
+            turns.append(self._turn_info(self._judge(s.table, played), played))
         if not s.game_over and s.shooter != self.agent:  # pragma: no cover - a stuck opponent
             raise RuntimeError(f"the opponent took {cap} shots in one turn without the game ending or the turn "
                                "passing; raise max_shots if its game allows longer turns")
         return turns
 
-    def _turn_info(self, v: Verdict, played: PlayedShot, ids: tuple[str, ...]) -> dict[str, Any]:
-        """What one opponent shot did (an entry of ``info["opponent_turns"]``; ``ids``: the rows' ids when it was
-        played)."""
+    def _turn_info(self, v: Verdict, played: PlayedShot) -> dict[str, Any]:
+        """What one opponent shot did (an entry of the opponent's turns, in the info's forms: ``pocketed`` a mask
+        over the rows and ``first_contact`` a row as the shot saw them, the reasons as codes)."""
         o = played.outcome
+        reasons = self.session.reasons
         return {
-            "shooter": v.shooter,
-            "pocketed": tuple(ids[i] for i in o.pocketed),
-            "scratch": o.scratch,
-            "first_contact": ids[o.first_contact] if o.first_contact >= 0 else None,
-            "foul": v.foul,
-            "foul_reason": v.reason if v.foul else None,
-            "call": v.reason,
-            "turn_over": v.turn_over,
-            "angle": played.shot.angle,
-            "speed": played.shot.speed,
+            "shooter": int(v.shooter),
+            "pocketed": mask_of(o.pocketed, self.session.table.n_balls),
+            "scratch": bool(o.scratch),
+            "first_contact": int(o.first_contact),
+            "foul": bool(v.foul),
+            "foul_reason": code_of(reasons, v.reason) if v.foul else -1,
+            "call": code_of(reasons, v.reason),
+            "turn_over": bool(v.turn_over),
+            "angle": float(played.shot.angle),
+            "speed": float(played.shot.speed),
             **self.session.call_info(v),
         }
 
     def _info(self, v: Verdict | None, turns: list[dict[str, Any]]) -> dict[str, Any]:
+        """The game's keys of the info (in the schema's order, :func:`~.info.game_keys`) after the agent's shot
+        judged ``v`` (None: at reset) and the opponent's ``turns``."""
         s = self.session
+        reasons = s.reasons
+        n = s.table.n_balls
         info: dict[str, Any] = {
-            "foul": bool(v.foul) if v is not None else False,
-            "foul_reason": v.reason if (v is not None and v.foul) else None,
-            "turn_over": bool(v.turn_over) if v is not None else False,
-            "winner": -1 if s.winner is None else s.winner,  # an int always (vector envs stack info values)
             "is_success": bool(s.game_over and s.winner == self.agent),
+            "foul": bool(v.foul) if v is not None else False,
+            "foul_reason": code_of(reasons, v.reason) if (v is not None and v.foul) else -1,
+            "call": code_of(reasons, v.reason) if v is not None else -1,
+            "turn_over": bool(v.turn_over) if v is not None else False,
+            "winner": -1 if s.winner is None else int(s.winner),
+            "shooter": int(s.shooter),
+            "legal_targets": s.legal_mask(),
             "opponent_shots": len(turns),
-            "opponent_turns": turns,
-            "shooter": s.shooter,
-            "legal_targets": s.legal_names(),
+            "opponent_pocketed": np.logical_or.reduce([t["pocketed"] for t in turns]) if turns
+            else np.zeros(n, np.bool_),
+            "opponent_fouls": sum(t["foul"] for t in turns),
             **s.call_info(v),
         }
-        if v is not None:
-            info["call"] = v.reason
+        if self.config.opponent_infos:
+            info[OPPONENT_TURNS] = turns
         return info
 
     # --- what is drawn --------------------------------------------------------------------------------------------

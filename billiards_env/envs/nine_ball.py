@@ -58,10 +58,12 @@ class NineBallEnv(BilliardsEnv):
 
     Terminated when the game is over (``info["winner"]``: 0 the agent, 1 the opponent, -1 while it goes on), or with
     ``opponent=None`` (run-out practice) at the agent's first foul or miss. Truncated after ``max_shots`` (100)
-    shots of the agent. ``info``: ``foul``, ``foul_reason``, ``turn_over``, ``ball_in_hand`` (for the agent's next
-    shot), ``winner``, ``is_success`` (the agent won), ``opponent_shots``, ``shooter``, ``legal_targets``,
-    ``call`` (the referee's reason) and the shot keys of every env (``pocketed``, ``scratch``, ``first_contact``,
-    ``n_events``, ``sim_time``, ``status``, ``shots``, ``angle``, ``speed``).
+    shots of the agent. ``info`` (the same keys at reset and every step, fixed
+    forms: ``docs/infos.md``, ``env.unwrapped.info_schema``): ``is_success`` (the agent won), ``foul``,
+    ``foul_reason`` and ``call`` (reason codes), ``turn_over``, ``winner``, ``shooter``, ``legal_targets`` (a mask
+    over the rows), ``opponent_shots``, ``opponent_pocketed``, ``opponent_fouls``, ``ball_in_hand`` (a code, for the
+    agent's next shot), ``groups`` and the shot keys of every env (``pocketed``, ``scratch``, ``first_contact``,
+    ``n_events``, ``sim_time``, ``status``, ``shots``, ``angle``, ``speed``, ``side``, ``top``).
 
     ## Arguments
 

@@ -61,10 +61,10 @@ class OneBallEnv(BilliardsEnv):
     ``step()`` after a step that returned ``terminated`` or ``truncated`` raises
     ``gymnasium.error.ResetNeeded``: call ``reset()`` (vector envs and SB3 do).
 
-    ``info`` of every step: ``is_success``, ``pocketed`` (ids pocketed by this shot), ``scratch``,
-    ``first_contact`` (id of the first ball the cue ball hit, or None), ``n_events``, ``sim_time`` (simulated
-    seconds), ``status`` (``rest``, ``time_cap`` or ``event_cap``), ``shots``, ``angle`` and ``speed`` (of
-    the shot actually played, noise included).
+    ``info`` (the same keys at reset, blank, and at every step: ``docs/infos.md``): ``is_success``, ``pocketed``
+    (a mask over the rows), ``scratch``, ``first_contact`` (the row of the first ball the cue ball hit, -1 none),
+    ``n_events``, ``sim_time`` (simulated seconds), ``status`` (0 rest, 1 time_cap, 2 event_cap), ``shots``,
+    ``angle``, ``speed``, ``side`` and ``top`` (of the shot actually played, noise included).
 
     ## Arguments
 

@@ -53,9 +53,9 @@ class SnookerEnv(BilliardsEnv):
     ## Episode End
 
     Terminated when the frame is over (``info["winner"]``: 0 the agent, 1 the opponent); truncated after
-    ``max_shots`` (250) shots of the agent. ``info``: ``points`` (scored by the shot), ``foul``, ``foul_points``,
-    ``foul_reason``, ``score``, ``on`` (the ball on now), ``break``, ``ball_in_hand``, ``turn_over``, ``call``,
-    ``winner``, ``legal_targets``, ``opponent_turns`` (one dict per opponent shot) and the shot keys of every env.
+    ``max_shots`` (250) shots of the agent. ``info`` (fixed keys and forms: ``docs/infos.md``):
+    the keys every game shares (``Billiards9Ball-v0``), ``points`` (scored by the shot), ``foul_points``, ``score``,
+    ``on`` (the ball on now, a code), ``break``, ``ball_in_hand`` (1: in the D) and the shot keys of every env.
 
     ## Arguments
 

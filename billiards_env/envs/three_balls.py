@@ -62,8 +62,8 @@ class ThreeBallsEnv(BilliardsEnv):
     ``step()`` after a step that returned ``terminated`` or ``truncated`` raises
     ``gymnasium.error.ResetNeeded``: call ``reset()`` (vector envs and SB3 do).
 
-    ``info`` of every step: ``is_success``, ``pocketed``, ``scratch``, ``first_contact``, ``n_events``,
-    ``sim_time``, ``status`` (``rest``, ``time_cap`` or ``event_cap``), ``shots``, ``angle``, ``speed``.
+    ``info`` (the same keys at reset and every step: ``docs/infos.md``): ``is_success``, ``pocketed``, ``scratch``,
+    ``first_contact``, ``n_events``, ``sim_time``, ``status``, ``shots``, ``angle``, ``speed``, ``side``, ``top``.
 
     ## Arguments
 

@@ -52,9 +52,10 @@ class ThreeCushionEnv(BilliardsEnv):
     ## Episode End
 
     Terminated when a player reaches the target (``info["winner"]``; -1 for a draw with an innings limit);
-    truncated after ``max_shots`` (200) shots of the agent. ``info``: ``point``, ``cushions`` (the cue ball's
-    cushion contacts before the second ball), ``score``, ``run``, ``turn_over``, ``foul``, ``call``, ``winner``,
-    ``opponent_turns`` and the shot keys of every env.
+    truncated after ``max_shots`` (200) shots of the agent. ``info`` (fixed keys and forms:
+    ``docs/infos.md``; rows shooter first): the keys every game shares (``Billiards9Ball-v0``), ``point``,
+    ``cushions`` (the cue ball's cushion contacts before the second ball), ``score``, ``run`` and the shot keys of
+    every env.
 
     ## Arguments
 

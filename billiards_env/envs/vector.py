@@ -41,7 +41,6 @@ from numba import typed
 
 from billiards_env.physics.balls import Balls
 from billiards_env.physics.batch import new_outputs, simulate_into, use_parallel
-from billiards_env.physics.codes import STATUS_NAMES
 from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES
 from billiards_env.registration import ENVS, vector_entry_point
 from billiards_env.table_state import TableState
@@ -56,8 +55,6 @@ from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_
                               pot_step_spin, prepare_shots)
 from .base import RENDER_MODES, BilliardsEnv
 from .config import ConfigError
-
-_STATUS = np.array(STATUS_NAMES, dtype=object)
 
 
 class BilliardsVectorEnv(VectorEnv):
@@ -96,6 +93,8 @@ class BilliardsVectorEnv(VectorEnv):
         c = t.config
         self.metadata = {**type(self).metadata, "render_fps": c.render_fps, "autoreset_mode": self.autoreset_mode}
         self.single_observation_space = t.observation_space
+        #: The info's keys and forms (every sub-env's: :func:`~.info.info_schema`, ``docs/infos.md``).
+        self.info_schema = t.info_schema
         self.single_action_space = t.action_space
         self.observation_space = batch_space(t.observation_space, self.num_envs)
         self.action_space = batch_space(t.action_space, self.num_envs)
@@ -160,8 +159,7 @@ class BilliardsVectorEnv(VectorEnv):
         # Shots and scoring.
         self._spin_model = t._spin
         self._positions_obs = bool(self._icfg[I_POSITIONS_OBS])
-        self._first_obj = np.array(self.ball_ids + (None,), dtype=object)  # index -1 -> None
-        self._pocketed_names: dict[int, tuple[str, ...]] = {}
+        self._bits = np.arange(nb, dtype=np.int64)  # a pocketed bit mask -> its row mask
         # Per-sub-env random generators (as each single env's np_random), and the compiled code's view of them.
         self._rngs: list[np.random.Generator | None] = [None] * n
         self._rng_seeds: list[int | None] = [None] * n
@@ -207,10 +205,9 @@ class BilliardsVectorEnv(VectorEnv):
         self._reset_rows(rows, options or None)
         self._observe(rows)
         self._ever_reset = True
-        infos: dict[str, Any] = {}
         if self.games is not None:  # the games' reset info, stacked as SyncVectorEnv stacks it
-            infos = self._game_infos([(rows, False)], rows)
-        return self._obs.copy(), infos
+            return self._obs.copy(), self._game_infos([(rows, False)], rows)
+        return self._obs.copy(), _select(self._blank_info(), rows, n)
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
         """Step every sub-env (one shot each; sub-envs whose episode ended reset as ``autoreset_mode`` says)."""
@@ -267,7 +264,7 @@ class BilliardsVectorEnv(VectorEnv):
         term = active & (iout[:, O_TERMINATED] != 0)
         trunc = active & (iout[:, O_TRUNCATED] != 0)
         done = term | trunc
-        step_info = self._step_info(stepped, status, sim_time, n_events, first)
+        step_info = self._step_info(status, sim_time, n_events, first)
         if split or not self._positions_obs:
             self._observe(stepped)
         infos: dict[str, Any] = {}
@@ -277,15 +274,16 @@ class BilliardsVectorEnv(VectorEnv):
             for k, row in zip(ended.tolist(), self._obs[ended]):  # (rows of a fresh copy)
                 final_obs[k] = row
             final_mask = done.copy()
-            kept = np.flatnonzero(active & ~done)
-            infos = _select(step_info, kept, n)
-            infos["final_obs"], infos["_final_obs"] = final_obs, final_mask
-            infos["final_info"], infos["_final_info"] = _select(step_info, ended, n), final_mask.copy()
+            final = {"final_obs": final_obs, "_final_obs": final_mask,
+                     "final_info": _select(step_info, ended, n), "_final_info": final_mask.copy()}
+            infos = _select(self._blank_info(step_info, ended), stepped, n)  # the ended tables' reset info
+            # Keyed as SyncVectorEnv keys it: the first sub-env's entries first.
+            infos = {**final, **infos} if done[0] else {**infos, **final}
             self._reset_rows(ended, None)
             self._observe(ended)
             self._needs_reset[:] = False
         else:
-            infos = _select(step_info, stepped, n)
+            infos = _select(self._blank_info(step_info, np.flatnonzero(resetting)), np.arange(n), n)
             self._needs_reset = done
         if resetting.any():
             rows = np.flatnonzero(resetting)
@@ -517,8 +515,7 @@ class BilliardsVectorEnv(VectorEnv):
     def sub_infos(self) -> list[dict[str, Any]] | None:
         """The native games' info of the last reset or step as one dict per sub-env, as the single env returns it
         (for a sub-env that ended in a same-step autoreset: its last step's; ``{}`` for one not reset), before
-        Gymnasium's stacking makes one array per key (whose dtype is the first value's: ``ball_in_hand``'s ``False``
-        and ``"anywhere"`` become bools there). None on the pot task or before the first reset. Made when asked
+        Gymnasium's stacking makes one array per key. None on the pot task or before the first reset. Made when asked
         for, once per step. SB3's adapter reads it."""
         if self.games is None or self._sub_rows is None:
             return None
@@ -529,45 +526,37 @@ class BilliardsVectorEnv(VectorEnv):
             self._sub_cache = out
         return self._sub_cache
 
-    def _step_info(self, rows: np.ndarray, status, sim_time, n_events, first) -> dict[str, np.ndarray]:
-        """The single env's step ``info`` of every table, as arrays (rows not in ``rows`` are filler)."""
-        n = self.num_envs
+    def _step_info(self, status, sim_time, n_events, first) -> dict[str, np.ndarray]:
+        """The pot task's step ``info`` of every table, as one array per key of the schema (rows that did not
+        shoot are filler)."""
         iout, fout = self._iout, self._fout
-        pocketed = np.full(n, None, dtype=object)
-        masks, which = np.unique(iout[rows, O_POCKETED], return_inverse=True)
-        pocketed[rows] = self._pocketed_tuples(masks)[which]
-        first_contact = np.full(n, None, dtype=object)
-        first_contact[rows] = self._first_obj[first[rows]]
-        status_arr = np.full(n, None, dtype=object)
-        status_arr[rows] = _STATUS[status[rows]]
         info = {
             "is_success": iout[:, O_SUCCESS] != 0,
-            "pocketed": pocketed,
+            "pocketed": (iout[:, O_POCKETED, None] >> self._bits) & 1 != 0,
             "scratch": iout[:, O_SCRATCH] != 0,
-            "first_contact": first_contact,
-            "n_events": n_events.copy(),
-            "sim_time": sim_time.copy(),
-            "status": status_arr,
+            "first_contact": first.astype(np.int64),
+            "n_events": n_events.astype(np.int64),
+            "sim_time": sim_time.astype(np.float64),
+            "status": status.astype(np.int64),
             "shots": self.shots.copy(),
             "angle": fout[:, F_ANGLE].copy(),
             "speed": fout[:, F_SPEED].copy(),
+            "side": fout[:, F_SIDE].copy(),
+            "top": fout[:, F_TOP].copy(),
         }
-        if self.template.action_type.spin:
-            info["side"] = fout[:, F_SIDE].copy()
-            info["top"] = fout[:, F_TOP].copy()
+        assert list(info) == list(self.info_schema)
         return info
 
-    def _pocketed_tuples(self, masks: np.ndarray) -> np.ndarray:
-        """The ``pocketed`` info value (ids of the rows set in each bit mask) of each mask, as an object array."""
-        out = np.empty(len(masks), dtype=object)
-        names = self._pocketed_names
-        ids = self.ball_ids
-        for j, m in enumerate(masks.tolist()):
-            got = names.get(m)
-            if got is None:
-                got = names[m] = tuple(ids[i] for i in range(len(ids)) if m >> i & 1)
-            out[j] = got
-        return out
+    def _blank_info(self, info: dict[str, np.ndarray] | None = None, rows: Any = slice(None)
+                    ) -> dict[str, np.ndarray]:
+        """``info`` (default: new arrays for every table) with the tables ``rows`` holding a reset's values (the
+        schema's blanks: no shot yet)."""
+        n = self.num_envs
+        if info is None:
+            info = {k: np.zeros((n, *spec.shape), spec.dtype) for k, spec in self.info_schema.items()}
+        for k, spec in self.info_schema.items():
+            info[k][rows] = spec.blank
+        return info
 
     # ======================================================================================================
     # Rendering (the template env draws sub-env render_env)
@@ -632,7 +621,7 @@ def _select(info: dict[str, np.ndarray], rows: np.ndarray, n: int) -> dict[str, 
     mask[rows] = True
     out: dict[str, np.ndarray] = {}
     for key, arr in info.items():
-        blank = np.full(n, None, dtype=object) if arr.dtype == object else np.zeros(n, dtype=arr.dtype)
+        blank = np.full(n, None, dtype=object) if arr.dtype == object else np.zeros(arr.shape, dtype=arr.dtype)
         blank[rows] = arr[rows]
         out[key] = blank
         out["_" + key] = mask.copy()

@@ -15,11 +15,12 @@ import numpy as np
 
 from billiards_env.physics.layout import CAROM_IDS, carom_start_positions
 from billiards_env.physics.outcome import ShotOutcome
-from billiards_env.rules.three_cushion import (ThreeCushion, ThreeCushionCall, ThreeCushionOptions,
+from billiards_env.rules.three_cushion import (REASONS, ThreeCushion, ThreeCushionCall, ThreeCushionOptions,
                                                ThreeCushionState, summarize_carom)
 from billiards_env.table_state import ShotView, TableState
 
 from .hud import base_hud
+from .infos import InfoSpec, flag, integer
 from .session import GameSession, Verdict
 
 #: Drawing numbers of the white, the yellow and the red (the renderer's plain carom balls).
@@ -34,6 +35,7 @@ class CaromSession(GameSession):
     options_type = ThreeCushionOptions
     n_features = N_CAROM_FEATURES
     option_keys = ("score", "break_shot")
+    reasons = REASONS
     ball_in_hand = False
     players = {"random": "billiards_env.players.random:RandomPlayer",
                "geometric": "billiards_env.players.three_cushion:CaromGeometricPlayer",
@@ -135,7 +137,14 @@ class CaromSession(GameSession):
         call = verdict.call if verdict is not None else None
         return {"point": bool(call.point) if call is not None else False,
                 "cushions": int(call.cushions) if call is not None else 0,
-                "score": tuple(int(x) for x in s.score), "run": int(s.run)}
+                "score": np.array(s.score, np.int64), "run": int(s.run)}
+
+    @classmethod
+    def info_keys(cls, n_balls: int) -> dict[str, InfoSpec]:
+        return {"point": flag("the shot scored a point"),
+                "cushions": integer("the cue ball's cushion contacts before it met the second ball"),
+                "score": InfoSpec(np.int64, (2,), "both players' points (player 0 is the agent)", 0),
+                "run": integer("the shooter's points in this inning")}
 
     def hud(self, names: tuple[str, str]) -> dict[str, Any]:
         s = self.state

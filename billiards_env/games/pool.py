@@ -18,14 +18,22 @@ from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.physics.table import Table
 from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions,
                                  GameState, NineBall, NineBallOptions, RulesError, ShotInfo, summarize_outcome)
+from billiards_env.rules.pool_judge import REASONS
 from billiards_env.rules.state import Call
 from billiards_env.table_state import Area, RectArea, ShotView, TableState
 
 from .hud import base_hud
+from .infos import InfoSpec, code
 from .session import GameSession, Verdict
 
 #: The game features every pool game observes (see :meth:`PoolSession.features`).
 N_POOL_FEATURES = 11
+#: ``info["ball_in_hand"]``: the code of the state's value (0 none, 1 anywhere, 2 in the kitchen).
+BALL_IN_HAND_NAMES = ("none", ANYWHERE, KITCHEN)
+_BIH_CODE = {False: 0, ANYWHERE: 1, KITCHEN: 2}
+#: ``info["groups"]``: 0 open table, 1 player 0 has the solids (player 1 the stripes), 2 player 0 the stripes.
+GROUPS_NAMES = ("open", SOLIDS, STRIPES)
+_GROUPS_CODE = {None: 0, (SOLIDS, STRIPES): 1, (STRIPES, SOLIDS): 2}
 
 
 def pool_place_area(state: GameState, table: Table, radius: float) -> Area | None:
@@ -52,6 +60,7 @@ class PoolSession(GameSession):
     players = {"random": "billiards_env.players.random:RandomPlayer",
                "geometric": "billiards_env.players.geometric:GeometricPlayer",
                "search": "billiards_env.players.search:SearchPlayer"}
+    reasons = REASONS
     #: The ball the ``ball_in_hand`` opening respots if the break dropped it (the game's last ball).
     opening_respot: ClassVar[int]
 
@@ -183,9 +192,17 @@ class PoolSession(GameSession):
         return Verdict(call.shooter, bool(call.foul), call.reason, bool(call.turn_over), bool(call.game_over),
                        call.winner, float(len(self._kept(call))), call)
 
+    @classmethod
+    def info_keys(cls, n_balls: int) -> dict[str, InfoSpec]:
+        return {"ball_in_hand": code("the cue ball in hand for the next shot: 0 no, 1 anywhere, 2 in the kitchen "
+                                     "(behind the head string)", BALL_IN_HAND_NAMES, 0),
+                "groups": code("the groups (8-ball): 0 open table, 1 player 0 (the agent) has the solids, 2 the "
+                               "stripes", GROUPS_NAMES, 0)}
+
     def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
         s = self.state
-        return {"ball_in_hand": s.ball_in_hand if not s.game_over else False, "groups": s.groups}
+        return {"ball_in_hand": _BIH_CODE[s.ball_in_hand] if not s.game_over else 0,
+                "groups": _GROUPS_CODE[None if s.groups is None else tuple(s.groups)]}
 
     def _what(self) -> str | None:
         call = self.last_call
@@ -265,4 +282,5 @@ class EightBallSession(PoolSession):
         return targets if targets == (8,) else ()
 
 
-__all__ = ["PoolSession", "NineBallSession", "EightBallSession", "N_POOL_FEATURES", "pool_place_area"]
+__all__ = ["PoolSession", "NineBallSession", "EightBallSession", "N_POOL_FEATURES", "pool_place_area",
+           "BALL_IN_HAND_NAMES", "GROUPS_NAMES"]

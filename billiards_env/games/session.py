@@ -22,6 +22,7 @@ from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.table_state import ShotView, TableState
 
 from .hud import Score
+from .infos import InfoSpec, mask_of
 from .registry import GameSpec
 
 
@@ -63,6 +64,8 @@ class GameSession(ABC):
     #: The built-in players by name: ``module:Class`` of each (a class taking ``seed``, with ``act(state, obs,
     #: codec)``); the env's ``opponent`` names one.
     players: ClassVar[dict[str, str]] = {}
+    #: Every reason a call may give (``Verdict.reason``): the info's ``call`` and ``foul_reason`` are codes into it.
+    reasons: ClassVar[tuple[str, ...]] = ()
 
     def __init__(self, spec: GameSpec, rules: Any, table: TableState) -> None:
         self.spec = spec
@@ -161,8 +164,17 @@ class GameSession(ABC):
             self._viewer = saved
 
     def legal_names(self) -> tuple[Any, ...]:
-        """The balls the shooter may hit first, as the rules name them (``info["legal_targets"]``)."""
+        """The balls the shooter may hit first, as the rules name them (the HUD's, the players')."""
         return () if self.game_over else tuple(self.rules.legal_targets(self.state))
+
+    def legal_rows(self) -> list[int]:
+        """Rows of the balls the shooter may hit first."""
+        return list(self.view(self.table).targets)
+
+    def legal_mask(self) -> np.ndarray:
+        """The balls the shooter may hit first as a boolean array over the rows (``info["legal_targets"]``; all
+        False once the game is over)."""
+        return mask_of(() if self.game_over else self.legal_rows(), self.table.n_balls)
 
     # --- shots -------------------------------------------------------------------------------------------------------
     def begin_shot(self, shot: Any) -> None:
@@ -200,9 +212,14 @@ class GameSession(ABC):
         """The balls the shot pocketed for its shooter that stay down (the HUD's score)."""
         return ()
 
+    @classmethod
+    def info_keys(cls, n_balls: int) -> dict[str, InfoSpec]:
+        """The form of :meth:`call_info`'s keys (in its order) on a table of ``n_balls`` rows."""
+        return {}
+
     def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
         """The game's own keys of a step's ``info`` after ``verdict`` (None: after a reset): what the state is
-        now and what the call said."""
+        now and what the call said, in the forms of :meth:`info_keys`."""
         return {}
 
     def markings(self) -> dict[str, Any] | None:

@@ -17,12 +17,14 @@ import numpy as np
 from billiards_env.physics.layout import (SNOOKER_COLOURS, SNOOKER_IDS, d_geometry, nearest_point_in_d,
                                           spot_snooker_colours)
 from billiards_env.physics.outcome import ShotOutcome
-from billiards_env.rules.snooker import (COLOUR_VALUES, IN_D, ON_COLOUR, ON_RED, RED_VALUE, VALUE_NAMES, Snooker,
+from billiards_env.rules.snooker import (COLOUR_VALUES, IN_D, ON_COLOUR, ON_NAMES, ON_RED, REASONS, RED_VALUE,
+                                         VALUE_NAMES, Snooker,
                                          SnookerCall, SnookerOptions, SnookerShotInfo, SnookerState, SnookerSummary,
                                          ball_on_mask, snooker_values, snookered)
 from billiards_env.table_state import HalfDiscArea, ShotView, TableState
 
 from .hud import base_hud
+from .infos import InfoSpec, code, code_of, integer
 from .session import GameSession, Verdict
 
 #: The most points of a frame without fouls (15 reds with blacks, then the colours): the features' scale.
@@ -40,6 +42,7 @@ class SnookerSession(GameSession):
     options_type = SnookerOptions
     n_features = N_SNOOKER_FEATURES
     option_keys = ("ball_in_hand", "on", "score", "reds_left")
+    reasons = REASONS
     players = {"random": "billiards_env.players.random:RandomPlayer",
                "geometric": "billiards_env.players.snooker:SnookerGeometricPlayer",
                "search": "billiards_env.players.snooker:SnookerSearchPlayer"}
@@ -176,13 +179,24 @@ class SnookerSession(GameSession):
 
     def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
         """``points`` (scored by the shot), ``foul_points`` (the penalty it gave away), ``score`` (both players),
-        ``on`` (the ball on now), ``break`` (the striker's break), ``ball_in_hand`` (``"d"`` or False)."""
+        ``on`` (the ball on now, a code), ``break`` (the striker's break), ``ball_in_hand`` (1: in the D)."""
         s = self.state
         call = verdict.call if verdict is not None else None
         return {"points": int(call.points) if call is not None else 0,
                 "foul_points": int(call.foul_points) if call is not None else 0,
-                "score": tuple(int(x) for x in s.score), "on": s.on, "break": int(s.break_points),
-                "ball_in_hand": s.ball_in_hand if not s.frame_over else False}
+                "score": np.array(s.score, np.int64), "on": code_of(ON_NAMES, s.on), "break": int(s.break_points),
+                "ball_in_hand": int(bool(s.ball_in_hand) and not s.frame_over)}
+
+    @classmethod
+    def info_keys(cls, n_balls: int) -> dict[str, InfoSpec]:
+        return {"points": integer("points the shot scored for its striker"),
+                "foul_points": integer("the penalty the shot gave away (0 without a foul)"),
+                "score": InfoSpec(np.int64, (2,), "both players' points (player 0 is the agent)", 0),
+                "on": code("the ball on now: 0 any colour, 1 a red, 2-7 that colour (yellow, green, brown, blue, "
+                           "pink, black)", ON_NAMES, 1),
+                "break": integer("the striker's break so far"),
+                "ball_in_hand": code("the cue ball in hand (in the D) for the next shot: 0 no, 1 yes",
+                                     ("none", IN_D), 0)}
 
     def markings(self) -> dict[str, Any]:
         """The baulk line and the D."""

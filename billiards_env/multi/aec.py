@@ -30,7 +30,7 @@ from billiards_env.rules import GameState
 #: The two agents; ``player_k`` is player ``k`` of the rules (``GameState.shooter``, ``Call.winner``).
 AGENTS = ("player_0", "player_1")
 #: Keys of the single-agent env's info that mean nothing with two agents (replaced per agent).
-_SINGLE_AGENT_KEYS = ("is_success", "opponent_shots")
+_SINGLE_AGENT_KEYS = ("is_success", "opponent_shots", "opponent_pocketed", "opponent_fouls")
 
 
 class BilliardsGameAEC(AECEnv, EzPickle):
@@ -91,11 +91,14 @@ class BilliardsGameAEC(AECEnv, EzPickle):
 
     ## Info
 
-    ``infos[agent]``: the last shot's call (``foul``, ``foul_reason``, ``turn_over``, ``call``, ``pocketed``,
-    ``scratch``, ``first_contact``, ``n_events``, ``sim_time``, ``status``, ``shots``, ``angle``, ``speed``),
-    the state after it (``shooter``: the player to shoot next, 0 or 1; ``ball_in_hand``: his; ``legal_targets``,
-    ``groups``, ``winner``: 0, 1 or -1 while the game goes on), and per agent ``player`` (its index),
-    ``shot_by`` (who played the shot, -1 after reset) and ``is_success`` (it won the game).
+    ``infos[agent]``: the single-agent env's keys in the same forms (``docs/infos.md``: masks over the ball rows,
+    rows and codes), the same keys after reset and after every shot: the last shot's call (``foul``,
+    ``foul_reason``, ``turn_over``, ``call``, ``pocketed``, ``scratch``, ``first_contact``, ``n_events``,
+    ``sim_time``, ``status``, ``shots``, ``angle``, ``speed``, ``side``, ``top``), the state after it
+    (``shooter``: the player to shoot next, 0 or 1; ``ball_in_hand``: his; ``legal_targets``, ``winner``: 0, 1 or
+    -1 while the game goes on; the game's own keys), and per agent ``player`` (its index), ``shot_by`` (who played
+    the shot, -1 after reset) and ``is_success`` (it won the game). The opponent's keys of the single-agent env
+    (``opponent_shots``, ``opponent_pocketed``, ``opponent_fouls``) are left out: every shot is an agent's.
 
     ## Arguments
 
@@ -234,7 +237,8 @@ class BilliardsGameAEC(AECEnv, EzPickle):
     def _infos(self, info: dict[str, Any], shot_by: int) -> dict[str, dict[str, Any]]:
         common = {k: v for k, v in info.items() if k not in _SINGLE_AGENT_KEYS}
         s = self.task.session
-        return {a: {**common, "player": k, "shot_by": shot_by, "is_success": bool(s.game_over and s.winner == k)}
+        return {a: {**{k_: v.copy() if isinstance(v, np.ndarray) else v for k_, v in common.items()},
+                    "player": k, "shot_by": shot_by, "is_success": bool(s.game_over and s.winner == k)}
                 for a, k in self.agent_index.items()}
 
 

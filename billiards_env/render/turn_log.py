@@ -1,7 +1,8 @@
 """The play window's turn log: one short line per shot of a game, newest last, from plain data.
 
-A shot is a dict as in the env's ``info["opponent_turns"]`` (``pocketed``, ``foul``, ``foul_reason``, ``call``,
-``scratch``, ``shooter``; optional ``turn_over``, ``game_over``, ``winner``, ``push_out``): the same for the
+A shot is a dict in words (``pocketed``: numbers or ids, ``foul``, ``foul_reason`` and ``call``: the referee's
+reasons, ``scratch``, ``shooter``; optional ``turn_over``, ``game_over``, ``winner``, ``push_out``), which the play
+window makes from the referee's calls or from the env's info (``env.unwrapped.info_words``), the same for the
 human's own shots, so the window shows why each turn ended ("you: no ball pocketed - turn over", "geometric: FOUL
 wrong ball first - you have ball in hand"). No rules here: the words come from the referee's call.
 """

@@ -74,6 +74,10 @@ MISS = "foul and a miss"  #: (option ``miss_rule``) a foul that failed to hit a 
 THREE_MISSES = "three misses"  #: (option ``miss_rule``) the frame is lost on the ``miss_limit``-th miss in a row
 FRAME_OVER = "frame over"  #: the last ball went down, or a foul on the last black
 RESPOTTED_BLACK = "re-spotted black"  #: a tie after the last black: the black is re-spotted to decide the frame
+#: Every reason a call gives (``SnookerCall.reason``).
+REASONS = FOULS + (POT, NO_POT, MISS, THREE_MISSES, FRAME_OVER, RESPOTTED_BLACK)
+#: What the striker is on, by the compiled judge's ``on`` code: ``ON_NAMES[code]``.
+ON_NAMES = tuple(_ON_NAME[k] for k in range(len(_ON_NAME)))
 
 
 def snooker_values(ids: Sequence[str]) -> np.ndarray:
@@ -719,7 +723,8 @@ class Snooker:
 __all__ = [
     "SNOOKER", "RED_VALUE", "COLOUR_VALUES", "VALUE_NAMES", "ON_RED", "ON_COLOUR", "IN_D", "MIN_PENALTY", "IN_OFF",
     "NO_BALL_HIT", "BALL_NOT_ON_FIRST", "BALL_NOT_ON_POTTED", "FOULS", "POT", "NO_POT", "MISS", "THREE_MISSES",
-    "FRAME_OVER", "RESPOTTED_BLACK", "snooker_values", "judge", "judge_batch", "ball_on_mask", "snookered",
+    "FRAME_OVER", "RESPOTTED_BLACK", "REASONS", "ON_NAMES", "snooker_values", "judge", "judge_batch", "ball_on_mask",
+    "snookered",
     "SnookerOptions", "SnookerState", "SnookerShotInfo", "SnookerSummary", "summarize_snooker", "SnookerCall",
     "Snooker",
 ]

@@ -52,6 +52,8 @@ INNINGS_LIMIT = "innings limit"
 BREAK_NOT_ON_RED = "break not on the red"  #: the opening shot did not meet the red first, directly
 NO_CONTACT = "no contact"  #: the cue ball met neither ball (a foul only with the option ``miss_is_foul``)
 FOULS = (BREAK_NOT_ON_RED, NO_CONTACT)
+#: Every reason a call gives (``ThreeCushionCall.reason``).
+REASONS = (POINT, NO_POINT, TARGET_REACHED, EQUALIZING, INNINGS_LIMIT) + FOULS
 
 #: Roles of the balls in a summary.
 RED = "red"
@@ -371,6 +373,7 @@ class ThreeCushion:
 
 
 __all__ = ["THREE_CUSHION", "CAROM_IDS", "CUSHIONS_NEEDED", "POINT", "NO_POINT", "TARGET_REACHED", "EQUALIZING",
-           "INNINGS_LIMIT", "BREAK_NOT_ON_RED", "NO_CONTACT", "FOULS", "RED", "OPPONENT", "scan_carom",
+           "INNINGS_LIMIT", "BREAK_NOT_ON_RED", "NO_CONTACT", "FOULS", "REASONS", "RED", "OPPONENT",
+           "scan_carom",
            "scan_carom_batch", "carom_rows", "CaromSummary", "summarize_carom", "ThreeCushionOptions",
            "ThreeCushionState", "ThreeCushionCall", "ThreeCushion"]

@@ -30,7 +30,7 @@ import billiards_env  # noqa: E402,F401
 
 FILE = Path(__file__).with_name("fingerprint.json")
 #: Keys of ``info`` added after the fingerprint was taken: not hashed.
-ADDED_INFO_KEYS = frozenset({"opponent_turns"})
+ADDED_INFO_KEYS: frozenset[str] = frozenset()
 
 POT = ("BilliardsOneBall-v0", "BilliardsThreeBalls-v0", "BilliardsRack-v0")
 GAMES = ("Billiards9Ball-v0", "Billiards8Ball-v0")

@@ -138,11 +138,13 @@ def test_a_blocked_ball_is_kicked_at_off_a_cushion():
     shot = u.shot_from_action(a)
     assert (shot.angle, shot.speed, shot.side, shot.top) == (cands.kick.shot.angle, cands.kick.shot.speed, 0.0, 0.0)
     _, _, _, _, info = env.step(a)
-    assert info["first_contact"] == "1" and info["foul_reason"] != "wrong ball first"
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["first_contact"] == "1" and w["foul_reason"] != "wrong ball first"
     # A pot instead hits the 2 first.
     env.reset(seed=0, options={"positions": pos, "pocketed": off})
     _, _, _, _, info = env.step(np.zeros(env.action_space.shape))
-    assert info["first_contact"] == "2" and info["foul_reason"] == "wrong ball first"
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["first_contact"] == "2" and w["foul_reason"] == "wrong ball first"
 
 
 def test_ball_in_hand_places_the_cue_ball_behind_the_chosen_ghost_ball():

@@ -64,6 +64,32 @@ def test_one_schema_for_scene_files_and_env_configs():
         gym.make("BilliardsOneBall-v0", table_length=3.0)
 
 
+@pytest.mark.parametrize("env_id", IDS)
+def test_unknown_keyword_is_a_type_error_in_pythons_words(env_id):
+    """gym.make(id, frameskip=4) fails as Python fails on an unexpected keyword (a TypeError: wrappers such as
+    TorchRL's GymEnv try frameskip and fall back on a TypeError), still a ConfigError (a ValueError) with the
+    closest key and the list of valid keys."""
+    with pytest.raises(TypeError, match="unexpected keyword argument") as got:
+        gym.make(env_id, frameskip=4)
+    err = got.value
+    assert isinstance(err, TypeError) and isinstance(err, ValueError) and isinstance(err, ConfigError)
+    assert str(err).startswith("__init__() got an unexpected keyword argument 'frameskip'")
+    assert "valid keys:" in str(err) and "max_shots" in str(err)
+    with pytest.raises(TypeError, match=r"unexpected keyword argument 'max_shot'; did you mean 'max_shots'\?"):
+        gym.make(env_id, max_shot=3)
+    with pytest.raises(TypeError, match=r"unexpected keyword argument 'table_length': it is now table="):
+        gym.make(env_id, table_length=3.0)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'frameskip'"):  # the native vector env too
+        gym.make_vec(env_id, 2, vectorization_mode="vector_entry_point", frameskip=4)
+
+
+def test_unknown_key_in_a_file_or_mapping_stays_a_config_error(tmp_path):
+    """Only keyword arguments are Python's TypeError; a key in a mapping or a file is a plain ConfigError."""
+    with pytest.raises(ConfigError, match=r"unknown config key 'frameskip' \(from config\)") as got:
+        gym.make("BilliardsOneBall-v0", config={"frameskip": 4})
+    assert not isinstance(got.value, TypeError)
+
+
 def test_scene_defaults_per_id():
     one = gym.make("BilliardsOneBall-v0").unwrapped
     three = gym.make("BilliardsThreeBalls-v0").unwrapped

@@ -53,7 +53,8 @@ def test_shot_animation_frames_and_final_state():
     info = anim.step(action)[4]
     still.step(action)
     frames = anim.render()
-    assert info["pocketed"] == ("1",)
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["pocketed"] == ("1",)
     assert len(frames) == len(frame_times(info["sim_time"], 10)) > 2
     assert np.array_equal(frames[-1], still.render())  # the animation ends on the state after the shot
     assert not np.array_equal(frames[0], frames[-1])  # and the balls moved in between
@@ -340,7 +341,8 @@ def test_game_animation_shows_whose_shot_it_is():
     env.reset(seed=4, options={"positions": full})
     env.render()
     info = env.step(env.action_from_shot(-np.pi / 2, 0.8))[4]  # straight into the near cushion: no contact
-    assert info["foul_reason"] == "no contact" and info["opponent_shots"] >= 1
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["foul_reason"] == "no contact" and info["opponent_shots"] >= 1
     frames = env.render()
     rect = env.renderer.hud_rect
     marks = []

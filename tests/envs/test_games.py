@@ -46,15 +46,18 @@ def test_nine_ball_legal_pot_keeps_the_turn_and_the_nine_wins():
     pos, off = table(9, DIAG_CUE, {1: DIAG_BALL, 9: (0.6, 0.7)})
     env.reset(seed=0, options={"positions": pos, "pocketed": off})
     obs, reward, terminated, truncated, info = env.step(corner_pot(env, 1))
-    assert info["pocketed"] == ("1",) and not info["foul"] and not info["turn_over"]
-    assert info["opponent_shots"] == 0 and info["shooter"] == 0 and info["legal_targets"] == (9,)
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["pocketed"] == ("1",) and not info["foul"] and not info["turn_over"]
+    assert info["opponent_shots"] == 0 and info["shooter"] == 0 and w["legal_targets"] == ("9",)
+    assert np.flatnonzero(info["legal_targets"]).tolist() == [9]  # a mask over the rows
     assert (reward, terminated) == (0.0, False)
     # Now the 9 alone: put it on the diagonal and pot it legally -> the agent wins.
     pos2 = env.unwrapped.balls.pos.copy()
     pos2[0], pos2[9] = DIAG_CUE, DIAG_BALL
     env.unwrapped.balls.pos[...] = pos2
     obs, reward, terminated, truncated, info = env.step(corner_pot(env, 9))
-    assert terminated and info["winner"] == 0 and info["is_success"] and info["call"] == "9 pocketed"
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert terminated and info["winner"] == 0 and info["is_success"] and w["call"] == "9 pocketed"
     assert reward == pytest.approx(1.0)
     with pytest.raises(gym.error.ResetNeeded):
         env.step(env.action_space.sample())
@@ -65,9 +68,10 @@ def test_nine_ball_wrong_ball_first_is_a_foul_with_ball_in_hand_for_the_opponent
     pos, off = table(9, DIAG_CUE, {1: (0.5, 0.3), 2: DIAG_BALL, 9: (0.6, 0.9)})
     env.reset(seed=0, options={"positions": pos, "pocketed": off})
     obs, reward, terminated, truncated, info = env.step(corner_pot(env, 2))
-    assert info["first_contact"] == "2" and info["foul"] and info["foul_reason"] == "wrong ball first"
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["first_contact"] == "2" and info["foul"] and w["foul_reason"] == "wrong ball first"
     assert terminated and info["winner"] == -1 and reward == 0.0
-    assert info["ball_in_hand"] == "anywhere" and info["shooter"] == 1
+    assert w["ball_in_hand"] == "anywhere" and info["shooter"] == 1
     assert not env.unwrapped.balls.on_table[2]  # balls pocketed on a foul stay down (all but the 9)
 
 
@@ -76,7 +80,8 @@ def test_the_nine_pocketed_on_a_foul_is_respotted_on_the_foot_spot():
     pos, off = table(9, DIAG_CUE, {3: (0.4, 1.0), 9: DIAG_BALL})
     env.reset(seed=0, options={"positions": pos, "pocketed": off})
     obs, reward, terminated, truncated, info = env.step(corner_pot(env, 9))
-    assert info["pocketed"] == ("9",) and info["foul_reason"] == "wrong ball first"
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["pocketed"] == ("9",) and w["foul_reason"] == "wrong ball first"
     u = env.unwrapped
     assert u.balls.on_table[9] and np.allclose(u.balls.pos[9], foot_spot(u.table))
 
@@ -135,10 +140,11 @@ def test_eight_ball_called_pocket_decides_the_game(called, wins):
     u = env.unwrapped
     assert u.state.view.call_pocket  # solids cleared: on the 8
     obs, reward, terminated, truncated, info = env.step(u.action_from_shot(math.pi / 4, 1.2, pocket=called))
-    assert terminated and info["pocketed"] == ("8",)
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert terminated and w["pocketed"] == ("8",)
     assert info["winner"] == (0 if wins else 1)
     assert reward == pytest.approx(1.0 if wins else -1.0)
-    assert info["call"] == ("8 pocketed" if wins else "8 in an uncalled pocket")
+    assert w["call"] == ("8 pocketed" if wins else "8 in an uncalled pocket")
 
 
 def test_opponent_replies_inside_step_and_game_features_follow_the_state():
@@ -148,7 +154,8 @@ def test_opponent_replies_inside_step_and_game_features_follow_the_state():
     u = env.unwrapped
     # A miss that touches nothing: a foul, the opponent replies with ball in hand and shoots until it misses or wins.
     obs, reward, terminated, truncated, info = env.step(u.action_from_shot(-math.pi / 2, 0.6))
-    assert info["foul_reason"] == "no contact" and info["opponent_shots"] >= 1
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["foul_reason"] == "no contact" and info["opponent_shots"] >= 1
     assert terminated == (info["winner"] != -1)
     if not terminated:
         feats = obs[-11:]
@@ -179,7 +186,8 @@ def test_players_follow_the_rules(game, player):
                 placed += 1
             obs, reward, terminated, truncated, info = env.step(action)
             fouls += info["foul"]
-            wrong += info["first_contact"] is not None and info["first_contact"] not in legal
+            w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+            wrong += w["first_contact"] is not None and w["first_contact"] not in legal
             if terminated or truncated:
                 break
     assert placed >= 1  # every game starts with ball in hand in the kitchen

@@ -51,8 +51,9 @@ def test_a_potted_red_scores_one_and_the_colour_is_on():
     pos[0] = (L - 0.8, W - 0.8)
     env.reset(options={"positions": pos, "pocketed": pocketed})
     obs, reward, term, trunc, info = env.step(u.action_from_shot(math.pi / 4, 2.0))
-    assert info["pocketed"] == ("red1",) and info["points"] == 1 and not info["foul"]
-    assert info["on"] == "colour" and info["score"] == (1, 0) and not info["turn_over"] and not term
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["pocketed"] == ("red1",) and info["points"] == 1 and not info["foul"]
+    assert w["on"] == "colour" and w["score"] == (1, 0) and not info["turn_over"] and not term
     assert u.state.view.targets == tuple(SNOOKER_IDS.index(c) for c in ("yellow", "green", "brown", "blue", "pink",
                                                                           "black"))
 
@@ -63,12 +64,13 @@ def test_hitting_a_colour_first_on_a_red_gives_its_value_away():
     pos[0] = (2.2, 0.889)  # between the blue and the pink: the pink straight ahead
     env.reset(options={"positions": pos, "pocketed": pocketed})
     *_, term, trunc, info = env.step(u.action_from_shot(0.0, 1.0))
-    assert info["first_contact"] == "pink" and info["foul"] and info["foul_points"] == 6
-    assert info["score"] == (0, 6) and info["turn_over"] and term  # alone: the practice ends at a foul
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert w["first_contact"] == "pink" and info["foul"] and info["foul_points"] == 6
+    assert w["score"] == (0, 6) and info["turn_over"] and term  # alone: the practice ends at a foul
 
 
 def test_an_in_off_puts_the_cue_ball_in_hand_in_the_d():
-    env, u = _snooker(opponent="geometric")
+    env, u = _snooker(opponent="geometric", opponent_infos=True)  # the opponent's shots one by one too
     pos, pocketed = _table(u, red_at=(0.3, 1.4))
     pos[0] = (3.3, 0.25)  # straight into the bottom-right corner pocket
     env.reset(options={"positions": pos, "pocketed": pocketed})
@@ -76,6 +78,7 @@ def test_an_in_off_puts_the_cue_ball_in_hand_in_the_d():
     assert info["scratch"] and info["foul"] and info["foul_points"] == 4 and info["turn_over"]
     turns = info["opponent_turns"]
     assert turns and turns[0]["shooter"] == 1  # the opponent played, from the D
+    assert info["opponent_shots"] == len(turns) and info["opponent_fouls"] == sum(t["foul"] for t in turns)
     assert u.balls.on_table[0]
 
 
@@ -85,7 +88,8 @@ def test_an_in_off_leaves_the_next_striker_in_hand_in_the_d():
     pos[0] = (3.3, 0.25)
     env.reset(options={"positions": pos, "pocketed": pocketed})
     *_, info = env.step(u.action_from_shot(math.atan2(-0.25, L - 3.3), 2.0))
-    assert info["scratch"] and info["ball_in_hand"] == "d"
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert info["scratch"] and w["ball_in_hand"] == "d"
     cx, cy, r = d_geometry(u.table)
     assert u.balls.on_table[0] and HalfDiscArea(cx - r, cx, cy - r, cy + r).contains(*u.balls.pos[0], tol=1e-6)
 
@@ -117,7 +121,11 @@ def test_three_cushion_opening_must_meet_the_red_first():
     yellow = u.balls.pos[1]
     angle = math.atan2(yellow[1] - u.balls.pos[0][1], yellow[0] - u.balls.pos[0][0])
     *_, term, trunc, info = env.step(u.action_from_shot(angle, 1.0))
-    assert info["first_contact"] == "yellow" and info["foul"] and info["call"] == "break not on the red"
+    # Rows as the shot saw them: row 1 the other cue ball (yellow for white's opening; the turn passed, and with it
+    # the rows: now yellow is row 0).
+    w = env.unwrapped.info_words(info, ids=("white", "yellow", "red"))
+    assert info["first_contact"] == 1 and u.ball_ids[0] == "yellow"
+    assert w["first_contact"] == "yellow" and info["foul"] and w["call"] == "break not on the red"
     assert not info["point"] and info["turn_over"] and term
 
 
@@ -129,7 +137,8 @@ def test_a_point_from_the_search_player_counts_and_the_inning_goes_on():
     action = player.act(env, None)
     assert player.last.point
     *_, term, trunc, info = env.step(action)
-    assert info["point"] and info["cushions"] >= 3 and info["score"] == (1, 0) and info["run"] == 1
+    w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
+    assert info["point"] and info["cushions"] >= 3 and w["score"] == (1, 0) and info["run"] == 1
     assert not info["turn_over"] and not term and u.ball_ids[0] == "white"
 
 

@@ -101,18 +101,28 @@ def test_game_vector_env_names_the_batch_shape():
 
 
 def test_info_describes_every_opponent_shot():
-    env = gym.make("Billiards9Ball-v0", opponent="geometric")
+    """With opponent_infos=True, info["opponent_turns"] describes each shot of the reply in the info's forms, and the
+    fixed keys (opponent_shots, opponent_pocketed, opponent_fouls) sum it up; without it they alone are there."""
+    env = gym.make("Billiards9Ball-v0", opponent="geometric", opponent_infos=True)
+    plain = gym.make("Billiards9Ball-v0", opponent="geometric")
+    assert "opponent_turns" not in plain.reset(seed=1)[1]
     env.reset(seed=1)
     seen = 0
     for _ in range(20):
-        obs, reward, term, trunc, info = env.step(env.action_space.sample())
+        action = env.action_space.sample()
+        obs, reward, term, trunc, info = env.step(action)
+        assert "opponent_turns" not in plain.step(action)[4]
         turns = info["opponent_turns"]
         assert len(turns) == info["opponent_shots"]
+        assert info["opponent_fouls"] == sum(t["foul"] for t in turns)
+        pocketed = np.zeros(env.unwrapped.n_balls, bool)
         for t in turns:
+            pocketed |= t["pocketed"]
             assert t["shooter"] == 1
             assert set(t) >= {"pocketed", "foul", "foul_reason", "call", "scratch", "first_contact", "turn_over"}
-            assert (t["foul_reason"] is not None) == t["foul"]
-            assert t["scratch"] == ("cue" in t["pocketed"])
+            assert (t["foul_reason"] >= 0) == t["foul"] and t["call"] >= 0
+            assert t["scratch"] == t["pocketed"][0]  # row 0: the cue ball
+        assert np.array_equal(info["opponent_pocketed"], pocketed)
         if turns:
             # Only the last shot of a reply passes the turn back (or ends the game).
             assert all(not t["turn_over"] for t in turns[:-1])
@@ -120,6 +130,7 @@ def test_info_describes_every_opponent_shot():
             seen += len(turns)
         if term or trunc:
             env.reset()
+            plain.reset()
     assert seen > 0
 
 

@@ -59,15 +59,17 @@ def test_nine_ball_turns_ball_in_hand_and_the_winner():
     # player_0 pots the 1 straight in: legal, keeps the table.
     env.step(game.action_from_shot(TOWARDS_TOP_RIGHT, 1.2))
     info = env.infos["player_0"]
-    assert info["pocketed"] == ("1",) and not info["foul"] and not info["turn_over"] and info["shot_by"] == 0
+    w = game.info_words(info)  # the balls as ids, the codes as names
+    assert w["pocketed"] == ("1",) and not info["foul"] and not info["turn_over"] and info["shot_by"] == 0
     assert env.agent_selection == "player_0" and env.rewards == {"player_0": 0.0, "player_1": 0.0}
-    assert info["legal_targets"] == (9,)
+    assert w["legal_targets"] == ("9",) and "opponent_shots" not in info
 
     # player_0 then strikes the cue ball up the table, away from the 9: no contact, a foul.
     env.step(game.action_from_shot(math.pi / 2, 0.6))
     for agent in ("player_0", "player_1"):
         info = env.infos[agent]
-        assert info["foul_reason"] == "no contact" and info["shooter"] == 1 and info["ball_in_hand"] == "anywhere"
+        w = game.info_words(info)
+        assert w["foul_reason"] == "no contact" and info["shooter"] == 1 and w["ball_in_hand"] == "anywhere"
         assert info["player"] == ("player_0", "player_1").index(agent) and info["shot_by"] == 0
     assert env.agent_selection == "player_1"
     mine, theirs = features(env, "player_1"), features(env, "player_0")
@@ -81,7 +83,7 @@ def test_nine_ball_turns_ball_in_hand_and_the_winner():
     env.step(action)
     assert env.terminations == {"player_0": True, "player_1": True} and not any(env.truncations.values())
     assert env.rewards == {"player_0": -1.0, "player_1": 1.0}
-    assert env.unwrapped.winner == "player_1" and env.infos["player_1"]["call"] == "9 pocketed"
+    assert env.unwrapped.winner == "player_1" and game.info_words(env.infos["player_1"])["call"] == "9 pocketed"
     final = finish(env)
     assert final["player_1"][0] == 1.0 and final["player_0"][0] == -1.0  # accumulated since each last acted
     assert final["player_1"][1]["is_success"] and not final["player_0"][1]["is_success"]
@@ -100,7 +102,7 @@ def test_eight_ball_each_agent_sees_its_own_group_and_an_uncalled_eight_loses():
 
     # player_0 pots the 8 in the top-right pocket (5) but calls pocket 0: the shooter loses, player_1 wins.
     env.step(game.action_from_shot(TOWARDS_TOP_RIGHT, 1.2, pocket=0))
-    assert env.infos["player_0"]["call"] == "8 in an uncalled pocket"
+    assert game.info_words(env.infos["player_0"])["call"] == "8 in an uncalled pocket"
     assert env.rewards == {"player_0": -1.0, "player_1": 1.0}  # zero-sum, to the player who did not shoot too
     final = finish(env)
     assert final["player_1"][0] == 1.0 and final["player_1"][1]["is_success"]
@@ -111,7 +113,8 @@ def test_eight_ball_legal_eight_in_the_called_pocket_wins_and_shaping_is_per_sho
     pos, off = table(15, TOP_RIGHT_CUE, {8: TOP_RIGHT_BALL, 11: (0.6, 0.3)})
     env.reset(seed=0, options={"positions": pos, "pocketed": off, "groups": ("solids", "stripes")})
     env.step(env.unwrapped.game_env.action_from_shot(TOWARDS_TOP_RIGHT, 1.2, pocket=5))
-    assert env.infos["player_0"]["call"] == "8 pocketed" and env.unwrapped.winner == "player_0"
+    assert env.unwrapped.game_env.info_words(env.infos["player_0"])["call"] == "8 pocketed"
+    assert env.unwrapped.winner == "player_0"
     # The shooter's shaping (+0.1 for its legal pot) on top of the win; the loser gets only the loss.
     assert env.rewards == {"player_0": pytest.approx(1.1), "player_1": -1.0}
 

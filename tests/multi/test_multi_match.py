@@ -74,7 +74,7 @@ def test_players_act_on_the_single_agent_env_and_follow_the_rules():
             place = game.shot_from_action(action).place
             assert x0 <= place[0] <= x1 and y0 <= place[1] <= y1
         env.step(action)
-        first = env.infos[agent]["first_contact"]
+        first = game.info_words(env.infos[agent])["first_contact"]
         wrong += first is not None and first not in legal
     assert wrong == 0
 

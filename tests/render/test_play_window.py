@@ -6,6 +6,7 @@ import os
 
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
 
+import numpy as np  # noqa: E402
 import pygame  # noqa: E402
 import pytest  # noqa: E402
 
@@ -36,7 +37,7 @@ def test_turn_lines_say_the_call_and_why_the_turn_ended():
     end = {**pot, "pocketed": (9,), "call": "9 pocketed", "game_over": True, "winner": 0}
     assert turn_line(end, NAMES) == ("you: 9 pocketed - you win", "win")
     log = TurnLog()
-    log.add([pot, miss], NAMES)  # the env's info["opponent_turns"] shape: the last of the run ended the turn
+    log.add([pot, miss], NAMES)  # a run of shots in words: the last of the run ended the turn
     assert [line for line, _ in log.lines] == ["you: pocketed 2 - shoot again", "you: no ball pocketed - turn over"]
 
 
@@ -101,16 +102,24 @@ def test_who_breaks_after_r(breaker, expected):
 
 
 def test_log_reads_the_envs_opponent_turns():
-    """Where the env's info gives ``opponent_turns`` (ball ids as strings), the log uses them as they are."""
+    """Where the env's info gives ``opponent_turns`` (``opponent_infos=True``: masks over the rows, reason codes),
+    the log puts them in words with the env's ``info_words``; the human's own shot is read from the step's info."""
+    import gymnasium as gym
+
+    u = gym.make("Billiards9Ball-v0", opponent_infos=True).unwrapped
+    reasons = u.task.session.reasons
+    pocketed = np.zeros(u.n_balls, bool)
+    pocketed[3] = True
     info = {"opponent_shots": 2, "opponent_turns": [
-        {"shooter": 1, "pocketed": ("3",), "scratch": False, "foul": False, "foul_reason": None, "call": "legal",
-         "turn_over": False},
-        {"shooter": 1, "pocketed": ("cue",), "scratch": True, "foul": True, "foul_reason": "scratch",
-         "call": "scratch", "turn_over": True}]}
+        {"shooter": 1, "pocketed": pocketed, "scratch": False, "foul": False, "foul_reason": -1,
+         "call": reasons.index("legal"), "turn_over": False},
+        {"shooter": 1, "pocketed": np.eye(u.n_balls, dtype=bool)[0], "scratch": True, "foul": True,
+         "foul_reason": reasons.index("scratch"), "call": reasons.index("scratch"), "turn_over": True}]}
     log = TurnLog()
-    log.add(play.PlayApp._opponent_turns(info, []), NAMES)
+    log.add(play.PlayApp._opponent_turns(info, [], u.info_words), NAMES)
     assert [line for line, _ in log.lines] == ["geometric: pocketed 3 - shoots again",
                                                "geometric: FOUL scratch - you have ball in hand"]
-    own = play._info_turn({"pocketed": ["cue"], "foul": True, "foul_reason": "scratch", "call": "scratch",
-                           "scratch": True, "turn_over": True, "winner": -1, "opponent_shots": 2}, 0)
+    step = {"pocketed": np.eye(u.n_balls, dtype=bool)[0], "foul": True, "foul_reason": reasons.index("scratch"),
+            "call": reasons.index("scratch"), "scratch": True, "turn_over": True, "winner": -1, "opponent_shots": 2}
+    own = {**u.info_words(step), **play._info_turn(step, 0)}
     assert turn_line(own, NAMES)[0] == "you: FOUL scratch - geometric has ball in hand"
