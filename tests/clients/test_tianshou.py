@@ -19,6 +19,7 @@ def test_collector_and_sac_updates(env_id):
     from tianshou.env import DummyVectorEnv
     from tianshou.utils.net.common import Net
     from tianshou.utils.net.continuous import ContinuousActorProbabilistic, ContinuousCritic
+    from tianshou.utils.torch_utils import policy_within_training_step
 
     import billiards_env  # noqa: F401
 
@@ -41,7 +42,8 @@ def test_collector_and_sac_updates(env_id):
     assert stats.n_collected_steps >= 64 and len(buffer) >= 64
     assert np.all((buffer.obs[: len(buffer)] >= 0) & (buffer.obs[: len(buffer)] <= 1))
     before = [p.detach().clone() for p in critics[0].parameters()]
-    for _ in range(3):
-        algo.update(buffer=buffer, sample_size=32)
+    with policy_within_training_step(policy):  # what Tianshou's trainer does around its updates
+        for _ in range(3):
+            algo.update(buffer=buffer, sample_size=32)
     assert any(not torch.equal(a, b) for a, b in zip(before, critics[0].parameters()))  # the critic learned
     envs.close()

@@ -160,12 +160,11 @@ def test_infos_name_the_active_agent_at_reset_and_every_step():
     env.action_space(AGENTS[0]).seed(0)
     env.action_space(AGENTS[1]).seed(1)
     assert infos[AGENTS[0]]["active_agent"] == infos[AGENTS[1]]["active_agent"] == "player_0"
-    keys = None
+    keys = set(infos[AGENTS[0]])
     while env.agents:
         _, _, _, _, infos = env.step({a: env.action_space(a).sample() for a in env.agents})
-        keys = keys or set(infos[AGENTS[0]])
         for a in AGENTS:
-            assert set(infos[a]) == keys  # the last step's too, after the game ended
+            assert set(infos[a]) == keys  # as after reset; the last step's too, after the game ended
             assert infos[a]["active_agent"] == AGENTS[infos[a]["shooter"]]
 
 
