@@ -594,8 +594,8 @@ def SKIP_KEYS(pg: Any) -> tuple[int, ...]:  # noqa: N802 - a constant that needs
 
 def call_turn(verdict: Any) -> dict[str, Any]:
     """A session's :class:`~billiards_env.games.session.Verdict` (or a pool :class:`~billiards_env.rules.Call`) as a
-    turn-log entry (the keys of the env's ``info["opponent_turns"]``, plus ``turn_over``, ``game_over``, ``winner``
-    and ``push_out``); the balls kept down where the game pockets balls."""
+    turn-log entry in words (``pocketed``, ``foul``, ``foul_reason``, ``call``, ``scratch``, ``shooter``, plus
+    ``turn_over``, ``game_over``, ``winner`` and ``push_out``); the balls kept down where the game pockets balls."""
     call = getattr(verdict, "call", verdict)
     over = getattr(verdict, "game_over", getattr(call, "game_over", False))
     respot = getattr(call, "respot", ())

@@ -406,4 +406,4 @@ def test_native_candidates_kicks(spin):
     for x, y in zip(out[:4], out_r[:4]):
         assert np.array_equal(x, y)
     _same_info(out[4], out_r[4])
-    assert out[4]["first_contact"][0] == "1"  # the kick hit the hidden ball
+    assert out[4]["first_contact"][0] == 1  # the kick hit the hidden ball (row 1: ball "1")
