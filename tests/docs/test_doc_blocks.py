@@ -117,7 +117,7 @@ def run_command(command: str, box: Path, where: str, venv: str | None = None) ->
     command, rule = prepare(command, box)
     rule = rule or Rule("", "no rule: as written")
     if rule.kind == "pip":
-        check_install(command, where)
+        check_install(command, where, venv)
         return
     python = _python(venv or rule.venv)
     if rule.cwd == "root" and rule.venv == ".venv" and "scripts/" in command and not (ROOT / ".venv").exists():
@@ -176,9 +176,9 @@ def run_server(shell: str, cwd: Path, env: dict[str, str], rule: Rule, where: st
                 os.killpg(proc.pid, signal.SIGKILL)
 
 
-def check_install(command: str, where: str) -> None:
-    """An install command in the docs: every package it names is installed here, and every extra it names is one
-    of pyproject.toml's (the tests do not reinstall anything)."""
+def check_install(command: str, where: str, venv: str | None = None) -> None:
+    """An install command in the docs: every package it names is installed here (in ``venv`` for a block that runs
+    in another venv), and every extra it names is one of pyproject.toml's (the tests do not reinstall anything)."""
     words = shlex.split(command)[2:]
     extras_declared = set(_pyproject()["project"]["optional-dependencies"])
     for word in words:
@@ -191,7 +191,13 @@ def check_install(command: str, where: str) -> None:
             continue
         name = re.split(r"[<>=\[ ]", word)[0]
         try:
-            importlib.metadata.version(name)
+            if venv and venv != ".venv":
+                probe = subprocess.run([_python(venv), "-c", f"import importlib.metadata as m; m.version({name!r})"],
+                                       capture_output=True, text=True, timeout=60)
+                if probe.returncode != 0:
+                    raise importlib.metadata.PackageNotFoundError(name)
+            else:
+                importlib.metadata.version(name)
         except importlib.metadata.PackageNotFoundError:
             pytest.fail(f"{where}: `{command}`: {name} is not installed in this venv, so the commands that follow "
                         f"it cannot be tested (pip install -e '.[zoo]' for the RL Zoo)")
