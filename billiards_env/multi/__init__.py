@@ -25,7 +25,8 @@
   (AEC, wrapped), ``parallel_env(**config)`` (:class:`.parallel.BilliardsParallelEnv`: turn-based, the action of
   the agent not to shoot is ignored) and ``raw_env`` (made by :func:`.aec.game_module`); both take
   ``max_cycles`` (the shot limit); the manual is :class:`.aec.BilliardsGameAEC`. Built on the single-agent game
-  env (``env.unwrapped.game_env``), which plays and judges every shot; the two-player env only passes the turn and gives each agent its view and its reward.
+  env (``env.unwrapped.game_env``), which plays and judges every shot; the two-player env only passes the turn
+  and gives each agent its view and its reward.
 - :func:`play_match` (:mod:`.match`): games between two policies (players, SB3 models, callables), seats
   alternating, for self-play evaluation and leagues.
 
