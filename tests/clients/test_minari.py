@@ -11,6 +11,7 @@ from clients import ENV_IDS, require
 @pytest.mark.parametrize("env_id", ENV_IDS)
 def test_record_infos_dataset_round_trip(env_id, tmp_path, monkeypatch):
     require("minari")
+    require("jax")  # DataCollector's episode buffers: minari's "create" extra
     import gymnasium as gym
     import minari
     from minari import DataCollector
