@@ -2,20 +2,22 @@
 
 A config file is a YAML mapping. The entry named after the env id is in the RL Zoo format, so
 ``python -m rl_zoo3.train --algo sac --env BilliardsOneBall-v0 --gym-packages billiards_env
---conf-file configs/train/one_ball_sac.yaml ...`` trains from the same file (with the flags the README gives: the
-zoo knows only ``lin_`` schedules and gives its evaluation env only the command line's env kwargs)::
+--conf-file configs/train/one_ball_sac.yaml ...`` trains from the same file as it is (the README gives the command;
+the zoo knows only ``lin_`` schedules, so a cosine goes in the ``billiards:`` section's ``hyperparams``, which only
+``agents.train`` reads)::
 
     BilliardsOneBall-v0:
       n_timesteps: !!float 1e6
       policy: MlpPolicy
       n_envs: 8
-      learning_rate: !!float 1e-3        # or "lin_1e-3" / "cos_3e-3_1e-5": schedules (see Schedule)
+      learning_rate: !!float 1e-3        # or "lin_1e-3"; "cos_3e-3_1e-5" only under billiards.hyperparams
       batch_size: 256
       policy_kwargs: "dict(net_arch=[128, 128])"
       env_kwargs: {action_type: ghost, observation_type: features}   # RL Zoo >= 2.7 reads this
       ...                                # any other constructor argument of the algorithm
 
     billiards:                           # agents.train only (the RL Zoo ignores other top-level keys)
+      hyperparams: {learning_rate: cos_3e-3_1e-5}   # laid over the entry above: what the zoo cannot parse
       algo: sac                          # sac | td3 | ppo | a2c | ddpg
       env_id: BilliardsOneBall-v0        # which entry above to use (default: the only env entry)
       seed: 0
@@ -88,6 +90,10 @@ class TrainSettings:
     progress_bar: bool = True
     log_interval: int = 0  #: SB3 console log interval (episodes for off-policy, rollouts for on-policy; 0 = off)
     verbose: int = 0
+    #: Values laid over the env entry for agents.train only: what the RL Zoo cannot parse (its schedules are
+    #: ``lin_<x>`` only), e.g. ``{learning_rate: cos_3e-3_3e-5}`` over the entry's constant, so the entry stays
+    #: the zoo's verbatim.
+    hyperparams: dict[str, Any] = field(default_factory=dict)
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any] | None, source: str) -> "TrainSettings":
@@ -97,6 +103,10 @@ class TrainSettings:
         if unknown:
             raise TrainConfigError(f"{source}: unknown key(s) {unknown} in '{SECTION}:'; allowed: {sorted(known)}")
         s = cls(**data)
+        if not isinstance(s.hyperparams, Mapping):
+            raise TrainConfigError(f"{source}: {SECTION}.hyperparams: expected a mapping of zoo keys (e.g. "
+                                   f"{{learning_rate: cos_3e-3_3e-5}}), got {s.hyperparams!r}")
+        s.hyperparams = dict(s.hyperparams)
         if s.budget_clock not in BUDGET_CLOCKS:
             raise TrainConfigError(f"{source}: {SECTION}.budget_clock: unknown {s.budget_clock!r}; use one of "
                                    f"{BUDGET_CLOCKS}")
@@ -176,6 +186,7 @@ def load_train_config(path: str | Path | Mapping[str, Any], env_id: str | None =
     except ValueError as exc:
         raise TrainConfigError(f"{source}: {exc}") from None
     hyper = copy.deepcopy(dict(data[chosen]))
+    hyper.update(copy.deepcopy(settings.hyperparams))  # agents.train's own values (a cosine the zoo cannot read)
     if hyper_overrides:
         for k, v in hyper_overrides.items():
             if k == "env_kwargs" and isinstance(v, Mapping):

@@ -5,6 +5,8 @@
 # ray 2.60), so it gets a venv of its own: .venv keeps the newest Gymnasium and no Ray.
 # `--docs`: only the docs extra (MkDocs, Material, mkdocstrings) in .venv-docs, for `mkdocs build` (the site reads
 # the package's source without importing it: no numba, no torch, no kernels to compile).
+# `--clients`: the same plus the clients extra (TorchRL, Tianshou, skrl, Minari's collector, RL Zoo: the libraries
+# tests/clients runs) in .venv-clients, so their pins never move .venv's.
 # It says what it is doing at each step (a first set-up takes a few minutes, ~90 s of it compiling kernels).
 # TORCH_INDEX_URL: where torch comes from (e.g. PyTorch's CPU wheel index, see the README), if the default index
 # would give a CUDA build (PyPI on Linux does).
@@ -13,10 +15,12 @@ cd "$(dirname "$0")/.."
 PY=${PYTHON:-python3}
 VENV=.venv
 EXTRAS=agents,dev
-if [ "${1:-}" = "--rllib" ]; then
-  VENV=.venv-rllib
-  EXTRAS=agents,rllib,dev
-fi
+case "${1:-}" in
+  --rllib) VENV=.venv-rllib; EXTRAS=agents,rllib,dev ;;
+  --clients) VENV=.venv-clients; EXTRAS=agents,clients,dev ;;
+  --docs | "") ;;
+  *) echo "setup: unknown option ${1}; use --rllib, --clients, --docs or nothing" >&2; exit 2 ;;
+esac
 say() { echo "setup: $*"; }
 if [ "${1:-}" = "--docs" ]; then
   VENV=.venv-docs

@@ -4,8 +4,9 @@
 # Without args it also runs the RLlib path in .venv-rllib (`scripts/setup.sh --rllib`; Ray RLlib pins Gymnasium
 # 1.2.2 while .venv has the newest): the RLlib tests, and the env tests again on Ray's Gymnasium. It says so first
 # (Ray is 2.1 GB to install); BILLIARDS_SKIP_RLLIB=1 (or any pytest args) leaves that part out. Without args it also
-# builds the docs site strictly (`mkdocs build --strict` in .venv-docs, `scripts/setup.sh --docs`: a broken link, a
-# page missing from the nav or an API reference that does not resolve fails it) into site/.
+# runs the client libraries in .venv-clients (`scripts/setup.sh --clients`): tests/clients, each library as its
+# docs show; and it builds the docs site strictly (`mkdocs build --strict` in .venv-docs, `scripts/setup.sh --docs`:
+# a broken link, a page missing from the nav or an API reference that does not resolve fails it) into site/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rllib=0
@@ -24,14 +25,17 @@ else
 fi
 bash scripts/setup.sh
 if [ $rllib -eq 1 ]; then bash scripts/setup.sh --rllib; fi
-if [ $# -eq 0 ]; then bash scripts/setup.sh --docs; fi
+if [ $# -eq 0 ]; then bash scripts/setup.sh --clients; bash scripts/setup.sh --docs; fi
 export SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy
 status=0
 if [ $# -eq 0 ]; then
   echo "test: building the docs site (mkdocs build --strict)"
   NO_MKDOCS_2_WARNING=1 .venv-docs/bin/mkdocs build --strict || status=$?  # not --quiet: it hides the warnings strict counts
+  .venv/bin/python -m pytest -n 2 --ignore=tests/clients || status=$?  # tests/clients: in .venv-clients below
+  BILLIARDS_REQUIRE_CLIENTS=1 .venv-clients/bin/python -m pytest -n 2 -q tests/clients || status=$?
+else
+  .venv/bin/python -m pytest -n 2 "$@" || status=$?
 fi
-.venv/bin/python -m pytest -n 2 "$@" || status=$?
 if [ $rllib -eq 1 ]; then
   .venv-rllib/bin/python -m pytest -n 2 -q tests/envs tests/multi || status=$?
   BILLIARDS_REQUIRE_RAY=1 .venv-rllib/bin/python -m pytest -q tests/agents/test_rllib.py \

@@ -1,4 +1,4 @@
-"""billiards_env.multi: the games for two players, as PettingZoo AEC envs, and matches between policies.
+"""billiards_env.multi: the games for two players, as PettingZoo AEC and parallel envs, and matches between policies.
 
 ::
 
@@ -12,13 +12,21 @@
         action = None if terminated or truncated else env.action_space(agent).sample()
         env.step(action)
 
+    par = nine_ball_v0.parallel_env(max_cycles=100)   # the parallel API: both agents act every step,
+    observations, infos = par.reset(seed=0)           # only the action of infos[a]["active_agent"] is played
+    while par.agents:
+        actions = {a: par.action_space(a).sample() for a in par.agents}
+        observations, rewards, terminations, truncations, infos = par.step(actions)
+
     result = play_match(nine_ball_v0.env, [make_player("geometric"), make_player("random")], n_games=10, seed=0)
     result.winners, result.wins                   # per game: 0 / 1 (the policy) or -1 (truncated)
 
 - :mod:`.nine_ball_v0`, :mod:`.eight_ball_v0`, :mod:`.snooker_v0`, :mod:`.three_cushion_v0`: ``env(**config)``
-  (wrapped) and ``raw_env`` (made by :func:`.aec.game_module`); the manual is
-  :class:`.aec.BilliardsGameAEC`. Built on the single-agent game env (``env.unwrapped.game_env``), which plays and
-  judges every shot; the two-player env only passes the turn and gives each agent its view and its reward.
+  (AEC, wrapped), ``parallel_env(**config)`` (:class:`.parallel.BilliardsParallelEnv`: turn-based, the action of
+  the agent not to shoot is ignored) and ``raw_env`` (made by :func:`.aec.game_module`); both take
+  ``max_cycles`` (the shot limit); the manual is :class:`.aec.BilliardsGameAEC`. Built on the single-agent game
+  env (``env.unwrapped.game_env``), which plays and judges every shot; the two-player env only passes the turn
+  and gives each agent its view and its reward.
 - :func:`play_match` (:mod:`.match`): games between two policies (players, SB3 models, callables), seats
   alternating, for self-play evaluation and leagues.
 
@@ -29,6 +37,7 @@ from __future__ import annotations
 from . import eight_ball_v0, nine_ball_v0, snooker_v0, three_cushion_v0
 from .aec import AGENTS, BilliardsGameAEC
 from .match import GameRecord, MatchResult, play_match
+from .parallel import BilliardsParallelEnv
 
-__all__ = ["nine_ball_v0", "eight_ball_v0", "snooker_v0", "three_cushion_v0", "BilliardsGameAEC", "AGENTS", "play_match", "MatchResult",
-           "GameRecord"]
+__all__ = ["nine_ball_v0", "eight_ball_v0", "snooker_v0", "three_cushion_v0", "BilliardsGameAEC",
+           "BilliardsParallelEnv", "AGENTS", "play_match", "MatchResult", "GameRecord"]

@@ -18,7 +18,7 @@ from typing import Any, Callable, ClassVar
 import gymnasium as gym
 import numpy as np
 from gymnasium.utils import EzPickle
-from pettingzoo import AECEnv
+from pettingzoo import AECEnv, ParallelEnv
 from pettingzoo.utils import wrappers
 
 from billiards_env.envs.base import RENDER_MODES, BilliardsEnv
@@ -85,9 +85,9 @@ class BilliardsGameAEC(AECEnv, EzPickle):
 
     ## Episode End
 
-    ``terminations`` (both agents) when the game is over; ``truncations`` (both) after ``max_shots`` shots of
-    both players together (9-ball 100, 8-ball 150), without a winner. Each agent then gets one ``last()`` and
-    steps ``None``.
+    ``terminations`` (both agents) when the game is over; ``truncations`` (both) after ``max_cycles`` shots of
+    both players together (the config's ``max_shots``: 9-ball 100, 8-ball 150), without a winner. Each agent then
+    gets one ``last()`` and steps ``None``.
 
     ## Info
 
@@ -102,11 +102,15 @@ class BilliardsGameAEC(AECEnv, EzPickle):
 
     ## Arguments
 
-    ``raw_env(render_mode=None, config=None, **overrides)``: every key of
+    ``raw_env(render_mode=None, config=None, max_cycles=None, **overrides)``: ``max_cycles`` is PettingZoo's name
+    for the shot limit ``max_shots`` (one cycle is one shot, by whichever player is to shoot: the same count as
+    the steps of ``parallel_env``), every other keyword a key of
     :class:`billiards_env.envs.config.EnvConfig` (``friction="spin"``, ``spin_action=True``, ``angle_noise``,
     ``rules={...}``...), as for ``gym.make``. ``opponent`` is ignored (both players are agents). Render modes:
     ``rgb_array``, ``rgb_array_list`` (both players' shots animated) and ``human``, as the single-agent env.
-    ``env(**same)`` wraps it in PettingZoo's ``OrderEnforcingWrapper``.
+    ``env(**same)`` wraps it in PettingZoo's ``OrderEnforcingWrapper``; ``parallel_env(**same)`` is the
+    parallel API on it (:class:`billiards_env.multi.parallel.BilliardsParallelEnv`: both agents give an action
+    every step, the one not to shoot has it ignored).
     """
 
     metadata: ClassVar[dict[str, Any]] = {"render_modes": RENDER_MODES, "name": "billiards_game_v0",
@@ -114,9 +118,12 @@ class BilliardsGameAEC(AECEnv, EzPickle):
     #: The single-agent game env class (set by the subclass).
     game_class: ClassVar[type[BilliardsEnv]]
 
-    def __init__(self, render_mode: str | None = None, config: Any = None, **overrides: Any) -> None:
-        EzPickle.__init__(self, render_mode=render_mode, config=config, **overrides)
+    def __init__(self, render_mode: str | None = None, config: Any = None, max_cycles: int | None = None,
+                 **overrides: Any) -> None:
+        EzPickle.__init__(self, render_mode=render_mode, config=config, max_cycles=max_cycles, **overrides)
         super().__init__()
+        if max_cycles is not None:
+            overrides = {**overrides, "max_shots": _max_cycles(max_cycles, overrides.get("max_shots"))}
         task = overrides.get("task")
         if task is not None and task not in GAMES:
             raise ConfigError(f"task: {task!r} is not a game; the two-player env plays one of {', '.join(GAMES)} "
@@ -137,6 +144,8 @@ class BilliardsGameAEC(AECEnv, EzPickle):
         self.observation_spaces = {a: copy.deepcopy(game.observation_space) for a in self.possible_agents}
         self.action_spaces = {a: copy.deepcopy(game.action_space) for a in self.possible_agents}
         self.agents: list[str] = []
+        #: Shots of both players together before the game is truncated (the config's ``max_shots``).
+        self.max_cycles: int = game.config.max_shots
 
     # --- PettingZoo API -------------------------------------------------------------------------------------------
     def observation_space(self, agent: str) -> gym.spaces.Box:
@@ -233,6 +242,15 @@ class BilliardsGameAEC(AECEnv, EzPickle):
                 for a, k in self.agent_index.items()}
 
 
+def _max_cycles(max_cycles: Any, max_shots: Any) -> int:
+    """``max_cycles`` checked (an int >= 1, agreeing with ``max_shots`` if that is given too)."""
+    if isinstance(max_cycles, bool) or not isinstance(max_cycles, (int, np.integer)) or max_cycles < 1:
+        raise ConfigError(f"max_cycles: expected an int >= 1 (shots before the game is truncated), got {max_cycles!r}")
+    if max_shots is not None and max_shots != max_cycles:
+        raise ConfigError(f"max_cycles={max_cycles} and max_shots={max_shots}: both are the shot limit; give one")
+    return int(max_cycles)
+
+
 def wrap(env: BilliardsGameAEC) -> AECEnv:
     """``env`` in PettingZoo's standard wrappers that fit a continuous-action turn-based game: the
     ``OrderEnforcingWrapper`` (errors for calls before ``reset``). Not the others: there is no action mask to
@@ -242,21 +260,33 @@ def wrap(env: BilliardsGameAEC) -> AECEnv:
 
 
 def game_module(game_class: type[BilliardsEnv], name: str, module: str, doc: str
-                ) -> tuple[type[BilliardsGameAEC], Callable[..., AECEnv]]:
-    """The two names a PettingZoo env module exports for a game: ``raw_env`` (the :class:`BilliardsGameAEC` of
-    ``game_class``, its ``metadata["name"]`` = ``name``) and ``env(render_mode=None, config=None, **overrides)``
-    (``raw_env`` in :func:`wrap`). ``module`` is the exporting module's ``__name__``, so both pickle by name."""
+                ) -> tuple[type[BilliardsGameAEC], Callable[..., AECEnv], Callable[..., ParallelEnv]]:
+    """The three names a PettingZoo env module exports for a game: ``raw_env`` (the :class:`BilliardsGameAEC` of
+    ``game_class``, its ``metadata["name"]`` = ``name``), ``env(render_mode=None, config=None, max_cycles=None,
+    **overrides)`` (``raw_env`` in :func:`wrap`) and ``parallel_env(same)`` (``env`` in
+    :class:`~billiards_env.multi.parallel.BilliardsParallelEnv`). ``module`` is the exporting module's
+    ``__name__``, so they pickle by name."""
+    from .parallel import BilliardsParallelEnv  # parallel.py builds on this module
     raw = type("raw_env", (BilliardsGameAEC,), {
         "__doc__": doc, "__module__": module, "__qualname__": "raw_env", "game_class": game_class,
         "metadata": {**BilliardsGameAEC.metadata, "name": name}})
 
-    def env(render_mode: str | None = None, config: Any = None, **overrides: Any) -> AECEnv:
-        return wrap(raw(render_mode=render_mode, config=config, **overrides))
+    def env(render_mode: str | None = None, config: Any = None, max_cycles: int | None = None,
+            **overrides: Any) -> AECEnv:
+        return wrap(raw(render_mode=render_mode, config=config, max_cycles=max_cycles, **overrides))
+
+    def parallel_env(render_mode: str | None = None, config: Any = None, max_cycles: int | None = None,
+                     **overrides: Any) -> ParallelEnv:
+        return BilliardsParallelEnv(env(render_mode=render_mode, config=config, max_cycles=max_cycles, **overrides))
 
     env.__module__, env.__qualname__ = module, "env"
     env.__doc__ = (f"``{name}``'s :class:`raw_env` in PettingZoo's ``OrderEnforcingWrapper`` "
                    "(see :func:`billiards_env.multi.aec.wrap`).")
-    return raw, env
+    parallel_env.__module__, parallel_env.__qualname__ = module, "parallel_env"
+    parallel_env.__doc__ = (f"``{name}`` on PettingZoo's parallel API: both agents act every step, the action of "
+                            "the one not to shoot is ignored (see "
+                            ":class:`billiards_env.multi.parallel.BilliardsParallelEnv`).")
+    return raw, env, parallel_env
 
 
 __all__ = ["AGENTS", "BilliardsGameAEC", "game_module", "wrap"]

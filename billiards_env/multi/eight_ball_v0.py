@@ -21,7 +21,7 @@ from billiards_env.envs.eight_ball import EightBallEnv
 
 from .aec import game_module
 
-raw_env, env = game_module(EightBallEnv, "eight_ball_v0", __name__, doc="""\
+raw_env, env, parallel_env = game_module(EightBallEnv, "eight_ball_v0", __name__, doc="""\
 8-ball for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual).
 
 Action ``Box(-1, 1, (5,))`` by default: aim, power, place_x, place_y, pocket (the pocket called for the 8; no
@@ -31,4 +31,4 @@ the 8: pocketed legally in the called pocket after clearing the group wins, earl
 pocket loses.
 """)
 
-__all__ = ["env", "raw_env"]
+__all__ = ["env", "parallel_env", "raw_env"]

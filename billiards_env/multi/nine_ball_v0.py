@@ -20,7 +20,7 @@ from billiards_env.envs.nine_ball import NineBallEnv
 
 from .aec import game_module
 
-raw_env, env = game_module(NineBallEnv, "nine_ball_v0", __name__, doc="""\
+raw_env, env, parallel_env = game_module(NineBallEnv, "nine_ball_v0", __name__, doc="""\
 9-ball for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual).
 
 Action ``Box(-1, 1, (4,))`` by default: aim, power, place_x, place_y (+ side, top with ``spin_action``; + push
@@ -28,4 +28,4 @@ with ``rules={"push_out": True}``). Observation ``Box(0, 1, (41,))``: 10 positio
 features. A game ends on the 9 pocketed legally (its shooter wins) or a third foul in a row (its player loses).
 """)
 
-__all__ = ["env", "raw_env"]
+__all__ = ["env", "parallel_env", "raw_env"]

@@ -20,8 +20,8 @@ from billiards_env.envs.snooker import SnookerEnv
 
 from .aec import game_module
 
-raw_env, env = game_module(SnookerEnv, "snooker_v0", __name__, doc="""\
+raw_env, env, parallel_env = game_module(SnookerEnv, "snooker_v0", __name__, doc="""\
 Snooker for two players (see :class:`~billiards_env.multi.aec.BilliardsGameAEC` for the manual, and
 :class:`billiards_env.envs.snooker.SnookerEnv` for the spaces).""")
 
-__all__ = ["env", "raw_env"]
+__all__ = ["env", "parallel_env", "raw_env"]

@@ -105,3 +105,22 @@ def test_a_model_trained_with_a_schedule_loads_without_the_training_code(tmp_pat
                          text=True, timeout=120)
     assert out.returncode == 0, out.stderr[-2000:]
     assert float(out.stdout.strip()) == pytest.approx(3e-3)
+
+
+def test_billiards_hyperparams_lay_agents_train_values_over_the_zoo_entry():
+    """The shipped files keep a value the RL Zoo parses in the env entry (its schedules are lin_ only) and the
+    cosine for agents.train under billiards.hyperparams."""
+    import yaml
+
+    from agents.config import load_train_config
+
+    for name in ("one_ball_sac", "one_ball_sac_path", "one_ball_sac_candidates"):
+        path = f"configs/train/{name}.yaml"
+        zoo_entry = yaml.safe_load(open(path))["BilliardsOneBall-v0"]
+        assert zoo_entry["learning_rate"] == 3e-3  # what the zoo trains with, verbatim
+        assert load_train_config(path).hyperparams["learning_rate"] == "cos_3e-3_3e-5"
+    cfg = {"BilliardsOneBall-v0": {"learning_rate": 1e-3}, "billiards": {"hyperparams": {"learning_rate": "lin_2e-3"}}}
+    assert load_train_config(cfg).hyperparams["learning_rate"] == "lin_2e-3"
+    assert load_train_config(cfg, hyper_overrides={"learning_rate": 5e-4}).hyperparams["learning_rate"] == 5e-4
+    with pytest.raises(TrainConfigError, match=r"billiards.hyperparams: expected a mapping"):
+        load_train_config({"BilliardsOneBall-v0": {}, "billiards": {"hyperparams": "cos_3e-3"}})

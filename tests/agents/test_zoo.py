@@ -85,7 +85,7 @@ def test_readme_zoo_command_trains_evaluates_and_loads(tmp_path):
     env = {**os.environ, "PYTHONPATH": str(ROOT), "SDL_VIDEODRIVER": "dummy"}
     (tmp_path / "configs").symlink_to(ROOT / "configs")
     cmd = [sys.executable, "-m", "rl_zoo3.train", "--algo", "sac", "--env", ENV_ID, "--gym-packages", "billiards_env",
-           "--conf-file", "configs/train/one_ball_sac.yaml", "--hyperparams", "learning_rate:0.003", "--num-threads",
+           "--conf-file", "configs/train/one_ball_sac.yaml", "--num-threads",
            "1", "--env-kwargs", "action_type:'ghost'", "observation_type:'features'", "speed_max:1.8",
            "--log-interval", "2000", "-f", "logs", "-n", "3000", "--eval-freq", "1000", "--eval-episodes", "5"]
     proc = subprocess.run(cmd, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=900)

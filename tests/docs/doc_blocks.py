@@ -17,6 +17,8 @@ Directives, in an HTML comment right above the fence (invisible when rendered, v
   Ray cluster, the test suite itself); the reason is required and shown in the test report.
 - ``<!-- docs-test: before: COMMAND -->``: run COMMAND first (e.g. make the trained run a block loads), with the
   same budgets as the commands of bash blocks.
+- ``<!-- docs-test: venv: .venv-clients -->``: a python block that runs in that venv's interpreter (the client
+  libraries of docs/ecosystem.md live in .venv-clients); the python blocks of a file run in one process per venv.
 - ``<!-- docs-test: output-of: COMMAND -->`` above a JSON block: the block is what COMMAND prints (same keys in the
   same order, each number equal to the printed one to the digits the block shows).
 """
@@ -46,6 +48,7 @@ class Block:
     skip: str | None = None  #: the reason given by a skip directive
     before: list[str] = field(default_factory=list)  #: commands of before directives
     output_of: str | None = None  #: the command whose output this block shows (an output-of directive)
+    venv: str = ".venv"  #: the venv whose python runs it (a venv directive)
 
     @property
     def where(self) -> str:
@@ -111,8 +114,13 @@ def _read_directives(block: Block, lines: list[str], start: int) -> None:
             block.before.append(arg)
         elif kind == "output-of":
             block.output_of = arg
+        elif kind == "venv":
+            if not re.fullmatch(r"\.venv(-[\w]+)?", arg):
+                raise DocsFormatError(f"{block.where}: docs-test: venv: expected a venv folder such as .venv-clients, "
+                                      f"got {arg!r}")
+            block.venv = arg
         else:
-            raise DocsFormatError(f"{block.where}: unknown directive 'docs-test: {kind}'; use skip, before or "
+            raise DocsFormatError(f"{block.where}: unknown directive 'docs-test: {kind}'; use skip, before, venv or "
                                   "output-of")
 
 

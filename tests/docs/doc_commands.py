@@ -40,7 +40,8 @@ class Rule:
     slow: bool = False
     timeout: float = DEFAULT_TIMEOUT
     kind: str = "run"  #: run | server (must come up, then stopped) | pip (checked, not run)
-    venv: str = ".venv"  #: the venv whose python runs it (".venv-rllib": RLlib; skipped where absent)
+    venv: str = ".venv"  #: the venv whose python runs it (".venv-rllib": RLlib, ".venv-clients": the RL Zoo and
+    #: the other client libraries; skipped where absent)
     cwd: str = "sandbox"  #: sandbox, or root (the checkout: scripts that cd there themselves)
     expect: int = 0  #: exit status expected
     ready: str = ""  #: server: a regex its output matches once it is up
@@ -89,9 +90,11 @@ RULES: list[Rule] = [
     Rule(r"python -m agents\.rllib", "RLlib training: two iterations, in the RLlib venv",
          add="--iterations 2 --eval-every 1 --eval-episodes 5 --num-env-runners 0", venv=".venv-rllib", slow=True,
          timeout=900),
-    Rule(r"python -m rl_zoo3\.train", "RL Zoo training: a few thousand steps, with evaluations",
-         add="-n 2000 --eval-freq 1000 --eval-episodes 5 --save-freq -1", slow=True, timeout=600),
-    Rule(r"python -m rl_zoo3\.enjoy", "RL Zoo playback: a few steps", add="-n 50", slow=True, timeout=300),
+    Rule(r"python -m rl_zoo3\.train", "RL Zoo training: a few thousand steps, with evaluations (clients venv)",
+         add="-n 2000 --eval-freq 1000 --eval-episodes 5 --save-freq -1", slow=True, timeout=600,
+         venv=".venv-clients"),
+    Rule(r"python -m rl_zoo3\.enjoy", "RL Zoo playback: a few steps, in the clients venv", add="-n 50", slow=True,
+         timeout=300, venv=".venv-clients"),
     Rule(r"python -m billiards_env\.fuzz --shots", "fuzzing: a few hundred shots",
          sub=[(r"--shots \S+", "--shots 60"), (r"--workers \S+", "--workers 1"), (r"--out \S+", "--out fuzz-out")],
          timeout=300),

@@ -65,12 +65,17 @@ def _env() -> dict[str, str]:
 
 
 def _python(venv: str) -> str:
-    """The interpreter of ``venv`` (the one running the tests for ``.venv``), or skip where it is absent."""
+    """The interpreter of ``venv`` (the one running the tests for ``.venv``), or skip where it is absent (fail
+    with BILLIARDS_REQUIRE_CLIENTS set, as scripts/test.sh does once it has made them)."""
     if venv == ".venv":
         return sys.executable
     exe = ROOT / venv / "bin" / "python"
     if not exe.exists():
-        pytest.skip(f"needs {venv} (bash scripts/setup.sh --rllib makes it; CI has it)")
+        option = venv.removeprefix(".venv-")
+        message = f"needs {venv} (bash scripts/setup.sh --{option} makes it; CI has it)"
+        if os.environ.get("BILLIARDS_REQUIRE_CLIENTS"):
+            pytest.fail(message)
+        pytest.skip(message)
     return str(exe)
 
 
@@ -112,7 +117,7 @@ def run_command(command: str, box: Path, where: str, venv: str | None = None) ->
     command, rule = prepare(command, box)
     rule = rule or Rule("", "no rule: as written")
     if rule.kind == "pip":
-        check_install(command, where)
+        check_install(command, where, venv)
         return
     python = _python(venv or rule.venv)
     if rule.cwd == "root" and rule.venv == ".venv" and "scripts/" in command and not (ROOT / ".venv").exists():
@@ -171,9 +176,9 @@ def run_server(shell: str, cwd: Path, env: dict[str, str], rule: Rule, where: st
                 os.killpg(proc.pid, signal.SIGKILL)
 
 
-def check_install(command: str, where: str) -> None:
-    """An install command in the docs: every package it names is installed here, and every extra it names is one
-    of pyproject.toml's (the tests do not reinstall anything)."""
+def check_install(command: str, where: str, venv: str | None = None) -> None:
+    """An install command in the docs: every package it names is installed here (in ``venv`` for a block that runs
+    in another venv), and every extra it names is one of pyproject.toml's (the tests do not reinstall anything)."""
     words = shlex.split(command)[2:]
     extras_declared = set(_pyproject()["project"]["optional-dependencies"])
     for word in words:
@@ -186,7 +191,13 @@ def check_install(command: str, where: str) -> None:
             continue
         name = re.split(r"[<>=\[ ]", word)[0]
         try:
-            importlib.metadata.version(name)
+            if venv and venv != ".venv":
+                probe = subprocess.run([_python(venv), "-c", f"import importlib.metadata as m; m.version({name!r})"],
+                                       capture_output=True, text=True, timeout=60)
+                if probe.returncode != 0:
+                    raise importlib.metadata.PackageNotFoundError(name)
+            else:
+                importlib.metadata.version(name)
         except importlib.metadata.PackageNotFoundError:
             pytest.fail(f"{where}: `{command}`: {name} is not installed in this venv, so the commands that follow "
                         f"it cannot be tested (pip install -e '.[zoo]' for the RL Zoo)")
@@ -273,19 +284,21 @@ def _compare(shown: object, printed: object, at: str) -> list[str]:
 def test_shell_block_runs(block: Block, tmp_path: Path):
     box = make_sandbox(tmp_path)
     cmds = block.before + commands(block.code)
-    venvs = {rule.venv for rule in (rule_for(prepare_name(c)) for c in cmds) if rule is not None}
-    venv = ".venv-rllib" if ".venv-rllib" in venvs else None
+    venvs = {rule.venv for rule in (rule_for(prepare_name(c)) for c in cmds) if rule is not None} - {".venv"}
+    venv = min(venvs) if venvs else None  # a block naming a venv's commands runs wholly in it
     for command in cmds:
         run_command(command, box, block.where, venv)
 
 
 def _python_files() -> list:
+    """One test per file and venv: the file's python blocks for that venv, in order."""
     params = []
     for doc in DOCS:
-        blocks = [b for b in BLOCKS if b.path.as_posix() == doc and b.lang == "python"]
-        if blocks:
+        in_doc = [b for b in BLOCKS if b.path.as_posix() == doc and b.lang == "python"]
+        for venv in sorted({b.venv for b in in_doc}):
+            blocks = [b for b in in_doc if b.venv == venv]
             marks = [m for b in blocks for m in _marks(b) if m.name == "slow"][:1]
-            params.append(pytest.param(doc, blocks, marks=marks, id=doc))
+            params.append(pytest.param(doc, blocks, marks=marks, id=doc if venv == ".venv" else f"{doc}[{venv}]"))
     return params
 
 
@@ -321,7 +334,7 @@ def test_python_blocks_run(doc: str, blocks: list[Block], tmp_path: Path):
     script = tmp_path / "run_blocks.py"
     script.write_text(RUNNER)
     env = _env()
-    proc = run_group([sys.executable, str(script), str(spec)], PYTHON_TIMEOUT, cwd=box, env=env)
+    proc = run_group([_python(blocks[0].venv), str(script), str(spec)], PYTHON_TIMEOUT, cwd=box, env=env)
     ran = [line for line in proc.stdout.splitlines() if line.startswith(("PASSED", "FAILED", "SKIPPED"))]
     if proc.returncode != 0:
         pytest.fail(f"{doc}: {ran[-1] if ran else 'the blocks did not start'}\n--- stderr (end)\n"
