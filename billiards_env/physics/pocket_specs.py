@@ -254,18 +254,71 @@ __all__ = ["PocketSpecs", "SPEC_FIELDS", "build_walls", "pocket_circles", "POOLT
            "N_RAILS", "N_JAWS", "N_TIPS", "N_SEGMENTS", "N_WALLS"]
 
 
-def clear_of_walls(segs: np.ndarray, tips: np.ndarray, x: float, y: float, r: float, tol: float = 0.0) -> bool:
-    """Whether a ball of radius ``r`` at ``(x, y)`` overlaps no rail, jaw face or tip by more than ``tol``."""
-    for ax, ay, bx, by, nx, ny in segs:
+def wall_overlaps(segs: np.ndarray, tips: np.ndarray, x: Any, y: Any, r: Any) -> tuple[np.ndarray, np.ndarray]:
+    """How deep balls of radius ``r`` centred at ``(x, y)`` (arrays of one shape) overlap the walls: ``(overlap,
+    wall)``, the deepest overlap of each ball (m; <= 0: clear of every wall) and that wall's index (-1 if none is
+    near). A segment counts while the centre projects onto it and lies at most ``r`` behind its line; a tip always.
+    The vectorised Python form of the compiled :func:`.walls.wall_gap` (the invariant checks use it)."""
+    x, y, r = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float), np.asarray(r, float))
+    best = np.full(x.shape, -np.inf)
+    wall = np.full(x.shape, -1, dtype=np.int64)
+    for k, (ax, ay, bx, by, nx, ny) in enumerate(segs):
         dx, dy = bx - ax, by - ay
         s = ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy)
         gap = (x - ax) * nx + (y - ay) * ny
-        if 0.0 <= s <= 1.0 and -r < gap < r - tol:
-            return False
-    for cx, cy, rad in tips:
-        if math.hypot(x - cx, y - cy) < r + rad - tol:
-            return False
-    return True
+        ov = np.where((s >= 0.0) & (s <= 1.0) & (gap > -r), r - gap, -np.inf)
+        wall = np.where(ov > best, k, wall)
+        best = np.maximum(best, ov)
+    for k, (cx, cy, rad) in enumerate(tips):
+        ov = r + rad - np.hypot(x - cx, y - cy)
+        wall = np.where(ov > best, len(segs) + k, wall)
+        best = np.maximum(best, ov)
+    return best, wall
+
+
+def wall_gaps(segs: np.ndarray, tips: np.ndarray, x: Any, y: Any, r: Any, wall: Any) -> np.ndarray:
+    """How far balls of radius ``r`` at ``(x, y)`` are from touching wall ``wall`` (arrays of one shape; < 0:
+    overlapping), measured along its normal (segment) or from its centre (tip): the Python form of
+    :func:`.walls.wall_gap` without its projection test."""
+    x, y, r, wall = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float), np.asarray(r, float),
+                                        np.asarray(wall, np.int64))
+    out = np.full(x.shape, np.nan)
+    seg = wall < len(segs)
+    if seg.any():
+        row = segs[wall[seg]]
+        out[seg] = (x[seg] - row[:, 0]) * row[:, 4] + (y[seg] - row[:, 1]) * row[:, 5] - r[seg]
+    tip = ~seg
+    if tip.any():
+        row = tips[wall[tip] - len(segs)]
+        out[tip] = np.hypot(x[tip] - row[:, 0], y[tip] - row[:, 1]) - r[tip] - row[:, 2]
+    return out
+
+
+def clear_of_walls(segs: np.ndarray, tips: np.ndarray, x: float, y: float, r: float, tol: float = 0.0) -> bool:
+    """Whether a ball of radius ``r`` at ``(x, y)`` overlaps no rail, jaw face or tip by more than ``tol``."""
+    return bool(wall_overlaps(segs, tips, x, y, r)[0] <= tol)
+
+
+def mouth_polygons(segs: np.ndarray, tips: np.ndarray) -> list[np.ndarray]:
+    """Each pocket's mouth and throat as a convex polygon ``(6, 2)``: from one jaw face's deep end along it, across
+    to where the rails stop (the rail ends nearest the pocket's tips), and back along the other face."""
+    rail_ends = np.concatenate([segs[:N_RAILS, 0:2], segs[:N_RAILS, 2:4]])
+    out = []
+    for p in range(len(tips) // 2):
+        stops = [rail_ends[np.argmin(np.hypot(*(rail_ends - tips[2 * p + k, 0:2]).T))] for k in range(2)]
+        out.append(np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4], stops[0], stops[1],
+                             segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]]))
+    return out
+
+
+def in_mouth_region(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float,
+                    y: float) -> bool:
+    """Whether the point ``(x, y)`` lies in a pocket's mouth and throat (:func:`mouth_polygons`) or in a pocket
+    circle (the Python form of the compiled :func:`.walls.in_mouth_region`)."""
+    for p in range(len(pocket_r)):
+        if math.hypot(x - pocket_xy[p, 0], y - pocket_xy[p, 1]) <= pocket_r[p]:
+            return True
+    return any(_in_convex(poly, x, y) for poly in mouth_polygons(segs, tips))
 
 
 def in_mouth(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float, y: float,
@@ -273,14 +326,8 @@ def in_mouth(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r
     """Whether a ball centre at ``(x, y)`` outside the playing area ``[r, l - r] x [r, w - r]`` still lies on a
     jaw table: within a pocket's mouth and throat (the polygon from one jaw face's deep end along it, across to
     where the rails stop, and back along the other face; or in its pocket circle) and clear of every wall."""
-    rail_ends = np.concatenate([segs[:N_RAILS, 0:2], segs[:N_RAILS, 2:4]])
-    for p in range(len(pocket_r)):
-        inside_circle = math.hypot(x - pocket_xy[p, 0], y - pocket_xy[p, 1]) <= pocket_r[p]
-        stops = [rail_ends[np.argmin(np.hypot(*(rail_ends - tips[2 * p + k, 0:2]).T))] for k in range(2)]
-        mouth = np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4], stops[0], stops[1],
-                          segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]])
-        if inside_circle or _in_convex(mouth, x, y):
-            return clear_of_walls(segs, tips, x, y, r, tol)
+    if in_mouth_region(segs, tips, pocket_xy, pocket_r, x, y):
+        return clear_of_walls(segs, tips, x, y, r, tol)
     return False
 
 

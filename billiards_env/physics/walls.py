@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .kernel_logs import internal
 
 #: A ball whose centre's projection lies this far (m) beyond a segment's end still counts as on the segment: the
@@ -170,5 +172,155 @@ def reflect_off(vel, i, nx, ny, e_c):
     return -vn
 
 
-__all__ = ["has_walls", "on_segment", "ray_segment_hit", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
+#: Step solvers: at most this many walls are resolved per ball and step (a ball in a throat can touch a jaw face and
+#: its tip, or both jaw faces, at once); every step kernel reserves room for this many cushion events per ball.
+MAX_WALL_PASSES = 4
+#: Step solvers: a ball overlapping a wall by less than this (m) touches it: the round-off :func:`touch_wall` leaves.
+WALL_SLOP = 1e-12
+
+
+@internal
+def deepest_overlap(x, y, r, prm):
+    """Step solvers: ``(gap, wall)`` of the wall a ball of radius ``r`` at ``(x, y)`` overlaps most (``gap <
+    -WALL_SLOP``), ``(0, -1)`` if none. A segment counts while the centre projects onto it and lies at most ``r``
+    behind its line (a step's overshoot; further behind, the ball is on the segment's other side); a tip counts
+    whenever the ball overlaps it."""
+    best = -WALL_SLOP
+    wall = -1
+    for k in range(prm.n_segs + prm.n_tips):
+        g = wall_gap(x, y, r, k, prm)
+        if g < best and (k >= prm.n_segs or g > -2.0 * r):
+            best = g
+            wall = k
+    if wall < 0:
+        return 0.0, wall
+    return best, wall
+
+
+@internal
+def wall_reach(r, wall, prm):
+    """The distance across the table from the centre of a ball of radius ``r`` touching ``wall`` to the wall's
+    contact line: ``r`` for a segment, ``r`` plus the radius for a tip (the ``d`` of the cushion laws)."""
+    if wall < prm.n_segs:
+        return r
+    return r + prm.tips[wall - prm.n_segs, 2]
+
+
+@internal
+def wall_rewind_time(x, y, vx, vy, r, wall, dt, prm):
+    """Step solvers, contact treatment ``rewind``: how many seconds back (within the step of ``dt``) a ball of radius
+    ``r`` now at ``(x, y)`` overlapping ``wall``, moving with ``(vx, vy)`` over the step, touched it; -1 if it was
+    not moving into the wall or the touch lies outside the step."""
+    if wall < prm.n_segs:
+        vn = vx * prm.segs[wall, 4] + vy * prm.segs[wall, 5]
+        if not vn < 0.0:
+            return -1.0
+        gap = (x - prm.segs[wall, 0]) * prm.segs[wall, 4] + (y - prm.segs[wall, 1]) * prm.segs[wall, 5] - r
+        s = gap / vn
+    else:
+        k = wall - prm.n_segs
+        dx = x - prm.tips[k, 0]
+        dy = y - prm.tips[k, 1]
+        rho = r + prm.tips[k, 2]
+        bb = vx * vx + vy * vy
+        db = dx * vx + dy * vy
+        if not bb > 0.0:
+            return -1.0
+        # |d - v s| = rho for the smallest s >= 0 (the ball inside the circle of radius rho now).
+        disc = db * db - bb * (dx * dx + dy * dy - rho * rho)
+        s = (db + math.sqrt(max(disc, 0.0))) / bb
+    if 0.0 <= s <= dt:
+        return s
+    return -1.0
+
+
+@internal
+def in_mouth_region(x, y, pocket_xy, pocket_r, prm):
+    """Whether a ball centre at ``(x, y)`` beyond the cushion lines (outside ``[0, L] x [0, W]``) lies in a pocket's
+    mouth and throat (the polygon from one jaw face's deep end along it, across to where the rails stop and back
+    along the other face, as :func:`.pocket_specs.in_mouth`) or in a pocket circle."""
+    for p in range(pocket_r.shape[0]):
+        dx = x - pocket_xy[p, 0]
+        dy = y - pocket_xy[p, 1]
+        if dx * dx + dy * dy <= pocket_r[p] * pocket_r[p]:
+            return True
+    n_rails = prm.n_segs - prm.n_tips
+    if n_rails < 0 or prm.n_tips != 2 * pocket_r.shape[0]:
+        return False
+    poly = np.empty((6, 2))
+    for p in range(pocket_r.shape[0]):
+        a = n_rails + 2 * p
+        poly[0, 0] = prm.segs[a, 0]
+        poly[0, 1] = prm.segs[a, 1]
+        poly[1, 0] = prm.segs[a, 2]
+        poly[1, 1] = prm.segs[a, 3]
+        for k in range(2):  # where the rails stop: the rail end nearest each of the pocket's tips
+            tx = prm.tips[2 * p + k, 0]
+            ty = prm.tips[2 * p + k, 1]
+            best = math.inf
+            for q in range(n_rails):
+                for e in range(2):
+                    d = math.hypot(prm.segs[q, 2 * e] - tx, prm.segs[q, 2 * e + 1] - ty)
+                    if d < best:
+                        best = d
+                        poly[2 + k, 0] = prm.segs[q, 2 * e]
+                        poly[2 + k, 1] = prm.segs[q, 2 * e + 1]
+        poly[4, 0] = prm.segs[a + 1, 2]
+        poly[4, 1] = prm.segs[a + 1, 3]
+        poly[5, 0] = prm.segs[a + 1, 0]
+        poly[5, 1] = prm.segs[a + 1, 1]
+        sign = 0.0
+        inside = True
+        for k in range(6):
+            ax = poly[k, 0]
+            ay = poly[k, 1]
+            bx = poly[(k + 1) % 6, 0]
+            by = poly[(k + 1) % 6, 1]
+            c = (bx - ax) * (y - ay) - (by - ay) * (x - ax)
+            if c != 0.0:
+                if sign == 0.0:
+                    sign = c
+                elif (c > 0.0) != (sign > 0.0):
+                    inside = False
+                    break
+        if inside:
+            return True
+    return False
+
+
+@internal
+def push_out_of_walls(pos, i, r, prm):
+    """Put ball ``i`` (radius ``r``) back on every wall it overlaps, the deepest first (at most
+    ``MAX_WALL_PASSES``), moving its centre along the contact normal; velocities are not touched."""
+    for _ in range(MAX_WALL_PASSES):
+        g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
+        if wall < 0:
+            return
+        pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
+
+
+@internal
+def keep_on_jaw_table(pos, on_table, radius, pocket_xy, pocket_r, prm):
+    """:func:`.kernel_logs.keep_on_table` of a jaw table (step solvers, after the pushes of ball pairs): a ball on
+    the table overlapping a wall is put back on it (:func:`push_out_of_walls`); one whose centre then lies beyond the
+    cushion lines and outside every mouth (:func:`in_mouth_region`) is put back inside ``[r, L - r] x [r, W - r]``
+    (and off the walls again). A ball in a mouth stays where it is."""
+    length = prm.length
+    width = prm.width
+    for i in range(pos.shape[0]):
+        if not on_table[i]:
+            continue
+        r = radius[i]
+        push_out_of_walls(pos, i, r, prm)
+        x = pos[i, 0]
+        y = pos[i, 1]
+        if not (0.0 <= x <= length and 0.0 <= y <= width) and not in_mouth_region(x, y, pocket_xy, pocket_r, prm):
+            pos[i, 0] = min(max(x, r), length - r)
+            pos[i, 1] = min(max(y, r), width - r)
+            push_out_of_walls(pos, i, r, prm)
+
+
+__all__ = ["has_walls", "on_segment", "ray_segment_hit", "deepest_overlap", "wall_reach",
+           "wall_rewind_time", "in_mouth_region", "push_out_of_walls", "keep_on_jaw_table", "MAX_WALL_PASSES",
+           "WALL_SLOP", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
            "touch_wall", "wall_gap", "without_push_into_walls", "reflect_off", "END_SLACK"]
