@@ -300,15 +300,37 @@ def clear_of_walls(segs: np.ndarray, tips: np.ndarray, x: float, y: float, r: fl
 
 
 def mouth_polygons(segs: np.ndarray, tips: np.ndarray) -> list[np.ndarray]:
-    """Each pocket's mouth and throat as a convex polygon ``(6, 2)``: from one jaw face's deep end along it, across
-    to where the rails stop (the rail ends nearest the pocket's tips), and back along the other face."""
+    """Each pocket's mouth and throat as a convex polygon: the convex hull of its jaw faces' ends and the points
+    where the rails stop (the rail ends nearest the pocket's tips). On most tables that is the polygon from one jaw
+    face's deep end along it, across to the rail stops and back along the other face; where a jaw's rounding
+    reaches deeper than its face's deep end (pooltool's snooker table), the hull still holds the whole mouth."""
     rail_ends = np.concatenate([segs[:N_RAILS, 0:2], segs[:N_RAILS, 2:4]])
     out = []
     for p in range(len(tips) // 2):
         stops = [rail_ends[np.argmin(np.hypot(*(rail_ends - tips[2 * p + k, 0:2]).T))] for k in range(2)]
-        out.append(np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4], stops[0], stops[1],
-                             segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]]))
+        pts = np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4], stops[0], stops[1],
+                        segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]])
+        out.append(_hull(pts))
     return out
+
+
+def _hull(pts: np.ndarray) -> np.ndarray:
+    """The convex hull of ``pts`` (counter-clockwise; Andrew's monotone chain)."""
+    order = sorted(map(tuple, pts.tolist()))
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    lower: list = []
+    for q in order:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], q) <= 0.0:
+            lower.pop()
+        lower.append(q)
+    upper: list = []
+    for q in reversed(order):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], q) <= 0.0:
+            upper.pop()
+        upper.append(q)
+    return np.array(lower[:-1] + upper[:-1])
 
 
 def in_mouth_region(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float,
@@ -324,8 +346,8 @@ def in_mouth_region(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, p
 def in_mouth(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float, y: float,
              r: float, tol: float = 0.0) -> bool:
     """Whether a ball centre at ``(x, y)`` outside the playing area ``[r, l - r] x [r, w - r]`` still lies on a
-    jaw table: within a pocket's mouth and throat (the polygon from one jaw face's deep end along it, across to
-    where the rails stop, and back along the other face; or in its pocket circle) and clear of every wall."""
+    jaw table: within a pocket's mouth and throat (:func:`mouth_polygons`; or in its pocket circle) and clear of
+    every wall."""
     if in_mouth_region(segs, tips, pocket_xy, pocket_r, x, y):
         return clear_of_walls(segs, tips, x, y, r, tol)
     return False

@@ -236,9 +236,8 @@ def wall_rewind_time(x, y, vx, vy, r, wall, dt, prm):
 
 @internal
 def in_mouth_region(x, y, pocket_xy, pocket_r, prm):
-    """Whether a ball centre at ``(x, y)`` beyond the cushion lines (outside ``[0, L] x [0, W]``) lies in a pocket's
-    mouth and throat (the polygon from one jaw face's deep end along it, across to where the rails stop and back
-    along the other face, as :func:`.pocket_specs.in_mouth`) or in a pocket circle."""
+    """Whether a ball centre at ``(x, y)`` lies in a pocket's mouth and throat (the convex hull of its jaw faces'
+    ends and the rail ends nearest its tips, as :func:`.pocket_specs.mouth_polygons`) or in a pocket circle."""
     for p in range(pocket_r.shape[0]):
         dx = x - pocket_xy[p, 0]
         dy = y - pocket_xy[p, 1]
@@ -247,13 +246,14 @@ def in_mouth_region(x, y, pocket_xy, pocket_r, prm):
     n_rails = prm.n_segs - prm.n_tips
     if n_rails < 0 or prm.n_tips != 2 * pocket_r.shape[0]:
         return False
-    poly = np.empty((6, 2))
+    pts = np.empty((6, 2))
     for p in range(pocket_r.shape[0]):
         a = n_rails + 2 * p
-        poly[0, 0] = prm.segs[a, 0]
-        poly[0, 1] = prm.segs[a, 1]
-        poly[1, 0] = prm.segs[a, 2]
-        poly[1, 1] = prm.segs[a, 3]
+        for c in range(2):
+            pts[0, c] = prm.segs[a, c]
+            pts[1, c] = prm.segs[a, 2 + c]
+            pts[4, c] = prm.segs[a + 1, 2 + c]
+            pts[5, c] = prm.segs[a + 1, c]
         for k in range(2):  # where the rails stop: the rail end nearest each of the pocket's tips
             tx = prm.tips[2 * p + k, 0]
             ty = prm.tips[2 * p + k, 1]
@@ -263,26 +263,34 @@ def in_mouth_region(x, y, pocket_xy, pocket_r, prm):
                     d = math.hypot(prm.segs[q, 2 * e] - tx, prm.segs[q, 2 * e + 1] - ty)
                     if d < best:
                         best = d
-                        poly[2 + k, 0] = prm.segs[q, 2 * e]
-                        poly[2 + k, 1] = prm.segs[q, 2 * e + 1]
-        poly[4, 0] = prm.segs[a + 1, 2]
-        poly[4, 1] = prm.segs[a + 1, 3]
-        poly[5, 0] = prm.segs[a + 1, 0]
-        poly[5, 1] = prm.segs[a + 1, 1]
-        sign = 0.0
+                        pts[2 + k, 0] = prm.segs[q, 2 * e]
+                        pts[2 + k, 1] = prm.segs[q, 2 * e + 1]
+        # In the convex hull: on the inner side of every line through two points that has all the others on one
+        # side (a hull edge).
         inside = True
-        for k in range(6):
-            ax = poly[k, 0]
-            ay = poly[k, 1]
-            bx = poly[(k + 1) % 6, 0]
-            by = poly[(k + 1) % 6, 1]
-            c = (bx - ax) * (y - ay) - (by - ay) * (x - ax)
-            if c != 0.0:
-                if sign == 0.0:
-                    sign = c
-                elif (c > 0.0) != (sign > 0.0):
-                    inside = False
-                    break
+        for u in range(6):
+            for v in range(u + 1, 6):
+                ex = pts[v, 0] - pts[u, 0]
+                ey = pts[v, 1] - pts[u, 1]
+                if ex == 0.0 and ey == 0.0:
+                    continue
+                side = 0.0
+                edge = True
+                for w in range(6):
+                    c = ex * (pts[w, 1] - pts[u, 1]) - ey * (pts[w, 0] - pts[u, 0])
+                    if c != 0.0:
+                        if side == 0.0:
+                            side = c
+                        elif (c > 0.0) != (side > 0.0):
+                            edge = False
+                            break
+                if edge and side != 0.0:
+                    c = ex * (y - pts[u, 1]) - ey * (x - pts[u, 0])
+                    if c != 0.0 and (c > 0.0) != (side > 0.0):
+                        inside = False
+                        break
+            if not inside:
+                break
         if inside:
             return True
     return False
