@@ -284,9 +284,11 @@ def spin_physics(src: Source, scene: dict[str, Any]) -> None:
 def jaw_specs(src: Source) -> dict[str, Any]:
     """A random jaw table: ``{"preset": name, "specs": fields}``, a preset of :data:`JAW_PRESETS` whose spec fields
     are each, now and then, perturbed (lengths by up to 25 %, angles by up to 8 degrees); a perturbation that makes
-    no table (:class:`~billiards_env.physics.pocket_specs.PocketSpecs` refuses it) or a mouth a ball cannot pass
-    is dropped, field by field."""
+    no table (:class:`~billiards_env.physics.pocket_specs.PocketSpecs` refuses it), a mouth a ball cannot pass or a
+    throat a ball can leave past the pocket circle (:func:`~billiards_env.physics.pocket_specs.throat_leak`) is
+    dropped, field by field."""
     from ..physics.errors import SceneError
+    from ..physics.pocket_specs import throat_leak
     from ..physics.table import TABLE_PRESETS
 
     name = src.choice(JAW_PRESETS)
@@ -304,7 +306,8 @@ def jaw_specs(src: Source) -> dict[str, Any]:
             specs[key] = float(old * src.uniform(0.75, 1.25))
         try:
             ok = type(base)(**specs)
-            ok = ok.corner_pocket_width > 2.0 * R_DEFAULT + 1e-3 and ok.side_pocket_width > 2.0 * R_DEFAULT + 1e-3
+            ok = (ok.corner_pocket_width > 2.0 * R_DEFAULT + 1e-3 and ok.side_pocket_width > 2.0 * R_DEFAULT + 1e-3
+                  and throat_leak(ok, R_DEFAULT) is None)
         except SceneError:
             ok = False
         if not ok:

@@ -231,7 +231,10 @@ def _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
         c0 = (x - prm.segs[k, 0]) * nx + (y - prm.segs[k, 1]) * ny - r
         if c0 > far or c0 < -2.0 * r:  # out of reach, or the centre behind the line (not on this side)
             continue
-        tau = _wall_time(0.5 * (ax * nx + ay * ny), vx * nx + vy * ny, c0, window, tol)
+        an = ax * nx + ay * ny
+        if abs(an) <= tol:  # round-off of a ball settled on a slanted wall (the pressed rule): not pressing
+            an = 0.0
+        tau = _wall_time(0.5 * an, vx * nx + vy * ny, c0, window, tol)
         if tau < best and on_segment(x + tau * (vx + 0.5 * ax * tau), y + tau * (vy + 0.5 * ay * tau), k, prm):
             best = tau
             wall = k

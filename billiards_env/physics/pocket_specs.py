@@ -250,7 +250,8 @@ SNOOKER_12FT = PocketSpecs(l=3.569, w=1.778, cushion_width=47.63 / 1000, cushion
                            side_pocket_depth=51.59 / 1000, side_pocket_radius=53.19 / 1000,
                            side_jaw_radius=66.90 / 1000)
 
-__all__ = ["PocketSpecs", "SPEC_FIELDS", "build_walls", "pocket_circles", "POOLTOOL_7FT", "WPA_9FT", "SNOOKER_12FT",
+__all__ = ["PocketSpecs", "SPEC_FIELDS", "build_walls", "pocket_circles", "throat_leak", "wall_overlaps", "wall_gaps",
+           "mouth_polygons", "in_mouth_region", "in_mouth", "clear_of_walls", "POOLTOOL_7FT", "WPA_9FT", "SNOOKER_12FT",
            "N_RAILS", "N_JAWS", "N_TIPS", "N_SEGMENTS", "N_WALLS"]
 
 
@@ -274,6 +275,30 @@ def wall_overlaps(segs: np.ndarray, tips: np.ndarray, x: Any, y: Any, r: Any) ->
         wall = np.where(ov > best, len(segs) + k, wall)
         best = np.maximum(best, ov)
     return best, wall
+
+
+def throat_leak(s: PocketSpecs, r: float) -> str | None:
+    """Why a ball of radius ``r`` could leave a pocket's throat past the ends of its jaw faces without its centre
+    entering the pocket circle (the model has no wall behind the jaws: such a ball would run on off the table), or
+    None if every pocket catches it. A centre leaving between the faces' deep ends lies at least ``r`` from each
+    end along the line across them, so the circle must hold that line inset by ``r`` at both ends."""
+    segs, tips = build_walls(s)
+    xy, pr = pocket_circles(s)
+    for p in range(len(pr)):
+        a = segs[N_RAILS + 2 * p, 0:2]
+        b = segs[N_RAILS + 2 * p + 1, 0:2]
+        width = float(np.hypot(*(b - a)))
+        if width <= 2.0 * r:
+            continue  # no ball fits between the deep ends
+        u = (b - a) / width
+        far = max(float(np.hypot(*(a + r * u - xy[p]))), float(np.hypot(*(b - r * u - xy[p]))))
+        if far > pr[p]:
+            kind = "side" if p in (1, 4) else "corner"
+            return (f"table.specs: a ball of radius {r} m can leave pocket {p}'s throat between its jaws' deep ends "
+                    f"{far:.4f} m from the pocket circle's centre, outside its radius {pr[p]} m, and run off the "
+                    f"table; make {kind}_pocket_radius at least {far:.4f} m, or the {kind} pocket narrower or its "
+                    f"jaws longer (cushion_width)")
+    return None
 
 
 def wall_gaps(segs: np.ndarray, tips: np.ndarray, x: Any, y: Any, r: Any, wall: Any) -> np.ndarray:

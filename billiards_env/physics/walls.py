@@ -27,6 +27,14 @@ from .kernel_logs import internal
 END_SLACK = 1e-12
 
 
+#: A ball counts as moving into a wall only if its direction's component along the wall's normal is below
+#: ``-GRAZE`` (a tip: the cosine between its direction and the line of centres). A reflection off a slanted wall with
+#: no restitution, or a jam, leaves the normal velocity at round-off, possibly ``-1e-17`` into the wall: counted as a
+#: hit, that is an endless storm of zero-speed hits at one instant (the fuzz found it). A ball running at under
+#: ``GRAZE`` rad into a wall goes at most ``GRAZE`` m into it per metre it runs.
+GRAZE = 1e-12
+
+
 @internal
 def has_walls(prm):
     """Whether the table is a jaw table (its cushions are the record's segments and tips)."""
@@ -53,7 +61,7 @@ def ray_segment_hit(px, py, ux, uy, r, k, prm):
     nx = prm.segs[k, 4]
     ny = prm.segs[k, 5]
     un = ux * nx + uy * ny
-    if not un < 0.0:
+    if not un < -GRAZE:
         return math.inf
     gap = (px - prm.segs[k, 0]) * nx + (py - prm.segs[k, 1]) * ny - r
     if gap < -r:  # the centre is behind the line: the ball is not on this segment's side
@@ -73,7 +81,7 @@ def ray_tip_hit(px, py, ux, uy, r, k, prm):
     dy = py - prm.tips[k, 1]
     rho = r + prm.tips[k, 2]
     b = ux * dx + uy * dy
-    if not b < 0.0:
+    if not b < -GRAZE * rho:
         return math.inf
     c = dx * dx + dy * dy - rho * rho
     if c <= 0.0:
@@ -330,5 +338,5 @@ def keep_on_jaw_table(pos, on_table, radius, pocket_xy, pocket_r, prm):
 
 __all__ = ["has_walls", "on_segment", "ray_segment_hit", "deepest_overlap", "wall_reach",
            "wall_rewind_time", "in_mouth_region", "push_out_of_walls", "keep_on_jaw_table", "MAX_WALL_PASSES",
-           "WALL_SLOP", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
+           "WALL_SLOP", "GRAZE", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
            "touch_wall", "wall_gap", "without_push_into_walls", "reflect_off", "END_SLACK"]
