@@ -371,9 +371,11 @@ def in_mouth_region(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, p
 def in_mouth(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float, y: float,
              r: float, tol: float = 0.0) -> bool:
     """Whether a ball centre at ``(x, y)`` outside the playing area ``[r, l - r] x [r, w - r]`` still lies on a
-    jaw table: within a pocket's mouth and throat (:func:`mouth_polygons`; or in its pocket circle) and clear of
-    every wall."""
-    if in_mouth_region(segs, tips, pocket_xy, pocket_r, x, y):
+    jaw table: within the cushion lines ``[0, l] x [0, w]`` (a mouth's entrance, where a rail has stopped; the
+    rails lie on those lines: rail 5 at ``x = l``, rail 2 at ``y = w``), within a pocket's mouth and throat
+    (:func:`mouth_polygons`) or in its pocket circle, and clear of every wall."""
+    length, width = segs[5, 0], segs[2, 1]
+    if (0.0 <= x <= length and 0.0 <= y <= width) or in_mouth_region(segs, tips, pocket_xy, pocket_r, x, y):
         return clear_of_walls(segs, tips, x, y, r, tol)
     return False
 
