@@ -133,27 +133,57 @@ def test_a_ball_resting_in_a_throat(preset, pocket, gap, speed, law, solver, con
         assert res.balls.on_table[1] and np.array_equal(res.balls.pos[1], ball)
 
 
+def _pair_in_mouth(preset, pocket):
+    """Two touching balls abreast across ``pocket``'s mouth (0: a corner, 1: a side pocket), on its axis: where they
+    touch its two tips if the mouth is narrower than the pair (jammed), else just outside the pocket circle.
+    Returns their centres and the axis (into the table)."""
+    from billiards_env.physics.pocket_specs import pocket_circles
+
+    s = SPECS[preset]
+    segs, tips = _walls(preset)
+    xy, pr = pocket_circles(s)
+    if pocket == 1:
+        origin, u = np.array([s.l / 2, 0.0]), np.array([0.0, 1.0])
+    else:
+        origin, u = np.zeros(2), np.array([1.0, 1.0]) / math.sqrt(2.0)
+    perp = np.array([u[1], -u[0]])
+    tip = tips[2 * pocket]
+
+    def gap(t):  # how far each ball is from its tip (symmetric about the axis)
+        return min(np.hypot(*(origin + t * u + k * R * perp - tip[:2])) for k in (-1.0, 1.0)) - R - tip[2]
+    t_circle = float((xy[pocket] - origin) @ u) + pr[pocket] + 0.002  # just outside the pocket circle
+    hi = 0.1
+    lo = hi
+    while lo > t_circle and gap(lo) > 0.0:  # in from the table until the pair meets the tips
+        lo -= 1e-3
+    if gap(lo) < 0.0:  # jammed: bisect for the touch
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if gap(mid) < 0.0 else (lo, mid)
+        t = hi
+    else:  # the mouth takes both
+        t = t_circle
+    c = origin + t * u
+    return [c - R * perp, c + R * perp], u
+
+
 @pytest.mark.parametrize("solver,contact", SOLVERS, ids=SOLVER_IDS)
 @pytest.mark.parametrize("law", list(LAWS))
-@pytest.mark.parametrize("preset", ["pooltool", "snooker_match"])
+@pytest.mark.parametrize("preset,pocket", [("pooltool", 1), ("snooker_match", 0), ("snooker_match", 1)])
 @pytest.mark.parametrize("speed", [0.3, 2.0, 6.0])
 @pytest.mark.parametrize("e_cushion", [0.0, 0.85])
-def test_two_balls_jammed_in_a_mouth(preset, speed, e_cushion, law, solver, contact):
-    """Two touching balls side by side across a side mouth, each against its jaw tip where the mouth is too narrow
-    for both to pass (snooker), driven in by the cue: a jammed cluster against the jaws."""
-    segs, tips = _walls(preset)
-    s = SPECS[preset]
-    # Each ball touches its tip (tips 2 and 3: the middle pocket's) and the other ball, symmetric about x = l / 2.
-    lt = tips[2]
-    half = R  # the balls touch at x = l / 2
-    dx = s.l / 2 - half - lt[0]
-    # (pooltool's side mouth takes two balls abreast: there they stand in it, touching, clear of the tips)
-    y = lt[1] + math.sqrt((R + lt[2]) ** 2 - dx ** 2) if dx < R + lt[2] else -0.005
-    a = np.array([s.l / 2 - half, y])
-    b = np.array([s.l / 2 + half, y])
-    cue = np.array([s.l / 2, a[1] + 0.35])
-    d = jaw_scene(preset, [cue, a, b], -math.pi / 2, speed, law, solver, contact, e_cushion=e_cushion)
-    run(d)
+def test_two_balls_jammed_in_a_mouth(preset, pocket, speed, e_cushion, law, solver, contact):
+    """Two touching balls abreast across a mouth, each against its jaw tip where the mouth is narrower than the
+    pair and the tips are met outside the pocket circle (snooker's corner), else standing at the mouth (just
+    outside the circle), driven in by the cue along the pocket's axis."""
+    (a, b), u = _pair_in_mouth(preset, pocket)
+    cue = 0.5 * (a + b) + 0.35 * u
+    d = jaw_scene(preset, [cue, a, b], math.atan2(-u[1], -u[0]), speed, law, solver, contact, e_cushion=e_cushion)
+    rep, res = run(d)
+    # Jammed between the tips, pushed square: the pair cannot drop (exact). The step solver's pair may overlap by up
+    # to 2 v dt (its tolerance), which at dt = 1e-3 and 2 m/s or more squeezes one ball through now and then.
+    if (preset, pocket) == ("snooker_match", 0) and solver == "exact":
+        assert res.balls.on_table[1] and res.balls.on_table[2]
 
 
 # ------------------------------------------------------------------------------------------- frozen on a jaw
