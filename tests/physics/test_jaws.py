@@ -11,7 +11,7 @@ from physics_helpers import EV_CUSHION, EV_POCKET, R, balls, rolling
 from billiards_env.physics import Physics, SceneError, Simulator
 from billiards_env.physics.motion import time_for_distance
 from billiards_env.physics.pocket_specs import (N_RAILS, N_SEGMENTS, POOLTOOL_7FT, SNOOKER_12FT, WPA_9FT,
-                                                PocketSpecs, build_walls, pocket_circles)
+                                                PocketSpecs, build_walls, pocket_circles, throat_leak)
 from billiards_env.physics.scene import parse_table
 from billiards_env.physics.table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, jaw_table
 
@@ -269,6 +269,18 @@ def test_the_step_solver_keeps_a_ball_in_a_mouth_where_it_is(specs, dx, y, conta
 def test_specs_that_make_no_table_are_refused_naming_the_field(field, value, match):
     with pytest.raises(SceneError, match=match):
         PocketSpecs(**{field: value})
+
+
+def test_a_table_whose_pocket_circle_misses_a_throats_exit_is_refused_for_its_balls():
+    # A wide corner mouth with pooltool's circle: a ball could leave the throat past the jaws' deep ends and run off
+    # the table (the jaw fuzz found one at x = -2.1 m).
+    table = parse_table({"preset": "wpa", "specs": {"corner_pocket_width": 0.144, "corner_pocket_angle": 0.6,
+                                                    "corner_pocket_depth": 0.0498}})
+    with pytest.raises(SceneError, match="corner_pocket_radius at least"):
+        _run(table, rolling(), [(0.5, 0.5)], [(0.0, 0.0)])
+    assert throat_leak(table.specs, R) is not None
+    for specs in SPECS:
+        assert throat_leak(specs, R) is None and throat_leak(specs, 0.02625) is None
 
 
 def test_an_unknown_spec_field_is_refused_with_a_did_you_mean():
