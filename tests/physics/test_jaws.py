@@ -11,7 +11,8 @@ from physics_helpers import EV_CUSHION, EV_POCKET, R, balls, rolling
 from billiards_env.physics import Physics, SceneError, Simulator
 from billiards_env.physics.motion import time_for_distance
 from billiards_env.physics.pocket_specs import (N_RAILS, N_SEGMENTS, POOLTOOL_7FT, SNOOKER_12FT, WPA_9FT,
-                                                PocketSpecs, build_walls, pocket_circles, throat_leak)
+                                                PocketSpecs, build_walls, pocket_circles, throat_leak,
+                                                wall_overlaps)
 from billiards_env.physics.scene import parse_table
 from billiards_env.physics.table import CORNER_POCKET_RADIUS, SIDE_POCKET_RADIUS, jaw_table
 
@@ -167,6 +168,30 @@ def test_random_shots_on_jaw_tables_keep_every_ball_clear_of_the_walls_and_lose_
                     assert math.hypot(x - tx, y - ty) >= R + tr - 1e-9
             again = sim.run(b)  # the same input, bit for bit the same output
             assert np.array_equal(again.balls.pos, res.balls.pos)
+
+
+@pytest.mark.parametrize("physics", [rolling(), Physics(friction="drag", drag_k=0.3, min_speed=0.01),
+                                     Physics.from_preset("pooltool")], ids=["rolling", "drag", "spin"])
+@pytest.mark.parametrize("contact", ["lecture", "rewind"])
+def test_random_step_shots_on_jaw_tables_stay_clear_of_the_walls_and_repeat_bit_for_bit(physics, contact):
+    rng = np.random.default_rng(8)
+    for specs in (POOLTOOL_7FT, SNOOKER_12FT):
+        table = jaw_table(specs)
+        segs, tips = table.walls()
+        sim = Simulator(table, physics, solver="step", dt=1e-3, contact=contact)
+        for _ in range(8):
+            pos = []
+            while len(pos) < 4:
+                p = (rng.uniform(R, specs.l - R), rng.uniform(R, specs.w - R))
+                if all(math.dist(p, q) > 2 * R + 1e-6 for q in pos) and wall_overlaps(segs, tips, *p, R)[0] < 0:
+                    pos.append(p)
+            b = balls(pos).strike("cue", rng.uniform(-math.pi, math.pi), rng.uniform(0.5, 6.0), physics=physics)
+            res = sim.run(b)
+            assert res.status == "rest"
+            on = res.balls.on_table
+            assert np.all(wall_overlaps(segs, tips, res.balls.pos[on, 0], res.balls.pos[on, 1], R)[0] <= 1e-9)
+            again = sim.run(b)
+            assert np.array_equal(again.balls.pos, res.balls.pos) and np.array_equal(again.pocket, res.pocket)
 
 
 def test_a_ball_may_rest_in_a_mouth_and_stays_there():
