@@ -190,7 +190,7 @@ def test_two_balls_jammed_in_a_mouth(preset, pocket, speed, e_cushion, law, solv
 @pytest.mark.parametrize("solver,contact", SOLVERS, ids=SOLVER_IDS)
 @pytest.mark.parametrize("law", list(LAWS))
 @pytest.mark.parametrize("preset,face", [("pooltool", 6), ("pooltool", 9), ("wpa", 7)])
-@pytest.mark.parametrize("cut", [0.0, 0.5, 1.2])
+@pytest.mark.parametrize("cut", [0.0, 0.5, 0.9])
 @pytest.mark.parametrize("e_cushion", [0.0, 0.85])
 def test_a_ball_frozen_on_a_jaw_then_hit(preset, face, cut, e_cushion, law, solver, contact):
     """A ball at rest against a jaw face (its centre ``R`` off the face's middle), hit by the cue from the table at
@@ -202,10 +202,13 @@ def test_a_ball_frozen_on_a_jaw_then_hit(preset, face, cut, e_cushion, law, solv
     s = SPECS[preset]
     towards = np.array([s.l / 2, s.w / 2]) - ball
     towards /= np.linalg.norm(towards)
-    c, sn = math.cos(cut), math.sin(cut)
-    come = np.array([c * towards[0] - sn * towards[1], sn * towards[0] + c * towards[1]])
-    cue = ball + 0.3 * come
-    if not (R < cue[0] < s.l - R and R < cue[1] < s.w - R):
+    for turn in (cut, -cut):  # from whichever side of the line to the centre leaves the cue on the table
+        c, sn = math.cos(turn), math.sin(turn)
+        come = np.array([c * towards[0] - sn * towards[1], sn * towards[0] + c * towards[1]])
+        cue = ball + 0.3 * come
+        if R < cue[0] < s.l - R and R < cue[1] < s.w - R:
+            break
+    else:
         pytest.skip("the cue would be off the table")
     d = jaw_scene(preset, [cue, ball], _aim(cue, ball), 2.0, law, solver, contact, e_cushion=e_cushion)
     run(d)
