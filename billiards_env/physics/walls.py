@@ -167,6 +167,43 @@ def without_push_into_walls(x, y, r, vx, vy, prm):
 
 
 @internal
+def pushes_into_walls(x, y, r, vx, vy, prm):
+    """Whether ``(vx, vy)`` has a component into a wall that a ball of radius ``r`` at ``(x, y)`` touches (within
+    1e-9 m) beyond round-off (``1e-12`` of the speed)."""
+    tol = 1e-12 * math.hypot(vx, vy)
+    for wall in range(prm.n_segs + prm.n_tips):
+        g = wall_gap(x, y, r, wall, prm)
+        if g <= 1e-9 and g > -r:
+            nx, ny = wall_normal_at(x, y, wall, prm)
+            if vx * nx + vy * ny < -tol:
+                return True
+    return False
+
+
+@internal
+def cluster_off_walls(px, py, radius, involved, count, cx, cy, prm):
+    """The velocity ``(cx, cy)`` of a jammed cluster (members ``involved[:count]``, centres ``px``, ``py``) with no
+    component into any wall a member touches. :func:`without_push_into_walls` member by member takes out one wall's
+    component at a time, which can put back one into another wall the cluster is wedged against (two jaw faces of a
+    throat, a jaw face and a rail): the passes repeat (at most ``MAX_WALL_PASSES``), and a cluster they leave still
+    pushing into a wall has no free direction between its walls: it stops (the fuzz's storms of a pair wedged in a
+    mouth)."""
+    for _ in range(MAX_WALL_PASSES):
+        for h in range(count):
+            m = involved[h]
+            cx, cy = without_push_into_walls(px[m], py[m], radius[m], cx, cy, prm)
+        free = True
+        for h in range(count):
+            m = involved[h]
+            if pushes_into_walls(px[m], py[m], radius[m], cx, cy, prm):
+                free = False
+                break
+        if free:
+            return cx, cy
+    return 0.0, 0.0
+
+
+@internal
 def reflect_off(vel, i, nx, ny, e_c):
     """Reverse the normal component of ``vel[i]`` against a wall of unit normal ``n`` (away from the wall), scaled
     by ``e_c``; the tangential component is kept. Returns the normal speed into the wall before the hit (0 if
@@ -338,5 +375,5 @@ def keep_on_jaw_table(pos, on_table, radius, pocket_xy, pocket_r, prm):
 
 __all__ = ["has_walls", "on_segment", "ray_segment_hit", "deepest_overlap", "wall_reach",
            "wall_rewind_time", "in_mouth_region", "push_out_of_walls", "keep_on_jaw_table", "MAX_WALL_PASSES",
-           "WALL_SLOP", "GRAZE", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
+           "WALL_SLOP", "GRAZE", "pushes_into_walls", "cluster_off_walls", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
            "touch_wall", "wall_gap", "without_push_into_walls", "reflect_off", "END_SLACK"]

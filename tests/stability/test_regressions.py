@@ -55,6 +55,10 @@ def test_no_missed_recontact(case):
     # face on the left rail and slides along it with its normal velocity at round-off (-1.4e-17 m/s): 19,990
     # zero-speed hits of that face at one instant; fixed by walls.GRAZE
     "zeno_jaw_face_no_restitution.json",
+    # jaw fuzz (seed 2026, shot 34510; 582695b): drag k = 0, cushion e = 0, a pair wedged in a corner's throat, each
+    # ball against its own jaw face: the jam took out one face's component at a time and put back the other's:
+    # 7,365 events within 1.1e-13 s; fixed by walls.cluster_off_walls (the cluster's velocity off every wall)
+    "zeno_jaw_wedged_pair.json",
 ])
 def test_no_inelastic_collapse_storm(case):
     d = load_case(case)
