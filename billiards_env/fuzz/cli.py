@@ -1,7 +1,7 @@
 """The fuzz command: run random shots in worker processes, check every one, summarise, save the failing cases.
 
 ``python -m billiards_env.fuzz --shots 100000 [--seed S] [--solver exact|step|both] [--spin P] [--models P]
-[--preset NAME] [--workers 2] [--out DIR]`` (``--spin``: the share of spin-model shots, 0 by default; 1 for spin
+[--preset NAME] [--table rect|jaws] [--workers 2] [--out DIR]`` (``--spin``: the share of spin-model shots, 0 by default; 1 for spin
 only; ``--models``: the share of those that draw the optional collision models too; ``--preset pooltool``: every
 shot under that physics preset);
 ``--check FILE`` runs one scene file and prints its violations; ``--shrink FILE`` prints a smaller scene that
@@ -25,7 +25,7 @@ from ..physics.model import PRESETS
 from ..physics.invariants import (CONTACT_TOL, CONTINUITY_TOL, ENERGY_REL_TOL, EXACT_OVERLAP_TOL, INVARIANTS,
                                   MOMENTUM_REL_TOL, STEP_OVERLAP_ABS, STEP_OVERLAP_FACTOR, ZENO_BURST, Report,
                                   run_case)
-from .generator import DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, DEFAULT_STEP_MAX_TIME, NumpySource, random_scene, shot_rng
+from .generator import TABLE_KINDS, DEFAULT_MAX_EVENTS, DEFAULT_MAX_TIME, DEFAULT_STEP_MAX_TIME, NumpySource, random_scene, shot_rng
 from .shrink import shrink_case
 
 
@@ -40,6 +40,7 @@ class Stats:
     shots: int = 0
     failing_shots: int = 0
     per_solver: Counter = field(default_factory=Counter)
+    per_law: Counter = field(default_factory=Counter)  #: shots per friction law (rolling, drag, spin)
     violations: Counter = field(default_factory=Counter)
     violation_shots: Counter = field(default_factory=Counter)
     statuses: Counter = field(default_factory=Counter)
@@ -50,6 +51,7 @@ class Stats:
     worst_overlap_ratio: float = 0.0  #: step: final overlap / (speed * dt)
     worst_overlap_during: dict = field(default_factory=lambda: {"exact": 0.0, "step": 0.0})
     worst_energy_gain: float = 0.0
+    worst_wall_overlap: dict = field(default_factory=lambda: {"exact": 0.0, "step": 0.0})  #: jaw tables (m)
     worst_momentum_err: float = 0.0
     worst_contact_err: float = 0.0
     worst_jump: float = 0.0
@@ -61,6 +63,11 @@ class Stats:
         self.shots += 1
         solver = scene_dict["solver"]["name"]
         self.per_solver[solver] += 1
+        ph = scene_dict["physics"]
+        law = "spin" if "preset" in ph else ph.get("friction", "rolling")
+        self.per_law[law] += 1
+        if rep.violations:
+            self.per_law[f"{law} failing"] += 1
         self.statuses[f"{solver}:{rep.status or 'crash'}"] += 1
         self.events += rep.n_events
         self.collisions += rep.n_collisions
@@ -71,6 +78,7 @@ class Stats:
             if sd > 0:
                 self.worst_overlap_ratio = max(self.worst_overlap_ratio, rep.max_overlap / sd)
         self.worst_overlap_during[solver] = max(self.worst_overlap_during[solver], rep.max_overlap_during)
+        self.worst_wall_overlap[solver] = max(self.worst_wall_overlap[solver], rep.max_wall_overlap)
         self.worst_energy_gain = max(self.worst_energy_gain, rep.max_energy_gain)
         self.worst_momentum_err = max(self.worst_momentum_err, rep.max_momentum_err)
         self.worst_contact_err = max(self.worst_contact_err, rep.max_contact_err)
@@ -87,7 +95,7 @@ class Stats:
     def merge(self, other: "Stats") -> None:
         self.shots += other.shots
         self.failing_shots += other.failing_shots
-        for name in ("per_solver", "violations", "violation_shots", "statuses"):
+        for name in ("per_solver", "per_law", "violations", "violation_shots", "statuses"):
             getattr(self, name).update(getattr(other, name))
         self.events += other.events
         self.collisions += other.collisions
@@ -95,6 +103,7 @@ class Stats:
         for s in ("exact", "step"):
             self.worst_overlap[s] = max(self.worst_overlap[s], other.worst_overlap[s])
             self.worst_overlap_during[s] = max(self.worst_overlap_during[s], other.worst_overlap_during[s])
+            self.worst_wall_overlap[s] = max(self.worst_wall_overlap[s], other.worst_wall_overlap[s])
         for name in ("worst_overlap_ratio", "worst_energy_gain", "worst_momentum_err", "worst_contact_err",
                      "worst_jump", "max_burst"):
             setattr(self, name, max(getattr(self, name), getattr(other, name)))
@@ -103,13 +112,13 @@ class Stats:
 
 
 def _run_chunk(args: tuple) -> Stats:
-    seed, lo, hi, mode, max_time, max_events, keep, spin, models, preset = args
+    seed, lo, hi, mode, max_time, max_events, keep, spin, models, preset, table = args
     stats = Stats()
     for idx in range(lo, hi):
         rng = shot_rng(seed, idx)
         solver = _solver_for(mode, rng)
         scene_dict = random_scene(NumpySource(rng), solver=solver, max_time=max_time, max_events=max_events,
-                                  spin=spin, models=models, preset=preset)
+                                  spin=spin, models=models, preset=preset, table=table)
         rep, _ = run_case(scene_dict)
         stats.add(rep, scene_dict, f"seed{seed}-shot{idx}", keep_failure=len(stats.failures) < keep)
     return stats
@@ -125,6 +134,7 @@ def _warm_up() -> None:
 
 def format_summary(stats: Stats, wall: float) -> str:
     lines = [f"shots run: {stats.shots}  ({', '.join(f'{k} {v}' for k, v in sorted(stats.per_solver.items()))})",
+             f"per friction law: {', '.join(f'{k} {v}' for k, v in sorted(stats.per_law.items()))}",
              f"wall time: {wall:.1f} s  ({stats.shots / max(wall, 1e-9):.0f} shots/s); simulated {stats.sim_seconds:.0f} s",
              f"events/shot: {stats.events / max(stats.shots, 1):.1f} (max {stats.max_events}); "
              f"collisions/shot: {stats.collisions / max(stats.shots, 1):.1f}",
@@ -139,6 +149,8 @@ def format_summary(stats: Stats, wall: float) -> str:
               f"tol {STEP_OVERLAP_FACTOR:g} x speed*dt + {STEP_OVERLAP_ABS:g})",
               f"worst overlap during shot: exact {stats.worst_overlap_during['exact']:.3g} m, "
               f"step {stats.worst_overlap_during['step']:.3g} m",
+              f"worst overlap with a wall (jaw tables): exact {stats.worst_wall_overlap['exact']:.3g} m, "
+              f"step {stats.worst_wall_overlap['step']:.3g} m",
               f"worst energy gain (relative, per event): {stats.worst_energy_gain:.3g} (tol {ENERGY_REL_TOL:g})",
               f"worst momentum error (relative, per collision): {stats.worst_momentum_err:.3g} (tol {MOMENTUM_REL_TOL:g})",
               f"worst contact-distance error at a collision: {stats.worst_contact_err:.3g} m (tol {CONTACT_TOL:g})",
@@ -176,6 +188,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--preset", default=None,
                    help="every shot under this physics preset (e.g. pooltool; the tip offsets drawn), instead of "
                         "drawn friction laws and constants")
+    p.add_argument("--table", choices=TABLE_KINDS, default="rect",
+                   help="'rect' (default): the capture-pocket table; 'jaws': jaw tables (a preset among wpa, "
+                        "pooltool, snooker_match with its specs perturbed), balls anywhere, the mouths included")
     p.add_argument("--workers", type=int, default=2, help="worker processes (default 2)")
     p.add_argument("--out", default="fuzz-failures", help="folder for failing cases (scene files)")
     p.add_argument("--max-time", type=float, default=None,
@@ -218,7 +233,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"fuzz: --preset: unknown preset {args.preset!r}; use one of {', '.join(PRESETS)}", file=sys.stderr)
         return 2
     chunks = [(args.seed, lo, min(lo + args.chunk, args.start + args.shots), args.solver, args.max_time,
-               args.max_events, args.keep, args.spin, args.models, args.preset)
+               args.max_events, args.keep, args.spin, args.models, args.preset, args.table)
               for lo in range(args.start, args.start + args.shots, args.chunk)]
     total = Stats()
     _warm_up()
@@ -248,6 +263,7 @@ def main(argv: list[str] | None = None) -> int:
             pool.join()
     wall = time.perf_counter() - t0
     what = f"preset {args.preset}" if args.preset else f"spin share {args.spin:g}, models share {args.models:g}"
+    what += f", table {args.table}"
     print(f"fuzz: seed {args.seed}, solver {args.solver}, {what}, workers {args.workers}")
     print(format_summary(total, wall))
     if saved:

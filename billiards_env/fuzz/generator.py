@@ -21,6 +21,9 @@ DEFAULT_STEP_MAX_TIME = 20.0
 DEFAULT_MAX_EVENTS = 20_000
 STEP_DTS = (5e-4, 1e-3, 2e-3)
 CONTACT_MODES = ("lecture", "rewind")
+TABLE_KINDS = ("rect", "jaws")
+#: The jaw presets the fuzz draws from (:data:`billiards_env.physics.table.TABLE_PRESETS`).
+JAW_PRESETS = ("wpa", "pooltool", "snooker_match")
 
 L_DEFAULT = 2.54
 W_DEFAULT = 1.27
@@ -135,7 +138,7 @@ def _rack(src: Source, n: int, r: float, length: float, width: float) -> list[tu
 
 def random_scene(src: Source, solver: str | None = None, max_time: float | None = None,
                  max_events: int = DEFAULT_MAX_EVENTS, spin: float = 0.0, models: float = 0.0,
-                 preset: str | None = None) -> dict[str, Any]:
+                 preset: str | None = None, table: str = "rect") -> dict[str, Any]:
     """A random scene dict in the scene-file format, with a shot and solver settings.
 
     ``solver``: ``"exact"``, ``"step"`` or None (drawn). The cue is ball 0 (id ``"cue"``). ``spin``: the chance
@@ -144,13 +147,22 @@ def random_scene(src: Source, solver: str | None = None, max_time: float | None 
     that a spin-model scene also draws the optional collision models (:func:`model_physics`). ``preset``: every
     scene uses the spin model with this physics preset (``{"preset": name}``; the tip offsets and spinning balls
     drawn as for the spin model). The draws of ``models`` and ``preset`` come last too: without them a seed gives
-    the same scenes as before they existed.
+    the same scenes as before they existed. ``table``: ``"rect"`` (the capture-pocket table of ``L_DEFAULT`` x
+    ``W_DEFAULT``, as before) or ``"jaws"`` (:func:`jaw_specs`: a jaw preset with its specs perturbed; the balls
+    placed as on the rectangle, those that overlap a wall there dropped, and some put into the mouths by
+    :func:`mouth_balls`; its draws come first and last, so ``"rect"`` scenes stay the same).
     """
+    if table not in TABLE_KINDS:
+        raise ValueError(f"table: {table!r} is not one of {', '.join(TABLE_KINDS)}")
     length, width, r = L_DEFAULT, W_DEFAULT, R_DEFAULT
+    jaws = None
+    if table == "jaws":
+        jaws = jaw_specs(src)
+        length, width = jaws["specs"]["l"], jaws["specs"]["w"]
     # table
-    table: dict[str, Any] = {"length": length, "width": width, "cushion_restitution": _unit_or_special(src)}
-    if src.chance(0.3):
-        table["pockets"] = []
+    table_d: dict[str, Any] = {"length": length, "width": width, "cushion_restitution": _unit_or_special(src)}
+    if src.chance(0.3) and jaws is None:
+        table_d["pockets"] = []
     # physics
     friction = src.choice(("rolling", "drag"))
     physics: dict[str, Any] = {"friction": friction, "ball_restitution": _unit_or_special(src)}
@@ -172,6 +184,8 @@ def random_scene(src: Source, solver: str | None = None, max_time: float | None 
                 placed.append(p)
         if not placed:
             placed.append((src.uniform(r, length - r), src.uniform(r, width - r)))
+    if jaws is not None:
+        placed = mouth_balls(src, jaws, placed, r)
     balls = [{"id": "cue" if i == 0 else str(i), "x": float(x), "y": float(y)} for i, (x, y) in enumerate(placed)]
     # shot: a random direction, or aimed at a ball (head-on, tiny offset, or grazing at 2R +- eps), or a cushion
     aim = src.choice(("random", "random", "ball", "ball", "axis"))
@@ -202,9 +216,12 @@ def random_scene(src: Source, solver: str | None = None, max_time: float | None 
         solver_d["contact"] = src.choice(CONTACT_MODES)
     if max_time is None:
         max_time = DEFAULT_MAX_TIME if solver == "exact" else DEFAULT_STEP_MAX_TIME
-    scene = {"table": table, "physics": physics, "balls": balls,
+    scene = {"table": table_d, "physics": physics, "balls": balls,
              "shot": {"ball": "cue", "angle": float(angle), "speed": float(speed)},
              "solver": solver_d, "max_time": float(max_time), "max_events": int(max_events)}
+    if jaws is not None:
+        scene["table"] = {"preset": jaws["preset"], "specs": jaws["specs"],
+                          "cushion_restitution": table_d["cushion_restitution"]}
     if preset is not None:
         spin_physics(src, scene)
         scene["physics"] = {"preset": preset}
@@ -261,3 +278,98 @@ def spin_physics(src: Source, scene: dict[str, Any]) -> None:
         if src.chance(0.1):
             ball["wx"], ball["wy"], ball["wz"] = (float(src.uniform(-100.0, 100.0)) for _ in range(3))
 
+
+
+# --------------------------------------------------------------------------------------------- jaw tables
+def jaw_specs(src: Source) -> dict[str, Any]:
+    """A random jaw table: ``{"preset": name, "specs": fields}``, a preset of :data:`JAW_PRESETS` whose spec fields
+    are each, now and then, perturbed (lengths by up to 25 %, angles by up to 8 degrees); a perturbation that makes
+    no table (:class:`~billiards_env.physics.pocket_specs.PocketSpecs` refuses it), a mouth a ball cannot pass or a
+    throat a ball can leave past the pocket circle (:func:`~billiards_env.physics.pocket_specs.throat_leak`) is
+    dropped, field by field."""
+    from ..physics.errors import SceneError
+    from ..physics.pocket_specs import throat_leak
+    from ..physics.table import TABLE_PRESETS
+
+    name = src.choice(JAW_PRESETS)
+    base = TABLE_PRESETS[name]().specs
+    specs = base.to_dict()
+    for key in sorted(specs):
+        if not src.chance(0.3):
+            continue
+        old = specs[key]
+        if key.endswith("angle"):
+            specs[key] = float(old + src.uniform(-8.0, 8.0))
+        elif key in ("l", "w"):
+            specs[key] = float(old * src.uniform(0.9, 1.1))
+        else:
+            specs[key] = float(old * src.uniform(0.75, 1.25))
+        try:
+            ok = type(base)(**specs)
+            ok = (ok.corner_pocket_width > 2.0 * R_DEFAULT + 1e-3 and ok.side_pocket_width > 2.0 * R_DEFAULT + 1e-3
+                  and throat_leak(ok, R_DEFAULT) is None)
+        except SceneError:
+            ok = False
+        if not ok:
+            specs[key] = old
+    return {"preset": name, "specs": specs}
+
+
+def mouth_balls(src: Source, jaws: dict[str, Any], placed: list[tuple[float, float]], r: float
+                ) -> list[tuple[float, float]]:
+    """The balls of a jaw-table scene: those of ``placed`` (drawn on the rectangle) that overlap no wall, then now
+    and then a few more in the mouths: anywhere in a mouth or throat, against a jaw face, at a jaw tip's tangent
+    point, or touching the ball placed before (two balls jammed in a mouth). The first ball kept is the cue; if every ball
+    overlapped a wall, one at the table's centre is."""
+    from ..physics.pocket_specs import PocketSpecs, build_walls, clear_of_walls, mouth_polygons, pocket_circles
+
+    specs = PocketSpecs(**jaws["specs"])
+    segs, tips = build_walls(specs)
+    pxy, pr = pocket_circles(specs)
+    polys = mouth_polygons(segs, tips)
+    n_rails = len(segs) - len(tips)
+
+    def free(p: tuple[float, float], balls: list[tuple[float, float]]) -> bool:
+        x, y = p
+        if not (math.isfinite(x) and math.isfinite(y)) or not clear_of_walls(segs, tips, x, y, r, 0.0):
+            return False
+        inside = r <= x <= specs.l - r and r <= y <= specs.w - r
+        if not inside:
+            from ..physics.pocket_specs import in_mouth
+            if not in_mouth(segs, tips, pxy, pr, x, y, r, 0.0):
+                return False
+        return all(math.hypot(x - q[0], y - q[1]) >= 2.0 * r - 1e-12 for q in balls)
+
+    out: list[tuple[float, float]] = []
+    for p in placed:
+        if free(p, out):
+            out.append(p)
+    if not out:
+        out.append((specs.l / 2.0, specs.w / 2.0))
+    for _ in range(src.choice((0, 0, 1, 2, 3))):
+        pocket = src.integer(0, len(pr) - 1)
+        mode = src.choice(("anywhere", "anywhere", "face", "tip", "touch"))
+        if mode == "anywhere":
+            poly = polys[pocket]
+            w = [src.uniform(0.0, 1.0) for _ in range(len(poly))]
+            tot = sum(w) or 1.0
+            p = (float(sum(w[k] * poly[k, 0] for k in range(len(poly))) / tot),
+                 float(sum(w[k] * poly[k, 1] for k in range(len(poly))) / tot))
+        elif mode == "face":
+            ax, ay, bx, by, nx, ny = segs[n_rails + 2 * pocket + src.integer(0, 1)]
+            s = src.uniform(0.0, 1.0)
+            gap = _gap(src)
+            p = (float(ax + s * (bx - ax) + (r + gap) * nx), float(ay + s * (by - ay) + (r + gap) * ny))
+        elif mode == "tip":
+            cx, cy, rad = tips[2 * pocket + src.integer(0, 1)]
+            th = src.uniform(-math.pi, math.pi)
+            d = r + rad + _gap(src)
+            p = (float(cx + d * math.cos(th)), float(cy + d * math.sin(th)))
+        else:
+            q = out[-1]
+            th = src.uniform(-math.pi, math.pi)
+            d = 2.0 * r + _gap(src)
+            p = (float(q[0] + d * math.cos(th)), float(q[1] + d * math.sin(th)))
+        if free(p, out):
+            out.append(p)
+    return out

@@ -11,7 +11,7 @@ from numba import njit
 
 from .errors import SceneError
 from .spin_collide import MAX_TIP_OFFSET, strike_ball, strike_spin
-from .pocket_specs import in_mouth
+from .pocket_specs import in_mouth, throat_leak
 from .table import Table
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -238,6 +238,12 @@ def validate_balls(balls: Balls, table: Table, allow_spin: bool = True) -> None:
                                      mouth_mask(balls, table))
     if bad == 1:
         _raise_ball_error(balls, table, i)
+    if table.has_jaws:
+        on = np.asarray(balls.on_table, bool)
+        if on.any():
+            leak = throat_leak(table.specs, float(np.min(np.asarray(balls.radius)[on])))
+            if leak is not None:
+                raise SceneError(leak)
     if bad == 3:
         raise SceneError(f"ball {balls.ids[i]!r}: spins (wx, wy, wz) = {tuple(balls.ang[i].tolist())} rad/s, but "
                          "only the spin model has spin: set physics.friction to 'spin' (or give the ball no spin, "

@@ -26,7 +26,7 @@ from .kernel_logs import (append_event, contact_cluster, count_burst, internal, 
                           reserve_states)
 from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
 from .roots import first_entry
-from .walls import has_walls, ray_wall_hit, reflect_off, touch_wall, wall_normal_at, without_push_into_walls
+from .walls import cluster_off_walls, has_walls, ray_wall_hit, reflect_off, touch_wall, wall_normal_at
 
 #: A typed (non-literal) integer initial value: a literal 0 passed on to a compiled helper would make numba compile
 #: a second specialisation of it for the literal.
@@ -242,10 +242,11 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     cx = mom_x / total
     cy = mom_y / total
     walls = has_walls(prm)
+    if walls:
+        cx, cy = cluster_off_walls(p0[:, 0], p0[:, 1], radius, involved, count, cx, cy, prm)
     for h in range(count):
         m = involved[h]
         if walls:
-            cx, cy = without_push_into_walls(p0[m, 0], p0[m, 1], radius[m], cx, cy, prm)
             continue
         r = radius[m] + 1e-9
         if (p0[m, 0] <= r and cx < 0.0) or (p0[m, 0] >= prm.length - r and cx > 0.0):

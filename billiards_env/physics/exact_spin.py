@@ -29,7 +29,8 @@ from .kernel_logs import (append_event, contact_cluster, count_burst, internal, 
 from .roots import first_entry
 from .cushion_models import wall_hit
 from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, settle_on_wall, wall_normal
-from .walls import has_walls, path_clear_of, path_wall_time, touch_wall, wall_gap, wall_normal_at, wall_time
+from .walls import (MAX_WALL_PASSES, has_walls, path_clear_of, path_wall_time, pushes_into_walls, touch_wall, wall_gap,
+                    wall_normal_at, wall_time)
 from .spin_motion import advance, classify, piece_of, reach, reach_of, roll_on, slide_end, spin_decay_rate, transition
 
 #: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
@@ -265,6 +266,45 @@ def _touching_wall(x, y, r, length, width, wall):
 
 
 @internal
+def _jaw_jam_velocity(bs, radius, involved, count, cx, cy, qx, qy, prm):
+    """A jammed cluster's velocity ``(cx, cy)`` and mean surface velocity ``(qx, qy)`` on a jaw table: less any
+    component into a wall a member touches, and less the surface velocity's part that drives the cluster into it
+    (as the capture table's cushions below). One wall at a time can put back a component into another wall the
+    cluster is wedged against (two jaw faces, a face and a rail): the passes repeat (at most ``MAX_WALL_PASSES``),
+    and a cluster still pushing into a wall after them has no free direction between its walls: it stops (no
+    velocity, no surface velocity; each ball keeps its ``wz``)."""
+    for _ in range(MAX_WALL_PASSES):
+        for h in range(count):
+            m = involved[h]
+            for wall in range(prm.n_segs + prm.n_tips):
+                g = wall_gap(bs[m, X], bs[m, Y], radius[m], wall, prm)
+                if g <= 1e-9 and g > -radius[m]:
+                    nx, ny = wall_normal_at(bs[m, X], bs[m, Y], wall, prm)
+                    vn = cx * nx + cy * ny
+                    if vn < 0.0:  # into the cushion
+                        cx -= vn * nx
+                        cy -= vn * ny
+                    # The surface velocity's part along n, (z^ x q) . n = qx ny - qy nx, if it drives the cluster in,
+                    # goes with the normal velocity.
+                    sn = qx * ny - qy * nx
+                    vn = cx * nx + cy * ny
+                    if vn <= prm.speed_floor and vn + sn > 0.0:
+                        cx -= vn * nx
+                        cy -= vn * ny
+                        qx -= sn * ny
+                        qy += sn * nx
+        free = True
+        for h in range(count):
+            m = involved[h]
+            if pushes_into_walls(bs[m, X], bs[m, Y], radius[m], cx, cy, prm):
+                free = False
+                break
+        if free:
+            return cx, cy, qx, qy
+    return 0.0, 0.0, 0.0, 0.0
+
+
+@internal
 def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f_roll, f_spin, involved):
     """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
@@ -299,27 +339,12 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
     qx /= total
     qy /= total
     walls = has_walls(prm)
+    if walls:
+        cx, cy, qx, qy = _jaw_jam_velocity(bs, radius, involved, count, cx, cy, qx, qy, prm)
     for h in range(count):
         m = involved[h]
         r = radius[m] + 1e-9
         if walls:
-            for wall in range(prm.n_segs + prm.n_tips):
-                g = wall_gap(bs[m, X], bs[m, Y], radius[m], wall, prm)
-                if g <= 1e-9 and g > -radius[m]:
-                    nx, ny = wall_normal_at(bs[m, X], bs[m, Y], wall, prm)
-                    vn = cx * nx + cy * ny
-                    if vn < 0.0:  # into the cushion
-                        cx -= vn * nx
-                        cy -= vn * ny
-                    # As below: the surface velocity's part along n, (z^ x q) . n = qx ny - qy nx, if it drives the
-                    # cluster in, goes with the normal velocity.
-                    sn = qx * ny - qy * nx
-                    vn = cx * nx + cy * ny
-                    if vn <= prm.speed_floor and vn + sn > 0.0:
-                        cx -= vn * nx
-                        cy -= vn * ny
-                        qx -= sn * ny
-                        qy += sn * nx
             continue
         for wall in range(4):
             if _touching_wall(bs[m, X], bs[m, Y], r, length, width, wall):

@@ -10,6 +10,11 @@ Invariants (tolerances are the module constants below):
 - ``finite``: no NaN or infinity in the final state, the event log or the state log.
 - ``bounds``: every ball on the table has its centre in ``[r, L-r] x [r, W-r]`` (up to ``BOUNDS_TOL``), in the
   final state and in every logged state.
+  On a jaw table: within the cushion lines ``[0, L] x [0, W]`` or in a pocket's mouth or circle
+  (:func:`.pocket_specs.in_mouth_region`); clear of the walls is the ``walls`` check.
+- ``walls`` (jaw table): no ball on the table overlaps a rail, jaw face or tip (:func:`.pocket_specs.wall_overlaps`)
+  by more than ``WALL_TOL`` (exact: final state and every logged state) or the step solver's overlap tolerance
+  (final state).
 - ``overlap``: no two balls on the table closer than the sum of their radii minus the solver's tolerance
   (``EXACT_OVERLAP_TOL``; step: :func:`step_overlap_tolerance` of the fastest initial ball, its speed under the
   spin model counted as ``|v| + R |w|``: spin turns into speed) in the final state. ``overlap_during`` (exact):
@@ -50,6 +55,7 @@ import numpy as np
 from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPIN, EV_STOP, MS_ROLLING, MS_SPINNING,
                     MS_STATIONARY, SPIN, STATUS_NAMES)
 from .model import G
+from .pocket_specs import in_mouth_region, wall_gaps, wall_overlaps
 from .motion import advance_many
 from .scene import Scene
 from .spin_motion import carry_rows
@@ -67,6 +73,7 @@ STEP_OVERLAP_ABS = 1e-9
 ENERGY_REL_TOL = 1e-12  #: relative kinetic-energy rise allowed at one event (rounding)
 MOMENTUM_REL_TOL = 1e-12  #: relative momentum change allowed at one ball-ball collision (rounding)
 CONTACT_TOL = 1e-9  #: a collision happens at contact distance up to this (m)
+WALL_TOL = 1e-9  #: exact solver, jaw table: largest overlap of a ball and a rail, jaw face or tip (m)
 CONTINUITY_TOL = 1e-9  #: largest jump of a ball's position at an event (m)
 ZENO_SPAN = 1e-9  #: events closer than this (s) form one burst (one instant, up to rounding)
 #: A burst of more events than this at one instant is an inelastic-collapse storm (a 16-ball break needs a few
@@ -76,7 +83,7 @@ ZENO_BURST = 5000
 #: spin model: a logged rolling state may slip by this much relative to ``|v| + R |(wx, wy)|`` (round-off)
 ROLLING_SLIP_TOL = 1e-12
 
-INVARIANTS = ("exception", "finite", "bounds", "overlap", "overlap_during", "energy", "momentum", "contact",
+INVARIANTS = ("exception", "finite", "bounds", "walls", "overlap", "overlap_during", "energy", "momentum", "contact",
               "continuity", "pocket", "status", "zeno", "spin_state")
 
 
@@ -99,6 +106,7 @@ class Report:
     violations: dict[str, str] = field(default_factory=dict)
     counts: Counter = field(default_factory=Counter)
     max_overlap: float = 0.0  #: deepest overlap in the final state (m)
+    max_wall_overlap: float = 0.0  #: jaw table: deepest overlap of a ball and a wall (final; exact: every logged state)
     max_overlap_during: float = 0.0  #: deepest overlap at/between events (exact) or at snapshots (step) (m)
     max_energy_gain: float = 0.0  #: largest relative energy rise at one event
     max_momentum_err: float = 0.0  #: largest relative momentum change at one collision
@@ -213,9 +221,21 @@ def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
         if span < ZENO_SPAN:
             rep.fail("zeno", f"event cap: the last {len(ev) - half} events span {span:.3g} s at t={float(ev.time[-1])!r}")
 
-    # ---- bounds (final and every logged state)
-    def bounds_bad(x, y, r):
-        return (x < r - BOUNDS_TOL) | (x > L - r + BOUNDS_TOL) | (y < r - BOUNDS_TOL) | (y > W - r + BOUNDS_TOL)
+    # ---- bounds (final and every logged state); on a jaw table also walls
+    jaws = bool(getattr(table, "has_jaws", False))
+    if jaws:
+        segs, tips = table.walls()
+
+        def bounds_bad(x, y, r):
+            # On the table: within the cushion lines (clear of the walls: the walls check), or in a mouth.
+            out = (x < -BOUNDS_TOL) | (x > L + BOUNDS_TOL) | (y < -BOUNDS_TOL) | (y > W + BOUNDS_TOL)
+            for q in np.flatnonzero(out):
+                if in_mouth_region(segs, tips, table.pocket_xy, table.pocket_radius, float(x[q]), float(y[q])):
+                    out[q] = False
+            return out
+    else:
+        def bounds_bad(x, y, r):
+            return (x < r - BOUNDS_TOL) | (x > L - r + BOUNDS_TOL) | (y < r - BOUNDS_TOL) | (y > W - r + BOUNDS_TOL)
 
     bad = on_f & bounds_bad(fin.pos[:, 0], fin.pos[:, 1], radius)
     if bad.any():
@@ -233,6 +253,26 @@ def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
     # ---- overlap (final)
     tol = EXACT_OVERLAP_TOL if exact else step_overlap_tolerance(speed0, scene.dt)
     rep.overlap_tol = tol
+    if jaws:  # walls: no ball overlaps a rail, jaw face or tip (final state; exact: every logged state)
+        wtol = WALL_TOL if exact else tol
+        ov_w, wall_w = wall_overlaps(segs, tips, fin.pos[:, 0], fin.pos[:, 1], radius)
+        ov_w = np.where(on_f, ov_w, -np.inf)
+        q = int(np.argmax(ov_w)) if n else 0
+        if n and ov_w[q] > 0.0:
+            rep.max_wall_overlap = float(ov_w[q])
+        if n and ov_w[q] > wtol:
+            rep.fail("walls", f"final: ball {q} at ({float(fin.pos[q, 0])!r}, {float(fin.pos[q, 1])!r}) overlaps wall "
+                              f"{int(wall_w[q])} by {float(ov_w[q]):.3g} m (tolerance {wtol:.3g})")
+        if exact and tr is not None and len(tr.times):
+            st = tr.state
+            ov_w, wall_w = wall_overlaps(segs, tips, st[:, 0], st[:, 1], radius[tr.ball])
+            ov_w = np.where(st[:, 4] > 0.5, ov_w, -np.inf)
+            q = int(np.argmax(ov_w))
+            rep.max_wall_overlap = max(rep.max_wall_overlap, float(ov_w[q]), 0.0)
+            if ov_w[q] > wtol:
+                rep.fail("walls", f"logged state at t={float(tr.times[q])!r}: ball {int(tr.ball[q])} at "
+                                  f"({float(st[q, 0])!r}, {float(st[q, 1])!r}) overlaps wall {int(wall_w[q])} by "
+                                  f"{float(ov_w[q]):.3g} m (tolerance {wtol:.3g})")
     ov, (i, j) = _pairwise_overlap(fin.pos, radius, on_f)
     rep.max_overlap = max(ov, 0.0)
     if ov > tol:
@@ -395,9 +435,13 @@ def _check_exact_events(rep, scene, result, radius, mass, law, a, k, v_min, samp
                                f"{what} {float(sb[q])!r} -> {float(sa[q])!r}")
         b = ev.ball[cu]
         c = ev.other[cu]
-        wall = np.where(c == 0, radius[b], np.where(c == 1, L - radius[b], np.where(c == 2, radius[b], W - radius[b])))
-        coord = np.where(c < 2, st[rr, 0], st[rr, 1])
-        werr = np.abs(coord - wall)
+        if scene.table.has_jaws:  # on its wall: the centre at the wall's reach
+            werr = np.abs(wall_gaps(*scene.table.walls(), st[rr, 0], st[rr, 1], radius[b], c))
+        else:
+            wall = np.where(c == 0, radius[b], np.where(c == 1, L - radius[b],
+                                                        np.where(c == 2, radius[b], W - radius[b])))
+            coord = np.where(c < 2, st[rr, 0], st[rr, 1])
+            werr = np.abs(coord - wall)
         q = int(np.argmax(werr))
         if werr[q] > CONTACT_TOL:
             rep.fail("contact", f"cushion event {int(cu[q])}: ball {int(b[q])} {werr[q]:.3g} m off cushion {int(c[q])}")

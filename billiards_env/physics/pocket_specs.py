@@ -255,37 +255,134 @@ SNOOKER_12FT = PocketSpecs(l=3.569, w=1.778, cushion_width=47.63 / 1000, cushion
                            side_pocket_depth=51.59 / 1000, side_pocket_radius=53.19 / 1000,
                            side_jaw_radius=66.90 / 1000)
 
-__all__ = ["POCKET_NAMES", "WALL_NAMES", "PocketSpecs", "SPEC_FIELDS", "build_walls", "pocket_circles", "POOLTOOL_7FT", "WPA_9FT", "SNOOKER_12FT",
+__all__ = ["POCKET_NAMES", "WALL_NAMES", "PocketSpecs", "SPEC_FIELDS", "build_walls", "pocket_circles", "throat_leak",
+           "wall_overlaps", "wall_gaps", "mouth_polygons", "in_mouth_region", "in_mouth", "clear_of_walls",
+           "POOLTOOL_7FT", "WPA_9FT", "SNOOKER_12FT",
            "N_RAILS", "N_JAWS", "N_TIPS", "N_SEGMENTS", "N_WALLS"]
+
+
+def wall_overlaps(segs: np.ndarray, tips: np.ndarray, x: Any, y: Any, r: Any) -> tuple[np.ndarray, np.ndarray]:
+    """How deep balls of radius ``r`` centred at ``(x, y)`` (arrays of one shape) overlap the walls: ``(overlap,
+    wall)``, the deepest overlap of each ball (m; <= 0: clear of every wall) and that wall's index (-1 if none is
+    near). A segment counts while the centre projects onto it and lies at most ``r`` behind its line; a tip always.
+    The vectorised Python form of the compiled :func:`.walls.wall_gap` (the invariant checks use it)."""
+    x, y, r = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float), np.asarray(r, float))
+    best = np.full(x.shape, -np.inf)
+    wall = np.full(x.shape, -1, dtype=np.int64)
+    for k, (ax, ay, bx, by, nx, ny) in enumerate(segs):
+        dx, dy = bx - ax, by - ay
+        s = ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy)
+        gap = (x - ax) * nx + (y - ay) * ny
+        ov = np.where((s >= 0.0) & (s <= 1.0) & (gap > -r), r - gap, -np.inf)
+        wall = np.where(ov > best, k, wall)
+        best = np.maximum(best, ov)
+    for k, (cx, cy, rad) in enumerate(tips):
+        ov = r + rad - np.hypot(x - cx, y - cy)
+        wall = np.where(ov > best, len(segs) + k, wall)
+        best = np.maximum(best, ov)
+    return best, wall
+
+
+def throat_leak(s: PocketSpecs, r: float) -> str | None:
+    """Why a ball of radius ``r`` could leave a pocket's throat past the ends of its jaw faces without its centre
+    entering the pocket circle (the model has no wall behind the jaws: such a ball would run on off the table), or
+    None if every pocket catches it. A centre leaving between the faces' deep ends lies at least ``r`` from each
+    end along the line across them, so the circle must hold that line inset by ``r`` at both ends."""
+    segs, tips = build_walls(s)
+    xy, pr = pocket_circles(s)
+    for p in range(len(pr)):
+        a = segs[N_RAILS + 2 * p, 0:2]
+        b = segs[N_RAILS + 2 * p + 1, 0:2]
+        width = float(np.hypot(*(b - a)))
+        if width <= 2.0 * r:
+            continue  # no ball fits between the deep ends
+        u = (b - a) / width
+        far = max(float(np.hypot(*(a + r * u - xy[p]))), float(np.hypot(*(b - r * u - xy[p]))))
+        if far > pr[p]:
+            kind = "side" if p in (1, 4) else "corner"
+            return (f"table.specs: a ball of radius {r} m can leave pocket {p}'s throat between its jaws' deep ends "
+                    f"{far:.4f} m from the pocket circle's centre, outside its radius {pr[p]} m, and run off the "
+                    f"table; make {kind}_pocket_radius at least {far:.4f} m, or the {kind} pocket narrower or its "
+                    f"jaws longer (cushion_width)")
+    return None
+
+
+def wall_gaps(segs: np.ndarray, tips: np.ndarray, x: Any, y: Any, r: Any, wall: Any) -> np.ndarray:
+    """How far balls of radius ``r`` at ``(x, y)`` are from touching wall ``wall`` (arrays of one shape; < 0:
+    overlapping), measured along its normal (segment) or from its centre (tip): the Python form of
+    :func:`.walls.wall_gap` without its projection test."""
+    x, y, r, wall = np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float), np.asarray(r, float),
+                                        np.asarray(wall, np.int64))
+    out = np.full(x.shape, np.nan)
+    seg = wall < len(segs)
+    if seg.any():
+        row = segs[wall[seg]]
+        out[seg] = (x[seg] - row[:, 0]) * row[:, 4] + (y[seg] - row[:, 1]) * row[:, 5] - r[seg]
+    tip = ~seg
+    if tip.any():
+        row = tips[wall[tip] - len(segs)]
+        out[tip] = np.hypot(x[tip] - row[:, 0], y[tip] - row[:, 1]) - r[tip] - row[:, 2]
+    return out
 
 
 def clear_of_walls(segs: np.ndarray, tips: np.ndarray, x: float, y: float, r: float, tol: float = 0.0) -> bool:
     """Whether a ball of radius ``r`` at ``(x, y)`` overlaps no rail, jaw face or tip by more than ``tol``."""
-    for ax, ay, bx, by, nx, ny in segs:
-        dx, dy = bx - ax, by - ay
-        s = ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy)
-        gap = (x - ax) * nx + (y - ay) * ny
-        if 0.0 <= s <= 1.0 and -r < gap < r - tol:
-            return False
-    for cx, cy, rad in tips:
-        if math.hypot(x - cx, y - cy) < r + rad - tol:
-            return False
-    return True
+    return bool(wall_overlaps(segs, tips, x, y, r)[0] <= tol)
+
+
+def mouth_polygons(segs: np.ndarray, tips: np.ndarray) -> list[np.ndarray]:
+    """Each pocket's mouth and throat as a convex polygon: the convex hull of its jaw faces' ends and the points
+    where the rails stop (the rail ends nearest the pocket's tips). On most tables that is the polygon from one jaw
+    face's deep end along it, across to the rail stops and back along the other face; where a jaw's rounding
+    reaches deeper than its face's deep end (pooltool's snooker table), the hull still holds the whole mouth."""
+    rail_ends = np.concatenate([segs[:N_RAILS, 0:2], segs[:N_RAILS, 2:4]])
+    out = []
+    for p in range(len(tips) // 2):
+        stops = [rail_ends[np.argmin(np.hypot(*(rail_ends - tips[2 * p + k, 0:2]).T))] for k in range(2)]
+        pts = np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4], stops[0], stops[1],
+                        segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]])
+        out.append(_hull(pts))
+    return out
+
+
+def _hull(pts: np.ndarray) -> np.ndarray:
+    """The convex hull of ``pts`` (counter-clockwise; Andrew's monotone chain)."""
+    order = sorted(map(tuple, pts.tolist()))
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    lower: list = []
+    for q in order:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], q) <= 0.0:
+            lower.pop()
+        lower.append(q)
+    upper: list = []
+    for q in reversed(order):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], q) <= 0.0:
+            upper.pop()
+        upper.append(q)
+    return np.array(lower[:-1] + upper[:-1])
+
+
+def in_mouth_region(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float,
+                    y: float) -> bool:
+    """Whether the point ``(x, y)`` lies in a pocket's mouth and throat (:func:`mouth_polygons`) or in a pocket
+    circle (the Python form of the compiled :func:`.walls.in_mouth_region`)."""
+    for p in range(len(pocket_r)):
+        if math.hypot(x - pocket_xy[p, 0], y - pocket_xy[p, 1]) <= pocket_r[p]:
+            return True
+    return any(_in_convex(poly, x, y) for poly in mouth_polygons(segs, tips))
 
 
 def in_mouth(segs: np.ndarray, tips: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, x: float, y: float,
              r: float, tol: float = 0.0) -> bool:
     """Whether a ball centre at ``(x, y)`` outside the playing area ``[r, l - r] x [r, w - r]`` still lies on a
-    jaw table: within a pocket's mouth and throat (the polygon from one jaw face's deep end along it, across to
-    where the rails stop, and back along the other face; or in its pocket circle) and clear of every wall."""
-    rail_ends = np.concatenate([segs[:N_RAILS, 0:2], segs[:N_RAILS, 2:4]])
-    for p in range(len(pocket_r)):
-        inside_circle = math.hypot(x - pocket_xy[p, 0], y - pocket_xy[p, 1]) <= pocket_r[p]
-        stops = [rail_ends[np.argmin(np.hypot(*(rail_ends - tips[2 * p + k, 0:2]).T))] for k in range(2)]
-        mouth = np.array([segs[N_RAILS + 2 * p, 0:2], segs[N_RAILS + 2 * p, 2:4], stops[0], stops[1],
-                          segs[N_RAILS + 2 * p + 1, 2:4], segs[N_RAILS + 2 * p + 1, 0:2]])
-        if inside_circle or _in_convex(mouth, x, y):
-            return clear_of_walls(segs, tips, x, y, r, tol)
+    jaw table: within the cushion lines ``[0, l] x [0, w]`` (a mouth's entrance, where a rail has stopped; the
+    rails lie on those lines: rail 5 at ``x = l``, rail 2 at ``y = w``), within a pocket's mouth and throat
+    (:func:`mouth_polygons`) or in its pocket circle, and clear of every wall."""
+    length, width = segs[5, 0], segs[2, 1]
+    if (0.0 <= x <= length and 0.0 <= y <= width) or in_mouth_region(segs, tips, pocket_xy, pocket_r, x, y):
+        return clear_of_walls(segs, tips, x, y, r, tol)
     return False
 
 

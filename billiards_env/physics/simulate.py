@@ -63,9 +63,6 @@ class Simulator:
         if isinstance(self.max_events, bool) or not isinstance(self.max_events, (int, np.integer)) \
                 or self.max_events < 1:
             raise SceneError(f"max_events: must be a positive integer, got {self.max_events!r}")
-        if self.solver == "step" and self.table.has_jaws:
-            raise SceneError("solver.name: the step solver models the capture pockets only, not jaws; run a jaw "
-                             "table with the exact solver, or give table.pockets: capture")
         if self.solver == "step" and self.max_time / self.dt > 1e10:
             raise SceneError(f"solver.dt: {self.dt} s with max_time {self.max_time} s needs over 1e10 steps; "
                              "raise dt or lower max_time")

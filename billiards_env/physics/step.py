@@ -11,6 +11,12 @@ repositioning and bounce), ball pairs in ``(i, j)`` order (overlap resolution an
   collision there and finish the step with the new velocities: a cushion reflects the overshoot, a ball pair
   is moved back to touching, bounced, and moved on.
 
+On a jaw table (:mod:`.walls`) the cushions are its rails, jaw faces and tips: a ball overlapping one is put back on
+it along the contact normal (``rewind``: back to the time of contact, then on with the reflected velocity), the
+deepest first, at most ``MAX_WALL_PASSES`` a step, and reflected by :func:`.walls.reflect_off` (the exact solver's
+law); after the pairs, :func:`.walls.keep_on_jaw_table` keeps balls off the walls and on the table, its mouths
+included. The pocket test is the pocket circles'.
+
 Neither sees a pair that passes through each other within one step; those are counted as tunnelled
 (``n_tunnelled``) by checking each pair's closest approach along the step's straight-line motion.
 """
@@ -26,6 +32,8 @@ from .codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, ROLLING, STATUS
 from .kernel_io import N_STATE_COLS, KernelResult
 from .kernel_logs import (cushion_overshoot, keep_on_table, pocket_holding, put_event, reserve_events, rewind_time,
                           snapshot, tunnelled)
+from .walls import (MAX_WALL_PASSES, deepest_overlap, has_walls, keep_on_jaw_table, reflect_off, touch_wall,
+                    wall_normal_at, wall_rewind_time)
 
 CONTACT_MODES = ("lecture", "rewind")
 LECTURE, REWIND = 0, 1
@@ -56,6 +64,7 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
     floor = prm.speed_floor
     drag_factor = math.exp(-k * dt)
     max_steps = int(math.ceil(max_time / dt - 1e-9))
+    jaws = has_walls(prm)
 
     pocket_of = np.full(n, -1, np.int64)
     pocket_time = np.full(n, np.nan)
@@ -129,6 +138,27 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
             if not moving[i]:
                 continue
             r = radius[i]
+            if jaws:  # rails, jaw faces and tips (walls.py)
+                for _ in range(MAX_WALL_PASSES):
+                    g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
+                    if wall < 0:
+                        break
+                    back = -1.0
+                    if contact == 1:  # rewind to the time of contact
+                        back = wall_rewind_time(pos[i, 0], pos[i, 1], vel[i, 0], vel[i, 1], r, wall, dt, prm)
+                    if back >= 0.0:
+                        pos[i, 0] -= vel[i, 0] * back
+                        pos[i, 1] -= vel[i, 1] * back
+                    pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
+                    nx, ny = wall_normal_at(pos[i, 0], pos[i, 1], wall, prm)
+                    speed = reflect_off(vel, i, nx, ny, e_c)
+                    if back >= 0.0:
+                        pos[i, 0] += vel[i, 0] * back
+                        pos[i, 1] += vel[i, 1] * back
+                    if speed > 0.0:
+                        put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, wall, speed)
+                        n_ev += 1
+                continue
             for cush in range(4):
                 axis, lim, over = cushion_overshoot(pos, i, cush, r, length, width)
                 if over > 0.0:
@@ -194,7 +224,10 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
-        keep_on_table(pos, on_table, radius, length, width)
+        if jaws:
+            keep_on_jaw_table(pos, on_table, radius, pocket_xy, pocket_r, prm)
+        else:
+            keep_on_table(pos, on_table, radius, length, width)
 
         # 5. pockets.
         for i in range(n):

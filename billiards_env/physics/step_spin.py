@@ -11,6 +11,10 @@ Each step of ``dt``, in this order (semi-implicit Euler: new velocities, then po
 4. ball pairs in ``(i, j)`` order (overlap resolution and the ball-ball law of :mod:`.spin_collide`);
 5. pocket test.
 
+On a jaw table the walls are met as in :mod:`.step` and resolved with the exact solver's laws:
+:func:`.cushion_models.wall_hit` with the contact normal (a tip's ``d`` its radius plus the ball's), then the
+pressed-on-a-cushion rule with :func:`.spin_collide.settle_on_wall`.
+
 The contact treatments ``lecture`` and ``rewind`` are those of :mod:`.step`, and so are the pressed-contact
 rules of :mod:`.spin_collide` (a ball pressed on a cushion stays on it; a pressed pair moves on as one), so
 that both solvers compute the same model. Motion transitions are logged as events (``roll``, ``spin``,
@@ -28,8 +32,11 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_POCKET, EV_ROLL, EV_SPIN, EV_ST
 from .kernel_io import N_STATE_COLS_SPIN, KernelResult
 from .kernel_logs import (cushion_overshoot, internal, keep_on_table, pocket_holding, put_event, reserve_events,
                           rewind_time, snapshot, tunnelled)
-from .cushion_models import cushion_hit
-from .spin_collide import acceleration, ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, wall_normal
+from .cushion_models import cushion_hit, wall_hit
+from .spin_collide import (acceleration, ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, settle_on_wall,
+                           wall_normal)
+from .walls import (MAX_WALL_PASSES, deepest_overlap, has_walls, keep_on_jaw_table, touch_wall, wall_normal_at,
+                    wall_reach, wall_rewind_time)
 from .spin_motion import classify, roll_on, slip, spin_decay_rate, wz_after
 
 
@@ -102,6 +109,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
     max_time = prm.max_time
     floor = prm.speed_floor
     max_steps = int(math.ceil(max_time / dt - 1e-9))
+    jaws = has_walls(prm)
 
     scratch = np.zeros(10)  # for the cushion laws that integrate
     code = np.full(n, MS_POCKETED, np.int64)
@@ -173,6 +181,33 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
             if not moving[i]:
                 continue
             r = radius[i]
+            if jaws:  # rails, jaw faces and tips (walls.py)
+                for _ in range(MAX_WALL_PASSES):
+                    g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
+                    if wall < 0:
+                        break
+                    back = -1.0
+                    if contact == 1:  # rewind to the time of contact
+                        back = wall_rewind_time(pos[i, 0], pos[i, 1], vel[i, 0], vel[i, 1], r, wall, dt, prm)
+                    if back >= 0.0:
+                        pos[i, 0] -= vel[i, 0] * back
+                        pos[i, 1] -= vel[i, 1] * back
+                    pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
+                    nx, ny = wall_normal_at(pos[i, 0], pos[i, 1], wall, prm)
+                    speed = wall_hit(vel, ang, i, nx, ny, wall_reach(r, wall, prm), r, mass[i], e_c, prm, scratch)
+                    if vel[i, 0] * nx + vel[i, 1] * ny <= floor:
+                        ax, ay = acceleration(vel[i, 0], vel[i, 1], ang[i, 0], ang[i, 1], ang[i, 2], r, f_slide,
+                                              f_roll, f_spin)
+                        if ax * nx + ay * ny < 0.0:
+                            settle_on_wall(vel, ang, i, nx, ny)
+                    code[i] = classify(vel[i, 0], vel[i, 1], ang[i, 0], ang[i, 1], ang[i, 2], r)
+                    if back >= 0.0:
+                        pos[i, 0] += vel[i, 0] * back
+                        pos[i, 1] += vel[i, 1] * back
+                    if speed > 0.0:
+                        put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, wall, speed)
+                        n_ev += 1
+                continue
             for cush in range(4):
                 axis, lim, over = cushion_overshoot(pos, i, cush, r, length, width)
                 if over > 0.0:
@@ -248,7 +283,10 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
-        keep_on_table(pos, on_table, radius, length, width)
+        if jaws:
+            keep_on_jaw_table(pos, on_table, radius, pocket_xy, pocket_r, prm)
+        else:
+            keep_on_table(pos, on_table, radius, length, width)
 
         # 5. pockets.
         for i in range(n):

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from .kernel_logs import internal
@@ -28,6 +29,14 @@ from .roots import first_entry, quadratic_roots_in
 #: A ball whose centre's projection lies this far (m) beyond a segment's end still counts as on the segment: the
 #: rounding of a projection computed at the contact point (a ball meeting a rail exactly where its jaw tip begins).
 END_SLACK = 1e-12
+
+
+#: A ball counts as moving into a wall only if its direction's component along the wall's normal is below
+#: ``-GRAZE`` (a tip: the cosine between its direction and the line of centres). A reflection off a slanted wall with
+#: no restitution, or a jam, leaves the normal velocity at round-off, possibly ``-1e-17`` into the wall: counted as a
+#: hit, that is an endless storm of zero-speed hits at one instant (the fuzz found it). A ball running at under
+#: ``GRAZE`` rad into a wall goes at most ``GRAZE`` m into it per metre it runs.
+GRAZE = 1e-12
 
 
 @internal
@@ -69,7 +78,7 @@ def ray_segment_hit(px, py, ux, uy, r, seg):
     nx = seg[4]
     ny = seg[5]
     un = ux * nx + uy * ny
-    if not un < 0.0:
+    if not un < -GRAZE:
         return math.inf
     gap = (px - seg[0]) * nx + (py - seg[1]) * ny - r
     if gap < -r:  # the centre is behind the line: the ball is not on this segment's side
@@ -89,7 +98,7 @@ def ray_tip_hit(px, py, ux, uy, r, tip):
     dy = py - tip[1]
     rho = r + tip[2]
     b = ux * dx + uy * dy
-    if not b < 0.0:
+    if not b < -GRAZE * rho:
         return math.inf
     c = dx * dx + dy * dy - rho * rho
     if c <= 0.0:
@@ -187,6 +196,43 @@ def without_push_into_walls(x, y, r, vx, vy, prm):
 
 
 @internal
+def pushes_into_walls(x, y, r, vx, vy, prm):
+    """Whether ``(vx, vy)`` has a component into a wall that a ball of radius ``r`` at ``(x, y)`` touches (within
+    1e-9 m) beyond round-off (``1e-12`` of the speed)."""
+    tol = 1e-12 * math.hypot(vx, vy)
+    for wall in range(prm.n_segs + prm.n_tips):
+        g = wall_gap(x, y, r, wall, prm)
+        if g <= 1e-9 and g > -r:
+            nx, ny = wall_normal_at(x, y, wall, prm)
+            if vx * nx + vy * ny < -tol:
+                return True
+    return False
+
+
+@internal
+def cluster_off_walls(px, py, radius, involved, count, cx, cy, prm):
+    """The velocity ``(cx, cy)`` of a jammed cluster (members ``involved[:count]``, centres ``px``, ``py``) with no
+    component into any wall a member touches. :func:`without_push_into_walls` member by member takes out one wall's
+    component at a time, which can put back one into another wall the cluster is wedged against (two jaw faces of a
+    throat, a jaw face and a rail): the passes repeat (at most ``MAX_WALL_PASSES``), and a cluster they leave still
+    pushing into a wall has no free direction between its walls: it stops (the fuzz's storms of a pair wedged in a
+    mouth)."""
+    for _ in range(MAX_WALL_PASSES):
+        for h in range(count):
+            m = involved[h]
+            cx, cy = without_push_into_walls(px[m], py[m], radius[m], cx, cy, prm)
+        free = True
+        for h in range(count):
+            m = involved[h]
+            if pushes_into_walls(px[m], py[m], radius[m], cx, cy, prm):
+                free = False
+                break
+        if free:
+            return cx, cy
+    return 0.0, 0.0
+
+
+@internal
 def reflect_off(vel, i, nx, ny, e_c):
     """Reverse the normal component of ``vel[i]`` against a wall of unit normal ``n`` (away from the wall), scaled
     by ``e_c``; the tangential component is kept. Returns the normal speed into the wall before the hit (0 if
@@ -198,6 +244,162 @@ def reflect_off(vel, i, nx, ny, e_c):
     vel[i, 0] -= k * nx
     vel[i, 1] -= k * ny
     return -vn
+
+
+#: Step solvers: at most this many walls are resolved per ball and step (a ball in a throat can touch a jaw face and
+#: its tip, or both jaw faces, at once); every step kernel reserves room for this many cushion events per ball.
+MAX_WALL_PASSES = 4
+#: Step solvers: a ball overlapping a wall by less than this (m) touches it: the round-off :func:`touch_wall` leaves.
+WALL_SLOP = 1e-12
+
+
+@internal
+def deepest_overlap(x, y, r, prm):
+    """Step solvers: ``(gap, wall)`` of the wall a ball of radius ``r`` at ``(x, y)`` overlaps most (``gap <
+    -WALL_SLOP``), ``(0, -1)`` if none. A segment counts while the centre projects onto it and lies at most ``r``
+    behind its line (a step's overshoot; further behind, the ball is on the segment's other side); a tip counts
+    whenever the ball overlaps it."""
+    best = -WALL_SLOP
+    wall = -1
+    for k in range(prm.n_segs + prm.n_tips):
+        g = wall_gap(x, y, r, k, prm)
+        if g < best and (k >= prm.n_segs or g > -2.0 * r):
+            best = g
+            wall = k
+    if wall < 0:
+        return 0.0, wall
+    return best, wall
+
+
+@internal
+def wall_reach(r, wall, prm):
+    """The distance across the table from the centre of a ball of radius ``r`` touching ``wall`` to the wall's
+    contact line: ``r`` for a segment, ``r`` plus the radius for a tip (the ``d`` of the cushion laws)."""
+    if wall < prm.n_segs:
+        return r
+    return r + prm.tips[wall - prm.n_segs, 2]
+
+
+@internal
+def wall_rewind_time(x, y, vx, vy, r, wall, dt, prm):
+    """Step solvers, contact treatment ``rewind``: how many seconds back (within the step of ``dt``) a ball of radius
+    ``r`` now at ``(x, y)`` overlapping ``wall``, moving with ``(vx, vy)`` over the step, touched it; -1 if it was
+    not moving into the wall or the touch lies outside the step."""
+    if wall < prm.n_segs:
+        vn = vx * prm.segs[wall, 4] + vy * prm.segs[wall, 5]
+        if not vn < 0.0:
+            return -1.0
+        gap = (x - prm.segs[wall, 0]) * prm.segs[wall, 4] + (y - prm.segs[wall, 1]) * prm.segs[wall, 5] - r
+        s = gap / vn
+    else:
+        k = wall - prm.n_segs
+        dx = x - prm.tips[k, 0]
+        dy = y - prm.tips[k, 1]
+        rho = r + prm.tips[k, 2]
+        bb = vx * vx + vy * vy
+        db = dx * vx + dy * vy
+        if not bb > 0.0:
+            return -1.0
+        # |d - v s| = rho for the smallest s >= 0 (the ball inside the circle of radius rho now).
+        disc = db * db - bb * (dx * dx + dy * dy - rho * rho)
+        s = (db + math.sqrt(max(disc, 0.0))) / bb
+    if 0.0 <= s <= dt:
+        return s
+    return -1.0
+
+
+@internal
+def in_mouth_region(x, y, pocket_xy, pocket_r, prm):
+    """Whether a ball centre at ``(x, y)`` lies in a pocket's mouth and throat (the convex hull of its jaw faces'
+    ends and the rail ends nearest its tips, as :func:`.pocket_specs.mouth_polygons`) or in a pocket circle."""
+    for p in range(pocket_r.shape[0]):
+        dx = x - pocket_xy[p, 0]
+        dy = y - pocket_xy[p, 1]
+        if dx * dx + dy * dy <= pocket_r[p] * pocket_r[p]:
+            return True
+    n_rails = prm.n_segs - prm.n_tips
+    if n_rails < 0 or prm.n_tips != 2 * pocket_r.shape[0]:
+        return False
+    pts = np.empty((6, 2))
+    for p in range(pocket_r.shape[0]):
+        a = n_rails + 2 * p
+        for c in range(2):
+            pts[0, c] = prm.segs[a, c]
+            pts[1, c] = prm.segs[a, 2 + c]
+            pts[4, c] = prm.segs[a + 1, 2 + c]
+            pts[5, c] = prm.segs[a + 1, c]
+        for k in range(2):  # where the rails stop: the rail end nearest each of the pocket's tips
+            tx = prm.tips[2 * p + k, 0]
+            ty = prm.tips[2 * p + k, 1]
+            best = math.inf
+            for q in range(n_rails):
+                for e in range(2):
+                    d = math.hypot(prm.segs[q, 2 * e] - tx, prm.segs[q, 2 * e + 1] - ty)
+                    if d < best:
+                        best = d
+                        pts[2 + k, 0] = prm.segs[q, 2 * e]
+                        pts[2 + k, 1] = prm.segs[q, 2 * e + 1]
+        # In the convex hull: on the inner side of every line through two points that has all the others on one
+        # side (a hull edge).
+        inside = True
+        for u in range(6):
+            for v in range(u + 1, 6):
+                ex = pts[v, 0] - pts[u, 0]
+                ey = pts[v, 1] - pts[u, 1]
+                if ex == 0.0 and ey == 0.0:
+                    continue
+                side = 0.0
+                edge = True
+                for w in range(6):
+                    c = ex * (pts[w, 1] - pts[u, 1]) - ey * (pts[w, 0] - pts[u, 0])
+                    if c != 0.0:
+                        if side == 0.0:
+                            side = c
+                        elif (c > 0.0) != (side > 0.0):
+                            edge = False
+                            break
+                if edge and side != 0.0:
+                    c = ex * (y - pts[u, 1]) - ey * (x - pts[u, 0])
+                    if c != 0.0 and (c > 0.0) != (side > 0.0):
+                        inside = False
+                        break
+            if not inside:
+                break
+        if inside:
+            return True
+    return False
+
+
+@internal
+def push_out_of_walls(pos, i, r, prm):
+    """Put ball ``i`` (radius ``r``) back on every wall it overlaps, the deepest first (at most
+    ``MAX_WALL_PASSES``), moving its centre along the contact normal; velocities are not touched."""
+    for _ in range(MAX_WALL_PASSES):
+        g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
+        if wall < 0:
+            return
+        pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
+
+
+@internal
+def keep_on_jaw_table(pos, on_table, radius, pocket_xy, pocket_r, prm):
+    """:func:`.kernel_logs.keep_on_table` of a jaw table (step solvers, after the pushes of ball pairs): a ball on
+    the table overlapping a wall is put back on it (:func:`push_out_of_walls`); one whose centre then lies beyond the
+    cushion lines and outside every mouth (:func:`in_mouth_region`) is put back inside ``[r, L - r] x [r, W - r]``
+    (and off the walls again). A ball in a mouth stays where it is."""
+    length = prm.length
+    width = prm.width
+    for i in range(pos.shape[0]):
+        if not on_table[i]:
+            continue
+        r = radius[i]
+        push_out_of_walls(pos, i, r, prm)
+        x = pos[i, 0]
+        y = pos[i, 1]
+        if not (0.0 <= x <= length and 0.0 <= y <= width) and not in_mouth_region(x, y, pocket_xy, pocket_r, prm):
+            pos[i, 0] = min(max(x, r), length - r)
+            pos[i, 1] = min(max(y, r), width - r)
+            push_out_of_walls(pos, i, r, prm)
 
 
 @internal
@@ -275,7 +477,10 @@ def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
         if bounded and c0 > 1e-9 and (x1 - prm.segs[k, 0]) * nx + (y1 - prm.segs[k, 1]) * ny - r > 1e-9 and \
                 (x2 - prm.segs[k, 0]) * nx + (y2 - prm.segs[k, 1]) * ny - r > 1e-9:
             continue
-        tau = wall_time(0.5 * (ax * nx + ay * ny), vx * nx + vy * ny, c0, window, tol)
+        an = ax * nx + ay * ny
+        if abs(an) <= tol:  # round-off of a ball settled on a slanted wall (the pressed rule): not pressing
+            an = 0.0
+        tau = wall_time(0.5 * an, vx * nx + vy * ny, c0, window, tol)
         if tau < best and on_segment(x + tau * (vx + 0.5 * ax * tau), y + tau * (vy + 0.5 * ay * tau), k, prm):
             best = tau
             wall = k
@@ -313,6 +518,8 @@ def on_rail_span(x, y, r, segs, n_rails, margin):
     return False
 
 
-__all__ = ["on_rail_span", "path_clear_of", "wall_time", "path_wall_time", "has_walls", "walls_of", "on_segment", "on_seg", "ray_segment_hit", "ray_tip_hit", "ray_wall_hit",
-           "ray_walls_hit", "normal_at", "wall_normal_at",
+__all__ = ["walls_of", "on_seg", "ray_walls_hit", "normal_at", "path_clear_of", "wall_time", "path_wall_time",
+           "on_rail_span", "has_walls", "on_segment", "ray_segment_hit", "deepest_overlap", "wall_reach",
+           "wall_rewind_time", "in_mouth_region", "push_out_of_walls", "keep_on_jaw_table", "MAX_WALL_PASSES",
+           "WALL_SLOP", "GRAZE", "pushes_into_walls", "cluster_off_walls", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
            "touch_wall", "wall_gap", "without_push_into_walls", "reflect_off", "END_SLACK"]

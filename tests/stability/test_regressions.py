@@ -51,6 +51,14 @@ def test_no_missed_recontact(case):
     # found by Hypothesis: the first 6 balls of the rack hit head-on, no friction, e_b = 0, cushion e = 0; ball 2
     # ends wedged between ball 4 and the bottom cushion: 11,236 events within 1.5e-9 s (collision, cushion, ...)
     "zeno_frictionless_rack_e0.json",
+    # jaw fuzz (seed 2026, shot 3110; d649595): a WPA jaw table, cushion e = 0: ball 2 hits the top-left corner's jaw
+    # face on the left rail and slides along it with its normal velocity at round-off (-1.4e-17 m/s): 19,990
+    # zero-speed hits of that face at one instant; fixed by walls.GRAZE
+    "zeno_jaw_face_no_restitution.json",
+    # jaw fuzz (seed 2026, shot 34510; 582695b): drag k = 0, cushion e = 0, a pair wedged in a corner's throat, each
+    # ball against its own jaw face: the jam took out one face's component at a time and put back the other's:
+    # 7,365 events within 1.1e-13 s; fixed by walls.cluster_off_walls (the cluster's velocity off every wall)
+    "zeno_jaw_wedged_pair.json",
 ])
 def test_no_inelastic_collapse_storm(case):
     d = load_case(case)
