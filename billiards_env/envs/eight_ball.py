@@ -10,7 +10,8 @@ class EightBallEnv(BilliardsEnv):
     """
     ## Description
 
-    8-ball on a 9-ft table (2.54 m x 1.27 m, six pockets): balls 1-15 racked in a triangle on the foot spot (the 8
+    8-ball on a WPA 9-ft table (2.54 m x 1.27 m; six pockets with their jaws, ``table={"preset": "wpa"}``):
+    balls 1-15 racked in a triangle on the foot spot (the 8
     in the middle, a solid and a stripe in the back corners, the others shuffled from ``env.np_random``). The agent
     breaks with the cue ball in hand behind the head string; the table is open after the break, the first ball
     legally pocketed gives its shooter that group (solids 1-7 or stripes 9-15), and the player who clears his

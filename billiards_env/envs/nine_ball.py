@@ -10,7 +10,8 @@ class NineBallEnv(BilliardsEnv):
     """
     ## Description
 
-    9-ball on a 9-ft table (2.54 m x 1.27 m, six pockets): balls 1-9 racked in a diamond on the foot spot (1 at
+    9-ball on a WPA 9-ft table (2.54 m x 1.27 m; six pockets with their jaws, ``table={"preset": "wpa"}``):
+    balls 1-9 racked in a diamond on the foot spot (1 at
     the apex, 9 in the middle, the others shuffled from ``env.np_random``). The agent breaks with the cue ball in
     hand behind the head string, then the players alternate turns under :class:`billiards_env.rules.NineBall`:
     the lowest ball on the table must be hit first, a ball must be pocketed or some ball must reach a cushion

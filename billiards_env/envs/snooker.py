@@ -10,7 +10,7 @@ class SnookerEnv(BilliardsEnv):
     """
     ## Description
 
-    Snooker on the 12 ft table (3.569 m x 1.778 m, six snooker pockets) with 52.5 mm balls: 15 reds in a triangle
+    Snooker on the 12 ft table (3.569 m x 1.778 m, six rounded snooker pockets with their jaws) with 52.5 mm balls: 15 reds in a triangle
     behind the pink, the six colours on their spots, the cue ball in the D. The players alternate visits under
     :class:`billiards_env.rules.snooker.Snooker`: a red, then a colour (re-spotted), while reds remain, then the
     colours in order (yellow 2 .. black 7); a foul gives the opponent 4 points or the value of the ball concerned;
