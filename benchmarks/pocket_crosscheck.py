@@ -18,10 +18,8 @@ top-middle, top-right). Not part of the test suite (it needs the second venv).
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import statistics
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -32,7 +30,7 @@ from billiards_env.physics import Balls, Physics, Simulator
 from billiards_env.physics.pocket_specs import POOLTOOL_7FT, WPA_9FT, PocketSpecs
 from billiards_env.physics.table import jaw_table
 
-from .pooltool_crosscheck import POOLTOOL_SCRIPT, REPO, M, R, from_pooltool_vec, to_pooltool_cue
+from .pooltool_crosscheck import REPO, M, R, from_pooltool_vec, run_pooltool
 
 #: pooltool's pocket ids in this engine's pocket order.
 POOLTOOL_POCKETS = ("lb", "lc", "lt", "rb", "rc", "rt")
@@ -118,17 +116,10 @@ def main(argv: list[str] | None = None) -> int:
     shots = scenes(specs)
     spec = {"length": specs.l, "width": specs.w, "R": R, "m": M, "e_c": table.cushion_restitution,
             "f_c": physics.cushion_friction, "cushion_height": physics.cushion_height, "cushion": "stronge",
-            "pocket_specs": {**specs.to_dict(), "cushion_height": physics.cushion_height}, "scenes": []}
-    for name, pos, angle, speed, side, top in shots:
-        ids = ["cue"] + [str(k) for k in range(1, len(pos))]
-        spec["scenes"].append({"name": name, "balls": [{"id": i, "x": y, "y": x} for i, (x, y) in zip(ids, pos)],
-                               "cue": {"ball": "cue", **to_pooltool_cue(angle, speed, side, top)}})
-    proc = subprocess.run([args.pooltool_python, str(POOLTOOL_SCRIPT)], input=json.dumps(spec), text=True,
-                          capture_output=True, timeout=3600)
-    if proc.returncode != 0:
-        print(proc.stderr[-3000:], file=sys.stderr)
+            "pocket_specs": {**specs.to_dict(), "cushion_height": physics.cushion_height}}
+    theirs = run_pooltool(args.pooltool_python, spec, shots)
+    if theirs is None:
         return 1
-    theirs = json.loads(proc.stdout.strip().splitlines()[-1])
     sim = Simulator(table, physics)
     print(f"billiards_env jaws vs pooltool {theirs['version']} default physics on the {args.table!r} table\n")
     print(f"{'scene':32s} {'ours: ball->pocket':>22s} {'pooltool':>22s} {'final |dpos| m':>15s}")

@@ -102,6 +102,23 @@ def from_pooltool_ang(wx: float, wy: float, wz: float) -> np.ndarray:
     return -np.array([wy, wx, wz])
 
 
+def run_pooltool(python: str, spec: dict, shots: list) -> dict | None:
+    """pooltool's side of a cross-check: ``spec`` (:mod:`benchmarks.pooltool_crosscheck_pooltool`'s input, without
+    its scenes) with ``shots`` (``(name, centres, angle, speed, side, top)``, ball 0 struck) mapped into pooltool's
+    frame, run by pooltool's Python; its output, or None (its error printed) if it failed."""
+    spec = {**spec, "scenes": []}
+    for name, pos, angle, speed, side, top in shots:
+        ids = ["cue"] + [str(k) for k in range(1, len(pos))]
+        spec["scenes"].append({"name": name, "balls": [{"id": i, "x": y, "y": x} for i, (x, y) in zip(ids, pos)],
+                               "cue": {"ball": "cue", **to_pooltool_cue(angle, speed, side, top)}})
+    proc = subprocess.run([python, str(POOLTOOL_SCRIPT)], input=json.dumps(spec), text=True, capture_output=True,
+                          timeout=3600)
+    if proc.returncode != 0:
+        print(proc.stderr[-3000:], file=sys.stderr)
+        return None
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--pooltool-python", default=str(REPO / ".venv-pooltool" / "bin" / "python"))
@@ -116,17 +133,10 @@ def main(argv: list[str] | None = None) -> int:
     table = Table(length=L, width=W, cushion_restitution=0.85).without_pockets()
     shots = scenes()
     spec = {"length": L, "width": W, "R": R, "m": M, "e_c": table.cushion_restitution, "f_c": physics.cushion_friction,
-            "cushion_height": physics.cushion_height, "cushion": args.cushion, "scenes": []}
-    for name, pos, angle, speed, side, top in shots:
-        ids = ["cue"] + [str(k) for k in range(1, len(pos))]
-        spec["scenes"].append({"name": name, "balls": [{"id": i, "x": y, "y": x} for i, (x, y) in zip(ids, pos)],
-                               "cue": {"ball": "cue", **to_pooltool_cue(angle, speed, side, top)}})
-    proc = subprocess.run([args.pooltool_python, str(POOLTOOL_SCRIPT)], input=json.dumps(spec), text=True,
-                          capture_output=True, timeout=3600)
-    if proc.returncode != 0:
-        print(proc.stderr[-3000:], file=sys.stderr)
+            "cushion_height": physics.cushion_height, "cushion": args.cushion}
+    theirs = run_pooltool(args.pooltool_python, spec, shots)
+    if theirs is None:
         return 1
-    theirs = json.loads(proc.stdout.strip().splitlines()[-1])
     sim = Simulator(table, physics)
     print(f"billiards_env preset 'pooltool' vs pooltool {theirs['version']} default physics, pocketless table"
           + (" (both with Mathavan 2010 cushions)" if args.cushion == "mathavan" else "") + "\n")
