@@ -22,25 +22,8 @@ case "${1:-}" in
   *) echo "setup: unknown option ${1}; use --rllib, --clients, --docs or nothing" >&2; exit 2 ;;
 esac
 say() { echo "setup: $*"; }
-if [ "${1:-}" = "--docs" ]; then
-  VENV=.venv-docs
-  if [ ! -x "$VENV/bin/python" ]; then
-    say "creating $VENV"
-    "$PY" -m venv "$VENV"
-  fi
-  stamp=$VENV/.setup-stamp
-  want=$(cat pyproject.toml scripts/setup.sh | sha256sum | cut -c1-16)
-  if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
-    say "installing the docs extra into $VENV (MkDocs, Material, mkdocstrings: ~40 s, 170 MB)"
-    "$VENV/bin/python" -m pip install -q --upgrade pip
-    mapfile -t reqs < <(sed -n '/^docs = \[/,/^\]/p' pyproject.toml | grep -o '"[^"]*"' | tr -d '"')  # the docs extra
-    "$VENV/bin/python" -m pip install -q "${reqs[@]}"
-    echo "$want" > "$stamp"
-  else
-    say "$VENV is up to date"
-  fi
-  exit 0
-fi
+docs=0
+if [ "${1:-}" = "--docs" ]; then docs=1; VENV=.venv-docs; fi
 if [ ! -x "$VENV/bin/python" ]; then
   say "creating $VENV"
   "$PY" -m venv "$VENV"
@@ -50,16 +33,23 @@ want=$(cat pyproject.toml scripts/setup.sh | sha256sum | cut -c1-16)
 if [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
   say "upgrading pip in $VENV"
   "$VENV/bin/python" -m pip install -q --upgrade pip
-  torch_index=()
-  if [ -n "${TORCH_INDEX_URL:-}" ]; then torch_index=(--index-url "$TORCH_INDEX_URL"); fi
-  say "installing torch 2.13.0, the CPU build${TORCH_INDEX_URL:+ (from $TORCH_INDEX_URL)} (~200 MB to download on a cold pip cache)"
-  "$VENV/bin/python" -m pip install -q "torch==2.13.0" ${torch_index[@]+"${torch_index[@]}"}
-  say "installing billiards_env and its dependencies (extras: $EXTRAS)"
-  "$VENV/bin/python" -m pip install -q -e ".[$EXTRAS]"
+  if [ $docs -eq 1 ]; then
+    say "installing the docs extra into $VENV (MkDocs, Material, mkdocstrings: ~40 s, 170 MB)"
+    mapfile -t reqs < <(sed -n '/^docs = \[/,/^\]/p' pyproject.toml | grep -o '"[^"]*"' | tr -d '"')  # the docs extra
+    "$VENV/bin/python" -m pip install -q "${reqs[@]}"
+  else
+    torch_index=()
+    if [ -n "${TORCH_INDEX_URL:-}" ]; then torch_index=(--index-url "$TORCH_INDEX_URL"); fi
+    say "installing torch 2.13.0, the CPU build${TORCH_INDEX_URL:+ (from $TORCH_INDEX_URL)} (~200 MB to download on a cold pip cache)"
+    "$VENV/bin/python" -m pip install -q "torch==2.13.0" ${torch_index[@]+"${torch_index[@]}"}
+    say "installing billiards_env and its dependencies (extras: $EXTRAS)"
+    "$VENV/bin/python" -m pip install -q -e ".[$EXTRAS]"
+  fi
   echo "$want" > "$stamp"
 else
   say "$VENV is up to date"
 fi
+if [ $docs -eq 1 ]; then exit 0; fi  # the site reads the sources: no kernels to compile
 # Compile the physics kernels into numba's cache now, so the first shot a user runs is fast.
 say "compiling the physics kernels into numba's cache (~90 s the first time, a few seconds after that)"
 "$VENV/bin/python" -m billiards_env.warmup

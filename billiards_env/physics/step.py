@@ -32,8 +32,7 @@ from .codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP, ROLLING, STATUS
 from .kernel_io import N_STATE_COLS, KernelResult
 from .kernel_logs import (cushion_overshoot, keep_on_table, pocket_holding, put_event, reserve_events, rewind_time,
                           snapshot, tunnelled)
-from .walls import (MAX_WALL_PASSES, deepest_overlap, has_walls, keep_on_jaw_table, reflect_off, touch_wall,
-                    wall_normal_at, wall_rewind_time)
+from .walls import MAX_WALL_PASSES, back_onto_wall, deepest_overlap, has_walls, keep_on_jaw_table, reflect_off
 
 CONTACT_MODES = ("lecture", "rewind")
 LECTURE, REWIND = 0, 1
@@ -143,14 +142,7 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
                     g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
                     if wall < 0:
                         break
-                    back = -1.0
-                    if contact == 1:  # rewind to the time of contact
-                        back = wall_rewind_time(pos[i, 0], pos[i, 1], vel[i, 0], vel[i, 1], r, wall, dt, prm)
-                    if back >= 0.0:
-                        pos[i, 0] -= vel[i, 0] * back
-                        pos[i, 1] -= vel[i, 1] * back
-                    pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
-                    nx, ny = wall_normal_at(pos[i, 0], pos[i, 1], wall, prm)
+                    back, nx, ny = back_onto_wall(pos, vel, i, r, wall, dt, contact == 1, prm)  # rewind: to contact
                     speed = reflect_off(vel, i, nx, ny, e_c)
                     if back >= 0.0:
                         pos[i, 0] += vel[i, 0] * back

@@ -35,8 +35,7 @@ from .kernel_logs import (cushion_overshoot, internal, keep_on_table, pocket_hol
 from .cushion_models import cushion_hit, wall_hit
 from .spin_collide import (acceleration, ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, settle_on_wall,
                            wall_normal)
-from .walls import (MAX_WALL_PASSES, deepest_overlap, has_walls, keep_on_jaw_table, touch_wall, wall_normal_at,
-                    wall_reach, wall_rewind_time)
+from .walls import MAX_WALL_PASSES, back_onto_wall, deepest_overlap, has_walls, keep_on_jaw_table, wall_reach
 from .spin_motion import classify, roll_on, slip, spin_decay_rate, wz_after
 
 
@@ -186,14 +185,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                     g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
                     if wall < 0:
                         break
-                    back = -1.0
-                    if contact == 1:  # rewind to the time of contact
-                        back = wall_rewind_time(pos[i, 0], pos[i, 1], vel[i, 0], vel[i, 1], r, wall, dt, prm)
-                    if back >= 0.0:
-                        pos[i, 0] -= vel[i, 0] * back
-                        pos[i, 1] -= vel[i, 1] * back
-                    pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
-                    nx, ny = wall_normal_at(pos[i, 0], pos[i, 1], wall, prm)
+                    back, nx, ny = back_onto_wall(pos, vel, i, r, wall, dt, contact == 1, prm)  # rewind: to contact
                     speed = wall_hit(vel, ang, i, nx, ny, wall_reach(r, wall, prm), r, mass[i], e_c, prm, scratch)
                     if vel[i, 0] * nx + vel[i, 1] * ny <= floor:
                         ax, ay = acceleration(vel[i, 0], vel[i, 1], ang[i, 0], ang[i, 1], ang[i, 2], r, f_slide,

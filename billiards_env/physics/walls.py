@@ -371,6 +371,23 @@ def in_mouth_region(x, y, pocket_xy, pocket_r, prm):
 
 
 @internal
+def back_onto_wall(pos, vel, i, r, wall, dt, rewind, prm):
+    """Step solvers: put ball ``i`` (radius ``r``), which has overshot ``wall`` within the step ``dt``, back on it:
+    with ``rewind``, first back along its velocity to the time of contact (:func:`wall_rewind_time`), then onto the
+    wall along the contact normal (:func:`touch_wall`). Returns ``(back, nx, ny)``: how long it was taken back (< 0:
+    not at all; the caller runs it on for as long with its new velocity) and the contact normal."""
+    back = -1.0
+    if rewind:
+        back = wall_rewind_time(pos[i, 0], pos[i, 1], vel[i, 0], vel[i, 1], r, wall, dt, prm)
+    if back >= 0.0:
+        pos[i, 0] -= vel[i, 0] * back
+        pos[i, 1] -= vel[i, 1] * back
+    pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
+    nx, ny = wall_normal_at(pos[i, 0], pos[i, 1], wall, prm)
+    return back, nx, ny
+
+
+@internal
 def push_out_of_walls(pos, i, r, prm):
     """Put ball ``i`` (radius ``r``) back on every wall it overlaps, the deepest first (at most
     ``MAX_WALL_PASSES``), moving its centre along the contact normal; velocities are not touched."""
@@ -518,7 +535,7 @@ def on_rail_span(x, y, r, segs, n_rails, margin):
     return False
 
 
-__all__ = ["walls_of", "on_seg", "ray_walls_hit", "normal_at", "path_clear_of", "wall_time", "path_wall_time",
+__all__ = ["back_onto_wall", "walls_of", "on_seg", "ray_walls_hit", "normal_at", "path_clear_of", "wall_time", "path_wall_time",
            "on_rail_span", "has_walls", "on_segment", "ray_segment_hit", "deepest_overlap", "wall_reach",
            "wall_rewind_time", "in_mouth_region", "push_out_of_walls", "keep_on_jaw_table", "MAX_WALL_PASSES",
            "WALL_SLOP", "GRAZE", "pushes_into_walls", "cluster_off_walls", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",

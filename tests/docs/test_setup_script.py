@@ -32,8 +32,9 @@ def _test_sh(tmp_path: Path, rllib_venv: bool, args: list[str], env: dict[str, s
                   '> .venv-rllib/bin/python; chmod +x .venv-rllib/bin/python')
     (tmp_path / "scripts" / "setup.sh").write_text(f'echo "setup $*" >> {calls}\n'
                                                    f'if [ "${{1:-}}" = --rllib ]; then {make_rllib}; fi\n')
-    for venv in (".venv",) + ((".venv-rllib",) if rllib_venv else ()):
-        py = tmp_path / venv / "bin" / "python"
+    tools = [(".venv", "python"), (".venv-clients", "python"), (".venv-docs", "mkdocs")]
+    for venv, tool in tools + ([(".venv-rllib", "python")] if rllib_venv else []):
+        py = tmp_path / venv / "bin" / tool
         py.parent.mkdir(parents=True)
         py.write_text(stub.format(venv=venv, calls=calls))
         py.chmod(0o755)
