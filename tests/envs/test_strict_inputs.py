@@ -78,7 +78,7 @@ def test_a_three_cushion_score_below_the_target_still_sets_up_the_table():
     env.reset(seed=0)
     pos = env.unwrapped.balls.pos.copy()
     _, info = env.reset(options={"positions": pos, "score": (9, 3), "break_shot": False})
-    assert info["score"] == (9, 3) and info["winner"] == -1
+    assert tuple(info["score"]) == (9, 3) and info["winner"] == -1
 
 
 @pytest.mark.parametrize("kwargs,message", [

@@ -66,7 +66,7 @@ def test_the_opponents_winning_shot_says_so_from_the_info_alone():
         {"shooter": 1, "pocketed": ("9",), "scratch": False, "foul": False, "foul_reason": None,
          "call": "9 pocketed", "turn_over": False}]}
     log = TurnLog()
-    log.add(play.PlayApp._opponent_turns(info, []), NAMES)
+    log.add(play.PlayApp._opponent_turns(info, [], lambda turn: turn), NAMES)  # the turns in words already
     assert log.lines == [("geometric: 9 pocketed - geometric wins", "win")]
 
 
