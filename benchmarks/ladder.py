@@ -331,6 +331,9 @@ def render_markdown(doc: dict[str, Any]) -> str:
         [f"- `{m}`: {doc['models'][m]}" for m in models] + [""]
     if doc.get("pockets"):
         lines += render_pockets(doc["pockets"]) + [""]
+        if "pockets_machine" in doc:  # the pocket rung measured on its own (run_pockets)
+            lines += ["The pocket rung's run: " + machine_markdown(doc["pockets_machine"], doc.get("pockets_end_load")),
+                      ""]
     if "machine" in doc:
         lines += [machine_markdown(doc["machine"], doc.get("end_load")), ""]
     return "\n".join(lines)

@@ -84,10 +84,13 @@ class Table:
             if (self.length, self.width) != (self.specs.l, self.specs.w):
                 raise SceneError(f"table: length x width {self.length} x {self.width} differs from the specs' "
                                  f"l x w {self.specs.l} x {self.specs.w}; give the size once, in table.specs")
-            if self.pocket_xy is not None or self.pocket_radius is not None:
+            xy, r = pocket_circles(self.specs)
+            given = (self.pocket_xy, self.pocket_radius)
+            if (given[0] is not None or given[1] is not None) and not (
+                    np.array_equal(np.asarray(given[0], dtype=float).reshape(-1, 2), xy)
+                    and np.array_equal(np.asarray(given[1], dtype=float).reshape(-1), r)):
                 raise SceneError("table.pockets: a jaw table's pockets are its specs' pocket circles; give "
                                  "corner/side_pocket_radius and _depth in table.specs instead of a pocket list")
-            xy, r = pocket_circles(self.specs)
         elif self.pocket_xy is None and self.pocket_radius is None:
             xy, r = default_pockets(self.length, self.width)
         elif self.pocket_xy is None or self.pocket_radius is None:
@@ -126,12 +129,21 @@ class Table:
         return self.pocket_model == "jaws"
 
     def walls(self) -> tuple[np.ndarray, np.ndarray]:
-        """The jaw table's cushion geometry ``(segments (S, 6), tips (C, 3))`` (:func:`.pocket_specs.build_walls`);
-        empty arrays under the ``capture`` model, whose four cushions are the edges of the playing area."""
-        if not self.has_jaws:
-            return np.zeros((0, 6)), np.zeros((0, 3))
-        assert self.specs is not None
-        return build_walls(self.specs)
+        """The jaw table's cushion geometry ``(segments (S, 6), tips (C, 3))`` (:func:`.pocket_specs.build_walls`,
+        built once per table; read-only); empty arrays under the ``capture`` model, whose four cushions are the
+        edges of the playing area."""
+        got = self.__dict__.get("_walls")
+        if got is None:
+            if self.has_jaws:
+                assert self.specs is not None
+                segs, tips = build_walls(self.specs)
+            else:
+                segs, tips = np.zeros((0, 6)), np.zeros((0, 3))
+            segs.setflags(write=False)
+            tips.setflags(write=False)
+            got = (segs, tips)
+            object.__setattr__(self, "_walls", got)
+        return got
 
     def with_pockets(self, pocket_xy: np.ndarray, pocket_radius: np.ndarray) -> "Table":
         """A copy of this table with another pocket list (empty arrays: no pockets) under the capture model."""
