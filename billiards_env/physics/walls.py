@@ -346,7 +346,7 @@ def push_out_of_walls(pos, i, r, prm):
     """Put ball ``i`` (radius ``r``) back on every wall it overlaps, the deepest first (at most
     ``MAX_WALL_PASSES``), moving its centre along the contact normal; velocities are not touched."""
     for _ in range(MAX_WALL_PASSES):
-        g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
+        _, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
         if wall < 0:
             return
         pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
