@@ -193,7 +193,17 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     r = radius[i]
     tol = 1e-12 + 1e-14 * math.hypot(vx, vy)
     if has_walls(prm):  # a jaw table: rails, jaw faces, tips
-        tau, wall = _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm)
+        # A ball settled on a slanted wall (the pressed rule) keeps round-off in its slip's normal part, about 1e-16
+        # of |v| + R |w|; its acceleration's normal part is that over the slip (sliding) or the speed (rolling), times
+        # |a|: below it, the acceleration does not press the ball in (else a storm of hits at one instant).
+        wx = bs[i, WX]
+        wy = bs[i, WY]
+        scale = math.hypot(vx, vy) + r * math.sqrt(wx * wx + wy * wy + bs[i, WZ] * bs[i, WZ])
+        slip = math.hypot(vx - r * wy, vy + r * wx) if st[i] == MS_SLIDING else math.hypot(vx, vy)
+        acc_tol = tol
+        if slip > 0.0:
+            acc_tol += 1e-13 * math.hypot(ax, ay) * scale / slip
+        tau, wall = _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, acc_tol, far, prm)
         if tau < best:
             best = tau
             kind = EV_CUSHION
@@ -220,10 +230,11 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
 
 
 @internal
-def _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
+def _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, acc_tol, far, prm):
     """First time in ``[0, window]`` at which a ball on ``p + v t + a t^2 / 2`` meets a jaw table's wall
     (:mod:`.walls`): ``(time, wall)``, ``(inf, -1)`` if none. A segment's distance is a quadratic in ``t``, met
-    where its projection lies on the segment; a tip's is a quartic. Walls farther than ``far`` are skipped."""
+    where its projection lies on the segment; a tip's is a quartic. Walls farther than ``far`` are skipped; a
+    segment's normal acceleration within ``acc_tol`` of 0 is round-off (does not press the ball in)."""
     best = math.inf
     wall = -1
     for k in range(prm.n_segs):
@@ -233,7 +244,7 @@ def _jaw_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
         if c0 > far or c0 < -2.0 * r:  # out of reach, or the centre behind the line (not on this side)
             continue
         an = ax * nx + ay * ny
-        if abs(an) <= tol:  # round-off of a ball settled on a slanted wall (the pressed rule): not pressing
+        if abs(an) <= acc_tol:  # round-off of a ball settled on a slanted wall (the pressed rule): not pressing
             an = 0.0
         tau = _wall_time(0.5 * an, vx * nx + vy * ny, c0, window, tol)
         if tau < best and on_segment(x + tau * (vx + 0.5 * ax * tau), y + tau * (vy + 0.5 * ay * tau), k, prm):
