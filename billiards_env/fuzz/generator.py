@@ -321,7 +321,8 @@ def mouth_balls(src: Source, jaws: dict[str, Any], placed: list[tuple[float, flo
     and then a few more in the mouths: anywhere in a mouth or throat, against a jaw face, at a jaw tip's tangent
     point, or touching the ball placed before (two balls jammed in a mouth). The first ball kept is the cue; if every ball
     overlapped a wall, one at the table's centre is."""
-    from ..physics.pocket_specs import PocketSpecs, build_walls, clear_of_walls, mouth_polygons, pocket_circles
+    from ..physics.pocket_specs import (PocketSpecs, build_walls, clear_of_walls, in_mouth, mouth_polygons,
+                                        pocket_circles)
 
     specs = PocketSpecs(**jaws["specs"])
     segs, tips = build_walls(specs)
@@ -334,10 +335,8 @@ def mouth_balls(src: Source, jaws: dict[str, Any], placed: list[tuple[float, flo
         if not (math.isfinite(x) and math.isfinite(y)) or not clear_of_walls(segs, tips, x, y, r, 0.0):
             return False
         inside = r <= x <= specs.l - r and r <= y <= specs.w - r
-        if not inside:
-            from ..physics.pocket_specs import in_mouth
-            if not in_mouth(segs, tips, pxy, pr, x, y, r, 0.0):
-                return False
+        if not inside and not in_mouth(segs, tips, pxy, pr, x, y, r, 0.0):
+            return False
         return all(math.hypot(x - q[0], y - q[1]) >= 2.0 * r - 1e-12 for q in balls)
 
     out: list[tuple[float, float]] = []

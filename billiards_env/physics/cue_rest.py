@@ -229,7 +229,7 @@ def lone_ball_rest(x: float, y: float, vx: float, vy: float, wx: float, wy: floa
         else:
             return x, y, -1
         if has_walls(prm):  # a jaw table: its rails, jaw faces and tips
-            t_hit, cushion = path_wall_time(x, y, vx, vy, ax, ay, r, tau, 1e-12, math.inf, prm)
+            t_hit, cushion = path_wall_time(x, y, vx, vy, ax, ay, r, tau, 1e-12, 1e-12, math.inf, prm)
         else:
             t_hit, cushion = _first_wall(x, y, vx, vy, ax, ay, tau, r, table_l, table_w)
         t_end = min(t_hit, tau)

@@ -141,7 +141,17 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
     r = radius[i]
     tol = 1e-12 + 1e-14 * math.hypot(vx, vy)
     if has_walls(prm):  # a jaw table: rails, jaw faces, tips
-        tau, wall = path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm)
+        # A ball settled on a slanted wall (the pressed rule) keeps round-off in its slip's normal part, about 1e-16
+        # of |v| + R |w|; its acceleration's normal part is that over the slip (sliding) or the speed (rolling), times
+        # |a|: below it, the acceleration does not press the ball in (else a storm of hits at one instant).
+        wx = bs[i, WX]
+        wy = bs[i, WY]
+        scale = math.hypot(vx, vy) + r * math.sqrt(wx * wx + wy * wy + bs[i, WZ] * bs[i, WZ])
+        slip = math.hypot(vx - r * wy, vy + r * wx) if st[i] == MS_SLIDING else math.hypot(vx, vy)
+        acc_tol = tol
+        if slip > 0.0:
+            acc_tol += 1e-13 * math.hypot(ax, ay) * scale / slip
+        tau, wall = path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, acc_tol, far, prm)
         if tau < best:
             best = tau
             kind = EV_CUSHION

@@ -139,7 +139,7 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
             r = radius[i]
             if jaws:  # rails, jaw faces and tips (walls.py)
                 for _ in range(MAX_WALL_PASSES):
-                    g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
+                    _, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
                     if wall < 0:
                         break
                     back, nx, ny = back_onto_wall(pos, vel, i, r, wall, dt, contact == 1, prm)  # rewind: to contact

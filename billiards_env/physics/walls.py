@@ -392,7 +392,7 @@ def push_out_of_walls(pos, i, r, prm):
     """Put ball ``i`` (radius ``r``) back on every wall it overlaps, the deepest first (at most
     ``MAX_WALL_PASSES``), moving its centre along the contact normal; velocities are not touched."""
     for _ in range(MAX_WALL_PASSES):
-        g, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
+        _, wall = deepest_overlap(pos[i, 0], pos[i, 1], r, prm)
         if wall < 0:
             return
         pos[i, 0], pos[i, 1] = touch_wall(pos[i, 0], pos[i, 1], r, wall, prm)
@@ -472,10 +472,11 @@ def wall_time(c2, c1, c0, window, tol):
 
 
 @internal
-def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
+def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, acc_tol, far, prm):
     """First time in ``[0, window]`` at which a ball on ``p + v t + a t^2 / 2`` meets a jaw table's wall
     (:mod:`.walls`): ``(time, wall)``, ``(inf, -1)`` if none. A segment's distance is a quadratic in ``t``, met
-    where its projection lies on the segment; a tip's is a quartic. Walls farther than ``far`` are skipped."""
+    where its projection lies on the segment; a tip's is a quartic. Walls farther than ``far`` are skipped; a
+    segment's normal acceleration within ``acc_tol`` of 0 is round-off (does not press the ball in)."""
     best = math.inf
     wall = -1
     # The path within the window lies in the triangle of its control points (a quadratic Bezier curve): a segment
@@ -495,7 +496,7 @@ def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, far, prm):
                 (x2 - prm.segs[k, 0]) * nx + (y2 - prm.segs[k, 1]) * ny - r > 1e-9:
             continue
         an = ax * nx + ay * ny
-        if abs(an) <= tol:  # round-off of a ball settled on a slanted wall (the pressed rule): not pressing
+        if abs(an) <= acc_tol:  # round-off of a ball settled on a slanted wall (the pressed rule): not pressing
             an = 0.0
         tau = wall_time(0.5 * an, vx * nx + vy * ny, c0, window, tol)
         if tau < best and on_segment(x + tau * (vx + 0.5 * ax * tau), y + tau * (vy + 0.5 * ay * tau), k, prm):
