@@ -23,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .kernel_logs import internal
+from .kernel_logs import internal, rewind_time
 from .roots import first_entry, quadratic_roots_in
 
 #: A ball whose centre's projection lies this far (m) beyond a segment's end still counts as on the segment: the
@@ -291,21 +291,10 @@ def wall_rewind_time(x, y, vx, vy, r, wall, dt, prm):
             return -1.0
         gap = (x - prm.segs[wall, 0]) * prm.segs[wall, 4] + (y - prm.segs[wall, 1]) * prm.segs[wall, 5] - r
         s = gap / vn
-    else:
-        k = wall - prm.n_segs
-        dx = x - prm.tips[k, 0]
-        dy = y - prm.tips[k, 1]
-        rho = r + prm.tips[k, 2]
-        bb = vx * vx + vy * vy
-        db = dx * vx + dy * vy
-        if not bb > 0.0:
-            return -1.0
-        # |d - v s| = rho for the smallest s >= 0 (the ball inside the circle of radius rho now).
-        disc = db * db - bb * (dx * dx + dy * dy - rho * rho)
-        s = (db + math.sqrt(max(disc, 0.0))) / bb
-    if 0.0 <= s <= dt:
-        return s
-    return -1.0
+        return s if 0.0 <= s <= dt else -1.0
+    # A tip: the ball-ball rewind against a resting circle of radius r + the tip's (|d - v s| = rho).
+    k = wall - prm.n_segs
+    return rewind_time(x - prm.tips[k, 0], y - prm.tips[k, 1], vx, vy, r + prm.tips[k, 2], dt)
 
 
 @internal
