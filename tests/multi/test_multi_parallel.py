@@ -50,9 +50,24 @@ def test_pettingzoo_max_cycles_test_passes(module):
     (a player who pockets shoots again), so that count holds for PettingZoo's AEC view of the parallel env
     (``parallel_to_aec``: both agents step every cycle), which is what it is run on here; the native AEC env's
     shot limit is checked below."""
-    mod = types.SimpleNamespace(parallel_env=module.parallel_env,
-                                env=lambda **kw: parallel_to_aec(module.parallel_env(**kw)))
+    mod = types.SimpleNamespace(parallel_env=lambda **kw: _seeded(module.parallel_env(**kw)),
+                                env=lambda **kw: parallel_to_aec(_seeded(module.parallel_env(**kw))))
     max_cycles_test(mod)
+
+
+def _seeded(env: BilliardsParallelEnv, default_seed: int = 0) -> BilliardsParallelEnv:
+    """``env`` with its action spaces seeded and ``reset()`` seeded by default. max_cycles_test resets and samples
+    unseeded and assumes no game ends within its 4 cycles; a random shot can pocket the 8 or the 9 early, so the
+    test is made reproducible rather than left to chance (a game that ends early is a legal outcome)."""
+    for k, agent in enumerate(env.possible_agents):
+        env.action_space(agent).seed(default_seed + k)
+    unseeded_reset = env.reset
+
+    def reset(seed: int | None = None, options: dict | None = None):
+        return unseeded_reset(seed=default_seed if seed is None else seed, options=options)
+
+    env.reset = reset  # type: ignore[method-assign]
+    return env
 
 
 @pytest.mark.parametrize("module", MODULES, ids=IDS)
