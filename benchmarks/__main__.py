@@ -1,4 +1,4 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|ladder|games] [--write | --out DIR]``,
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|ladder|games|cold_start] [--write | --out DIR]``,
 from the repository root.
 
 It prints what it measured and nothing else; reports are written only when asked: ``--write`` updates the
@@ -10,6 +10,9 @@ then time per shot, ``env.step`` per second, pooltool and the first-call latency
 spin model's speed (against pooltool) and speed against error (``spin.md/.json``), then the batch API, the native
 vector env, the search player, the single env and the first call against the targets of issue 12
 (``batch.md/.json``).
+``--only cold_start`` (not part of the default run: it compiles every kernel from an empty cache, about ten
+minutes) times the set-up's compile step and the first step of an env after it and on an empty cache
+(``cold_start.md/.json``).
 ``--quick`` runs a small configuration of everything (about a minute); the full run takes about four minutes on
 two cores. The comparisons with pooltool run where pooltool is installed (``.venv-pooltool``); a missing pooltool
 is installed only with ``--with-pooltool`` (about 734 MB), otherwise those comparisons are left out with a line
@@ -22,7 +25,10 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players", "ladder", "games")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players", "ladder", "games",
+            "cold_start")
+#: Sections that run only when named with ``--only``.
+ON_REQUEST = ("cold_start",)
 #: Where ``--write`` puts the reports (the committed ones).
 DEFAULT_OUT = Path("docs/bench")
 
@@ -62,11 +68,11 @@ def main(argv: list[str] | None = None) -> int:
     out: Path | None = DEFAULT_OUT if args.write else args.out
     if args.render_only and out is None:
         ap.error("--render-only re-writes reports: give --write (docs/bench) or --out DIR")
-    only = tuple(args.only) if args.only else SECTIONS
+    only = tuple(args.only) if args.only else tuple(s for s in SECTIONS if s not in ON_REQUEST)
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, batch, games, ladder, players, speed, spin
+    from . import accuracy, batch, cold_start, games, ladder, players, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -89,6 +95,8 @@ def main(argv: list[str] | None = None) -> int:
             ladder.render(out)
         if (out / "games.json").exists():
             games.render(out)
+        if (out / "cold_start.json").exists():
+            cold_start.render(out)
         log(f"[bench] re-rendered the reports in {out}")
         return 0
     acc = accuracy.main(out, quick=args.quick) if "accuracy" in only else None
@@ -110,6 +118,8 @@ def main(argv: list[str] | None = None) -> int:
         ladder.main(out, quick=args.quick)
     if "games" in only:
         games.main(out, quick=args.quick)
+    if "cold_start" in only:
+        cold_start.main(out, quick=args.quick)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; "
         + (f"reports in {out}" if out is not None else "no report written (--write or --out DIR to write them)"))
     return 0

@@ -22,6 +22,7 @@ from collections import defaultdict
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python benchmarks/compile_profile.py", description=__doc__.splitlines()[0])
     ap.add_argument("--env", help="also make, reset and step this env id")
+    ap.add_argument("--no-shot", action="store_true", help="skip the Simulator shot: profile the env's first step alone")
     ap.add_argument("--top", type=int, default=25, help="how many compilations to list (default 25)")
     args = ap.parse_args(argv)
     tmp = None
@@ -49,7 +50,8 @@ def main(argv: list[str] | None = None) -> int:
     t1 = time.perf_counter()
     table = Table()
     balls = Balls.from_positions([(0.25 * table.length, 0.5 * table.width), (0.5 * table.length, 0.5 * table.width)])
-    Simulator(table, Physics()).run(balls.strike(0, 0.0, 2.0))
+    if not args.no_shot:
+        Simulator(table, Physics()).run(balls.strike(0, 0.0, 2.0))
     t2 = time.perf_counter()
     if args.env:
         import gymnasium as gym

@@ -1,8 +1,8 @@
 """Compiled games of the native vector env: 9-ball and 8-ball tables reset and stepped whole, opponents included.
 
 A step of a game env is the agent's shot, its call, and, when the turn passes, the built-in opponent's shots until
-the turn comes back or the game ends. :func:`step_tables` does all of it for every table in one call (spread over
-numba's threads, one table per thread: the result does not depend on their number), :func:`reset_tables` the reset
+the turn comes back or the game ends. :func:`play_tables` does all of it for every table in one call (slices of the
+tables on several threads: the result does not depend on their number), and the reset
 (the layout, the rack order, who breaks, the opening, the opponent's break). Each part is the single env's own
 code or its compiled twin, with the same floating-point operations in the same order, so that table ``k`` equals a
 single env with the same seed and actions, bit for bit (``tests/envs/test_vector_env.py``):
@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from billiards_env.physics.aim import ray_circle_entry
 from billiards_env.physics.exact import simulate_exact
@@ -562,7 +562,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
 @njit(cache=True)
 def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
                 params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs, wc):
-    """One ``env.step`` of table ``k`` (see :func:`step_tables`)."""
+    """One ``env.step`` of table ``k`` (see :func:`play_tables`)."""
     call = np.zeros(N_CALL, np.int64)
     after = np.zeros(N_STATE, np.int64)
     buf = np.zeros((2, pos.shape[1]), np.int64)
@@ -855,12 +855,14 @@ def legal_masks(gst: np.ndarray, out: np.ndarray) -> None:
 
 # --- N tables --------------------------------------------------------------------------------------------------------
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, nogil=True)
 def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                 pocket_r, params, tm_xy, tm_r, tm_params, holes, layout, rack_slots, full, rec_agent, rec_opp, reward,
                 tout, obs, wc):
-    """A step of tables ``rows``, or a reset of those whose ``resets`` is set, spread over numba's threads (one table
-    per thread at a time: the result does not depend on their number; one thread runs them one after the other).
+    """A step of tables ``rows``, or a reset of those whose ``resets`` is set, one after the other. It releases the
+    GIL: the vector env runs slices of ``rows`` on several Python threads at once (a table's result does not depend
+    on the slice it is in). Threads instead of numba's ``prange``: the parallel pipeline took about 20 s more to
+    compile this function, on every cold cache.
 
     A step: the agent's shot (``act``: the actions, float64 clipped; ``kc``: the tables' kick caches, ``KC_*``, for
     the ``candidates`` types), its call and reward, the opponent's turn, the termination and truncation (``tout``).
@@ -872,7 +874,7 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
     :func:`~billiards_env.players.geometry.windows_cached`), kept from call to call: the same decisions, the windows
     of the balls that did not move since the table's last decision not worked out again."""
     fixed_rows, fixed_xy, rand_rows, regions, pockets = layout
-    for q in prange(rows.shape[0]):
+    for q in range(rows.shape[0]):
         if resets[q]:
             _reset_table(rows[q], pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                          pocket_r, params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions,

@@ -14,12 +14,13 @@ for (``BilliardsVectorEnv.sub_infos``).
 """
 from __future__ import annotations
 
+from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from billiards_env.games.pool import EightBallSession, NineBallSession
-from billiards_env.physics.batch import _thread_count, use_parallel
+from billiards_env.physics.batch import use_parallel
 from billiards_env.physics.errors import SceneError
 from billiards_env.physics.layout import DIAMOND_ORDER, RACK_ORDER, foot_spot, head_spot, head_string_x
 from billiards_env.players.geometric import GeometricPlayer
@@ -72,6 +73,25 @@ def native_games(env: "BilliardsEnv", render_mode: str | None) -> str | None:
     if c.n_object_balls != len(full) or tuple(env.state.numbers) != tuple(range(len(full) + 1)):
         return "the ball set"
     return None
+
+
+#: One pool of worker threads per thread count, kept for the process (a step is too short to start threads).
+_POOLS: dict[int, ThreadPoolExecutor] = {}
+
+
+def _pool(threads: int) -> ThreadPoolExecutor:
+    """The pool of ``threads`` worker threads that runs slices of the tables."""
+    if threads not in _POOLS:
+        _POOLS[threads] = ThreadPoolExecutor(threads, thread_name_prefix="billiards-tables")
+    return _POOLS[threads]
+
+
+def default_threads() -> int:
+    """Threads for a parallel step when the env leaves it open (``threads=None``): numba's thread count, the
+    cores it may use."""
+    import numba
+
+    return int(numba.get_num_threads())
 
 
 class GameTables:
@@ -229,12 +249,15 @@ class GameTables:
         """:func:`._game_kernels.play_tables` on tables ``rows`` (a reset where ``resets``), on one thread when the
         batch or the machine says so (:func:`~billiards_env.physics.batch.use_parallel`)."""
         v = self.venv
-        threads = v.threads if use_parallel(len(rows), v.threads) else 1
-        with _thread_count(threads):
-            gk.play_tables(rows, resets, act, self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts,
-                           v._gen_list(), self.gst, self.opts, self.cfg, self.icfg, *self.tables, self.layout,
-                           self.rack_slots, self.full, self.rec_agent, self.rec_opp, self.reward, self.tout, v._obs,
-                           self.windows)
+        threads = min(v.threads or default_threads(), len(rows)) if use_parallel(len(rows), v.threads) else 1
+        shared = (self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts, v._gen_list(), self.gst, self.opts,
+                  self.cfg, self.icfg, *self.tables, self.layout, self.rack_slots, self.full, self.rec_agent,
+                  self.rec_opp, self.reward, self.tout, v._obs, self.windows)
+        if threads == 1:
+            gk.play_tables(rows, resets, act, *shared)
+        else:  # slices of the tables on threads (the kernel releases the GIL); each table's result is the same
+            slices = np.array_split(np.arange(len(rows)), threads)
+            list(_pool(threads).map(lambda s: gk.play_tables(rows[s], resets[s], act, *shared), slices))
         self._check(rows)
         for k in rows.tolist():
             self.states[k].changed()

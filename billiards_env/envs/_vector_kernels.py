@@ -32,7 +32,7 @@ from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import place_random_rows, spot_cue_row
 from billiards_env.physics.spin_collide import strike_ball
 
-from ._kernels import observation
+from ._kernels import write_observation
 from billiards_env.shot_path import noisy_shot
 
 from .actions import AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, aim_to_angle, power_to_speed, square_to_disc
@@ -246,7 +246,7 @@ def observe_positions(rows, pos, on, sx, sy, out):
     """The positions observation of tables ``rows`` into ``out[rows]`` (``envs._kernels.observation``)."""
     for q in range(rows.shape[0]):
         k = rows[q]
-        out[k] = observation(pos[k], on[k], sx, sy)
+        write_observation(pos[k], on[k], sx, sy, out[k])
 
 
 @njit(cache=True)
@@ -256,7 +256,7 @@ def _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, ob
     store_row(k, res, 0, out)
     ok = _finish_row(k, out[3], out[5], pos, on, vel, ang, shots, cfg, icfg, fout, iout)
     if icfg[I_POSITIONS_OBS]:
-        obs[k] = observation(pos[k], on[k], cfg[C_SX], cfg[C_SY])
+        write_observation(pos[k], on[k], cfg[C_SX], cfg[C_SY], obs[k])
     return ok
 
 

@@ -151,15 +151,24 @@ def windows_cached(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm:
     for t in range(targets.shape[0]):
         j = targets[t]
         if cache_have[j] and cache_pos[j, 0] == pos[j, 0] and cache_pos[j, 1] == pos[j, 1]:
-            out[t] = cache_win[j]
+            _copy_windows(cache_win[j], out[t])
             continue
         pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
                        WINDOW_SAMPLES, out[t], tm.segs, tm.tips)
-        cache_win[j] = out[t]
+        _copy_windows(out[t], cache_win[j])
         cache_pos[j, 0] = pos[j, 0]
         cache_pos[j, 1] = pos[j, 1]
         cache_have[j] = True
     return out
+
+
+@njit(cache=True)
+def _copy_windows(src: np.ndarray, dst: np.ndarray) -> None:
+    """``dst[:] = src`` for one ball's ``(pockets, 4)`` windows, element by element (an array assignment compiles
+    numba's shape check and its message formatting: seconds of a cold start)."""
+    for p in range(src.shape[0]):
+        for c in range(src.shape[1]):
+            dst[p, c] = src[p, c]
 
 
 @njit(cache=True)
