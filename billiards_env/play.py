@@ -203,6 +203,7 @@ class PlayApp:
             self._choose_breaker()
             self._calls = []
             self.log.clear()
+        won_before = self._opponent_wins()
         _, info = self.env.reset(seed=seed, options=options)
         self.games += 1
         self.shots, self.total, self.done, self.success = 0, 0.0, False, False
@@ -210,14 +211,24 @@ class PlayApp:
         self.dragging, self.press, self.power = False, None, 0.0
         self.skipping = self.too_soft = False
         if self.is_game:
+            names = self._names()
+            won = self._opponent_wins() - won_before
+            if won > 0:  # the env racks again when the opponent wins from its break, before your first shot
+                self.log.note(f"{names[1]} broke and won {won} game{'s' if won > 1 else ''} before your first "
+                              "shot; racked again", "win")
             turns = self._opponent_turns(info, self._calls, self._words)
-            self.log.add(turns, self._names())
+            self.log.add(turns, names)
         self._new_turn()
         base = "aim with the mouse; press, drag and release to shoot"
         if self.is_game and self.opponent_shots:
             names = self._names()
             base = f"{names[1]} broke; {names[self.core.task.state.shooter]} to shoot"
         self.status = self._hint(base)
+
+    def _opponent_wins(self) -> int:
+        """Games the opponent has won this session (0 outside a game)."""
+        score = getattr(getattr(self.core.task, "session", None), "score", None)
+        return int(score.wins[1]) if score is not None else 0
 
     def _choose_breaker(self) -> None:
         """Set who breaks the next game (the env's ``first_shooter``, read at reset) from ``breaker``."""
@@ -245,12 +256,11 @@ class PlayApp:
         owner.judge = judge_and_record
 
     def _names(self) -> tuple[str, str]:
+        """The players' names in the log and the panel: the game's (``GameTask.names``), else you and opponent."""
         task = self.core.task
         if hasattr(task, "names"):
             return tuple(task.names())  # type: ignore[return-value]
-        from billiards_env.envs.game_hud import player_names
-
-        return player_names(task)
+        return ("you", "opponent")
 
     @staticmethod
     def _opponent_turns(info: dict[str, Any], calls: list[Any], words: Any) -> list[dict[str, Any]]:

@@ -27,11 +27,13 @@ class Score:
 
 
 def call_text(verdict: "Verdict", names: tuple[str, str], what: str) -> str:
-    """The referee's call in words: ``"FOUL: scratch (geometric)"``, ``"9 pocketed: agent wins"``, or
+    """The referee's call in words: ``"FOUL: scratch (geometric)"``, ``"9 pocketed: agent wins"`` (``"you win"`` in the
+    play window), or
     ``"<shooter>: <what>"`` (``what`` the game's own words for a clean shot: ``"pocketed 3, 5"``, ``"point"``...)."""
     who = names[verdict.shooter]
     if verdict.game_over:
-        return f"{verdict.reason}: {names[verdict.winner] if verdict.winner is not None else 'nobody'} wins"
+        winner = names[verdict.winner] if verdict.winner is not None else "nobody"
+        return f"{verdict.reason}: {winner} {'win' if winner == 'you' else 'wins'}"
     if verdict.foul:
         return f"FOUL: {verdict.reason} ({who})"
     return f"{who}: {what}"

@@ -131,6 +131,12 @@ class TurnLog:
         del self.lines[:-MAX_LINES]
         self.offset = 0
 
+    def note(self, line: str, kind: str = "shot") -> None:
+        """Log one line that is not a shot (what happened before the first shot of a game)."""
+        self.lines.append((line, kind))
+        del self.lines[:-MAX_LINES]
+        self.offset = 0
+
     def scroll(self, lines: int) -> None:
         """Scroll back (``lines > 0``, towards older lines) or forward, within the lines kept."""
         self.offset = min(max(self.offset + int(lines), 0), max(len(self.lines) - self._shown, 0))

@@ -96,7 +96,7 @@ def test_who_breaks_after_r(breaker, expected):
         breakers.append(1 if app.opponent_shots else 0)
         assert (state.break_shot and state.shooter == 0) == (breakers[-1] == 0)
         if breakers[-1] == 1:
-            assert app.log.lines and app.log.lines[0][0].startswith("geometric:")
+            assert app.log.lines and app.log.lines[-1][0].startswith("geometric:")
     app.close()
     assert breakers == expected
 
@@ -123,3 +123,21 @@ def test_log_reads_the_envs_opponent_turns():
             "call": reasons.index("scratch"), "scratch": True, "turn_over": True, "winner": -1, "opponent_shots": 2}
     own = {**u.info_words(step), **play._info_turn(step, 0)}
     assert turn_line(own, NAMES)[0] == "you: FOUL scratch - geometric has ball in hand"
+
+
+def test_games_the_opponent_won_from_its_break_are_logged():
+    """When the opponent breaks and runs out before your first shot, the env racks again inside reset; the panel
+    counts those games, so the log says so instead of leaving them unexplained."""
+    for seed in range(40):
+        app = play.PlayApp("Billiards9Ball-v0", seed=seed, width=400, speedup=50.0, realtime=False,
+                           allow_headless=True, opponent="geometric", breaker="opponent")
+        won = app.core.task.session.score.wins[1]
+        lines = list(app.log.lines)
+        app.close()
+        if won:
+            break
+    else:
+        pytest.fail("the geometric player never won from its break in 40 racks")
+    assert lines[0] == (f"geometric broke and won {won} game{'s' if won > 1 else ''} before your first shot; "
+                        "racked again", "win")
+    assert all(line.startswith("geometric:") for line, _ in lines[1:])  # then the rack you face, shot by shot
