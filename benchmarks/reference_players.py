@@ -1,6 +1,7 @@
-"""The players' Python before the compiled geometry of issue 21, kept as the reference that the tests
-(tests/players/test_geometry.py, test_search_fast.py, test_slots.py) and the benchmark (benchmarks/players.py) compare
-the compiled code with: ``ghost_ball_shots``, ``geometric_shot``, ``break_shot``, ``choose_placement``, the geometric
+"""The players' Python before their compiled geometry, kept as the reference the compiled code is held to: the
+benchmark (benchmarks/players.py) times both, and the tests (tests/players/test_geometry.py, test_search_fast.py,
+test_slots.py, tests/envs/test_candidates.py) compare the compiled results with records of this code's
+(tests/golden.py; recording runs this module and asserts equality first): ``ghost_ball_shots``, ``geometric_shot``, ``break_shot``, ``choose_placement``, the geometric
 player's decision (:func:`reference_geometric_act`), the search player (:class:`ReferenceSearchPlayer`) and the
 ``candidates`` types' slot lists (:func:`reference_candidate_slots` and its parts), with the numpy ``pocket_window``
 (41 sampled directions), ``segment_blocked`` and ``cut_cosine`` they called. Verbatim copies (the search's and the

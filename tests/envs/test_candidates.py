@@ -12,7 +12,6 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import billiards_env  # noqa: E402,F401
-from benchmarks.reference_players import reference_slot_values
 from billiards_env.envs.actions import PLACE_BACK, PLACE_MAX_CUT
 from billiards_env.envs.candidates import candidate_slots
 from billiards_env.envs.config import ConfigError
@@ -271,9 +270,12 @@ def test_position_reward_pays_for_the_next_shot_after_a_kept_turn():
 
 
 @pytest.mark.parametrize("env_id", ["Billiards9Ball-v0", "Billiards8Ball-v0"])
-def test_observation_values_equal_the_python_loop(env_id):
-    """The compiled slot values (envs/candidates.py ``slot_features``) equal the Python loop they replaced, bit for
-    bit: the cue ball where it lies, in hand, the break, kicks (a hidden ball), 1 to 6 slots."""
+def test_observation_values_equal_the_python_loop(env_id, golden):
+    """The compiled slot values (envs/candidates.py ``slot_features``) equal the Python loop they replaced
+    (``benchmarks/reference_players.py``, through its recorded results: the ``golden`` fixture), bit for bit: the
+    cue ball where it lies, in hand, the break, kicks (a hidden ball), 1 to 6 slots."""
+    from golden import reference_players
+
     from billiards_env.envs.candidates import slot_features
 
     env = gym.make(env_id, opening="either", opponent="geometric", **CAND)
@@ -286,8 +288,9 @@ def test_observation_values_equal_the_python_loop(env_id):
             for n in (1, 4, 6):
                 cands = candidate_slots(u.state, n, u.action_type.speed_range)
                 got = slot_features(u.state, cands, n, u.config.speed_max)
-                want = reference_slot_values(u.state, cands, n, u.config.speed_max)
-                assert got.dtype == want.dtype and np.array_equal(got, want)
+                golden.check(got, lambda: reference_players().reference_slot_values(u.state, cands, n,
+                                                                                      u.config.speed_max),
+                             same=lambda a, b: a.dtype == b.dtype and np.array_equal(a, b))
                 seen["break" if cands.break_shot else "hand" if cands.in_hand else "pots"] += 1
                 seen["kick"] += cands.kick is not None
             obs, _, term, trunc, _ = env.step(rng.uniform(-1, 1, env.action_space.shape).astype(np.float32))
@@ -299,6 +302,7 @@ def test_observation_values_equal_the_python_loop(env_id):
     env9.reset(seed=0, options={"positions": pos, "pocketed": np.array([False] * 3 + [True] * 7)})
     cands = candidate_slots(env9.unwrapped.state, 4)
     assert cands.kick is not None
-    assert np.array_equal(slot_features(env9.unwrapped.state, cands, 4, 5.0),
-                          reference_slot_values(env9.unwrapped.state, cands, 4, 5.0))
+    golden.check(slot_features(env9.unwrapped.state, cands, 4, 5.0),
+                 lambda: reference_players().reference_slot_values(env9.unwrapped.state, cands, 4, 5.0),
+                 same=lambda a, b: a.dtype == b.dtype and np.array_equal(a, b))
     assert seen["hand"] and seen["pots"] and seen["break"], seen

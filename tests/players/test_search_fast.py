@@ -1,9 +1,10 @@
-"""The search player on the compiled geometry and the batch API (players/search.py) plays what today's Python search
-(benchmarks/reference_players.py) played: the same action on fixed tables of 9-ball and 8-ball games (the cue ball where it
-lies and in hand), under the spin model with tip offsets and shot noise, without rules, and with an action type
-mapped shot by shot. Its parts are checked against what they replace: what the rules read of a shot from the batch
-arrays against the event log, the absolute aim's round trip on arrays against the env's, and the rules' contract
-that after the break only whether a ball reached a cushion counts."""
+"""The search player on the compiled geometry and the batch API (players/search.py) plays what the Python search it
+replaced played (benchmarks/reference_players.py, through its recorded results: the ``golden`` fixture): the same
+action on fixed tables of 9-ball and 8-ball games (the cue ball where it lies and in hand), under the spin model with
+tip offsets and shot noise, without rules, and with an action type mapped shot by shot. Its parts are checked
+against what they replace: what the rules read of a shot from the batch arrays against the event log, the absolute
+aim's round trip on arrays against the env's, and the rules' contract that after the break only whether a ball
+reached a cushion counts."""
 from __future__ import annotations
 
 import math
@@ -14,10 +15,10 @@ import pytest
 
 import billiards_env  # noqa: F401  (registers the ids)
 from billiards_env.physics.batch import run_shots
-from benchmarks import reference_players as reference
 from billiards_env.players import make_player, shot_context
 from billiards_env.players.search import Playable, SearchPlayer, SearchSettings, _key_from_log, shot_keys
 from billiards_env.rules import ShotInfo, ShotSummary
+from golden import reference_players as reference
 
 QUICK = SearchSettings(n_geometric=3, sweep_angles=24, robust_samples=3, top_k=3)
 
@@ -44,17 +45,20 @@ def _decisions(env_id: str, seeds: range, steps: int, **kw):
         env.close()
 
 
-def _same_as_reference(env_id: str, seeds: range, steps: int, settings: SearchSettings | None = None,
+def _same_as_reference(golden, env_id: str, seeds: range, steps: int, settings: SearchSettings | None = None,
                        **kw) -> tuple[int, int]:
     checked = in_hand = 0
     for env, obs, seed in _decisions(env_id, seeds, steps, **kw):
-        ref = reference.ReferenceSearchPlayer(seed=seed, settings=settings and reference.SearchSettings(
-            **settings.__dict__))
         new = SearchPlayer(seed=seed, settings=settings)
-        expected = ref.act(env, obs)
-        assert np.array_equal(new.act(env, obs), expected)
-        assert (new.last.angle, new.last.speed, new.last.side, new.last.top, new.last.source) == \
-            (ref.last.angle, ref.last.speed, ref.last.side, ref.last.top, ref.last.source)
+        got = (new.act(env, obs), (new.last.angle, new.last.speed, new.last.side, new.last.top, new.last.source))
+
+        def want(env=env, obs=obs, seed=seed):
+            ref = reference().ReferenceSearchPlayer(seed=seed, settings=settings and reference().SearchSettings(
+                **settings.__dict__))
+            action = ref.act(env, obs)
+            return action, (ref.last.angle, ref.last.speed, ref.last.side, ref.last.top, ref.last.source)
+
+        golden.check(got, want, same=lambda a, b: np.array_equal(a[0], b[0]) and a[1] == b[1])
         checked += 1
         in_hand += shot_context(env).place_area is not None
     return checked, in_hand
@@ -69,8 +73,8 @@ def _same_as_reference(env_id: str, seeds: range, steps: int, settings: SearchSe
     ("BilliardsThreeBalls-v0", range(30, 34), 2, QUICK, {}),
     ("BilliardsOneBall-v0", range(40, 44), 1, QUICK, dict(action_type="ghost", speed_max=1.8)),
 ])
-def test_search_plays_what_the_python_search_played(env_id, seeds, steps, settings, kw):
-    checked, in_hand = _same_as_reference(env_id, seeds, steps, settings, **kw)
+def test_search_plays_what_the_python_search_played(env_id, seeds, steps, settings, kw, golden):
+    checked, in_hand = _same_as_reference(golden, env_id, seeds, steps, settings, **kw)
     assert checked >= len(seeds)
 
 
@@ -78,8 +82,8 @@ def test_search_plays_what_the_python_search_played(env_id, seeds, steps, settin
 @pytest.mark.parametrize("env_id, kw", [("Billiards9Ball-v0", {}), ("Billiards8Ball-v0", {}),
                                         ("Billiards9Ball-v0", dict(friction="drag")),
                                         ("Billiards8Ball-v0", dict(friction="spin", spin_action=True))])
-def test_search_plays_what_the_python_search_played_on_many_tables(env_id, kw):
-    checked, in_hand = _same_as_reference(env_id, range(500, 530), 12, None, **kw)
+def test_search_plays_what_the_python_search_played_on_many_tables(env_id, kw, golden):
+    checked, in_hand = _same_as_reference(golden, env_id, range(500, 536), 12, None, **kw)
     assert checked >= 30 and in_hand >= 3
 
 
