@@ -494,7 +494,9 @@ def profile_scene(sim: Any, states: tuple[np.ndarray, ...], calls: dict[str, Any
     fns = _replays()
     spin = sim._kernels.spin
     per_shot, events = _kernel_time(sim, states, repeats)
-    assert events == calls["events"], (events, calls["events"])
+    # The kernel's Python can round a libm function differently from the compiled kernel and, once in a long break,
+    # take another event: the parts are per event of the recorded run, the total per event of the compiled one.
+    recorded = calls["events"]
     n_shots = states[0].shape[0]
     ev_per_shot = events / n_shots
     params = sim._params
@@ -504,7 +506,7 @@ def profile_scene(sim: Any, states: tuple[np.ndarray, ...], calls: dict[str, Any
             return {"us_per_event": 0.0, "calls_per_event": 0.0, "ns_per_call": 0.0}
         reps = max(1, 20000 // n)
         t = _cpu(lambda: [fn() for _ in range(reps)], repeats) / reps
-        return {"us_per_event": 1e6 * t / events, "calls_per_event": n / events, "ns_per_call": 1e9 * t / n}
+        return {"us_per_event": 1e6 * t / recorded, "calls_per_event": n / recorded, "ns_per_call": 1e9 * t / n}
 
     out: dict[str, Any] = {}
     rp, rb, qd = calls["roots_pair"], calls["roots_ball"], calls["quad"]

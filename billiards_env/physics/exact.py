@@ -24,9 +24,11 @@ from .collide import JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
 from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
                           reserve_states)
-from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
+from .motion import (distance, drag_phi, drag_time_for_phi, speed_after, stop_distance, time_for_distance,
+                     time_to_stop)
 from .roots import first_entry
-from .walls import cluster_off_walls, has_walls, ray_wall_hit, reflect_off, touch_wall, wall_normal_at
+from .walls import (cluster_off_walls, has_walls, path_box_clear, path_clear_of, ray_wall_hit, reflect_off, touch_wall,
+                    wall_normal_at)
 
 #: A typed (non-literal) integer initial value: a literal 0 passed on to a compiled helper would make numba compile
 #: a second specialisation of it for the literal.
@@ -94,7 +96,11 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     x = p0[i, 0]
     y = p0[i, 1]
     r = radius[i]
+    # Hits beyond the path left before the ball stops are never its next event (the stop comes first): they are
+    # left out by starting the search there (margins far above round-off; inf where the ball never stops).
     best_d = math.inf
+    if tstop[i] < math.inf:
+        best_d = stop_distance(s, law, a, k, prm.min_speed) * (1.0 + 1e-9) + 1e-12
     kind = -1
     other = -1
     # Pockets first, so that a pocket and a cushion at the same point go to the pocket.
@@ -104,8 +110,8 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
             best_d = d
             kind = EV_POCKET
             other = p
-    if has_walls(prm):  # a jaw table: rails, jaw faces and tips
-        d, cush = ray_wall_hit(x, y, ux, uy, r, prm)
+    if has_walls(prm):  # a jaw table: rails, jaw faces and tips (only those nearer than the best so far)
+        d, cush = ray_wall_hit(x, y, ux, uy, r, prm, best_d)
     else:
         d, cush = ray_cushion_hit(x, y, ux, uy, prm.length, prm.width, r)
     if d < best_d:
@@ -204,6 +210,10 @@ def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, ra
         c4 = cx * cx + cy * cy
         c3 = 2.0 * (bx * cx + by * cy)
         c2 = bx * bx + by * by + 2.0 * (ax * cx + ay * cy)
+        # Bound before solving: the relative path A + B t + C t^2 over the window lies in the triangle of its control
+        # points; clear of the contact circle there (margins far above round-off), the quartic has no root.
+        if path_box_clear(0.0, 0.0, dc, ax, ay, bx, by, 2.0 * cx, 2.0 * cy, window):
+            return math.inf
         tau = first_entry(c4, c3, c2, c1, c0, window, closing_tol)
         return t + tau
     # Drag or no friction: both balls follow p + v * phi(t) with the same phi, so |A + B phi|^2 is quadratic.

@@ -29,7 +29,7 @@ from .kernel_logs import (append_event, contact_cluster, count_burst, internal, 
 from .roots import first_entry
 from .cushion_models import wall_hit
 from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, settle_on_wall, wall_normal
-from .walls import (MAX_WALL_PASSES, has_walls, path_clear_of, path_wall_time, pushes_into_walls, touch_wall, wall_gap,
+from .walls import (MAX_WALL_PASSES, has_walls, path_box_clear, path_clear_of, path_wall_time, pushes_into_walls, touch_wall, wall_gap,
                     wall_normal_at, wall_time)
 from .spin_motion import advance, classify, piece_of, reach, reach_of, roll_on, slide_end, spin_decay_rate, transition
 
@@ -216,6 +216,10 @@ def _pair_from_states(i, j, t, xi, yi, vxi, vyi, axi, ayi, hvi, hai, xj, yj, vxj
     cx = 0.5 * (axi - axj)
     cy = 0.5 * (ayi - ayj)
     closing_tol = 2.0 * dc * (1e-12 + 1e-14 * (hvi + hvj))
+    # Bound before solving: the relative path over the window lies in the triangle of its control points; clear of
+    # the contact circle there (margins far above round-off), the quartic has no root.
+    if path_box_clear(0.0, 0.0, dc, ax, ay, bx, by, 2.0 * cx, 2.0 * cy, window):
+        return math.inf
     tau = first_entry(cx * cx + cy * cy, 2.0 * (bx * cx + by * cy), bx * bx + by * by + 2.0 * (ax * cx + ay * cy),
                       2.0 * (ax * bx + ay * by), ax * ax + ay * ay - dc * dc, window, closing_tol)
     return t + tau
