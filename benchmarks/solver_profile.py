@@ -172,8 +172,8 @@ def _record_calls(sim: Any, states: tuple[np.ndarray, ...]) -> dict[str, Any]:
 
         undo.append(wrap(exact, "_state_at", "state", state_conv))
 
-    def select_conv(ball_t, ball_kind, ball_other, pair_t):
-        return (ball_t.copy(), ball_kind.copy(), ball_other.copy(), pair_t.copy())
+    def select_conv(*arrays):
+        return tuple(a.copy() for a in arrays)
 
     undo.append(wrap(mod, "next_event", "select", select_conv))
     kernel = mod.simulate_exact_spin if spin else mod.simulate_exact
@@ -194,7 +194,7 @@ def _record_calls(sim: Any, states: tuple[np.ndarray, ...]) -> dict[str, Any]:
     out: dict[str, Any] = {"events": events}
     for k, v in rec.items():
         if k == "select":
-            out["select"] = tuple(np.stack([c[q] for c in v]) for q in range(4)) if v else None
+            out["select"] = tuple(np.stack([c[q] for c in v]) for q in range(len(v[0]))) if v else None
         else:
             out[k] = np.array(v, dtype=float).reshape(len(v), -1) if v else np.zeros((0, 1))
     return out
@@ -342,10 +342,10 @@ def _replays() -> dict[str, Any]:
         return acc
 
     @njit
-    def select(ball_t, ball_kind, ball_other, pair_t):
+    def select(ball_t, ball_kind, ball_other, row_t, row_j):
         acc = 0.0
         for k in range(ball_t.shape[0]):
-            best, kind, bi, bj = next_event(ball_t[k], ball_kind[k], ball_other[k], pair_t[k])
+            best, kind, bi, bj = next_event(ball_t[k], ball_kind[k], ball_other[k], row_t[k], row_j[k])
             acc += kind + bi + bj
             if best < math.inf:
                 acc += best
@@ -382,23 +382,13 @@ def _replays() -> dict[str, Any]:
 
     @njit
     def alloc_linear(n, reps):
-        """The rolling kernel's allocations for ``n`` balls (as :func:`.exact.simulate_exact` makes them)."""
+        """The rolling kernel's allocations for ``n`` balls (as :func:`.exact.simulate_exact` makes them: one
+        float and one int buffer)."""
         acc = 0
         for _ in range(reps):
-            fw = np.empty((5, n))
-            iw = np.empty((5, n), np.int64)
-            p0 = np.empty((n, 2))
-            v0 = np.empty((n, 2))
-            pair_t = np.empty((n, n))
-            st = np.empty((n, 5))
-            ev_t = np.empty(64)
-            ev_int = np.empty((64, 3), np.int64)
-            ev_s = np.empty(64)
-            sc_t = np.empty(1)
-            sc_b = np.empty(1, np.int64)
-            sc_s = np.empty((1, 5))
-            acc += fw.shape[0] + iw.shape[1] + p0.shape[0] + v0.shape[0] + pair_t.shape[0] + st.shape[0] + \
-                ev_t.shape[0] + ev_int.shape[0] + ev_s.shape[0] + sc_t.shape[0] + sc_b.shape[0] + sc_s.shape[0]
+            fbuf = np.empty(15 * n + n * n + 2 * 64 + 6)
+            ibuf = np.empty(6 * n + 3 * 64 + 1, np.int64)
+            acc += fbuf.shape[0] + ibuf.shape[0]
         return acc
 
     @njit
@@ -406,33 +396,9 @@ def _replays() -> dict[str, Any]:
         """The spin kernel's allocations for ``n`` balls (as :func:`.exact_spin.simulate_exact_spin` makes them)."""
         acc = 0
         for _ in range(reps):
-            bs = np.zeros((n, 14))
-            st = np.full(n, 5, np.int64)
-            t_hit = np.full(n, -math.inf)
-            burst = np.zeros(n, np.int64)
-            sw = np.full(n, -1, np.int64)
-            sr = np.zeros(n, np.int64)
-            po = np.full(n, -1, np.int64)
-            pt = np.full(n, np.nan)
-            bt = np.full(n, math.inf)
-            bk = np.full(n, -1, np.int64)
-            bo = np.full(n, -1, np.int64)
-            pair_t = np.full((n, n), math.inf)
-            ev_t = np.empty(64)
-            ev_int = np.empty((64, 3), np.int64)
-            ev_s = np.empty(64)
-            sc_t = np.empty(1)
-            sc_b = np.empty(1, np.int64)
-            sc_s = np.empty((1, 9))
-            cv = np.zeros((2, 2))
-            cw = np.zeros((2, 3))
-            scr = np.zeros(10)
-            inv = np.empty(n, np.int64)
-            ps = np.empty((n, 6))
-            acc += bs.shape[0] + st.shape[0] + t_hit.shape[0] + burst.shape[0] + sw.shape[0] + sr.shape[0] + \
-                po.shape[0] + pt.shape[0] + bt.shape[0] + bk.shape[0] + bo.shape[0] + pair_t.shape[0] + \
-                ev_t.shape[0] + ev_int.shape[0] + ev_s.shape[0] + sc_t.shape[0] + sc_b.shape[0] + sc_s.shape[0] + \
-                cv.shape[0] + cw.shape[0] + scr.shape[0] + inv.shape[0] + ps.shape[0]
+            fbuf = np.empty(24 * n + n * n + 20 + 2 * 64 + 10)
+            ibuf = np.empty(9 * n + 3 * 64 + 1, np.int64)
+            acc += fbuf.shape[0] + ibuf.shape[0]
         return acc
 
     @njit

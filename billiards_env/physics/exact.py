@@ -17,17 +17,17 @@ import math
 import numpy as np
 from numba import njit
 
-from .aim import ray_circle_entry, ray_cushion_hit
+from .aim import ray_circle_below, ray_cushion_hit
 from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLING, STATUS_EVENT_CAP, STATUS_REST,
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
-from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
-                          reserve_states)
+from .kernel_logs import (append_event, carve, contact_cluster, count_burst, internal, next_event, pocket_holding,
+                          rescan_row, reserve_states, set_pair)
 from .motion import (distance, drag_phi, drag_time_for_phi, speed_after, stop_distance, time_for_distance,
                      time_to_stop)
 from .roots import first_entry
-from .walls import (cluster_off_walls, has_walls, path_box_clear, path_clear_of, ray_wall_hit, reflect_off, touch_wall,
+from .walls import (cluster_off_walls, has_walls, path_box_clear, ray_wall_hit, reflect_off, touch_wall,
                     wall_normal_at)
 
 #: A typed (non-literal) integer initial value: a literal 0 passed on to a compiled helper would make numba compile
@@ -105,7 +105,7 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     other = -1
     # Pockets first, so that a pocket and a cushion at the same point go to the pocket.
     for p in range(pocket_r.shape[0]):
-        d = ray_circle_entry(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
+        d = ray_circle_below(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p], best_d)
         if d < best_d:
             best_d = d
             kind = EV_POCKET
@@ -306,19 +306,25 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     floor = prm.speed_floor
     decel = a if law == ROLLING else 0.0
 
-    # Per-ball scratch rows: one allocation per type (fewer allocations per shot, fewer functions to compile).
-    fw = np.empty((5, n))
+    # Scratch and logs: one allocation per type (kernel_logs.carve), fewer allocations per shot.
+    cap = 64
+    sc_cap = 2 * n + 16 if record else 1
+    fbuf = np.empty(15 * n + n * n + 2 * cap + 6 * sc_cap)
+    ibuf = np.empty(6 * n + 3 * cap + sc_cap, np.int64)
+    fw = carve(fbuf, 0, 6, n)
     t0 = fw[0]
     t_hit = fw[1]  # time of each ball's last collision (ball or cushion)
     tstop = fw[2]
     pocket_time = fw[3]
     ball_t = fw[4]
-    iw = np.empty((5, n), np.int64)
+    row_t = fw[5]  # each pair row's earliest collision (kernel_logs.set_pair), at pair (i, row_j[i])
+    iw = carve(ibuf, 0, 6, n)
     burst = iw[0]  # collisions of each ball in its current contact cluster
     pocket_of = iw[1]
     ball_kind = iw[2]
     ball_other = iw[3]
     involved = iw[4]
+    row_j = iw[5]
     for i in range(n):
         t0[i] = 0.0
         t_hit[i] = -math.inf
@@ -329,8 +335,13 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         pocket_of[i] = -1
         ball_kind[i] = -1
         ball_other[i] = -1
-    p0 = pos.copy()
-    v0 = vel.copy()
+    p0 = carve(fbuf, 6 * n, n, 2)
+    v0 = carve(fbuf, 8 * n, n, 2)
+    for i in range(n):
+        p0[i, 0] = pos[i, 0]
+        p0[i, 1] = pos[i, 1]
+        v0[i, 0] = vel[i, 0]
+        v0[i, 1] = vel[i, 1]
     for i in range(n):
         if on_table[i]:
             _set_stop_time(i, t0, v0, tstop, law, a, k, v_min)
@@ -338,8 +349,8 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             v0[i, 0] = 0.0
             v0[i, 1] = 0.0
 
-    pair_t = np.empty((n, n))
-    st = np.empty((n, 5))  # the balls' states at the current event (x, y, vx, vy, speed)
+    pair_t = carve(fbuf, 10 * n, n, n)
+    st = carve(fbuf, 10 * n + n * n, n, 5)  # the balls' states at the current event (x, y, vx, vy, speed)
     for i in range(n):
         for j in range(n):
             pair_t[i, j] = math.inf
@@ -352,15 +363,15 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             # Two balls at rest never meet (the pair stays at inf, as _pair_time would say).
             if on_table[i] and on_table[j] and not (rest_i and v0[j, 0] == 0.0 and v0[j, 1] == 0.0):
                 pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, tstop, ball_t, radius, prm)
+        rescan_row(pair_t, row_t, row_j, i)
 
-    cap = 64
-    ev_t = np.empty(cap)
-    ev_int = np.empty((cap, 3), np.int64)
-    ev_speed = np.empty(cap)
-    sc_cap = 2 * n + 16 if record else 1
-    sc_t = np.empty(sc_cap)
-    sc_ball = np.empty(sc_cap, np.int64)
-    sc_state = np.empty((sc_cap, 5))
+    at = 15 * n + n * n
+    ev_t = fbuf[at:at + cap]
+    ev_speed = fbuf[at + cap:at + 2 * cap]
+    sc_t = fbuf[at + 2 * cap:at + 2 * cap + sc_cap]
+    sc_state = carve(fbuf, at + 2 * cap + sc_cap, sc_cap, 5)
+    ev_int = carve(ibuf, 6 * n, cap, 3)
+    sc_ball = ibuf[6 * n + 3 * cap:6 * n + 3 * cap + sc_cap]
     n_sc = _ZERO
     if record:
         for i in range(n):
@@ -371,7 +382,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     n_events = 0
     status = STATUS_REST
     while True:
-        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, pair_t)
+        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, row_t, row_j)
         if not best <= max_time:
             moving = False
             for i in range(n):
@@ -461,9 +472,12 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 n_sc += 1
             if not on_table[i]:
                 ball_t[i] = math.inf
-                for m in range(n):
-                    if m != i:
-                        pair_t[min(i, m), max(i, m)] = math.inf
+                for m in range(i):
+                    set_pair(pair_t, row_t, row_j, m, i, math.inf)
+                for m in range(i + 1, n):
+                    pair_t[i, m] = math.inf
+                row_t[i] = math.inf
+                row_j[i] = -1
                 continue
             ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r,
                                                                    prm)
@@ -489,22 +503,25 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             for m in range(n):
                 if m == i:
                     continue
-                if not on_table[m]:
-                    pair_t[min(i, m), max(i, m)] = math.inf
-                    continue
-                xm = st[m, 0]
-                ym = st[m, 1]
-                vxm = st[m, 2]
-                vym = st[m, 3]
-                if rest_i and vxm == 0.0 and vym == 0.0:  # two balls at rest never meet
-                    pair_t[min(i, m), max(i, m)] = math.inf
-                    continue
-                if i < m:
-                    pair_t[i, m] = _pair_time_s(i, m, t, xi, yi, vxi, vyi, st[i, 4], xm, ym, vxm, vym, st[m, 4],
-                                                ball_t, radius, prm)
+                tm = math.inf
+                if on_table[m]:
+                    xm = st[m, 0]
+                    ym = st[m, 1]
+                    vxm = st[m, 2]
+                    vym = st[m, 3]
+                    if rest_i and vxm == 0.0 and vym == 0.0:  # two balls at rest never meet
+                        tm = math.inf
+                    elif i < m:
+                        tm = _pair_time_s(i, m, t, xi, yi, vxi, vyi, st[i, 4], xm, ym, vxm, vym, st[m, 4], ball_t,
+                                          radius, prm)
+                    else:
+                        tm = _pair_time_s(m, i, t, xm, ym, vxm, vym, st[m, 4], xi, yi, vxi, vyi, st[i, 4], ball_t,
+                                          radius, prm)
+                if i < m:  # row i is scanned again below, once written
+                    pair_t[i, m] = tm
                 else:
-                    pair_t[m, i] = _pair_time_s(m, i, t, xm, ym, vxm, vym, st[m, 4], xi, yi, vxi, vyi, st[i, 4],
-                                                ball_t, radius, prm)
+                    set_pair(pair_t, row_t, row_j, m, i, tm)
+            rescan_row(pair_t, row_t, row_j, i)
 
     for i in range(n):
         if on_table[i]:

@@ -102,6 +102,14 @@ def ray_tip_hit(px, py, ux, uy, r, tip):
     """Distance along the ray until a ball of radius ``r`` meets the tip row ``tip`` (its centre ``r + radius``
     from the tip's centre), moving towards it; ``inf`` if it never does. A ball already that close and approaching
     meets it at once."""
+    return ray_tip_below(px, py, ux, uy, r, tip, math.inf)
+
+
+@internal
+def ray_tip_below(px, py, ux, uy, r, tip, limit):
+    """:func:`ray_tip_hit`, or ``inf`` early when the hit is surely not nearer than ``limit``: the root
+    ``c / (-b + sqrt(b^2 - c))`` is at least ``c / (-2 b)`` (a margin far above round-off), so beyond that bound
+    no square root is taken."""
     dx = px - tip[0]
     dy = py - tip[1]
     rho = r + tip[2]
@@ -111,6 +119,8 @@ def ray_tip_hit(px, py, ux, uy, r, tip):
     c = dx * dx + dy * dy - rho * rho
     if c <= 0.0:
         return 0.0
+    if c >= -2.0 * b * limit * (1.0 + 1e-12):
+        return math.inf
     disc = b * b - c
     if disc < 0.0:
         return math.inf
@@ -141,7 +151,7 @@ def ray_walls_below(px, py, ux, uy, r, segs, tips, limit):
             best = d
             wall = k
     for k in range(tips.shape[0]):
-        d = ray_tip_hit(px, py, ux, uy, r, tips[k])
+        d = ray_tip_below(px, py, ux, uy, r, tips[k], best)
         if d < best:
             best = d
             wall = segs.shape[0] + k
@@ -439,6 +449,8 @@ def _segment_distance(px, py, x0, y0, x1, y1):
 def path_box_clear(cx, cy, r, x, y, vx, vy, ax, ay, window):
     """:func:`path_clear_of` on the bounding box of the control points' triangle: a cheaper, weaker test (no
     division or square root), for the callers that run it on most of their candidates before the exact one."""
+    if not window < math.inf:
+        return False
     x1 = x + 0.5 * vx * window
     y1 = y + 0.5 * vy * window
     x2 = x + window * (vx + 0.5 * ax * window)
@@ -525,6 +537,7 @@ def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, acc_tol, far, prm):
         dy = y - prm.tips[k, 1]
         rho = r + prm.tips[k, 2]
         if math.sqrt(dx * dx + dy * dy) - rho > far or \
+                path_box_clear(prm.tips[k, 0], prm.tips[k, 1], rho, x, y, vx, vy, ax, ay, window) or \
                 path_clear_of(prm.tips[k, 0], prm.tips[k, 1], rho, x, y, vx, vy, ax, ay, window):
             continue
         tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
@@ -557,5 +570,5 @@ def on_rail_span(x, y, r, segs, n_rails, margin):
 __all__ = ["back_onto_wall", "walls_of", "on_seg", "ray_walls_hit", "ray_walls_below", "ray_line_hit", "normal_at", "path_clear_of", "wall_time", "path_wall_time",
            "on_rail_span", "has_walls", "on_segment", "ray_segment_hit", "deepest_overlap", "wall_reach",
            "wall_rewind_time", "in_mouth_region", "push_out_of_walls", "keep_on_jaw_table", "MAX_WALL_PASSES",
-           "WALL_SLOP", "GRAZE", "pushes_into_walls", "cluster_off_walls", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
+           "WALL_SLOP", "GRAZE", "pushes_into_walls", "cluster_off_walls", "ray_tip_hit", "ray_tip_below", "path_box_clear", "ray_wall_hit", "wall_normal_at",
            "touch_wall", "wall_gap", "without_push_into_walls", "reflect_off", "END_SLACK"]
