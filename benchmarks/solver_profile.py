@@ -162,13 +162,13 @@ def _record_calls(sim: Any, states: tuple[np.ndarray, ...]) -> dict[str, Any]:
 
         undo.append(wrap(exact, "_pair_time_s", "pair", pair_conv))
 
-        def ball_conv(i, t0, p0, v0, tstop, radius, *rest):
-            return (t0[i], p0[i, 0], p0[i, 1], v0[i, 0], v0[i, 1], tstop[i], radius[i])
+        def ball_conv(i, t0, p0, v0, sp0, tstop, radius, *rest):
+            return (t0[i], p0[i, 0], p0[i, 1], v0[i, 0], v0[i, 1], tstop[i], radius[i], sp0[i])
 
         undo.append(wrap(exact, "_predict_ball", "ball", ball_conv))
 
-        def state_conv(i, t, t0, p0, v0, tstop, *rest):
-            return (t, t0[i], p0[i, 0], p0[i, 1], v0[i, 0], v0[i, 1], tstop[i])
+        def state_conv(i, t, t0, p0, v0, sp0, tstop, *rest):
+            return (t, t0[i], p0[i, 0], p0[i, 1], v0[i, 0], v0[i, 1], tstop[i], sp0[i])
 
         undo.append(wrap(exact, "_state_at", "state", state_conv))
 
@@ -319,7 +319,8 @@ def _replays() -> dict[str, Any]:
             v0[0, 1] = c[k, 4]
             w[1, 0] = c[k, 5]
             w[2, 0] = c[k, 6]
-            t, kind, other = ball_l(0, w[0], p0, v0, w[1], w[2], pocket_xy, pocket_r, prm)
+            w[3, 0] = c[k, 7]
+            t, kind, other = ball_l(0, w[0], p0, v0, w[3], w[1], w[2], pocket_xy, pocket_r, prm)
             if t < math.inf:
                 acc += t + kind
         return acc
@@ -365,7 +366,8 @@ def _replays() -> dict[str, Any]:
             v0[0, 0] = c[k, 4]
             v0[0, 1] = c[k, 5]
             w[1, 0] = c[k, 6]
-            x, y, vx, vy = state_l(0, c[k, 0], w[0], p0, v0, w[1], prm.law, prm.decel, prm.drag_k)
+            w[2, 0] = c[k, 7]
+            x, y, vx, vy = state_l(0, c[k, 0], w[0], p0, v0, w[2], w[1], prm.law, prm.decel, prm.drag_k)
             acc += x + y + vx + vy
         return acc
 
@@ -386,7 +388,7 @@ def _replays() -> dict[str, Any]:
         float and one int buffer)."""
         acc = 0
         for _ in range(reps):
-            fbuf = np.empty(15 * n + n * n + 2 * 64 + 6)
+            fbuf = np.empty(16 * n + n * n + 2 * 64 + 6)
             ibuf = np.empty(6 * n + 3 * 64 + 1, np.int64)
             acc += fbuf.shape[0] + ibuf.shape[0]
         return acc

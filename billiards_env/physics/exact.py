@@ -36,11 +36,12 @@ _ZERO = np.int64(0)
 
 
 @internal
-def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
-    """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state."""
+def _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k):
+    """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state (``sp0[i]``: its speed
+    then, ``hypot`` of ``v0[i]``, kept with it so that it is not worked out again at every call)."""
     vx = v0[i, 0]
     vy = v0[i, 1]
-    s = math.hypot(vx, vy)
+    s = sp0[i]
     if s == 0.0:
         return p0[i, 0], p0[i, 1], 0.0, 0.0
     tt = min(t, tstop[i]) - t0[i]
@@ -56,33 +57,37 @@ def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
 
 
 @internal
-def _advance(i, t, t0, p0, v0, tstop, law, a, k):
+def _advance(i, t, t0, p0, v0, sp0, tstop, law, a, k):
     """Move ball ``i``'s reference state to time ``t``."""
-    x, y, vx, vy = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
+    x, y, vx, vy = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
     p0[i, 0] = x
     p0[i, 1] = y
     v0[i, 0] = vx
     v0[i, 1] = vy
+    sp0[i] = math.hypot(vx, vy)
     t0[i] = t
 
 
 @internal
-def _set_stop_time(i, t0, v0, tstop, law, a, k, v_min):
+def _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min):
+    """Ball ``i``'s stop time and speed ``sp0[i]`` after its velocity ``v0[i]`` was set (at rest below ``v_min``)."""
     s = math.hypot(v0[i, 0], v0[i, 1])
     if s <= v_min or s == 0.0:
         v0[i, 0] = 0.0
         v0[i, 1] = 0.0
+        sp0[i] = 0.0
         tstop[i] = t0[i]
     else:
+        sp0[i] = s
         tstop[i] = t0[i] + time_to_stop(s, law, a, k, v_min)
 
 
 @internal
-def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
+def _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy, pocket_r, prm):
     """Next stop, cushion or pocket event of ball ``i``: ``(time, kind, other)``."""
     vx = v0[i, 0]
     vy = v0[i, 1]
-    s = math.hypot(vx, vy)
+    s = sp0[i]
     if s == 0.0:  # at rest: only a ball placed inside a capture circle has an event (pocketed at once)
         p = pocket_holding(p0[i, 0], p0[i, 1], pocket_xy, pocket_r)
         if p >= 0:
@@ -129,14 +134,14 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
 
 
 @internal
-def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
+def _predict_pair(i, j, t, t0, p0, v0, sp0, tstop, ball_t, radius, prm):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (stop, cushion, pocket), since that event recomputes the pair anyway."""
     law = prm.law
     a = prm.decel
     k = prm.drag_k
-    xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
-    xj, yj, vxj, vyj = _state_at(j, t, t0, p0, v0, tstop, law, a, k)
+    xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
+    xj, yj, vxj, vyj = _state_at(j, t, t0, p0, v0, sp0, tstop, law, a, k)
     return _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
 
 
@@ -225,7 +230,7 @@ def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, ra
 
 
 @internal
-def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved):
+def _jam_cluster(seed, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst, prm, involved):
     """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
     member touches. Writes the members into ``involved``; returns their count."""
@@ -238,14 +243,14 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     py = pxy[1]
     for m in range(n):
         if on_table[m]:
-            px[m], py[m], _, _ = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
+            px[m], py[m], _, _ = _state_at(m, t, t0, p0, v0, sp0, tstop, law, a, k)
     count = contact_cluster(seed, px, py, radius, on_table, involved)
     total = 0.0
     mom_x = 0.0
     mom_y = 0.0
     for h in range(count):
         m = involved[h]
-        _advance(m, t, t0, p0, v0, tstop, law, a, k)
+        _advance(m, t, t0, p0, v0, sp0, tstop, law, a, k)
         total += mass[m]
         mom_x += mass[m] * v0[m, 0]
         mom_y += mass[m] * v0[m, 1]
@@ -268,7 +273,7 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
         v0[m, 0] = cx
         v0[m, 1] = cy
         burst[m] = 0
-        _set_stop_time(m, t0, v0, tstop, law, a, k, prm.min_speed)
+        _set_stop_time(m, t0, v0, sp0, tstop, law, a, k, prm.min_speed)
     return count
 
 
@@ -309,15 +314,16 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     # Scratch and logs: one allocation per type (kernel_logs.carve), fewer allocations per shot.
     cap = 64
     sc_cap = 2 * n + 16 if record else 1
-    fbuf = np.empty(15 * n + n * n + 2 * cap + 6 * sc_cap)
+    fbuf = np.empty(16 * n + n * n + 2 * cap + 6 * sc_cap)
     ibuf = np.empty(6 * n + 3 * cap + sc_cap, np.int64)
-    fw = carve(fbuf, 0, 6, n)
+    fw = carve(fbuf, 0, 7, n)
     t0 = fw[0]
     t_hit = fw[1]  # time of each ball's last collision (ball or cushion)
     tstop = fw[2]
     pocket_time = fw[3]
     ball_t = fw[4]
     row_t = fw[5]  # each pair row's earliest collision (kernel_logs.set_pair), at pair (i, row_j[i])
+    sp0 = fw[6]  # each ball's speed at its last event: hypot of v0 (set with it)
     iw = carve(ibuf, 0, 6, n)
     burst = iw[0]  # collisions of each ball in its current contact cluster
     pocket_of = iw[1]
@@ -335,8 +341,8 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         pocket_of[i] = -1
         ball_kind[i] = -1
         ball_other[i] = -1
-    p0 = carve(fbuf, 6 * n, n, 2)
-    v0 = carve(fbuf, 8 * n, n, 2)
+    p0 = carve(fbuf, 7 * n, n, 2)
+    v0 = carve(fbuf, 9 * n, n, 2)
     for i in range(n):
         p0[i, 0] = pos[i, 0]
         p0[i, 1] = pos[i, 1]
@@ -344,28 +350,30 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         v0[i, 1] = vel[i, 1]
     for i in range(n):
         if on_table[i]:
-            _set_stop_time(i, t0, v0, tstop, law, a, k, v_min)
+            _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min)
         else:
             v0[i, 0] = 0.0
             v0[i, 1] = 0.0
+            sp0[i] = 0.0
 
-    pair_t = carve(fbuf, 10 * n, n, n)
-    st = carve(fbuf, 10 * n + n * n, n, 5)  # the balls' states at the current event (x, y, vx, vy, speed)
+    pair_t = carve(fbuf, 11 * n, n, n)
+    st = carve(fbuf, 11 * n + n * n, n, 5)  # the balls' states at the current event (x, y, vx, vy, speed)
     for i in range(n):
         for j in range(n):
             pair_t[i, j] = math.inf
     for i in range(n):
         if on_table[i]:
-            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm)
+            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy,
+                                                                   pocket_r, prm)
     for i in range(n):
         rest_i = v0[i, 0] == 0.0 and v0[i, 1] == 0.0
         for j in range(i + 1, n):
             # Two balls at rest never meet (the pair stays at inf, as _pair_time would say).
             if on_table[i] and on_table[j] and not (rest_i and v0[j, 0] == 0.0 and v0[j, 1] == 0.0):
-                pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, tstop, ball_t, radius, prm)
+                pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, sp0, tstop, ball_t, radius, prm)
         rescan_row(pair_t, row_t, row_j, i)
 
-    at = 15 * n + n * n
+    at = 16 * n + n * n
     ev_t = fbuf[at:at + cap]
     ev_speed = fbuf[at + cap:at + 2 * cap]
     sc_t = fbuf[at + 2 * cap:at + 2 * cap + sc_cap]
@@ -402,26 +410,26 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         involved[0] = bi
         speed = 0.0
         if kind == EV_COLLISION:
-            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
-            _advance(bj, t, t0, p0, v0, tstop, law, a, k)
+            _advance(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
+            _advance(bj, t, t0, p0, v0, sp0, tstop, law, a, k)
             dx = p0[bi, 0] - p0[bj, 0]
             dy = p0[bi, 1] - p0[bj, 1]
             dist = math.hypot(dx, dy)
             clustered = count_burst(bi, t, t_hit, burst) | count_burst(bj, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS or burst[bj] > JAM_EVENTS:
-                n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
+                n_inv = _jam_cluster(bi, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst, prm, involved)
                 kind = EV_JAM
                 bj = n_inv
             else:
                 if dist > 0.0:
                     speed = resolve_ball_ball(v0, bi, bj, dx / dist, dy / dist, dist, mass[bi], mass[bj], e_b,
                                               decel, floor, clustered)
-                _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
-                _set_stop_time(bj, t0, v0, tstop, law, a, k, v_min)
+                _set_stop_time(bi, t0, v0, sp0, tstop, law, a, k, v_min)
+                _set_stop_time(bj, t0, v0, sp0, tstop, law, a, k, v_min)
                 involved[1] = bj
                 n_inv = 2
         elif kind == EV_CUSHION:
-            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
+            _advance(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
             r = radius[bi]
             if has_walls(prm):
                 p0[bi, 0], p0[bi, 1] = touch_wall(p0[bi, 0], p0[bi, 1], r, bj, prm)
@@ -435,7 +443,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 p0[bi, 1] = prm.width - r
             count_burst(bi, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS:
-                n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
+                n_inv = _jam_cluster(bi, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst, prm, involved)
                 kind = EV_JAM
                 bj = n_inv
             else:
@@ -444,20 +452,22 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                     speed = reflect_off(v0, bi, nx, ny, e_c)
                 else:
                     speed = resolve_cushion(v0, bi, bj, e_c)
-                _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
+                _set_stop_time(bi, t0, v0, sp0, tstop, law, a, k, v_min)
         elif kind == EV_POCKET:
-            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
-            speed = math.hypot(v0[bi, 0], v0[bi, 1])
+            _advance(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
+            speed = sp0[bi]
             on_table[bi] = False
             v0[bi, 0] = 0.0
             v0[bi, 1] = 0.0
+            sp0[bi] = 0.0
             tstop[bi] = t
             pocket_of[bi] = bj
             pocket_time[bi] = t
         else:  # EV_STOP
-            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
+            _advance(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
             v0[bi, 0] = 0.0
             v0[bi, 1] = 0.0
+            sp0[bi] = 0.0
             tstop[bi] = t
 
         ev_t, ev_int, ev_speed = append_event(ev_t, ev_int, ev_speed, n_events, t, kind, bi, bj, speed)
@@ -479,8 +489,8 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 row_t[i] = math.inf
                 row_j[i] = -1
                 continue
-            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r,
-                                                                   prm)
+            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy,
+                                                                   pocket_r, prm)
             if not have_states:  # every ball's state at t, once for all the involved balls' pairs
                 for m in range(n):
                     if not on_table[m]:
@@ -492,7 +502,8 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                         st[m, 3] = 0.0
                         st[m, 4] = 0.0
                     else:
-                        st[m, 0], st[m, 1], st[m, 2], st[m, 3] = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
+                        st[m, 0], st[m, 1], st[m, 2], st[m, 3] = _state_at(m, t, t0, p0, v0, sp0, tstop, law, a,
+                                                                           k)
                         st[m, 4] = math.hypot(st[m, 2], st[m, 3])
                 have_states = True
             xi = st[i, 0]
@@ -525,7 +536,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
 
     for i in range(n):
         if on_table[i]:
-            x, y, vx, vy = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
+            x, y, vx, vy = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
             pos[i, 0] = x
             pos[i, 1] = y
             vel[i, 0] = vx
