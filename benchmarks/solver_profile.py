@@ -384,13 +384,23 @@ def _replays() -> dict[str, Any]:
 
     @njit
     def alloc_linear(n, reps):
-        """The rolling kernel's allocations for ``n`` balls (as :func:`.exact.simulate_exact` makes them: one
-        float and one int buffer)."""
+        """The rolling kernel's allocations for ``n`` balls (as :func:`.exact.simulate_exact` makes them)."""
         acc = 0
         for _ in range(reps):
-            fbuf = np.empty(16 * n + n * n + 2 * 64 + 6)
-            ibuf = np.empty(6 * n + 3 * 64 + 1, np.int64)
-            acc += fbuf.shape[0] + ibuf.shape[0]
+            fw = np.empty((7, n))
+            iw = np.empty((6, n), np.int64)
+            p0 = np.empty((n, 2))
+            v0 = np.empty((n, 2))
+            pair_t = np.empty((n, n))
+            st = np.empty((n, 5))
+            ev_t = np.empty(64)
+            ev_int = np.empty((64, 3), np.int64)
+            ev_s = np.empty(64)
+            sc_t = np.empty(1)
+            sc_b = np.empty(1, np.int64)
+            sc_s = np.empty((1, 5))
+            acc += fw.shape[0] + iw.shape[1] + p0.shape[0] + v0.shape[0] + pair_t.shape[0] + st.shape[0] + \
+                ev_t.shape[0] + ev_int.shape[0] + ev_s.shape[0] + sc_t.shape[0] + sc_b.shape[0] + sc_s.shape[0]
         return acc
 
     @njit

@@ -22,7 +22,7 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLIN
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
-from .kernel_logs import (append_event, carve, contact_cluster, count_burst, internal, next_event, pocket_holding,
+from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
                           rescan_row, reserve_states, set_pair)
 from .motion import (distance, drag_phi, drag_time_for_phi, speed_after, stop_distance, time_for_distance,
                      time_to_stop)
@@ -58,13 +58,20 @@ def _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k):
 
 @internal
 def _advance(i, t, t0, p0, v0, sp0, tstop, law, a, k):
-    """Move ball ``i``'s reference state to time ``t``."""
+    """Move ball ``i``'s reference state to time ``t`` (its speed ``sp0[i]`` too: :func:`_advance_only`)."""
+    _advance_only(i, t, t0, p0, v0, sp0, tstop, law, a, k)
+    sp0[i] = math.hypot(v0[i, 0], v0[i, 1])
+
+
+@internal
+def _advance_only(i, t, t0, p0, v0, sp0, tstop, law, a, k):
+    """:func:`_advance` leaving ``sp0[i]`` stale: for an event that sets the velocity (and with it the speed) anew
+    before anything reads the speed (a collision, a cushion, a stop; a jam sets it first)."""
     x, y, vx, vy = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
     p0[i, 0] = x
     p0[i, 1] = y
     v0[i, 0] = vx
     v0[i, 1] = vy
-    sp0[i] = math.hypot(vx, vy)
     t0[i] = t
 
 
@@ -174,12 +181,10 @@ def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, ra
     if sj > 0.0:
         reach += distance(sj, window, law, a, k)
     lim = reach * (1.0 + 1e-9) + 1e-12
-    # The same test without the square root first where it is clear-cut (margins far above round-off, so both say
-    # the same): a squared gap beyond ((dc + lim) (1 + 1e-12))^2 (1 + 1e-12) is beyond dc + lim after hypot too.
+    # On squares, no square root (margins far above round-off): a pair left in by round-off at the margin has no
+    # root in the window, which the tests below or the root finder say.
     far = (dc + lim) * (1.0 + 1e-12)
     if ax * ax + ay * ay > far * far * (1.0 + 1e-12):
-        return math.inf
-    if math.hypot(ax, ay) - dc > lim:
         return math.inf
     if si == 0.0 or sj == 0.0:
         # One ball at rest: the other's centre runs along a straight segment of length ``reach`` (its direction is
@@ -190,13 +195,16 @@ def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, ra
         else:
             rx, ry, ux, uy = ax, ay, vxj / sj, vyj / sj
         along = rx * ux + ry * uy
+        clear = dc * (1.0 + 1e-9) + 1e-9
         if along <= 0.0:
-            gap = math.hypot(rx, ry)
+            if rx * rx + ry * ry > clear * clear:  # (on squares: the same margins, no square root)
+                return math.inf
         elif along >= reach:
-            gap = math.hypot(rx - ux * reach, ry - uy * reach)
-        else:
-            gap = abs(rx * uy - ry * ux)
-        if gap > dc * (1.0 + 1e-9) + 1e-9:
+            ex = rx - ux * reach
+            ey = ry - uy * reach
+            if ex * ex + ey * ey > clear * clear:
+                return math.inf
+        elif abs(rx * uy - ry * ux) > clear:
             return math.inf
     bx = vxi - vxj
     by = vyi - vyj
@@ -250,7 +258,7 @@ def _jam_cluster(seed, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst,
     mom_y = 0.0
     for h in range(count):
         m = involved[h]
-        _advance(m, t, t0, p0, v0, sp0, tstop, law, a, k)
+        _advance_only(m, t, t0, p0, v0, sp0, tstop, law, a, k)  # (its velocity and speed are set below)
         total += mass[m]
         mom_x += mass[m] * v0[m, 0]
         mom_y += mass[m] * v0[m, 1]
@@ -311,12 +319,11 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     floor = prm.speed_floor
     decel = a if law == ROLLING else 0.0
 
-    # Scratch and logs: one allocation per type (kernel_logs.carve), fewer allocations per shot.
+    # Per-ball scratch rows: one allocation per type (fewer allocations per shot, fewer functions to compile). (Not
+    # one buffer for everything, as the spin kernel's: here its views' reshapes cost more than the allocations.)
     cap = 64
     sc_cap = 2 * n + 16 if record else 1
-    fbuf = np.empty(16 * n + n * n + 2 * cap + 6 * sc_cap)
-    ibuf = np.empty(6 * n + 3 * cap + sc_cap, np.int64)
-    fw = carve(fbuf, 0, 7, n)
+    fw = np.empty((7, n))
     t0 = fw[0]
     t_hit = fw[1]  # time of each ball's last collision (ball or cushion)
     tstop = fw[2]
@@ -324,7 +331,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     ball_t = fw[4]
     row_t = fw[5]  # each pair row's earliest collision (kernel_logs.set_pair), at pair (i, row_j[i])
     sp0 = fw[6]  # each ball's speed at its last event: hypot of v0 (set with it)
-    iw = carve(ibuf, 0, 6, n)
+    iw = np.empty((6, n), np.int64)
     burst = iw[0]  # collisions of each ball in its current contact cluster
     pocket_of = iw[1]
     ball_kind = iw[2]
@@ -341,13 +348,8 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         pocket_of[i] = -1
         ball_kind[i] = -1
         ball_other[i] = -1
-    p0 = carve(fbuf, 7 * n, n, 2)
-    v0 = carve(fbuf, 9 * n, n, 2)
-    for i in range(n):
-        p0[i, 0] = pos[i, 0]
-        p0[i, 1] = pos[i, 1]
-        v0[i, 0] = vel[i, 0]
-        v0[i, 1] = vel[i, 1]
+    p0 = pos.copy()
+    v0 = vel.copy()
     for i in range(n):
         if on_table[i]:
             _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min)
@@ -356,8 +358,8 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             v0[i, 1] = 0.0
             sp0[i] = 0.0
 
-    pair_t = carve(fbuf, 11 * n, n, n)
-    st = carve(fbuf, 11 * n + n * n, n, 5)  # the balls' states at the current event (x, y, vx, vy, speed)
+    pair_t = np.empty((n, n))
+    st = np.empty((n, 5))  # the balls' states at the current event (x, y, vx, vy, speed)
     for i in range(n):
         for j in range(n):
             pair_t[i, j] = math.inf
@@ -373,13 +375,12 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, sp0, tstop, ball_t, radius, prm)
         rescan_row(pair_t, row_t, row_j, i)
 
-    at = 16 * n + n * n
-    ev_t = fbuf[at:at + cap]
-    ev_speed = fbuf[at + cap:at + 2 * cap]
-    sc_t = fbuf[at + 2 * cap:at + 2 * cap + sc_cap]
-    sc_state = carve(fbuf, at + 2 * cap + sc_cap, sc_cap, 5)
-    ev_int = carve(ibuf, 6 * n, cap, 3)
-    sc_ball = ibuf[6 * n + 3 * cap:6 * n + 3 * cap + sc_cap]
+    ev_t = np.empty(cap)
+    ev_int = np.empty((cap, 3), np.int64)
+    ev_speed = np.empty(cap)
+    sc_t = np.empty(sc_cap)
+    sc_ball = np.empty(sc_cap, np.int64)
+    sc_state = np.empty((sc_cap, 5))
     n_sc = _ZERO
     if record:
         for i in range(n):
@@ -410,13 +411,15 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         involved[0] = bi
         speed = 0.0
         if kind == EV_COLLISION:
-            _advance(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
-            _advance(bj, t, t0, p0, v0, sp0, tstop, law, a, k)
+            _advance_only(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
+            _advance_only(bj, t, t0, p0, v0, sp0, tstop, law, a, k)
             dx = p0[bi, 0] - p0[bj, 0]
             dy = p0[bi, 1] - p0[bj, 1]
             dist = math.hypot(dx, dy)
             clustered = count_burst(bi, t, t_hit, burst) | count_burst(bj, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS or burst[bj] > JAM_EVENTS:
+                sp0[bi] = math.hypot(v0[bi, 0], v0[bi, 1])
+                sp0[bj] = math.hypot(v0[bj, 0], v0[bj, 1])
                 n_inv = _jam_cluster(bi, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst, prm, involved)
                 kind = EV_JAM
                 bj = n_inv
@@ -429,7 +432,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 involved[1] = bj
                 n_inv = 2
         elif kind == EV_CUSHION:
-            _advance(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
+            _advance_only(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
             r = radius[bi]
             if has_walls(prm):
                 p0[bi, 0], p0[bi, 1] = touch_wall(p0[bi, 0], p0[bi, 1], r, bj, prm)
@@ -443,6 +446,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 p0[bi, 1] = prm.width - r
             count_burst(bi, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS:
+                sp0[bi] = math.hypot(v0[bi, 0], v0[bi, 1])
                 n_inv = _jam_cluster(bi, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst, prm, involved)
                 kind = EV_JAM
                 bj = n_inv
@@ -464,7 +468,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             pocket_of[bi] = bj
             pocket_time[bi] = t
         else:  # EV_STOP
-            _advance(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
+            _advance_only(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
             v0[bi, 0] = 0.0
             v0[bi, 1] = 0.0
             sp0[bi] = 0.0

@@ -205,13 +205,12 @@ def _pair_from_states(i, j, t, xi, yi, vxi, vyi, axi, ayi, hvi, hai, xj, yj, vxj
     dc = radius[i] + radius[j]
     ax = xi - xj
     ay = yi - yj
-    # Cull pairs too far apart to meet within the window (spin_motion.reach_of, from the hypots given); on
-    # squares first where clear-cut (margins far above round-off: beyond there, beyond after hypot too).
+    # Cull pairs too far apart to meet within the window (spin_motion.reach_of, from the hypots given), on squares
+    # (margins far above round-off: a pair left in by round-off at the margin has no root, which the bound below or
+    # the root finder says).
     lim = (reach_of(window, hvi, hai) + reach_of(window, hvj, haj)) * (1.0 + 1e-9) + 1e-12
     far = (dc + lim) * (1.0 + 1e-12)
     if ax * ax + ay * ay > far * far * (1.0 + 1e-12):
-        return math.inf
-    if math.hypot(ax, ay) - dc > lim:
         return math.inf
     bx = vxi - vxj
     by = vyi - vyj
