@@ -691,8 +691,11 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                         ps[m, 1] = y
                         ps[m, 2] = vx
                         ps[m, 3] = vy
-                        ps[m, 4] = math.hypot(vx, vy)
-                        ps[m, 5] = math.hypot(bs[m, AX], bs[m, AY])
+                        # (hypot of zeros is 0: not called for the balls at rest, most of them)
+                        ps[m, 4] = math.hypot(vx, vy) if vx != 0.0 or vy != 0.0 else 0.0
+                        axm = bs[m, AX]
+                        aym = bs[m, AY]
+                        ps[m, 5] = math.hypot(axm, aym) if axm != 0.0 or aym != 0.0 else 0.0
                 have_states = True
             for m in range(n):
                 if m == i:
