@@ -1,4 +1,4 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|ladder|games] [--write | --out DIR]``,
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|ladder|games|profile] [--write | --out DIR]``,
 from the repository root.
 
 It prints what it measured and nothing else; reports are written only when asked: ``--write`` updates the
@@ -9,7 +9,8 @@ Without ``--only`` every part runs: the accuracy suite (speed against error, ``s
 then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``), then the
 spin model's speed (against pooltool) and speed against error (``spin.md/.json``), then the batch API, the native
 vector env, the search player, the single env and the first call against the targets of issue 12
-(``batch.md/.json``).
+(``batch.md/.json``). ``--only profile`` (not part of the default run) profiles the exact solvers per event
+(``benchmarks/solver_profile.py``, ``solver_profile.md/.json``).
 ``--quick`` runs a small configuration of everything (about a minute); the full run takes about four minutes on
 two cores. The comparisons with pooltool run where pooltool is installed (``.venv-pooltool``); a missing pooltool
 is installed only with ``--with-pooltool`` (about 734 MB), otherwise those comparisons are left out with a line
@@ -22,7 +23,9 @@ import argparse
 import time
 from pathlib import Path
 
-SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players", "ladder", "games")
+SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players", "ladder", "games", "profile")
+#: Sections run only when named with ``--only``.
+ON_REQUEST = ("profile",)
 #: Where ``--write`` puts the reports (the committed ones).
 DEFAULT_OUT = Path("docs/bench")
 
@@ -62,11 +65,11 @@ def main(argv: list[str] | None = None) -> int:
     out: Path | None = DEFAULT_OUT if args.write else args.out
     if args.render_only and out is None:
         ap.error("--render-only re-writes reports: give --write (docs/bench) or --out DIR")
-    only = tuple(args.only) if args.only else SECTIONS
+    only = tuple(args.only) if args.only else tuple(s for s in SECTIONS if s not in ON_REQUEST)
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, batch, games, ladder, players, speed, spin
+    from . import accuracy, batch, games, ladder, players, solver_profile, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -110,6 +113,8 @@ def main(argv: list[str] | None = None) -> int:
         ladder.main(out, quick=args.quick)
     if "games" in only:
         games.main(out, quick=args.quick)
+    if "profile" in only:
+        solver_profile.main(out, quick=args.quick)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; "
         + (f"reports in {out}" if out is not None else "no report written (--write or --out DIR to write them)"))
     return 0

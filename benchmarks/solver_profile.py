@@ -39,7 +39,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from .common import log, machine_info
+from .common import log, machine_info, machine_markdown
 
 SCENES = ("one ball", "9-ball run-out", "break", "8-ball")
 MODELS = ("rolling", "spin")
@@ -549,8 +549,9 @@ def report(results: dict[str, Any]) -> str:
     return "\n".join(lines)
 
 
-def run(quick: bool = False, shots: int | None = None) -> dict[str, Any]:
-    sizes = _sizes(quick)
+def run(quick: bool = False, shots: int | None = None, sizes: dict[str, int] | None = None) -> dict[str, Any]:
+    """Profile every scene under both models: ``{"sizes", "machine", "results": {"scene/model": ...}}``."""
+    sizes = dict(sizes or _sizes(quick))
     if shots:
         sizes["shots"] = shots
     log("[profile] building the scenes")
@@ -573,6 +574,9 @@ def main(out: Path | None = None, quick: bool = False, shots: int | None = None)
     if out is not None:
         out.mkdir(parents=True, exist_ok=True)
         (out / "solver_profile.json").write_text(json.dumps(res, indent=1, default=str))
+        (out / "solver_profile.md").write_text(
+            "# Where an event of the exact solvers goes\n\n`python -m benchmarks --only profile`; "
+            f"{machine_markdown(res['machine'])} The method: benchmarks/solver_profile.py.\n" + text + "\n")
     return res
 
 
