@@ -1,4 +1,4 @@
-"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|ladder|games|cold_start] [--write | --out DIR]``,
+"""``python -m benchmarks [--quick] [--only speed|env|accuracy|pooltool|latency|spin|batch|players|ladder|games|cold_start|profile] [--write | --out DIR]``,
 from the repository root.
 
 It prints what it measured and nothing else; reports are written only when asked: ``--write`` updates the
@@ -9,7 +9,8 @@ Without ``--only`` every part runs: the accuracy suite (speed against error, ``s
 then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``), then the
 spin model's speed (against pooltool) and speed against error (``spin.md/.json``), then the batch API, the native
 vector env, the search player, the single env and the first call against the targets of issue 12
-(``batch.md/.json``).
+(``batch.md/.json``). ``--only profile`` (not part of the default run) profiles the exact solvers per event
+(``benchmarks/solver_profile.py``, ``solver_profile.md/.json``).
 ``--only cold_start`` (not part of the default run: it compiles every kernel from an empty cache, about ten
 minutes) times the set-up's compile step and the first step of an env after it and on an empty cache
 (``cold_start.md/.json``).
@@ -26,9 +27,9 @@ import time
 from pathlib import Path
 
 SECTIONS = ("speed", "env", "accuracy", "pooltool", "latency", "spin", "batch", "players", "ladder", "games",
-            "cold_start")
+            "cold_start", "profile")
 #: Sections that run only when named with ``--only``.
-ON_REQUEST = ("cold_start",)
+ON_REQUEST = ("cold_start", "profile")
 #: Where ``--write`` puts the reports (the committed ones).
 DEFAULT_OUT = Path("docs/bench")
 
@@ -72,7 +73,7 @@ def main(argv: list[str] | None = None) -> int:
     t0 = time.perf_counter()
     # Import everything now: other people may be editing the engine while a long run goes on, and modules
     # imported later would then not match the ones already loaded.
-    from . import accuracy, batch, cold_start, games, ladder, players, speed, spin
+    from . import accuracy, batch, cold_start, games, ladder, players, solver_profile, speed, spin
     from .common import log
     try:
         import billiards_env.envs  # noqa: F401
@@ -120,6 +121,8 @@ def main(argv: list[str] | None = None) -> int:
         games.main(out, quick=args.quick)
     if "cold_start" in only:
         cold_start.main(out, quick=args.quick)
+    if "profile" in only:
+        solver_profile.main(out, quick=args.quick)
     log(f"[bench] done in {time.perf_counter() - t0:.0f} s; "
         + (f"reports in {out}" if out is not None else "no report written (--write or --out DIR to write them)"))
     return 0

@@ -58,6 +58,14 @@ def ray_circle_entry(px: float, py: float, ux: float, uy: float, cx: float, cy: 
     The root ``t = c / (-b + sqrt(b^2 - c))`` of ``t^2 + 2 b t + c = 0`` is the smaller one, written without the
     cancellation of ``-b - sqrt(...)``.
     """
+    return ray_circle_below(px, py, ux, uy, cx, cy, r, math.inf)
+
+
+@njit(cache=True)
+def ray_circle_below(px: float, py: float, ux: float, uy: float, cx: float, cy: float, r: float,
+                     limit: float) -> float:
+    """:func:`ray_circle_entry`, or ``inf`` early when the entry is surely not nearer than ``limit``: the root is at
+    least ``c / (-2 b)`` (a margin far above round-off), so beyond that bound no square root is taken."""
     dx = px - cx
     dy = py - cy
     c = dx * dx + dy * dy - r * r
@@ -65,6 +73,8 @@ def ray_circle_entry(px: float, py: float, ux: float, uy: float, cx: float, cy: 
         return 0.0
     b = ux * dx + uy * dy
     if b >= 0.0:
+        return math.inf
+    if c >= -2.0 * b * limit * (1.0 + 1e-12):
         return math.inf
     disc = b * b - c
     if disc < 0.0:
@@ -633,7 +643,7 @@ def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table,
 
 __all__ = [
     "WINDOW_SAMPLES", "window_of", "pocket_windows", "dot2", "cos_between", "segment_distance",
-    "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "ray_circle_entry",
+    "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "ray_circle_entry", "ray_circle_below",
     "ray_cushion_hit", "cushion_ahead", "bounce_off", "ray_cushion_distance", "ray_circle_entries", "ray_cushion_distances", "aim_angle",
     "direction_vector", "wrap_angle", "angular_radius", "ghost_ball_position", "cut_cosine", "cut_angle",
     "offset_aim_angle", "aim_offset", "pocket_window", "pocket_mouth_axes", "pocket_bearings", "segment_blocked",

@@ -17,16 +17,18 @@ import math
 import numpy as np
 from numba import njit
 
-from .aim import ray_circle_entry, ray_cushion_hit
+from .aim import ray_circle_below, ray_cushion_hit
 from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLING, STATUS_EVENT_CAP, STATUS_REST,
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
 from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
-                          reserve_states)
-from .motion import distance, drag_phi, drag_time_for_phi, speed_after, time_for_distance, time_to_stop
+                          rescan_row, reserve_states, set_pair)
+from .motion import (distance, drag_phi, drag_time_for_phi, speed_after, stop_distance, time_for_distance,
+                     time_to_stop)
 from .roots import first_entry
-from .walls import cluster_off_walls, has_walls, ray_wall_hit, reflect_off, touch_wall, wall_normal_at
+from .walls import (cluster_off_walls, has_walls, path_box_clear, ray_wall_hit, reflect_off, touch_wall,
+                    wall_normal_at)
 
 #: A typed (non-literal) integer initial value: a literal 0 passed on to a compiled helper would make numba compile
 #: a second specialisation of it for the literal.
@@ -34,11 +36,12 @@ _ZERO = np.int64(0)
 
 
 @internal
-def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
-    """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state."""
+def _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k):
+    """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state (``sp0[i]``: its speed
+    then, ``hypot`` of ``v0[i]``, kept with it so that it is not worked out again at every call)."""
     vx = v0[i, 0]
     vy = v0[i, 1]
-    s = math.hypot(vx, vy)
+    s = sp0[i]
     if s == 0.0:
         return p0[i, 0], p0[i, 1], 0.0, 0.0
     tt = min(t, tstop[i]) - t0[i]
@@ -54,9 +57,17 @@ def _state_at(i, t, t0, p0, v0, tstop, law, a, k):
 
 
 @internal
-def _advance(i, t, t0, p0, v0, tstop, law, a, k):
-    """Move ball ``i``'s reference state to time ``t``."""
-    x, y, vx, vy = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
+def _advance(i, t, t0, p0, v0, sp0, tstop, law, a, k):
+    """Move ball ``i``'s reference state to time ``t`` (its speed ``sp0[i]`` too: :func:`_advance_only`)."""
+    _advance_only(i, t, t0, p0, v0, sp0, tstop, law, a, k)
+    sp0[i] = math.hypot(v0[i, 0], v0[i, 1])
+
+
+@internal
+def _advance_only(i, t, t0, p0, v0, sp0, tstop, law, a, k):
+    """:func:`_advance` leaving ``sp0[i]`` stale: for an event that sets the velocity (and with it the speed) anew
+    before anything reads the speed (a collision, a cushion, a stop; a jam sets it first)."""
+    x, y, vx, vy = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
     p0[i, 0] = x
     p0[i, 1] = y
     v0[i, 0] = vx
@@ -65,22 +76,25 @@ def _advance(i, t, t0, p0, v0, tstop, law, a, k):
 
 
 @internal
-def _set_stop_time(i, t0, v0, tstop, law, a, k, v_min):
+def _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min):
+    """Ball ``i``'s stop time and speed ``sp0[i]`` after its velocity ``v0[i]`` was set (at rest below ``v_min``)."""
     s = math.hypot(v0[i, 0], v0[i, 1])
     if s <= v_min or s == 0.0:
         v0[i, 0] = 0.0
         v0[i, 1] = 0.0
+        sp0[i] = 0.0
         tstop[i] = t0[i]
     else:
+        sp0[i] = s
         tstop[i] = t0[i] + time_to_stop(s, law, a, k, v_min)
 
 
 @internal
-def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
+def _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy, pocket_r, prm):
     """Next stop, cushion or pocket event of ball ``i``: ``(time, kind, other)``."""
     vx = v0[i, 0]
     vy = v0[i, 1]
-    s = math.hypot(vx, vy)
+    s = sp0[i]
     if s == 0.0:  # at rest: only a ball placed inside a capture circle has an event (pocketed at once)
         p = pocket_holding(p0[i, 0], p0[i, 1], pocket_xy, pocket_r)
         if p >= 0:
@@ -94,18 +108,22 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
     x = p0[i, 0]
     y = p0[i, 1]
     r = radius[i]
+    # Hits beyond the path left before the ball stops are never its next event (the stop comes first): they are
+    # left out by starting the search there (margins far above round-off; inf where the ball never stops).
     best_d = math.inf
+    if tstop[i] < math.inf:
+        best_d = stop_distance(s, law, a, k, prm.min_speed) * (1.0 + 1e-9) + 1e-12
     kind = -1
     other = -1
     # Pockets first, so that a pocket and a cushion at the same point go to the pocket.
     for p in range(pocket_r.shape[0]):
-        d = ray_circle_entry(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p])
+        d = ray_circle_below(x, y, ux, uy, pocket_xy[p, 0], pocket_xy[p, 1], pocket_r[p], best_d)
         if d < best_d:
             best_d = d
             kind = EV_POCKET
             other = p
-    if has_walls(prm):  # a jaw table: rails, jaw faces and tips
-        d, cush = ray_wall_hit(x, y, ux, uy, r, prm)
+    if has_walls(prm):  # a jaw table: rails, jaw faces and tips (only those nearer than the best so far)
+        d, cush = ray_wall_hit(x, y, ux, uy, r, prm, best_d)
     else:
         d, cush = ray_cushion_hit(x, y, ux, uy, prm.length, prm.width, r)
     if d < best_d:
@@ -123,14 +141,14 @@ def _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm):
 
 
 @internal
-def _predict_pair(i, j, t, t0, p0, v0, tstop, ball_t, radius, prm):
+def _predict_pair(i, j, t, t0, p0, v0, sp0, tstop, ball_t, radius, prm):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (stop, cushion, pocket), since that event recomputes the pair anyway."""
     law = prm.law
     a = prm.decel
     k = prm.drag_k
-    xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
-    xj, yj, vxj, vyj = _state_at(j, t, t0, p0, v0, tstop, law, a, k)
+    xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
+    xj, yj, vxj, vyj = _state_at(j, t, t0, p0, v0, sp0, tstop, law, a, k)
     return _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
 
 
@@ -163,12 +181,10 @@ def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, ra
     if sj > 0.0:
         reach += distance(sj, window, law, a, k)
     lim = reach * (1.0 + 1e-9) + 1e-12
-    # The same test without the square root first where it is clear-cut (margins far above round-off, so both say
-    # the same): a squared gap beyond ((dc + lim) (1 + 1e-12))^2 (1 + 1e-12) is beyond dc + lim after hypot too.
+    # On squares, no square root (margins far above round-off): a pair left in by round-off at the margin has no
+    # root in the window, which the tests below or the root finder say.
     far = (dc + lim) * (1.0 + 1e-12)
     if ax * ax + ay * ay > far * far * (1.0 + 1e-12):
-        return math.inf
-    if math.hypot(ax, ay) - dc > lim:
         return math.inf
     if si == 0.0 or sj == 0.0:
         # One ball at rest: the other's centre runs along a straight segment of length ``reach`` (its direction is
@@ -179,13 +195,16 @@ def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, ra
         else:
             rx, ry, ux, uy = ax, ay, vxj / sj, vyj / sj
         along = rx * ux + ry * uy
+        clear = dc * (1.0 + 1e-9) + 1e-9
         if along <= 0.0:
-            gap = math.hypot(rx, ry)
+            if rx * rx + ry * ry > clear * clear:  # (on squares: the same margins, no square root)
+                return math.inf
         elif along >= reach:
-            gap = math.hypot(rx - ux * reach, ry - uy * reach)
-        else:
-            gap = abs(rx * uy - ry * ux)
-        if gap > dc * (1.0 + 1e-9) + 1e-9:
+            ex = rx - ux * reach
+            ey = ry - uy * reach
+            if ex * ex + ey * ey > clear * clear:
+                return math.inf
+        elif abs(rx * uy - ry * ux) > clear:
             return math.inf
     bx = vxi - vxj
     by = vyi - vyj
@@ -204,6 +223,10 @@ def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, ra
         c4 = cx * cx + cy * cy
         c3 = 2.0 * (bx * cx + by * cy)
         c2 = bx * bx + by * by + 2.0 * (ax * cx + ay * cy)
+        # Bound before solving: the relative path A + B t + C t^2 over the window lies in the triangle of its control
+        # points; clear of the contact circle there (margins far above round-off), the quartic has no root.
+        if path_box_clear(0.0, 0.0, dc, ax, ay, bx, by, 2.0 * cx, 2.0 * cy, window):
+            return math.inf
         tau = first_entry(c4, c3, c2, c1, c0, window, closing_tol)
         return t + tau
     # Drag or no friction: both balls follow p + v * phi(t) with the same phi, so |A + B phi|^2 is quadratic.
@@ -215,7 +238,7 @@ def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, ra
 
 
 @internal
-def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved):
+def _jam_cluster(seed, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst, prm, involved):
     """Jam the contact cluster of ball ``seed`` (see :mod:`.collide`): every ball touching it, directly or
     through others, moves on with the cluster's centre-of-mass velocity, less any component into a cushion a
     member touches. Writes the members into ``involved``; returns their count."""
@@ -228,14 +251,14 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
     py = pxy[1]
     for m in range(n):
         if on_table[m]:
-            px[m], py[m], _, _ = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
+            px[m], py[m], _, _ = _state_at(m, t, t0, p0, v0, sp0, tstop, law, a, k)
     count = contact_cluster(seed, px, py, radius, on_table, involved)
     total = 0.0
     mom_x = 0.0
     mom_y = 0.0
     for h in range(count):
         m = involved[h]
-        _advance(m, t, t0, p0, v0, tstop, law, a, k)
+        _advance_only(m, t, t0, p0, v0, sp0, tstop, law, a, k)  # (its velocity and speed are set below)
         total += mass[m]
         mom_x += mass[m] * v0[m, 0]
         mom_y += mass[m] * v0[m, 1]
@@ -258,7 +281,7 @@ def _jam_cluster(seed, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm,
         v0[m, 0] = cx
         v0[m, 1] = cy
         burst[m] = 0
-        _set_stop_time(m, t0, v0, tstop, law, a, k, prm.min_speed)
+        _set_stop_time(m, t0, v0, sp0, tstop, law, a, k, prm.min_speed)
     return count
 
 
@@ -296,19 +319,25 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     floor = prm.speed_floor
     decel = a if law == ROLLING else 0.0
 
-    # Per-ball scratch rows: one allocation per type (fewer allocations per shot, fewer functions to compile).
-    fw = np.empty((5, n))
+    # Per-ball scratch rows: one allocation per type (fewer allocations per shot, fewer functions to compile). (Not
+    # one buffer for everything, as the spin kernel's: here its views' reshapes cost more than the allocations.)
+    cap = 64
+    sc_cap = 2 * n + 16 if record else 1
+    fw = np.empty((7, n))
     t0 = fw[0]
     t_hit = fw[1]  # time of each ball's last collision (ball or cushion)
     tstop = fw[2]
     pocket_time = fw[3]
     ball_t = fw[4]
-    iw = np.empty((5, n), np.int64)
+    row_t = fw[5]  # each pair row's earliest collision (kernel_logs.set_pair), at pair (i, row_j[i])
+    sp0 = fw[6]  # each ball's speed at its last event: hypot of v0 (set with it)
+    iw = np.empty((6, n), np.int64)
     burst = iw[0]  # collisions of each ball in its current contact cluster
     pocket_of = iw[1]
     ball_kind = iw[2]
     ball_other = iw[3]
     involved = iw[4]
+    row_j = iw[5]
     for i in range(n):
         t0[i] = 0.0
         t_hit[i] = -math.inf
@@ -323,10 +352,11 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     v0 = vel.copy()
     for i in range(n):
         if on_table[i]:
-            _set_stop_time(i, t0, v0, tstop, law, a, k, v_min)
+            _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min)
         else:
             v0[i, 0] = 0.0
             v0[i, 1] = 0.0
+            sp0[i] = 0.0
 
     pair_t = np.empty((n, n))
     st = np.empty((n, 5))  # the balls' states at the current event (x, y, vx, vy, speed)
@@ -335,19 +365,19 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             pair_t[i, j] = math.inf
     for i in range(n):
         if on_table[i]:
-            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r, prm)
+            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy,
+                                                                   pocket_r, prm)
     for i in range(n):
         rest_i = v0[i, 0] == 0.0 and v0[i, 1] == 0.0
         for j in range(i + 1, n):
             # Two balls at rest never meet (the pair stays at inf, as _pair_time would say).
             if on_table[i] and on_table[j] and not (rest_i and v0[j, 0] == 0.0 and v0[j, 1] == 0.0):
-                pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, tstop, ball_t, radius, prm)
+                pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, sp0, tstop, ball_t, radius, prm)
+        rescan_row(pair_t, row_t, row_j, i)
 
-    cap = 64
     ev_t = np.empty(cap)
     ev_int = np.empty((cap, 3), np.int64)
     ev_speed = np.empty(cap)
-    sc_cap = 2 * n + 16 if record else 1
     sc_t = np.empty(sc_cap)
     sc_ball = np.empty(sc_cap, np.int64)
     sc_state = np.empty((sc_cap, 5))
@@ -361,7 +391,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     n_events = 0
     status = STATUS_REST
     while True:
-        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, pair_t)
+        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, row_t, row_j)
         if not best <= max_time:
             moving = False
             for i in range(n):
@@ -381,26 +411,28 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         involved[0] = bi
         speed = 0.0
         if kind == EV_COLLISION:
-            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
-            _advance(bj, t, t0, p0, v0, tstop, law, a, k)
+            _advance_only(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
+            _advance_only(bj, t, t0, p0, v0, sp0, tstop, law, a, k)
             dx = p0[bi, 0] - p0[bj, 0]
             dy = p0[bi, 1] - p0[bj, 1]
             dist = math.hypot(dx, dy)
             clustered = count_burst(bi, t, t_hit, burst) | count_burst(bj, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS or burst[bj] > JAM_EVENTS:
-                n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
+                sp0[bi] = math.hypot(v0[bi, 0], v0[bi, 1])
+                sp0[bj] = math.hypot(v0[bj, 0], v0[bj, 1])
+                n_inv = _jam_cluster(bi, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst, prm, involved)
                 kind = EV_JAM
                 bj = n_inv
             else:
                 if dist > 0.0:
                     speed = resolve_ball_ball(v0, bi, bj, dx / dist, dy / dist, dist, mass[bi], mass[bj], e_b,
                                               decel, floor, clustered)
-                _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
-                _set_stop_time(bj, t0, v0, tstop, law, a, k, v_min)
+                _set_stop_time(bi, t0, v0, sp0, tstop, law, a, k, v_min)
+                _set_stop_time(bj, t0, v0, sp0, tstop, law, a, k, v_min)
                 involved[1] = bj
                 n_inv = 2
         elif kind == EV_CUSHION:
-            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
+            _advance_only(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
             r = radius[bi]
             if has_walls(prm):
                 p0[bi, 0], p0[bi, 1] = touch_wall(p0[bi, 0], p0[bi, 1], r, bj, prm)
@@ -414,7 +446,8 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 p0[bi, 1] = prm.width - r
             count_burst(bi, t, t_hit, burst)
             if burst[bi] > JAM_EVENTS:
-                n_inv = _jam_cluster(bi, t, t0, p0, v0, tstop, radius, mass, on_table, burst, prm, involved)
+                sp0[bi] = math.hypot(v0[bi, 0], v0[bi, 1])
+                n_inv = _jam_cluster(bi, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst, prm, involved)
                 kind = EV_JAM
                 bj = n_inv
             else:
@@ -423,20 +456,22 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                     speed = reflect_off(v0, bi, nx, ny, e_c)
                 else:
                     speed = resolve_cushion(v0, bi, bj, e_c)
-                _set_stop_time(bi, t0, v0, tstop, law, a, k, v_min)
+                _set_stop_time(bi, t0, v0, sp0, tstop, law, a, k, v_min)
         elif kind == EV_POCKET:
-            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
-            speed = math.hypot(v0[bi, 0], v0[bi, 1])
+            _advance(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
+            speed = sp0[bi]
             on_table[bi] = False
             v0[bi, 0] = 0.0
             v0[bi, 1] = 0.0
+            sp0[bi] = 0.0
             tstop[bi] = t
             pocket_of[bi] = bj
             pocket_time[bi] = t
         else:  # EV_STOP
-            _advance(bi, t, t0, p0, v0, tstop, law, a, k)
+            _advance_only(bi, t, t0, p0, v0, sp0, tstop, law, a, k)
             v0[bi, 0] = 0.0
             v0[bi, 1] = 0.0
+            sp0[bi] = 0.0
             tstop[bi] = t
 
         ev_t, ev_int, ev_speed = append_event(ev_t, ev_int, ev_speed, n_events, t, kind, bi, bj, speed)
@@ -451,12 +486,15 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 n_sc += 1
             if not on_table[i]:
                 ball_t[i] = math.inf
-                for m in range(n):
-                    if m != i:
-                        pair_t[min(i, m), max(i, m)] = math.inf
+                for m in range(i):
+                    set_pair(pair_t, row_t, row_j, m, i, math.inf)
+                for m in range(i + 1, n):
+                    pair_t[i, m] = math.inf
+                row_t[i] = math.inf
+                row_j[i] = -1
                 continue
-            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, tstop, radius, pocket_xy, pocket_r,
-                                                                   prm)
+            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy,
+                                                                   pocket_r, prm)
             if not have_states:  # every ball's state at t, once for all the involved balls' pairs
                 for m in range(n):
                     if not on_table[m]:
@@ -468,7 +506,8 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                         st[m, 3] = 0.0
                         st[m, 4] = 0.0
                     else:
-                        st[m, 0], st[m, 1], st[m, 2], st[m, 3] = _state_at(m, t, t0, p0, v0, tstop, law, a, k)
+                        st[m, 0], st[m, 1], st[m, 2], st[m, 3] = _state_at(m, t, t0, p0, v0, sp0, tstop, law, a,
+                                                                           k)
                         st[m, 4] = math.hypot(st[m, 2], st[m, 3])
                 have_states = True
             xi = st[i, 0]
@@ -479,26 +518,29 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             for m in range(n):
                 if m == i:
                     continue
-                if not on_table[m]:
-                    pair_t[min(i, m), max(i, m)] = math.inf
-                    continue
-                xm = st[m, 0]
-                ym = st[m, 1]
-                vxm = st[m, 2]
-                vym = st[m, 3]
-                if rest_i and vxm == 0.0 and vym == 0.0:  # two balls at rest never meet
-                    pair_t[min(i, m), max(i, m)] = math.inf
-                    continue
-                if i < m:
-                    pair_t[i, m] = _pair_time_s(i, m, t, xi, yi, vxi, vyi, st[i, 4], xm, ym, vxm, vym, st[m, 4],
-                                                ball_t, radius, prm)
+                tm = math.inf
+                if on_table[m]:
+                    xm = st[m, 0]
+                    ym = st[m, 1]
+                    vxm = st[m, 2]
+                    vym = st[m, 3]
+                    if rest_i and vxm == 0.0 and vym == 0.0:  # two balls at rest never meet
+                        tm = math.inf
+                    elif i < m:
+                        tm = _pair_time_s(i, m, t, xi, yi, vxi, vyi, st[i, 4], xm, ym, vxm, vym, st[m, 4], ball_t,
+                                          radius, prm)
+                    else:
+                        tm = _pair_time_s(m, i, t, xm, ym, vxm, vym, st[m, 4], xi, yi, vxi, vyi, st[i, 4], ball_t,
+                                          radius, prm)
+                if i < m:  # row i is scanned again below, once written
+                    pair_t[i, m] = tm
                 else:
-                    pair_t[m, i] = _pair_time_s(m, i, t, xm, ym, vxm, vym, st[m, 4], xi, yi, vxi, vyi, st[i, 4],
-                                                ball_t, radius, prm)
+                    set_pair(pair_t, row_t, row_j, m, i, tm)
+            rescan_row(pair_t, row_t, row_j, i)
 
     for i in range(n):
         if on_table[i]:
-            x, y, vx, vy = _state_at(i, t, t0, p0, v0, tstop, law, a, k)
+            x, y, vx, vy = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
             pos[i, 0] = x
             pos[i, 1] = y
             vel[i, 0] = vx

@@ -24,12 +24,13 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPI
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS
 from .kernel_io import N_STATE_COLS_SPIN, KernelResult
-from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
-                          reserve_states)
+from .kernel_logs import (append_event, carve, contact_cluster, count_burst, internal, next_event, pocket_holding,
+                          rescan_row, reserve_states, set_pair)
 from .roots import first_entry
 from .cushion_models import wall_hit
 from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, settle_on_wall, wall_normal
-from .walls import (MAX_WALL_PASSES, has_walls, path_clear_of, path_wall_time, pushes_into_walls, touch_wall, wall_gap,
+from .walls import (MAX_WALL_PASSES, has_walls, path_box_clear, path_clear_of, path_wall_time, pushes_into_walls,
+                    touch_wall, wall_gap,
                     wall_normal_at, wall_time)
 from .spin_motion import advance, classify, piece_of, reach, reach_of, roll_on, slide_end, spin_decay_rate, transition
 
@@ -129,7 +130,8 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
             tau = 0.0
         elif math.sqrt(dx * dx + dy * dy) - pocket_r[q] > far:
             continue
-        elif path_clear_of(pocket_xy[q, 0], pocket_xy[q, 1], pocket_r[q], x, y, vx, vy, ax, ay, window):
+        elif path_box_clear(pocket_xy[q, 0], pocket_xy[q, 1], pocket_r[q], x, y, vx, vy, ax, ay, window) or \
+                path_clear_of(pocket_xy[q, 0], pocket_xy[q, 1], pocket_r[q], x, y, vx, vy, ax, ay, window):
             continue
         else:
             tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
@@ -203,19 +205,22 @@ def _pair_from_states(i, j, t, xi, yi, vxi, vyi, axi, ayi, hvi, hai, xj, yj, vxj
     dc = radius[i] + radius[j]
     ax = xi - xj
     ay = yi - yj
-    # Cull pairs too far apart to meet within the window (spin_motion.reach_of, from the hypots given); on
-    # squares first where clear-cut (margins far above round-off: beyond there, beyond after hypot too).
+    # Cull pairs too far apart to meet within the window (spin_motion.reach_of, from the hypots given), on squares
+    # (margins far above round-off: a pair left in by round-off at the margin has no root, which the bound below or
+    # the root finder says).
     lim = (reach_of(window, hvi, hai) + reach_of(window, hvj, haj)) * (1.0 + 1e-9) + 1e-12
     far = (dc + lim) * (1.0 + 1e-12)
     if ax * ax + ay * ay > far * far * (1.0 + 1e-12):
-        return math.inf
-    if math.hypot(ax, ay) - dc > lim:
         return math.inf
     bx = vxi - vxj
     by = vyi - vyj
     cx = 0.5 * (axi - axj)
     cy = 0.5 * (ayi - ayj)
     closing_tol = 2.0 * dc * (1e-12 + 1e-14 * (hvi + hvj))
+    # Bound before solving: the relative path over the window lies in the triangle of its control points; clear of
+    # the contact circle there (margins far above round-off), the quartic has no root.
+    if path_box_clear(0.0, 0.0, dc, ax, ay, bx, by, 2.0 * cx, 2.0 * cy, window):
+        return math.inf
     tau = first_entry(cx * cx + cy * cy, 2.0 * (bx * cx + by * cy), bx * bx + by * by + 2.0 * (ax * cx + ay * cy),
                       2.0 * (ax * bx + ay * by), ax * ax + ay * ay - dc * dc, window, closing_tol)
     return t + tau
@@ -423,14 +428,63 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
     length = prm.length
     width = prm.width
 
-    bs = np.zeros((n, N_COLS))
-    st = np.full(n, MS_POCKETED, np.int64)
-    t_hit = np.full(n, -math.inf)  # time of each ball's last collision (ball or cushion)
-    burst = np.zeros(n, np.int64)  # collisions of each ball in its current contact cluster
-    slow_with = np.full(n, -1, np.int64)  # each ball's partner in its current run of slow re-contacts
-    slow_runs = np.zeros(n, np.int64)  # and the length of that run
-    pocket_of = np.full(n, -1, np.int64)
-    pocket_time = np.full(n, np.nan)
+    # Scratch and logs: one allocation per type (kernel_logs.carve), fewer allocations per shot.
+    cap = 64
+    sc_cap = 4 * n + 16 if record else 1
+    n_cols = N_STATE_COLS_SPIN
+    fbuf = np.empty((N_COLS + 10) * n + n * n + 20 + 2 * cap + (1 + n_cols) * sc_cap)
+    ibuf = np.empty(9 * n + 3 * cap + sc_cap, np.int64)
+    bs = carve(fbuf, 0, n, N_COLS)
+    fw = carve(fbuf, N_COLS * n, 4, n)
+    t_hit = fw[0]  # time of each ball's last collision (ball or cushion)
+    pocket_time = fw[1]
+    ball_t = fw[2]
+    row_t = fw[3]  # each pair row's earliest collision (kernel_logs.set_pair), at pair (i, row_j[i])
+    ps = carve(fbuf, (N_COLS + 4) * n, n, 6)  # the balls' states at the current event: x, y, vx, vy, |v|, |a|
+    at = (N_COLS + 10) * n
+    pair_t = carve(fbuf, at, n, n)
+    at += n * n
+    # Scratch rows for the collision laws, which work on (N, 2) / (N, 3) arrays.
+    cv = carve(fbuf, at, 2, 2)
+    cw = carve(fbuf, at + 4, 2, 3)
+    scratch = fbuf[at + 10:at + 20]  # for the cushion laws that integrate
+    for c in range(at, at + 20):
+        fbuf[c] = 0.0
+    at += 20
+    ev_t = fbuf[at:at + cap]
+    ev_speed = fbuf[at + cap:at + 2 * cap]
+    at += 2 * cap
+    sc_t = fbuf[at:at + sc_cap]
+    sc_state = carve(fbuf, at + sc_cap, sc_cap, n_cols)
+    iw = carve(ibuf, 0, 9, n)
+    st = iw[0]
+    burst = iw[1]  # collisions of each ball in its current contact cluster
+    slow_with = iw[2]  # each ball's partner in its current run of slow re-contacts
+    slow_runs = iw[3]  # and the length of that run
+    pocket_of = iw[4]
+    ball_kind = iw[5]
+    ball_other = iw[6]
+    row_j = iw[7]
+    involved = iw[8]
+    ev_int = carve(ibuf, 9 * n, cap, 3)
+    sc_ball = ibuf[9 * n + 3 * cap:9 * n + 3 * cap + sc_cap]
+    for i in range(n):
+        for c in range(N_COLS):
+            bs[i, c] = 0.0
+        st[i] = MS_POCKETED
+        t_hit[i] = -math.inf
+        burst[i] = 0
+        slow_with[i] = -1
+        slow_runs[i] = 0
+        pocket_of[i] = -1
+        pocket_time[i] = np.nan
+        ball_t[i] = math.inf
+        ball_kind[i] = -1
+        ball_other[i] = -1
+        row_t[i] = math.inf
+        row_j[i] = -1
+        for j in range(n):
+            pair_t[i, j] = math.inf
     for i in range(n):
         bs[i, X] = pos[i, 0]
         bs[i, Y] = pos[i, 1]
@@ -444,10 +498,6 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
             bs[i, WZ] = ang[i, 2]
             _classify_piece(bs, st, i, radius[i], f_slide, f_roll, f_spin)
 
-    ball_t = np.full(n, math.inf)
-    ball_kind = np.full(n, -1, np.int64)
-    ball_other = np.full(n, -1, np.int64)
-    pair_t = np.full((n, n), math.inf)
     for i in range(n):
         if on_table[i]:
             ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length,
@@ -456,32 +506,19 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
         for j in range(i + 1, n):
             if on_table[i] and on_table[j]:
                 pair_t[i, j] = _predict_pair(i, j, 0.0, bs, ball_t, radius, max_time)
+        rescan_row(pair_t, row_t, row_j, i)
 
-    cap = 64
-    ev_t = np.empty(cap)
-    ev_int = np.empty((cap, 3), np.int64)
-    ev_speed = np.empty(cap)
-    sc_cap = 4 * n + 16 if record else 1
-    sc_t = np.empty(sc_cap)
-    sc_ball = np.empty(sc_cap, np.int64)
-    sc_state = np.empty((sc_cap, N_STATE_COLS_SPIN))
     n_sc = 0
     if record:
         for i in range(n):
             _log_state(n_sc, sc_t, sc_ball, sc_state, 0.0, i, bs, st, on_table)
             n_sc += 1
 
-    # Scratch rows for the collision laws, which work on (N, 2) / (N, 3) arrays.
-    cv = np.zeros((2, 2))
-    cw = np.zeros((2, 3))
-    scratch = np.zeros(10)  # for the cushion laws that integrate
-    involved = np.empty(n, np.int64)
-    ps = np.empty((n, 6))  # the balls' states at the current event: x, y, vx, vy, |v|, |a|
     t = 0.0
     n_events = 0
     status = STATUS_REST
     while True:
-        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, pair_t)
+        best, kind, bi, bj = next_event(ball_t, ball_kind, ball_other, row_t, row_j)
         if not best <= max_time:
             moving = False
             for i in range(n):
@@ -654,26 +691,34 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                         ps[m, 1] = y
                         ps[m, 2] = vx
                         ps[m, 3] = vy
-                        ps[m, 4] = math.hypot(vx, vy)
-                        ps[m, 5] = math.hypot(bs[m, AX], bs[m, AY])
+                        # (hypot of zeros is 0: not called for the balls at rest, most of them)
+                        ps[m, 4] = math.hypot(vx, vy) if vx != 0.0 or vy != 0.0 else 0.0
+                        axm = bs[m, AX]
+                        aym = bs[m, AY]
+                        ps[m, 5] = math.hypot(axm, aym) if axm != 0.0 or aym != 0.0 else 0.0
                 have_states = True
             for m in range(n):
                 if m == i:
                     continue
                 lo = min(i, m)
                 hi = max(i, m)
+                tm = math.inf
                 if on_table[i] and on_table[m]:
                     again = False  # a pair of two involved balls: worked out once (the same inputs the second time)
                     for h in range(q):
                         if involved[h] == m:
                             again = True
-                    if not again:
-                        pair_t[lo, hi] = _pair_from_states(lo, hi, t, ps[lo, 0], ps[lo, 1], ps[lo, 2], ps[lo, 3],
-                                                           bs[lo, AX], bs[lo, AY], ps[lo, 4], ps[lo, 5], ps[hi, 0],
-                                                           ps[hi, 1], ps[hi, 2], ps[hi, 3], bs[hi, AX], bs[hi, AY],
-                                                           ps[hi, 4], ps[hi, 5], ball_t, radius, max_time)
+                    if again:
+                        continue
+                    tm = _pair_from_states(lo, hi, t, ps[lo, 0], ps[lo, 1], ps[lo, 2], ps[lo, 3], bs[lo, AX],
+                                           bs[lo, AY], ps[lo, 4], ps[lo, 5], ps[hi, 0], ps[hi, 1], ps[hi, 2],
+                                           ps[hi, 3], bs[hi, AX], bs[hi, AY], ps[hi, 4], ps[hi, 5], ball_t, radius,
+                                           max_time)
+                if lo == i:  # row i is scanned again below, once written
+                    pair_t[lo, hi] = tm
                 else:
-                    pair_t[lo, hi] = math.inf
+                    set_pair(pair_t, row_t, row_j, lo, hi, tm)
+            rescan_row(pair_t, row_t, row_j, i)
 
     for i in range(n):
         x, y, vx, vy, wx, wy, wz = _state_at(bs, i, t)

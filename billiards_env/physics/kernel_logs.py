@@ -21,6 +21,14 @@ internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 inlined = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
 
 
+@inlined
+def carve(buf, at, rows, cols):
+    """``rows x cols`` of the flat scratch buffer ``buf`` from offset ``at``, as a 2-D (C-contiguous) view: a kernel
+    makes its scratch arrays from one allocation per type (an allocation costs about as much as an event's
+    bookkeeping)."""
+    return buf[at:at + rows * cols].reshape((rows, cols))
+
+
 @internal
 def grow(arr):
     """``arr`` (1-D) copied into an array twice as long."""
@@ -132,10 +140,12 @@ def snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on, code, only):
 
 
 @inlined
-def next_event(ball_t, ball_kind, ball_other, pair_t):
-    """The earliest pending event of the exact solvers: ``(time, kind, ball, other)``. Ties go to ball events (by
-    row) before pair events (by ``(i, j)``, ``i < j``): the fixed order of simultaneous events. ``time`` is ``inf``
-    when nothing is pending."""
+def next_event(ball_t, ball_kind, ball_other, row_t, row_j):
+    """The earliest pending event of the exact solvers: ``(time, kind, ball, other)``, from the balls' own event
+    times and each pair row's earliest collision (``row_t[i]``, with ``j = row_j[i]``: :func:`set_pair`,
+    :func:`rescan_row`), so that no pair is scanned. Ties go to ball events (by row) before pair events (by
+    ``(i, j)``, ``i < j``): the fixed order of simultaneous events, as a scan of every pair in that order gives.
+    ``time`` is ``inf`` when nothing is pending."""
     n = ball_t.shape[0]
     best = math.inf
     kind = np.int64(-1)
@@ -148,13 +158,39 @@ def next_event(ball_t, ball_kind, ball_other, pair_t):
             bi = i
             bj = ball_other[i]
     for i in range(n):
-        for j in range(i + 1, n):
-            if pair_t[i, j] < best:
-                best = pair_t[i, j]
-                kind = np.int64(EV_COLLISION)
-                bi = i
-                bj = j
+        if row_t[i] < best:
+            best = row_t[i]
+            kind = np.int64(EV_COLLISION)
+            bi = i
+            bj = row_j[i]
     return best, kind, bi, bj
+
+
+@inlined
+def rescan_row(pair_t, row_t, row_j, i):
+    """Row ``i``'s earliest collision (its first pair ``(i, j)``, ``j > i``, on a tie) into ``row_t[i]``,
+    ``row_j[i]`` (``inf``, -1 if none): after the whole row was written."""
+    best = math.inf
+    bj = np.int64(-1)
+    for j in range(i + 1, pair_t.shape[0]):
+        if pair_t[i, j] < best:
+            best = pair_t[i, j]
+            bj = j
+    row_t[i] = best
+    row_j[i] = bj
+
+
+@inlined
+def set_pair(pair_t, row_t, row_j, lo, hi, v):
+    """Write the collision time ``v`` of the pair ``(lo, hi)`` (``lo < hi``) and keep row ``lo``'s earliest
+    collision: taken over when earlier (or as early and before it in the row), the row scanned again only when its
+    earliest pair gets later."""
+    pair_t[lo, hi] = v
+    if v < row_t[lo] or (v == row_t[lo] and hi < row_j[lo]):
+        row_t[lo] = v
+        row_j[lo] = hi
+    elif hi == row_j[lo] and v != row_t[lo]:
+        rescan_row(pair_t, row_t, row_j, lo)
 
 
 @internal

@@ -23,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .kernel_logs import internal, rewind_time
+from .kernel_logs import inlined, internal, rewind_time
 from .roots import first_entry, quadratic_roots_in
 
 #: A ball whose centre's projection lies this far (m) beyond a segment's end still counts as on the segment: the
@@ -71,10 +71,10 @@ def on_seg(x, y, seg):
 
 
 @internal
-def ray_segment_hit(px, py, ux, uy, r, seg):
-    """Distance along the ray ``p + d u`` (``u`` a unit vector) until a ball of radius ``r`` meets the segment row
-    ``seg``; ``inf`` if it never does. A ball already within ``r`` of the line and moving into it meets it at
-    once."""
+def ray_line_hit(px, py, ux, uy, r, seg):
+    """:func:`ray_segment_hit` before its test that the contact lies on the segment: the distance along the ray
+    until a ball of radius ``r`` meets the segment row ``seg``'s line (from its open side), ``inf`` if it never
+    does. Callers that keep only a nearer hit test the segment (:func:`on_seg`) only then."""
     nx = seg[4]
     ny = seg[5]
     un = ux * nx + uy * ny
@@ -83,8 +83,16 @@ def ray_segment_hit(px, py, ux, uy, r, seg):
     gap = (px - seg[0]) * nx + (py - seg[1]) * ny - r
     if gap < -r:  # the centre is behind the line: the ball is not on this segment's side
         return math.inf
-    d = max(gap / -un, 0.0)
-    if on_seg(px + d * ux, py + d * uy, seg):
+    return max(gap / -un, 0.0)
+
+
+@internal
+def ray_segment_hit(px, py, ux, uy, r, seg):
+    """Distance along the ray ``p + d u`` (``u`` a unit vector) until a ball of radius ``r`` meets the segment row
+    ``seg``; ``inf`` if it never does. A ball already within ``r`` of the line and moving into it meets it at
+    once."""
+    d = ray_line_hit(px, py, ux, uy, r, seg)
+    if d < math.inf and on_seg(px + d * ux, py + d * uy, seg):
         return d
     return math.inf
 
@@ -94,6 +102,14 @@ def ray_tip_hit(px, py, ux, uy, r, tip):
     """Distance along the ray until a ball of radius ``r`` meets the tip row ``tip`` (its centre ``r + radius``
     from the tip's centre), moving towards it; ``inf`` if it never does. A ball already that close and approaching
     meets it at once."""
+    return ray_tip_below(px, py, ux, uy, r, tip, math.inf)
+
+
+@internal
+def ray_tip_below(px, py, ux, uy, r, tip, limit):
+    """:func:`ray_tip_hit`, or ``inf`` early when the hit is surely not nearer than ``limit``: the root
+    ``c / (-b + sqrt(b^2 - c))`` is at least ``c / (-2 b)`` (a margin far above round-off), so beyond that bound
+    no square root is taken."""
     dx = px - tip[0]
     dy = py - tip[1]
     rho = r + tip[2]
@@ -103,6 +119,8 @@ def ray_tip_hit(px, py, ux, uy, r, tip):
     c = dx * dx + dy * dy - rho * rho
     if c <= 0.0:
         return 0.0
+    if c >= -2.0 * b * limit * (1.0 + 1e-12):
+        return math.inf
     disc = b * b - c
     if disc < 0.0:
         return math.inf
@@ -110,23 +128,30 @@ def ray_tip_hit(px, py, ux, uy, r, tip):
 
 
 @internal
-def ray_wall_hit(px, py, ux, uy, r, prm):
-    """The first wall of the record ``prm`` the ray meets (:func:`ray_walls_hit`)."""
-    return ray_walls_hit(px, py, ux, uy, r, prm.segs[:prm.n_segs], prm.tips[:prm.n_tips])
+def ray_wall_hit(px, py, ux, uy, r, prm, limit):
+    """The first wall of the record ``prm`` the ray meets nearer than ``limit`` (:func:`ray_walls_below`)."""
+    return ray_walls_below(px, py, ux, uy, r, prm.segs[:prm.n_segs], prm.tips[:prm.n_tips], limit)
 
 
 @internal
 def ray_walls_hit(px, py, ux, uy, r, segs, tips):
     """The first wall the ray meets: ``(distance, wall index)``, ``(inf, -1)`` if none; the lower index on a tie."""
-    best = math.inf
+    return ray_walls_below(px, py, ux, uy, r, segs, tips, math.inf)
+
+
+@internal
+def ray_walls_below(px, py, ux, uy, r, segs, tips, limit):
+    """:func:`ray_walls_hit` among the hits nearer than ``limit``: ``(limit, -1)`` if none. A segment's line hit is
+    tested for lying on the segment only when it is the nearest so far (the same answer, fewer tests)."""
+    best = limit
     wall = -1
     for k in range(segs.shape[0]):
-        d = ray_segment_hit(px, py, ux, uy, r, segs[k])
-        if d < best:
+        d = ray_line_hit(px, py, ux, uy, r, segs[k])
+        if d < best and on_seg(px + d * ux, py + d * uy, segs[k]):
             best = d
             wall = k
     for k in range(tips.shape[0]):
-        d = ray_tip_hit(px, py, ux, uy, r, tips[k])
+        d = ray_tip_below(px, py, ux, uy, r, tips[k], best)
         if d < best:
             best = d
             wall = segs.shape[0] + k
@@ -420,6 +445,22 @@ def _segment_distance(px, py, x0, y0, x1, y1):
     return math.hypot(px - x0 - s * ex, py - y0 - s * ey)
 
 
+@inlined
+def path_box_clear(cx, cy, r, x, y, vx, vy, ax, ay, window):
+    """:func:`path_clear_of` on the bounding box of the control points' triangle: a cheaper, weaker test (no
+    division or square root), for the callers that run it on most of their candidates before the exact one."""
+    if not window < math.inf:
+        return False
+    x1 = x + 0.5 * vx * window
+    y1 = y + 0.5 * vy * window
+    x2 = x + window * (vx + 0.5 * ax * window)
+    y2 = y + window * (vy + 0.5 * ay * window)
+    gx = max(min(x, x1, x2) - cx, cx - max(x, x1, x2), 0.0)
+    gy = max(min(y, y1, y2) - cy, cy - max(y, y1, y2), 0.0)
+    lim = r * (1.0 + 1e-9) + 1e-9
+    return gx * gx + gy * gy > lim * lim
+
+
 @internal
 def path_clear_of(cx, cy, r, x, y, vx, vy, ax, ay, window):
     """Whether a ball's centre on ``p + v t + a t^2 / 2``, ``t`` in ``[0, window]``, stays farther than ``r`` (and a
@@ -496,6 +537,7 @@ def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, acc_tol, far, prm):
         dy = y - prm.tips[k, 1]
         rho = r + prm.tips[k, 2]
         if math.sqrt(dx * dx + dy * dy) - rho > far or \
+                path_box_clear(prm.tips[k, 0], prm.tips[k, 1], rho, x, y, vx, vy, ax, ay, window) or \
                 path_clear_of(prm.tips[k, 0], prm.tips[k, 1], rho, x, y, vx, vy, ax, ay, window):
             continue
         tau = first_entry(0.25 * (ax * ax + ay * ay), vx * ax + vy * ay, vx * vx + vy * vy + dx * ax + dy * ay,
@@ -525,8 +567,8 @@ def on_rail_span(x, y, r, segs, n_rails, margin):
     return False
 
 
-__all__ = ["back_onto_wall", "walls_of", "on_seg", "ray_walls_hit", "normal_at", "path_clear_of", "wall_time", "path_wall_time",
+__all__ = ["back_onto_wall", "walls_of", "on_seg", "ray_walls_hit", "ray_walls_below", "ray_line_hit", "normal_at", "path_clear_of", "wall_time", "path_wall_time",
            "on_rail_span", "has_walls", "on_segment", "ray_segment_hit", "deepest_overlap", "wall_reach",
            "wall_rewind_time", "in_mouth_region", "push_out_of_walls", "keep_on_jaw_table", "MAX_WALL_PASSES",
-           "WALL_SLOP", "GRAZE", "pushes_into_walls", "cluster_off_walls", "ray_tip_hit", "ray_wall_hit", "wall_normal_at",
+           "WALL_SLOP", "GRAZE", "pushes_into_walls", "cluster_off_walls", "ray_tip_hit", "ray_tip_below", "path_box_clear", "ray_wall_hit", "wall_normal_at",
            "touch_wall", "wall_gap", "without_push_into_walls", "reflect_off", "END_SLACK"]
