@@ -30,9 +30,8 @@ from billiards_env.games import GAMES
 from billiards_env.games.infos import mask_of
 from billiards_env.games.session import GameSession
 from billiards_env.physics.codes import STATUS_NAMES
-from billiards_env.physics.layout import (CAROM_IDS, DIAMOND_ORDER, RACK_ORDER, carom_start_positions,
-                                          diamond_positions, foot_spot, head_spot, head_string_x, place_random,
-                                          rack_rows, snooker_balls, triangle_positions)
+from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_positions, foot_spot, head_spot,
+                                          head_string_x, place_random, rack_rows, triangle_positions)
 from billiards_env.physics.model import Physics
 from billiards_env.physics.simulate import Simulator
 from billiards_env.physics.table import Table
@@ -323,25 +322,26 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     # ======================================================================================================
     def shot_from_action(self, action: Any) -> CueShot:
         """The shot an action means now (no noise): a :class:`~billiards_env.shot_path.CueShot` ``(angle rad,
-        speed m/s, side, top, place, pocket, push)``. NaN/inf raise ValueError; finite values outside [-1, 1] are
+        speed m/s, side, top, place, calls)``. NaN/inf raise ValueError; finite values outside [-1, 1] are
         clipped."""
         return self.action_type.shot(self.state, action)
 
     def action_from_shot(self, angle: float, speed: float, side: float = 0.0, top: float = 0.0,
-                         place: tuple[float, float] | None = None, pocket: int | None = None,
-                         push: bool = False) -> np.ndarray:
+                         place: tuple[float, float] | None = None, **calls: Any) -> np.ndarray:
         """The action that strikes the cue ball at ``angle`` (rad, 0 = +x, CCW) and ``speed`` (m/s) with tip
-        offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand), calling ``pocket`` for the 8 or
-        declaring ``push`` (games), in the active action type (inverse of :meth:`shot_from_action`); dims not given
-        are neutral. Arguments the env cannot play raise ``ValueError`` naming the valid range: a speed outside
-        [speed_min, speed_max], tip offsets without spin dims or beyond ``max_tip_offset``, a place without ball in
-        hand or outside its area, a pocket or a push-out the game does not declare. (A policy's actions are never
-        refused: they are clipped, see :mod:`.actions`.)"""
-        self._check_shot_arguments(float(angle), float(speed), float(side), float(top), place, pocket, push)
-        return self.action_type.action(self.state, angle, speed, side, top, place, pocket, push)
+        offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand), with the game's declarations ``calls``
+        by name (:class:`~billiards_env.games.declarations.Declaration`: ``pocket=`` the pocket called for the 8 or
+        straight pool's ball, ``ball=`` straight pool's called ball, ``push=True`` a 9-ball push-out), in the active
+        action type (inverse of :meth:`shot_from_action`); dims not given are neutral. Arguments the env cannot play
+        raise ``ValueError`` naming the valid range: a speed outside [speed_min, speed_max], tip offsets without spin
+        dims or beyond ``max_tip_offset``, a place without ball in hand or outside its area, a declaration the game
+        does not make or a value it cannot take. (A policy's actions are never refused: they are clipped, see
+        :mod:`.actions`.)"""
+        self._check_shot_arguments(float(angle), float(speed), float(side), float(top), place, calls)
+        return self.action_type.action(self.state, angle, speed, side, top, place, **calls)
 
     def _check_shot_arguments(self, angle: float, speed: float, side: float, top: float,
-                              place: Any, pocket: Any, push: bool) -> None:
+                              place: Any, calls: dict[str, Any]) -> None:
         at = self.action_type
         s = self.state.settings
         for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
@@ -372,17 +372,21 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             if not area.contains(x, y):
                 raise ValueError(f"action_from_shot: place ({x:.4g}, {y:.4g}) is outside the ball-in-hand area "
                                  f"{area.describe()}")
-        if pocket is not None:
-            if "pocket" not in at.declarations:
-                raise ValueError(f"action_from_shot: pocket given, but {self.task.name!r} calls no pocket (only "
-                                 "8-ball with rules call_eight); leave pocket None")
-            if isinstance(pocket, bool) or not isinstance(pocket, (int, np.integer)) or \
-                    not 0 <= int(pocket) < at.n_pockets:
-                raise ValueError(f"action_from_shot: pocket must be a pocket index 0..{at.n_pockets - 1}, got "
-                                 f"{pocket!r}")
-        if push and "push" not in at.declarations:
-            raise ValueError(f"action_from_shot: push=True, but {self.task.name!r} has no push-outs (9-ball with "
-                             "rules={'push_out': True})")
+        declared = {d.name: d for d in at.declarations}
+        for name, value in calls.items():
+            d = declared.get(name)
+            if d is None:
+                if value is None or value is False:  # nothing declared: fine for any game
+                    continue
+                makes = ", ".join(map(repr, declared)) or "none"
+                raise ValueError(f"action_from_shot: {name}={value!r} given, but {self.task.name!r} declares no "
+                                 f"{name!r} with its rules options (its declarations: {makes}; 8-ball calls a "
+                                 "pocket with call_eight, 9-ball pushes out with push_out, straight pool calls a "
+                                 "ball and a pocket); leave it out")
+            try:
+                d.check(value, at.n_pockets, at.n_balls)
+            except ValueError as exc:
+                raise ValueError(f"action_from_shot: {exc}") from None
 
     def target_ball(self) -> int | None:
         """Row of the ball to hit first (the relative and ghost aim's target): the lowest-numbered object ball on
@@ -420,9 +424,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             for slot, number in enumerate(DIAMOND_ORDER):
                 rows.append(number)
                 pts.append((float(dia[slot, 0]), float(dia[slot, 1])))
-        if c.placement in ("snooker", "carom"):  # every ball on its spot, by id
-            spots = snooker_balls(self.table, radius=c.ball_radius).pos if c.placement == "snooker" else \
-                np.array([carom_start_positions(self.table)[i] for i in CAROM_IDS])
+        game = GAMES.get(c.task)
+        if game is not None and c.placement in game.session_class.placements:  # the game's own layout, every row
+            spots = game.session_class.start_layout(c.placement, self.table, c.ball_radius)
             rows = list(range(len(spots)))
             pts = [(float(x), float(y)) for x, y in spots]
         return rows, np.array(pts, dtype=float).reshape(-1, 2)
