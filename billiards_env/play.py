@@ -168,7 +168,7 @@ class PlayApp:
         self.status = ""
         self.last_info: dict[str, Any] | None = None
         self.last_action: np.ndarray | None = None
-        self.core._window = PlayWindow(self)  # the env's human mode shows its frames here (see BilliardsEnv._show)
+        self.core.attach_window(PlayWindow(self))  # the env's human mode shows its frames here
         self.reset(seed)
 
     # --- coordinates ------------------------------------------------------------------------------------

@@ -69,7 +69,6 @@ class PotFastStep:
         env.shots += 1
         env.last_shot = (f[F_START_X], f[F_START_Y], f[F_ANGLE], f[F_SPEED])
         env.last_tip = (f[F_SIDE], f[F_TOP])
-        env._animations = []
         terminated = i[O_TERMINATED] != 0
         truncated = i[O_TRUNCATED] != 0
         mask = i[O_POCKETED]
@@ -79,7 +78,6 @@ class PotFastStep:
         info = {"is_success": i[O_SUCCESS] != 0}
         info.update(shot_info(pocketed.copy(), i[O_SCRATCH] != 0, int(out[5][0]), int(out[2][0]), float(out[1][0]),
                               int(out[0][0]), env.shots, CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP])))
-        env._needs_reset = terminated or truncated
         env.state.changed()
         obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env.state)
         return obs, f[F_REWARD], terminated, truncated, info

@@ -254,7 +254,7 @@ class GameTables:
         its balls and game state copied to the table."""
         v = self.venv
         t = v.template
-        t._np_random = v._rngs[k]
+        t.np_random = v._rngs[k]
         _, info = t.reset(options=options)
         b = t.balls
         v.pos[k] = b.pos

@@ -208,11 +208,21 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.state.changed()
         info = blank_info(self.info_schema)  # the schema's keys: the task's, and no shot yet
         info.update(self.task.reset(self.state, self.np_random, options, self._driver))
+        self.show_new_episode()
+        return self.observation_type.observe(self.state), info
+
+    def show_new_episode(self) -> None:
+        """What ``reset`` draws: the frame list started afresh with the table now (``rgb_array_list``), or the table
+        shown (``human``); nothing otherwise. The native vector env calls it on the table it draws."""
         if self.render_mode == "rgb_array_list":
             self._frames = [self._draw_state()]
         elif self.render_mode == "human":
             self._show(None)
-        return self.observation_type.observe(self.state), info
+
+    def attach_window(self, window: Any) -> None:
+        """Show the human mode's frames in ``window`` (an object with ``closed``, ``show(surface, fps)`` and
+        ``close()``) instead of a window of the env's own: ``billiards-play`` shows them in its window so."""
+        self._window = window
 
     def step(self, action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
         """Strike the cue ball with ``action``, simulate until every ball is at rest, score the shot.
@@ -224,7 +234,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                     "reset() to start a new one (vector envs and SB3 do this for you)")
             raise gym.error.ResetNeeded("call reset() before step(): the table has no balls yet")
         if self._pot_fast is not None and self._fast and not self._record:
-            return self._pot_fast.step(self, action)
+            obs, reward, terminated, truncated, info = self._pot_fast.step(self, action)
+            self._animations = []
+            self._needs_reset = terminated or truncated
+            return obs, reward, terminated, truncated, info
         shot = self.action_type.shot(self.state, action)
         self.task.before_shot(shot)
         self._animations = []
@@ -619,7 +632,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
               view: dict[str, Any] | None = None) -> bool:
         """Human mode: show one frame (``state``: positions, flags, orientations, drawn with ``view``; or now) at
         render_fps, as soon as it is drawn; False once the user closed the window. The window is a :class:`~billiards_env.render.HumanWindow` made on first use, or
-        whatever a front-end put in ``_window`` before (``closed``, ``show(surface, fps)``, ``close()``):
+        the one a front-end attached (:meth:`attach_window`) (``closed``, ``show(surface, fps)``, ``close()``):
         ``billiards-play`` shows the env's frames in its own window that way."""
         import pygame
 

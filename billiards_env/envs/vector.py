@@ -579,11 +579,7 @@ class BilliardsVectorEnv(VectorEnv):
         if self.render_mode not in ("rgb_array_list", "human") or self.render_env not in rows:
             return
         self._sync_template()
-        t = self.template
-        if self.render_mode == "rgb_array_list":
-            t._frames = [t._draw_state()]
-        else:
-            t._show(None)
+        self.template.show_new_episode()
 
     def _render_snapshot(self, active: np.ndarray) -> Balls | None:
         """The rendered table before its shot (animated modes only), to re-simulate with the trajectory kept."""
