@@ -524,7 +524,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             game = self.state.game
             self._renderer = TableRenderer(self.table, self.config.ball_radius, width_px=self.config.render_width,
                                            hud=self.task.hud() is not None,
-                                           markings=game.markings() if game is not None else None)
+                                           markings=game.markings() if game is not None else None,
+                                           palette=game.palette if game is not None else None)
         return self._renderer
 
     def _cue_overlay(self) -> tuple[float, float, float] | None:

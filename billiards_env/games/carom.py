@@ -44,6 +44,8 @@ class CaromSession(GameSession):
                "search": "billiards_env.players.three_cushion:CaromSearchPlayer"}
 
     placements = ("carom",)
+    palette = {CAROM_NUMBERS["white"]: (248, 246, 238), CAROM_NUMBERS["yellow"]: (250, 214, 40),
+               CAROM_NUMBERS["red"]: (204, 26, 30)}
 
     @classmethod
     def start_layout(cls, placement: str, table: Any, radius: float) -> np.ndarray:

@@ -92,6 +92,9 @@ class GameSession(ABC):
     #: The built-in players by name: ``module:Class`` of each (a class taking ``seed``, with ``act(state, obs,
     #: codec)``); the env's ``opponent`` names one.
     players: ClassVar[dict[str, str]] = {}
+    #: The colours of the game's plain balls by drawing number (above 15: the renderer draws 0-15 as the pool set),
+    #: handed to the renderer as plain data (snooker's reds and colours, the carom set).
+    palette: ClassVar[dict[int, tuple[int, int, int]]] = {}
     #: What :attr:`Verdict.scored` counts, in words (the league's "per inning" column): ``"balls"``, ``"points"``.
     scored_unit: ClassVar[str] = "balls"
     #: Every reason a call may give (``Verdict.reason``): the info's ``call`` and ``foul_reason`` are codes into it.

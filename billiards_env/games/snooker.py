@@ -50,6 +50,10 @@ class SnookerSession(GameSession):
                "search": "billiards_env.players.snooker:SnookerSearchPlayer"}
 
     placements = ("snooker",)
+    palette = {RED_NUMBER: (196, 22, 28), COLOUR_NUMBERS["yellow"]: (250, 204, 20),
+               COLOUR_NUMBERS["green"]: (0, 120, 64), COLOUR_NUMBERS["brown"]: (120, 70, 30),
+               COLOUR_NUMBERS["blue"]: (22, 70, 180), COLOUR_NUMBERS["pink"]: (244, 140, 170),
+               COLOUR_NUMBERS["black"]: (18, 18, 20)}
 
     def __init__(self, spec: Any, rules: Any, table: TableState) -> None:
         self.values = np.asarray(snooker_values(table.ids), dtype=np.int64)
