@@ -1,4 +1,4 @@
-"""``billiards-play``: play a billiards scene, or a game (9-ball, 8-ball, snooker, three-cushion), with the mouse.
+"""``billiards-play``: play a billiards scene, or a game (any of the game registry's), with the mouse.
 
 Aim: move the mouse; the cue and its aim line follow from the cue ball towards the pointer.
 Shoot: press the left button, drag away from the press point to set the power (the bar below the table),
@@ -706,9 +706,12 @@ def demo_events(app: PlayApp, power: float = 0.5, max_shots: int = 4) -> Iterato
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from billiards_env.games import GAMES
     from billiards_env.registration import ENV_IDS, env_id_arg
 
-    p = argparse.ArgumentParser(prog="billiards-play", description=__doc__.split("\n\n")[0].split(": ", 1)[1],
+    games = ", ".join(g.title for g in GAMES.values())  # the registry's games, by title
+    summary = __doc__.split("\n\n")[0].split(": ", 1)[1].replace("any of the game registry's", games)
+    p = argparse.ArgumentParser(prog="billiards-play", description=summary,
                                 epilog=__doc__.split("\n\n", 1)[1],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--env", default="BilliardsOneBall-v0", type=env_id_arg, choices=list(ENV_IDS),
