@@ -290,8 +290,26 @@ class PlayApp:
         return not self.done and self.core.state.view.place_area is not None
 
     def needs_pocket(self) -> bool:
-        """The shooter is on the 8 and must call its pocket (8-ball)."""
+        """The shooter must call a pocket (8-ball on the 8; every shot of straight pool, whose called ball is the
+        one aimed at)."""
         return not self.done and self.is_game and self.core.state.view.call_pocket
+
+    def aimed_ball(self) -> int | None:
+        """Row of the first object ball on the cue's line from where the cue ball is (or will be placed), or None:
+        the ball a game that calls balls (straight pool) takes as called."""
+        from billiards_env.physics.aim import ray_circle_entry
+
+        b = self.core.balls
+        cx, cy = self.cue_xy()
+        ux, uy = math.cos(self.aim), math.sin(self.aim)
+        best, row = math.inf, None
+        for k in range(1, len(b.pos)):
+            if b.on_table[k]:
+                d = ray_circle_entry(cx, cy, ux, uy, float(b.pos[k, 0]), float(b.pos[k, 1]),
+                                     float(b.radius[0] + b.radius[k]))
+                if math.isfinite(d) and d < best:
+                    best, row = d, k
+        return row
 
     def cue_xy(self) -> tuple[float, float]:
         if self.place is not None:
@@ -311,11 +329,14 @@ class PlayApp:
         """Play the shot set by ``aim``, ``power``, the tip, the placement and the called pocket; the env animates
         it (and a game's opponent's reply) in the window as it is drawn, with the power bar already gone."""
         if self.needs_pocket() and self.pocket is None:
-            self.status = "call the 8's pocket first: click a pocket or press 1-6"
+            self.status = "call the pocket first: click a pocket or press 1-6"
             self.dragging, self.power = False, 0.0
             return None
         side, top = self.tip if self.spin else (0.0, 0.0)
-        action = self.core.action_from_shot(self.aim, self.speed(), side, top, place=self.place, pocket=self.pocket)
+        calls: dict[str, Any] = {"pocket": self.pocket}
+        if any(d.name == "ball" for d in self.core.action_type.declarations):  # a called ball: the one aimed at
+            calls["ball"] = self.aimed_ball()
+        action = self.core.action_from_shot(self.aim, self.speed(), side, top, place=self.place, **calls)
         self.last_action = action
         self.status = f"shot {self.shots + 1}: {self.speed():.2f} m/s ... (Space skips the animation)"
         self.dragging, self.power = False, 0.0  # released: the bar goes, the balls move
@@ -374,7 +395,7 @@ class PlayApp:
         if self.in_hand():
             base += "; ball in hand: drag it, or click where to put it"
         if self.needs_pocket():
-            base += "; call the 8's pocket (click it or press 1-6)"
+            base += "; call the pocket (click it or press 1-6)"
         return base
 
     # --- input ------------------------------------------------------------------------------------------
@@ -435,7 +456,7 @@ class PlayApp:
             k = self._pocket_at(pos)
             if k is not None:
                 self.pocket = k
-                self.status = f"pocket {k + 1} called for the 8"
+                self.status = f"pocket {k + 1} called"
                 return
         if self.in_hand():
             bx, by = self.ball_pixel(0)
@@ -475,7 +496,7 @@ class PlayApp:
             self.set_tip(0.0, 0.0)
         elif self.needs_pocket() and pg.K_1 <= e.key <= pg.K_9 and e.key - pg.K_1 < self.core.table.n_pockets:
             self.pocket = e.key - pg.K_1
-            self.status = f"pocket {self.pocket + 1} called for the 8"
+            self.status = f"pocket {self.pocket + 1} called"
 
     def set_tip(self, side: float, top: float) -> None:
         """Tip offsets (fractions of R), moved onto the disc of radius ``max_tip_offset`` if outside."""
