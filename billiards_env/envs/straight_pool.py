@@ -30,9 +30,9 @@ class StraightPoolEnv(BilliardsEnv):
 
     | Num | Action | Min | Max | Meaning |
     |-----|--------|-----|-----|---------|
-    | 0 | aim | -1 | 1 | by ``action_type``: ``absolute`` (default) angle = pi * a[0]; ``relative`` / ``ghost`` from the lowest ball |
+    | 0 | aim | -1 | 1 | ``absolute`` (default): angle = pi * a[0]; ``relative`` / ``ghost``: from the lowest ball |
     | 1 | power | -1 | 1 | speed = speed_min + (a[1] + 1) / 2 * (speed_max - speed_min); default 0.5 .. 8.0 m/s |
-    | 2, 3 | place_x, place_y | -1 | 1 | with ball in hand only: where the cue ball goes (behind the head string); moved to the nearest legal point |
+    | 2, 3 | place_x, place_y | -1 | 1 | ball in hand only: where the cue ball goes (moved to the nearest legal point) |
     | 4 | ball | -1 | 1 | the ball called: row 1 + floor((a + 1) / 2 * 15) (a ball not on the table: no call) |
     | 5 | pocket | -1 | 1 | the pocket called: floor((a + 1) / 2 * 6), the table's pocket order |
 

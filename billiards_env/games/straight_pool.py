@@ -14,8 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from billiards_env.physics.layout import (foot_spot, head_spot, head_string_x, nearest_free_point, spot_cue_ball,
-                                          spot_object_ball, triangle_positions)
+from billiards_env.physics.layout import (RACK_ORDER, foot_spot, head_spot, head_string_x, nearest_free_point,
+                                          spot_cue_ball, spot_object_ball, triangle_positions)
 from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.rules.errors import RulesError
 from billiards_env.rules.state import ANYWHERE, KITCHEN
@@ -28,8 +28,8 @@ from billiards_env.table_state import ShotView, TableState
 from .declarations import CALLED_BALL, CALLED_POCKET, Declaration
 from .hud import base_hud
 from .infos import InfoSpec, code, integer
-from .pool import BALL_IN_HAND_NAMES, PoolSession, pool_place_area
-from .session import Verdict, flag_option, pair_option
+from .pool import BALL_IN_HAND_NAMES, pool_place_area
+from .session import GameSession, Verdict, flag_option
 
 #: Game features of the observation (see :meth:`StraightPoolSession.features`).
 N_STRAIGHT_FEATURES = 8
@@ -38,7 +38,18 @@ _BIH_CODE = {False: 0, ANYWHERE: 1, KITCHEN: 2}
 BACK_CORNERS = (10, 14)
 
 
-class StraightPoolSession(PoolSession):
+def _score_option(options: dict[str, Any]) -> tuple[int, int]:
+    """Reset option ``score``: two whole numbers (a straight pool score may be below zero), default 0-0."""
+    value = options.get("score", (0, 0))
+    pair = tuple(value) if isinstance(value, (tuple, list, np.ndarray)) else ()
+    if len(pair) != 2 or not all(isinstance(x, (int, np.integer)) and not isinstance(x, (bool, np.bool_))
+                                 for x in pair):
+        raise ValueError(f"reset options['score']: expected two whole numbers (player 0's, player 1's; below zero "
+                         f"allowed), got {value!r}")
+    return int(pair[0]), int(pair[1])
+
+
+class StraightPoolSession(GameSession):
     """A game of straight pool (see the module docstring). Balls are numbered as their ids (``"cue"`` 0)."""
 
     ruleset = StraightPool
@@ -48,6 +59,16 @@ class StraightPoolSession(PoolSession):
     openings = ("break",)
     reasons = REASONS
     scored_unit = "points"
+    players = {"random": "billiards_env.players.random:RandomPlayer",
+               "geometric": "billiards_env.players.geometric:GeometricPlayer",
+               "search": "billiards_env.players.search:SearchPlayer"}
+
+    def __init__(self, spec: Any, rules: Any, table: TableState) -> None:
+        #: The ball number of each row (the players' and the search's judge read it) and the row of each number.
+        self.numbers = np.asarray(table.numbers, dtype=np.int64)
+        self.row_of = {int(n): i for i, n in enumerate(self.numbers.tolist())}
+        self._rack_slots: np.ndarray | None = None
+        super().__init__(spec, rules, table)
 
     @classmethod
     def declared(cls, rules: Any) -> tuple[Declaration, ...]:
@@ -55,6 +76,31 @@ class StraightPoolSession(PoolSession):
         return (CALLED_BALL, CALLED_POCKET)
 
     # --- the state ---------------------------------------------------------------------------------------------------
+    def numbers_on(self) -> tuple[int, ...]:
+        """Numbers of the object balls on the table (ascending rows)."""
+        on = self.table.balls.on_table
+        return tuple(int(n) for i, n in enumerate(self.numbers.tolist()) if on[i] and n)
+
+    def legal_rows(self) -> list[int]:
+        """Rows of the balls the shooter may hit first (any ball on the table)."""
+        return [self.row_of[n] for n in self.rules.legal_targets(self.state)]
+
+    def needs_called_pocket(self) -> bool:
+        """Every shot calls a pocket (and a ball)."""
+        return bool(self.rules.needs_called_pocket(self.state))
+
+    def new_game(self, rng: np.random.Generator, placement: str) -> None:
+        """The env's triangle (``placement`` ``"rack"``) ordered as :meth:`rack_order` says; other placements as
+        placed."""
+        if placement != "rack":
+            return
+        pos = self.table.balls.pos
+        if self._rack_slots is None:  # the env's triangle, slot by slot, read once
+            self._rack_slots = np.array([pos[self.row_of[n]] for n in RACK_ORDER])
+        for slot, number in enumerate(self.rack_order(len(self._rack_slots), rng)):
+            pos[self.row_of[number]] = self._rack_slots[slot]
+        self.table.changed()
+
     def start(self, first: int) -> None:
         self.set_state(self.rules.initial_state(first_shooter=first))
 
@@ -64,8 +110,8 @@ class StraightPoolSession(PoolSession):
         try:
             state = StraightPoolState(self.numbers_on(), shooter=shooter,
                                       ball_in_hand=options.get("ball_in_hand", False),
-                                      score=pair_option(options, "score"), break_shot=flag_option(options, "break_shot"),
-                                      target=self.rules.options.target)
+                                      score=_score_option(options),
+                                      break_shot=flag_option(options, "break_shot"), target=self.rules.options.target)
         except RulesError as exc:
             raise ValueError(f"reset options: {exc}") from None
         self.set_state(state)
@@ -198,7 +244,7 @@ class StraightPoolSession(PoolSession):
         numbers = sorted(int(self.numbers[row]) for row in rackable)
         first = 0 if len(numbers) == 15 else 1  # 14: the apex spot stays empty
         order = self.rack_order(15, np.random.default_rng(self.state.racks)) if len(numbers) == 15 else numbers
-        for slot, number in zip(range(first, 15), order):
+        for slot, number in zip(range(first, first + len(order)), order, strict=True):
             row = self.row_of[number]
             b.pos[row] = slots[slot]
             b.on_table[row] = True

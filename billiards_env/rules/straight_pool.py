@@ -47,7 +47,7 @@ REASONS = (LEGAL, CALLED_POCKETED, NOT_CALLED, SCRATCH, NO_CONTACT, NO_RAIL, BRE
            TARGET_REACHED)
 #: Where the 15th ball goes after a re-rack (:func:`rerack_placement`).
 STAYS, HEAD_SPOT, CENTER_SPOT, RACKED = "stays", "head spot", "center spot", "racked"
-BallInHand = Union[Literal[False], Literal["kitchen"], Literal["anywhere"]]
+BallInHand = Union[Literal[False], str]  #: False, "kitchen" (behind the head string) or "anywhere"
 
 
 @checked_keywords
@@ -307,8 +307,8 @@ class StraightPool:
 
     def next_state(self, state: StraightPoolState, call: StraightPoolCall) -> StraightPoolState:
         """The state after ``call`` (made on a shot from ``state``): the score, the foul counts (a foul adds one, a
-        legal shot clears the shooter's, as a third foul does; a breaking violation without a foul leaves it), the balls (pocketed leave, spotted and
-        re-racked come back) and who shoots how."""
+        legal shot clears the shooter's, as a third foul does; a breaking violation without a foul leaves it), the
+        balls (pocketed leave, spotted and re-racked come back) and who shoots how."""
         if call.shooter != state.shooter:
             raise RulesError(f"call: made for player {call.shooter}'s shot but state.shooter is {state.shooter}; "
                              "pass the state the call was made from")

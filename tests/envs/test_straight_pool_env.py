@@ -135,7 +135,7 @@ def test_the_vector_env_plays_straight_pool_one_table_at_a_time_with_the_single_
     assert not vec.unwrapped.native and "no compiled rules" in vec.unwrapped.not_native
     singles = [gym.make(ID, rules={"target": 10}) for _ in range(2)]
     obs, _ = vec.reset(seed=[4, 9])
-    for k, (s, seed) in enumerate(zip(singles, (4, 9))):
+    for k, (s, seed) in enumerate(zip(singles, (4, 9), strict=True)):
         assert np.array_equal(obs[k], s.reset(seed=seed)[0])
     rng = np.random.default_rng(0)
     for _ in range(3):
@@ -157,3 +157,13 @@ def test_the_target_is_a_rules_option_and_a_bad_one_is_refused():
         gym.make(ID, rules={"target": 0})
     with pytest.raises(ValueError, match="unknown player 'serch'"):
         gym.make(ID, opponent="serch")
+
+
+def test_a_table_set_up_by_hand_takes_a_score_below_zero():
+    env = gym.make(ID, opponent=None)
+    env.reset(seed=0)
+    pos = env.unwrapped.balls.pos.copy()
+    _, info = env.reset(options={"positions": pos, "score": (-3, 5), "ball_in_hand": "kitchen"})
+    assert tuple(info["score"]) == (-3, 5) and info["ball_in_hand"] == 2
+    with pytest.raises(ValueError, match=r"reset options\['score'\]: expected two whole numbers"):
+        env.reset(options={"positions": pos, "score": (1.5, 0)})
