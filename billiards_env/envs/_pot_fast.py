@@ -42,13 +42,13 @@ class PotFastStep:
         self.shots = np.zeros(1, np.int64)
         self.obs = np.zeros((1,) + env.observation_space.shape, np.float32)
         self.positions = bool(self.icfg[I_POSITIONS_OBS])
-        self.kernel = pot_step_spin if env._spin else pot_step
+        self.kernel = pot_step_spin if env.physics.has_spin else pot_step
         self.settings = env.state.settings
         self.noisy = self.settings.noisy
         b = env.balls  # the live arrays (updated in place), as one-table batches
         self.table = (b.pos[None], b.vel[None], b.ang[None], b.on_table[None])
         sim = env.simulator
-        self.consts = (b.radius[None], b.mass[None], sim._pocket_xy, sim._pocket_r, sim._params, sim.max_events,
+        self.consts = (b.radius[None], b.mass[None], sim.pocket_xy, sim.pocket_r, sim.params, sim.max_events,
                        self.cfg, self.icfg)
         self.noise = np.zeros((1, 4))
         self.masks: dict[int, np.ndarray] = {}  # a pocketed bit mask -> its row mask

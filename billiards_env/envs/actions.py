@@ -138,6 +138,16 @@ class ActionType:
         self.n = at + len(self.declarations)
         self.space = spaces.Box(-1.0, 1.0, shape=(self.n,), dtype=np.float32)
 
+    @property
+    def place_at(self) -> int:
+        """Index of the ``place_x`` dim (``place_y`` follows) when the action has placement dims."""
+        return self._place_at
+
+    @property
+    def declare_at(self) -> dict[str, int]:
+        """Index of each declaration's dim, by its name."""
+        return dict(self._declare_at)
+
     # --- the aim component (a subclass's part) ----------------------------------------------------------------
     #: The :func:`aim_to_angle` code of this aim type.
     code = AIM_ABSOLUTE

@@ -19,7 +19,7 @@ scenes given through ``reset(options=...)`` are validated there.
 from __future__ import annotations
 
 import contextlib
-from typing import Any, Callable, ClassVar, Iterator, Mapping, Sequence
+from typing import Any, Callable, ClassVar, Iterator, Mapping, NamedTuple, Sequence
 
 import gymnasium as gym
 import numpy as np
@@ -68,6 +68,18 @@ def check_options_mapping(options: Any) -> None:
     if not isinstance(options, Mapping):
         raise ValueError(f"reset options must be a dict, got {type(options).__name__} {options!r}; e.g. "
                          "reset(options={'positions': ...}) or reset() for the usual start")
+
+
+class StartLayout(NamedTuple):
+    """Where ``reset`` puts the balls: ``fixed_rows`` at ``fixed_xy`` (a rack, a head-spot cue ball, a game's own
+    layout), the ``random_rows`` each uniformly in its region (``regions`` rows ``(x0, x_span, y0, y_span)``), clear
+    of the ``pockets`` (centres ``(P, 2)``)."""
+
+    fixed_rows: list[int]
+    fixed_xy: np.ndarray
+    random_rows: np.ndarray
+    regions: np.ndarray
+    pockets: np.ndarray
 
 
 class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
@@ -127,7 +139,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         #: (:func:`~billiards_env.envs.info.info_schema`; ``docs/infos.md``).
         self.info_schema = info_schema(c)
         self._driver = Driver(self._play, self._opponent_shot)
-        self._exact_type: ActionType | None = None  # see _acting_type()
+        self._exact_type: ActionType | None = None  # see acting_type()
 
         #: Whether steps may take the compiled fast path (tests switch it off to compare with the Python path).
         self._fast = True
@@ -150,6 +162,12 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._animations: list[tuple[Any, dict[str, Any]]] = []  # (trajectory, what to draw with it)
         self._shot_view: dict[str, Any] = {}  # what to draw with the shot just played (recording modes)
         self._orientations: np.ndarray | None = None  # the balls' orientations (spin model, animations)
+
+    @property
+    def start_layout(self) -> "StartLayout":
+        """Where ``reset`` puts the balls (checked when the env was made): the native vector env places its tables
+        by it."""
+        return StartLayout(list(self._fixed_rows), self._fixed_xy, self._random_rows, self._regions, self._pockets)
 
     # --- the table state's parts, as shortcuts -------------------------------------------------------------------
     @property
@@ -197,7 +215,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         b.ang.fill(0.0)
         b.on_table.fill(True)
         if options:
-            self._set_positions(options)
+            self.set_positions(options)
         else:
             self._place(self.np_random, b.pos)
         self.shots = 0
@@ -277,7 +295,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                 self._animations.append((played.trajectory, self._shot_view))
         return played
 
-    def _acting_type(self) -> ActionType:
+    def acting_type(self) -> ActionType:
         """The action type a player acts in as the opponent: the env's, or, when the env's cannot express every shot
         (``candidates``), the absolute type with the same dims (so the player plays the shots it chose)."""
         at = self.action_type
@@ -292,7 +310,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         made only for a policy that reads it (a player whose ``reads_observation`` is False gets None)."""
         reads = getattr(self.task.opponent, "reads_observation", True)
         obs = self.observation_type.observe(self.state) if reads else None
-        action, codec = self.task.opponent_action(self.state, obs, self.action_type, self._acting_type(), self)
+        action, codec = self.task.opponent_action(self.state, obs, self.action_type, self.acting_type(), self)
         return codec.shot(self.state, action)
 
     def observe(self, player: int | None = None) -> np.ndarray:
@@ -481,7 +499,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                 f"{self.env_id}: could not place the balls at random; lower n_object_balls, pocket_margin, "
                 "ball_gap or cushion_margin") from None
 
-    def _set_positions(self, options: dict[str, Any], balls: Balls | None = None,
+    def set_positions(self, options: dict[str, Any], balls: Balls | None = None,
                        rng: np.random.Generator | None = None) -> None:
         """Set up ``balls`` (default: the env's) from reset ``options`` (checked), placing at random from ``rng``
         (default: ``np_random``) when no positions are given."""
@@ -593,9 +611,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             times = [np.linspace(0.0, float(t.duration), m) if m > 1 else np.full(m, float(t.duration))
                      for (t, _), m in zip(shots, shares)]
         for k, ((trajectory, view), when) in enumerate(zip(shots, times)):
-            self._animate(trajectory, view, final=k == len(shots) - 1, times=when)
+            self.animate(trajectory, view, final=k == len(shots) - 1, times=when)
 
-    def _animate(self, trajectory: Any, view: dict[str, Any] | None = None, final: bool = True,
+    def animate(self, trajectory: Any, view: dict[str, Any] | None = None, final: bool = True,
                  times: np.ndarray | None = None) -> None:
         """Draw a shot just simulated: frames at :meth:`animation_times` of its trajectory, with ``view`` (the
         shot's cue, tip and HUD); the last one is the state after the shot (``final``: the table now, cue ball
@@ -671,4 +689,4 @@ def make_policy(policy: Any, env: gym.Env) -> Callable[[np.ndarray], np.ndarray]
                     f"{type(policy).__name__}")
 
 
-__all__: Sequence[str] = ["BilliardsEnv", "RENDER_MODES", "check_options_mapping", "make_policy"]
+__all__: Sequence[str] = ["BilliardsEnv", "StartLayout", "RENDER_MODES", "check_options_mapping", "make_policy"]
