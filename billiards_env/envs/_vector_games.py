@@ -193,9 +193,8 @@ class GameTables:
         # One table state per table (views of the batch arrays) for what stays in Python.
         self.states = []
         for k in range(n):
-            st = TableState(venv._states[k].balls, table, t.physics, sim, t.state.numbers, t.state.settings,
-                            view_source=lambda s, k=k: self.view(k))
-            st.game = _TableGame(self, k)
+            st = TableState(venv._states[k].balls, table, t.physics, sim, t.state.numbers, t.state.settings)
+            st.attach_game(_TableGame(self, k), lambda s, k=k: self.view(k))
             self.states.append(st)
         self.ids = t.ball_ids
         self._bits = np.arange(nb, dtype=np.int64)  # a bit mask over the rows -> its row mask

@@ -67,8 +67,9 @@ class Verdict(NamedTuple):
 
 
 class GameSession(ABC):
-    """A game on ``table`` under the rules options ``rules`` (layered over the game's env defaults). Installs itself
-    as ``table.game`` and as the source of ``table.view``.
+    """A game on ``table`` under the rules options ``rules`` (layered over the game's env defaults). Whoever runs it
+    attaches it to the table (:meth:`TableState.attach_game <billiards_env.table_state.TableState.attach_game>`:
+    ``table.game`` and the source of ``table.view``; the env's task does).
 
     ``state`` is the rules' state; ``last_call`` the call on the last shot; ``verdict`` its :class:`Verdict`;
     ``score`` the games won and the balls each player pocketed; ``shot_under_way`` the shot being played (between
@@ -112,9 +113,6 @@ class GameSession(ABC):
         self.score = Score()
         self.shot_under_way: Any = None
         self._viewer: int | None = None
-        table.game = self
-        table.view_source = self.view
-        table.changed()
 
     # --- configuration -------------------------------------------------------------------------------------------
     @classmethod
