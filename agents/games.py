@@ -118,7 +118,7 @@ class TrainedPlayer:
             raise ValueError(f"{self.name}: the env's action type ({u.action_type.name}) cannot express every shot; "
                              "play trained policies on an env with an exact type (the league uses 'absolute')")
         shot = self.shot(u.state)
-        return u.action_from_shot(shot.angle, shot.speed, shot.side, shot.top, shot.place, shot.pocket, shot.push)
+        return u.action_from_shot(shot.angle, shot.speed, shot.side, shot.top, shot.place, **dict(shot.calls))
 
     def shot(self, state: Any) -> Any:
         """The shot (:class:`~billiards_env.envs.actions.CueShot`) the policy means on a table state of the env it

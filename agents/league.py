@@ -437,7 +437,7 @@ def markdown(game: str, pairs: Sequence[PairResult], elo: dict[str, float], info
                      f"[{100 * lo:.0f}, {100 * hi:.0f}] | {100 * p.break_and_runs / p.games:.0f}% | "
                      f"{p.seconds:.0f} s |")
     stats = player_stats(pairs, runs)
-    unit = SCORED.get(game, "scored")
+    unit = scored_unit(game)
     lines += ["", f"| player | Elo | games won [95% CI] | break-and-run (breaks) | {unit} per inning | run-out from "
               "ball in hand [95% CI] | balls per turn in hand | ms / decision |", "|---|---|---|---|---|---|---|---|"]
     for name, r in sorted(elo.items(), key=lambda kv: -kv[1]):
@@ -495,7 +495,11 @@ def _aec_module(game: str) -> Any:
     return importlib.import_module(f"billiards_env.multi.{GAMES[game]}")
 
 
-SCORED = {"nine_ball": "balls", "eight_ball": "balls", "snooker": "points", "three_cushion": "points"}
+def scored_unit(game: str) -> str:
+    """What ``game``'s ``Verdict.scored`` counts (``"balls"``, ``"points"``): its session's ``scored_unit``."""
+    from billiards_env.games import game_spec
+
+    return game_spec(game).session_class.scored_unit
 
 
 def league_env_kwargs(players: Sequence[tuple[str, Any]], spin: bool, noise: str | float,

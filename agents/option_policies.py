@@ -286,7 +286,7 @@ class Scorer:
         view = u.state.view
         if self.hand and view.place_area is not None and not view.break_shot:
             s = self.shot(u.state, u.observation_type, u.action_type)
-            return u.action_from_shot(s.angle, s.speed, s.side, s.top, s.place, s.pocket, s.push)
+            return u.action_from_shot(s.angle, s.speed, s.side, s.top, s.place, **dict(s.calls))
         return self.predict(obs)
 
     def load_fallback(self) -> Any:

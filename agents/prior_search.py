@@ -188,11 +188,9 @@ class PriorSearchPlayer:
             if best is None or out.robust > best[3].robust:
                 best = (place, angle, speed, out, play)
         place, angle, speed, out, play = best
-        pocket = None
-        if ctx.game is not None and ctx.game.needs_called_pocket():
-            with state.cue_moved_to(place):
-                pocket = self.search._called_pocket(ctx, angle, speed, out)
-        action = to_action(codec, state, angle, speed, place=place, pocket=pocket, side=out.side, top=out.top)
+        with state.cue_moved_to(place):
+            calls = self.search.calls_for(ctx, angle, speed, out)
+        action = to_action(codec, state, angle, speed, place=place, side=out.side, top=out.top, **calls)
         searched = play.action_for(angle, speed, out.side, out.top)
         if searched is not None:
             dims = 4 if codec.spin else 2

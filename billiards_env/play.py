@@ -1,4 +1,4 @@
-"""``billiards-play``: play a billiards scene, or a game (9-ball, 8-ball, snooker, three-cushion), with the mouse.
+"""``billiards-play``: play a billiards scene, or a game (any of the game registry's), with the mouse.
 
 Aim: move the mouse; the cue and its aim line follow from the cue ball towards the pointer.
 Shoot: press the left button, drag away from the press point to set the power (the bar below the table),
@@ -168,7 +168,7 @@ class PlayApp:
         self.status = ""
         self.last_info: dict[str, Any] | None = None
         self.last_action: np.ndarray | None = None
-        self.core._window = PlayWindow(self)  # the env's human mode shows its frames here (see BilliardsEnv._show)
+        self.core.attach_window(PlayWindow(self))  # the env's human mode shows its frames here
         self.reset(seed)
 
     # --- coordinates ------------------------------------------------------------------------------------
@@ -300,8 +300,26 @@ class PlayApp:
         return not self.done and self.core.state.view.place_area is not None
 
     def needs_pocket(self) -> bool:
-        """The shooter is on the 8 and must call its pocket (8-ball)."""
+        """The shooter must call a pocket (8-ball on the 8; every shot of straight pool, whose called ball is the
+        one aimed at)."""
         return not self.done and self.is_game and self.core.state.view.call_pocket
+
+    def aimed_ball(self) -> int | None:
+        """Row of the first object ball on the cue's line from where the cue ball is (or will be placed), or None:
+        the ball a game that calls balls (straight pool) takes as called."""
+        from billiards_env.physics.aim import ray_circle_entry
+
+        b = self.core.balls
+        cx, cy = self.cue_xy()
+        ux, uy = math.cos(self.aim), math.sin(self.aim)
+        best, row = math.inf, None
+        for k in range(1, len(b.pos)):
+            if b.on_table[k]:
+                d = ray_circle_entry(cx, cy, ux, uy, float(b.pos[k, 0]), float(b.pos[k, 1]),
+                                     float(b.radius[0] + b.radius[k]))
+                if math.isfinite(d) and d < best:
+                    best, row = d, k
+        return row
 
     def cue_xy(self) -> tuple[float, float]:
         if self.place is not None:
@@ -321,11 +339,14 @@ class PlayApp:
         """Play the shot set by ``aim``, ``power``, the tip, the placement and the called pocket; the env animates
         it (and a game's opponent's reply) in the window as it is drawn, with the power bar already gone."""
         if self.needs_pocket() and self.pocket is None:
-            self.status = "call the 8's pocket first: click a pocket or press 1-6"
+            self.status = "call the pocket first: click a pocket or press 1-6"
             self.dragging, self.power = False, 0.0
             return None
         side, top = self.tip if self.spin else (0.0, 0.0)
-        action = self.core.action_from_shot(self.aim, self.speed(), side, top, place=self.place, pocket=self.pocket)
+        calls: dict[str, Any] = {"pocket": self.pocket}
+        if any(d.name == "ball" for d in self.core.action_type.declarations):  # a called ball: the one aimed at
+            calls["ball"] = self.aimed_ball()
+        action = self.core.action_from_shot(self.aim, self.speed(), side, top, place=self.place, **calls)
         self.last_action = action
         self.status = f"shot {self.shots + 1}: {self.speed():.2f} m/s ... (Space skips the animation)"
         self.dragging, self.power = False, 0.0  # released: the bar goes, the balls move
@@ -384,7 +405,7 @@ class PlayApp:
         if self.in_hand():
             base += "; ball in hand: drag it, or click where to put it"
         if self.needs_pocket():
-            base += "; call the 8's pocket (click it or press 1-6)"
+            base += "; call the pocket (click it or press 1-6)"
         return base
 
     # --- input ------------------------------------------------------------------------------------------
@@ -445,7 +466,7 @@ class PlayApp:
             k = self._pocket_at(pos)
             if k is not None:
                 self.pocket = k
-                self.status = f"pocket {k + 1} called for the 8"
+                self.status = f"pocket {k + 1} called"
                 return
         if self.in_hand():
             bx, by = self.ball_pixel(0)
@@ -485,7 +506,7 @@ class PlayApp:
             self.set_tip(0.0, 0.0)
         elif self.needs_pocket() and pg.K_1 <= e.key <= pg.K_9 and e.key - pg.K_1 < self.core.table.n_pockets:
             self.pocket = e.key - pg.K_1
-            self.status = f"pocket {self.pocket + 1} called for the 8"
+            self.status = f"pocket {self.pocket + 1} called"
 
     def set_tip(self, side: float, top: float) -> None:
         """Tip offsets (fractions of R), moved onto the disc of radius ``max_tip_offset`` if outside."""
@@ -716,9 +737,12 @@ def demo_events(app: PlayApp, power: float = 0.5, max_shots: int = 4) -> Iterato
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from billiards_env.games import GAMES
     from billiards_env.registration import ENV_IDS, env_id_arg
 
-    p = argparse.ArgumentParser(prog="billiards-play", description=__doc__.split("\n\n")[0].split(": ", 1)[1],
+    games = ", ".join(g.title for g in GAMES.values())  # the registry's games, by title
+    summary = __doc__.split("\n\n")[0].split(": ", 1)[1].replace("any of the game registry's", games)
+    p = argparse.ArgumentParser(prog="billiards-play", description=summary,
                                 epilog=__doc__.split("\n\n", 1)[1],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--env", default="BilliardsOneBall-v0", type=env_id_arg, choices=list(ENV_IDS),

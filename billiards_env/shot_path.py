@@ -28,16 +28,29 @@ TIP_LIMIT = 0.5 * (1.0 - 1e-12)
 class CueShot(NamedTuple):
     """One shot as played (before noise): cue direction ``angle`` (rad, 0 = +x, counter-clockwise), ``speed``
     (m/s), tip offsets ``side`` and ``top`` (fractions of R), and the cue ball's placement ``place`` (x, y) when
-    the shooter has ball in hand (else None); ``pocket`` and ``push``: a game's declarations (the pocket called for
-    the 8, a 9-ball push-out)."""
+    the shooter has ball in hand (else None); ``calls``: the game's declarations as ``(name, value)`` pairs (the
+    game's :class:`~billiards_env.games.declarations.Declaration` names: e.g. the pocket called for the 8, a 9-ball
+    push-out, straight pool's called ball and pocket); read them with :meth:`call`."""
 
     angle: float
     speed: float
     side: float = 0.0
     top: float = 0.0
     place: tuple[float, float] | None = None
-    pocket: int | None = None  #: the pocket called for the 8 (8-ball)
-    push: bool = False  #: declare a push-out (9-ball)
+    calls: tuple[tuple[str, Any], ...] = ()
+
+    def call(self, name: str, default: Any = None) -> Any:
+        """The value declared as ``name``, or ``default`` when the shot does not declare it."""
+        for key, value in self.calls:
+            if key == name:
+                return value
+        return default
+
+    def with_calls(self, **given: Any) -> "CueShot":
+        """This shot with the declarations it carries set from ``given`` (names it does not carry are ignored)."""
+        if not self.calls:
+            return self
+        return self._replace(calls=tuple((k, given.get(k, v)) for k, v in self.calls))
 
 
 @njit(cache=True)
@@ -123,7 +136,7 @@ def play_shot(state: TableState, shot: CueShot, rng: np.random.Generator, record
         b.ang.fill(0.0)
     state.changed()
     outcome = ShotOutcome.from_arrays(status, sim_time, n_events, pocket_of, ev_int)
-    return PlayedShot(outcome, trajectory, CueShot(angle, speed, side, top, shot.place, shot.pocket, shot.push), start)
+    return PlayedShot(outcome, trajectory, CueShot(angle, speed, side, top, shot.place, shot.calls), start)
 
 
 __all__ = ["CueShot", "PlayedShot", "noisy_shot", "draw_noise", "play_shot", "TIP_LIMIT"]

@@ -187,6 +187,14 @@ class TableState:
             v = self._view = self.view_source(self)
         return v
 
+    def attach_game(self, game: Any, view_source: Callable[["TableState"], ShotView]) -> None:
+        """Play ``game`` (a game's session) on this table: ``game`` is then the state's ``game`` and ``view_source``
+        says who is to shoot and what they may do. The task that runs the game attaches it (the session does not
+        install itself)."""
+        self.game = game
+        self.view_source = view_source
+        self.changed()
+
     def changed(self) -> None:
         """The balls or the game moved on (a shot, a reset, a respot): the view is computed again on next read."""
         self._view = None

@@ -42,13 +42,13 @@ class PotFastStep:
         self.shots = np.zeros(1, np.int64)
         self.obs = np.zeros((1,) + env.observation_space.shape, np.float32)
         self.positions = bool(self.icfg[I_POSITIONS_OBS])
-        self.kernel = pot_step_spin if env._spin else pot_step
+        self.kernel = pot_step_spin if env.physics.has_spin else pot_step
         self.settings = env.state.settings
         self.noisy = self.settings.noisy
         b = env.balls  # the live arrays (updated in place), as one-table batches
         self.table = (b.pos[None], b.vel[None], b.ang[None], b.on_table[None])
         sim = env.simulator
-        self.consts = (b.radius[None], b.mass[None], sim._pocket_xy, sim._pocket_r, sim._params, sim.max_events,
+        self.consts = (b.radius[None], b.mass[None], sim.pocket_xy, sim.pocket_r, sim.params, sim.max_events,
                        self.cfg, self.icfg)
         self.noise = np.zeros((1, 4))
         self.masks: dict[int, np.ndarray] = {}  # a pocketed bit mask -> its row mask
@@ -69,7 +69,6 @@ class PotFastStep:
         env.shots += 1
         env.last_shot = (f[F_START_X], f[F_START_Y], f[F_ANGLE], f[F_SPEED])
         env.last_tip = (f[F_SIDE], f[F_TOP])
-        env._animations = []
         terminated = i[O_TERMINATED] != 0
         truncated = i[O_TRUNCATED] != 0
         mask = i[O_POCKETED]
@@ -79,7 +78,6 @@ class PotFastStep:
         info = {"is_success": i[O_SUCCESS] != 0}
         info.update(shot_info(pocketed.copy(), i[O_SCRATCH] != 0, int(out[5][0]), int(out[2][0]), float(out[1][0]),
                               int(out[0][0]), env.shots, CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP])))
-        env._needs_reset = terminated or truncated
         env.state.changed()
         obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env.state)
         return obs, f[F_REWARD], terminated, truncated, info

@@ -64,7 +64,7 @@ def native_games(env: "BilliardsEnv", render_mode: str | None) -> str | None:
     at = env.action_type
     if type(at) not in _AIM_CODES and type(at) is not CandidateShots:
         return f"the action type {at.name!r}"
-    if type(env._acting_type()) not in _AIM_CODES:
+    if type(env.acting_type()) not in _AIM_CODES:
         return "the opponent's action type"
     rack, placement, _ = _SESSIONS[type(session)]
     if c.placement not in (placement, "random"):
@@ -107,7 +107,7 @@ class GameTables:
         session = task.session
         self.rules = session.rules
         at = t.action_type
-        acting = t._acting_type()
+        acting = t.acting_type()
         self.action_type = at
         self.opts = pj.options_row(self.rules)
         self.full = pj.mask_of(self.rules.full_rack)
@@ -157,11 +157,11 @@ class GameTables:
         icfg[gk.J_AIM] = gk.AIM_CANDIDATES if type(at) is CandidateShots else _AIM_CODES[type(at)]
         icfg[gk.J_ACT_AIM] = _AIM_CODES[type(acting)]
         icfg[gk.J_SPIN_DIMS] = at.spin
-        icfg[gk.J_SPIN_MODEL] = t._spin
+        icfg[gk.J_SPIN_MODEL] = t.physics.has_spin
         icfg[gk.J_N_ACT] = at.n
-        icfg[gk.J_PLACE_AT] = at._place_at
-        icfg[gk.J_POCKET_AT] = at._declare_at.get("pocket", -1)
-        icfg[gk.J_PUSH_AT] = at._declare_at.get("push", -1)
+        icfg[gk.J_PLACE_AT] = at.place_at
+        icfg[gk.J_POCKET_AT] = at.declare_at.get("pocket", -1)
+        icfg[gk.J_PUSH_AT] = at.declare_at.get("push", -1)
         icfg[gk.J_N_POCKETS] = at.n_pockets
         icfg[gk.J_OPPONENT] = gk.OPP_NONE if task.opponent is None else gk.OPP_GEOMETRIC
         icfg[gk.J_FIRST] = {"agent": gk.FIRST_AGENT, "opponent": gk.FIRST_OPPONENT}.get(c.first_shooter,
@@ -190,14 +190,14 @@ class GameTables:
         holes = np.column_stack([table.pocket_xy, table.pocket_radius]).astype(np.float64) if table.n_pockets else \
             np.zeros((0, 3))
         self.consts = (venv._radius[0], venv._mass[0])
-        self.tables = (sim._pocket_xy, sim._pocket_r, sim._params, tm.pocket_xy, tm.pocket_r, tm.params,
+        self.tables = (sim.pocket_xy, sim.pocket_r, sim.params, tm.pocket_xy, tm.pocket_r, tm.params,
                        np.ascontiguousarray(holes))
         # The rack's slots as order_rack takes them (the positions of the numbers of the rack order in the layout).
-        fixed = {int(row): xy for row, xy in zip(t._fixed_rows, t._fixed_xy)}
+        fixed = {int(row): xy for row, xy in zip(t.start_layout.fixed_rows, t.start_layout.fixed_xy)}
         self.rack_slots = np.array([fixed[n] for n in order], dtype=np.float64).reshape(-1, 2) \
             if icfg[gk.J_RACK] != gk.RACK_NONE else np.zeros((0, 2))
-        self.layout = (np.asarray(t._fixed_rows, np.int64),
-                       np.ascontiguousarray(t._fixed_xy, dtype=float).reshape(-1, 2), venv._rand_rows, venv._regions,
+        self.layout = (np.asarray(t.start_layout.fixed_rows, np.int64),
+                       np.ascontiguousarray(t.start_layout.fixed_xy, dtype=float).reshape(-1, 2), venv._rand_rows, venv._regions,
                        venv._pockets)
         self._no_act = np.zeros((n, at.n))
         self.gst = np.zeros((n, pj.N_STATE), np.int64)
@@ -213,9 +213,8 @@ class GameTables:
         # One table state per table (views of the batch arrays) for what stays in Python.
         self.states = []
         for k in range(n):
-            st = TableState(venv._states[k].balls, table, t.physics, sim, t.state.numbers, t.state.settings,
-                            view_source=lambda s, k=k: self.view(k))
-            st.game = _TableGame(self, k)
+            st = TableState(venv._states[k].balls, table, t.physics, sim, t.state.numbers, t.state.settings)
+            st.attach_game(_TableGame(self, k), lambda s, k=k: self.view(k))
             self.states.append(st)
         self.ids = t.ball_ids
         self._bits = np.arange(nb, dtype=np.int64)  # a bit mask over the rows -> its row mask
@@ -277,7 +276,7 @@ class GameTables:
         its balls and game state copied to the table."""
         v = self.venv
         t = v.template
-        t._np_random = v._rngs[k]
+        t.np_random = v._rngs[k]
         _, info = t.reset(options=options)
         b = t.balls
         v.pos[k] = b.pos

@@ -19,11 +19,13 @@ Every action is a ``Box(-1, 1)`` vector laid out as::
 - ``place_x``, ``place_y``: where the cue ball goes when the shooter has ball in hand, linearly over the allowed
   area; ignored otherwise. A point that overlaps a ball or leaves the area is moved to the nearest legal point
   (:func:`billiards_env.physics.layout.nearest_free_point`).
-- ``pocket`` (8-ball with called 8s): the pocket called for the 8, ``k = floor((a + 1) / 2 * n_pockets)`` (the
-  table's pocket order); read only when the shooter is on the 8.
-- ``push`` (9-ball with push-outs): ``a > 0`` declares a push-out when one is allowed; ignored otherwise. (After
-  a push-out the incoming player always plays: the envs do not offer the pass-back of
-  :meth:`billiards_env.rules.NineBall.pass_back`.)
+- the game's declarations, one dim each, as the game declares them
+  (:class:`~billiards_env.games.declarations.Declaration`): ``pocket`` (8-ball with called 8s: the pocket called
+  for the 8, ``k = floor((a + 1) / 2 * n_pockets)`` in the table's pocket order, read only when the shooter is on
+  the 8; straight pool: the called ball's pocket), ``ball`` (straight pool: the called ball, row
+  ``1 + floor((a + 1) / 2 * n_object_balls)``), ``push`` (9-ball with push-outs: ``a > 0`` declares a push-out
+  when one is allowed; ignored otherwise. After a push-out the incoming player always plays: the envs do not
+  offer the pass-back of :meth:`billiards_env.rules.NineBall.pass_back`).
 
 Finite values outside ``[-1, 1]`` are clipped (a policy outputs anything); NaN/inf or a wrong number of values
 raise ``ValueError``. Any array holding the right number of values is accepted (``(2,)``, ``(1, 2)``...).
@@ -37,6 +39,7 @@ import numpy as np
 from gymnasium import spaces
 from numba import njit
 
+from billiards_env.games.declarations import Declaration
 from billiards_env.physics.aim import (aim_angle, direction_vector, ghost_ball_aim, ray_circle_entry, wrap_angle)
 from billiards_env.physics.layout import py_hypot
 from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_POCKET, COL_SPEED, SPEED_FACTORS, ghost_shots,
@@ -113,8 +116,12 @@ class ActionType:
     #: Whether :meth:`action` is the exact inverse of :meth:`shot` (every shot has its action).
     exact_inverse = True
 
-    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[Declaration, ...] = (),
                  n_pockets: int = 6) -> None:
+        for d in declarations:
+            if not isinstance(d, Declaration):
+                raise TypeError(f"declarations: expected Declaration objects (billiards_env.games.declarations), got "
+                                f"{type(d).__name__} {d!r}")
         self.speed_lo = float(config.speed_min)
         self.speed_span = float(config.speed_max - config.speed_min)
         self.spin = bool(config.spin_action)
@@ -122,12 +129,24 @@ class ActionType:
         self.placement = bool(placement)
         self.declarations = tuple(declarations)
         self.n_pockets = int(n_pockets)
+        #: Rows of the table (the ``ball`` declaration chooses among the object balls).
+        self.n_balls = int(config.n_object_balls) + 1
         self._spin_at = 2
         self._place_at = 4 if self.spin else 2
         at = self._place_at + (2 if self.placement else 0)
-        self._declare_at = {name: at + k for k, name in enumerate(self.declarations)}
+        self._declare_at = {d.name: at + k for k, d in enumerate(self.declarations)}
         self.n = at + len(self.declarations)
         self.space = spaces.Box(-1.0, 1.0, shape=(self.n,), dtype=np.float32)
+
+    @property
+    def place_at(self) -> int:
+        """Index of the ``place_x`` dim (``place_y`` follows) when the action has placement dims."""
+        return self._place_at
+
+    @property
+    def declare_at(self) -> dict[str, int]:
+        """Index of each declaration's dim, by its name."""
+        return dict(self._declare_at)
 
     # --- the aim component (a subclass's part) ----------------------------------------------------------------
     #: The :func:`aim_to_angle` code of this aim type.
@@ -167,7 +186,7 @@ class ActionType:
 
     def layout(self) -> str:
         names = ["aim", "power"] + (["side", "top"] if self.spin else []) \
-            + (["place_x", "place_y"] if self.placement else []) + list(self.declarations)
+            + (["place_x", "place_y"] if self.placement else []) + [d.name for d in self.declarations]
         return ", ".join(names)
 
     def shot(self, state: "TableState", action: Any) -> CueShot:
@@ -178,24 +197,23 @@ class ActionType:
         if self.spin:
             u, v = square_to_disc(a[self._spin_at], a[self._spin_at + 1])
             side, top = self.max_tip * u, self.max_tip * v
-        pocket = None
-        if "pocket" in self._declare_at:
-            pocket = min(int(0.5 * (a[self._declare_at["pocket"]] + 1.0) * self.n_pockets), self.n_pockets - 1)
-        push = "push" in self._declare_at and a[self._declare_at["push"]] > 0.0
+        calls = tuple((d.name, d.decode(a[self._declare_at[d.name]], self.n_pockets, self.n_balls))
+                      for d in self.declarations)
         area = state.view.place_area if self.placement else None
         if area is None:
-            return CueShot(self.angle(state, a[0]), speed, side, top, None, pocket, push)
+            return CueShot(self.angle(state, a[0]), speed, side, top, None, calls)
         k = self._place_at
         place = state.legal_cue_position(*area.point(a[k], a[k + 1]))
         with state.cue_moved_to(place):  # the aim is relative to where the cue ball will be
             angle = self.angle(state, a[0])
-        return CueShot(angle, speed, side, top, place, pocket, push)
+        return CueShot(angle, speed, side, top, place, calls)
 
     def action(self, state: "TableState", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
-               place: tuple[float, float] | None = None, pocket: int | None = None,
-               push: bool = False) -> np.ndarray:
-        """The action of a shot (inverse of :meth:`shot`); speeds outside the range clip, extra dims not given
-        take neutral values (no spin; the placement dims the middle of the area; pocket 0; no push-out)."""
+               place: tuple[float, float] | None = None, **calls: Any) -> np.ndarray:
+        """The action of a shot (inverse of :meth:`shot`); ``calls``: the declarations by name (those the type does
+        not declare are ignored: a player states its whole call). Speeds outside the range clip, extra dims not
+        given take neutral values (no spin; the placement dims the middle of the area; a choice its first value,
+        e.g. pocket 0; a flag False)."""
         for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
             if not math.isfinite(float(v)):
                 raise ValueError(f"action_from_shot: {name} must be finite, got {v!r}")
@@ -210,11 +228,8 @@ class ActionType:
         out[1] = 2.0 * (float(speed) - self.speed_lo) / self.speed_span - 1.0
         if self.spin:
             out[self._spin_at], out[self._spin_at + 1] = disc_to_square(side / self.max_tip, top / self.max_tip)
-        if "pocket" in self._declare_at:
-            k = 0 if pocket is None else min(max(int(pocket), 0), self.n_pockets - 1)
-            out[self._declare_at["pocket"]] = (2.0 * k + 1.0) / self.n_pockets - 1.0
-        if "push" in self._declare_at:
-            out[self._declare_at["push"]] = 1.0 if push else -1.0
+        for d in self.declarations:
+            out[self._declare_at[d.name]] = d.encode(calls.get(d.name, d.default), self.n_pockets, self.n_balls)
         return np.clip(out, -1.0, 1.0).astype(np.float32)
 
 
@@ -292,7 +307,7 @@ class GhostAim(ActionType):
     name = "ghost"
     code = AIM_GHOST
 
-    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[Declaration, ...] = (),
                  n_pockets: int = 6) -> None:
         super().__init__(config, placement, declarations, n_pockets)
         self.max_angle = math.radians(config.ghost_max_angle)
@@ -343,7 +358,8 @@ class CandidateShots(ActionType):
       ``PLACE_BACK`` metres behind the ghost ball (``place_x`` -1 .. 1, 0.44 m at 0), at a cut of
       ``place_y * 60`` degrees (0: straight in); moved to the nearest legal point. The cue is then aimed at that
       ghost ball from where it stands.
-    - ``pocket`` (8-ball): ignored; the chosen candidate's pocket is called.
+    - the declarations ``pocket`` and ``ball`` (8-ball's 8, straight pool's call): ignored; the chosen candidate's
+      ball and pocket are called.
     - The break: a full-ball hit on the nearest legal ball at ``speed_max * candidate_speed_factor ** min(a, 0)``
       (full power from 0 up), the cue ball at ``x = x1 - |place_x| (x1 - x0)`` (0: on the head string) and ``y``
       linear over the kitchen (0: the middle), as the geometric player breaks at 0.
@@ -359,7 +375,7 @@ class CandidateShots(ActionType):
     name = "candidates"
     exact_inverse = False
 
-    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[Declaration, ...] = (),
                  n_pockets: int = 6) -> None:
         super().__init__(config, placement, declarations, n_pockets)
         self.n_slots = int(config.candidate_slots)
@@ -447,8 +463,7 @@ class CandidateShots(ActionType):
                 angle = self._direct(state, cands.targets)
             return base._replace(angle=angle, speed=self._speed(FALLBACK_SPEED, a[1]))
         slot = self._pot(cands, a[0])
-        if "pocket" in self._declare_at:  # the 8's called pocket: the chosen shot's
-            base = base._replace(pocket=slot.pocket)
+        base = base.with_calls(pocket=slot.pocket, ball=slot.target)  # the call is the chosen shot's
         if cands.in_hand:
             k = self._place_at
             place = self._place_for(state, slot, a[k], a[k + 1])
@@ -457,9 +472,8 @@ class CandidateShots(ActionType):
         return base._replace(angle=slot.shot.angle, speed=self._speed(slot.shot.speed, a[1]))
 
     def action(self, state: "TableState", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
-               place: tuple[float, float] | None = None, pocket: int | None = None,
-               push: bool = False) -> np.ndarray:
-        out = np.asarray(super().action(state, angle, speed, side, top, place, pocket, push), dtype=np.float64)
+               place: tuple[float, float] | None = None, **calls: Any) -> np.ndarray:
+        out = np.asarray(super().action(state, angle, speed, side, top, place, **calls), dtype=np.float64)
         cands = self.slots(state)
         out[0] = 0.0
         if cands.break_shot:
@@ -518,7 +532,7 @@ class CandidateAim(CandidateShots):
 
     name = "candidates_aim"
 
-    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+    def __init__(self, config: "EnvConfig", placement: bool = False, declarations: tuple[Declaration, ...] = (),
                  n_pockets: int = 6) -> None:
         super().__init__(config, placement, declarations, n_pockets)
         self._offset_at = self.n
@@ -542,12 +556,11 @@ class CandidateAim(CandidateShots):
         return played._replace(angle=angle)
 
     def action(self, state: "TableState", angle: float, speed: float, side: float = 0.0, top: float = 0.0,
-               place: tuple[float, float] | None = None, pocket: int | None = None,
-               push: bool = False) -> np.ndarray:
+               place: tuple[float, float] | None = None, **calls: Any) -> np.ndarray:
         """The nearest action (as ``candidates``: the slot whose aim is closest, its speed factor), with the
         ``offset`` that sends the slot's ball where the cue direction ``angle`` sends it (the line of centres at
         contact), when it is a pot from where the cue ball lies."""
-        out = super().action(state, angle, speed, side, top, place, pocket, push)
+        out = super().action(state, angle, speed, side, top, place, **calls)
         cands = self.slots(state)
         if cands.break_shot or cands.in_hand or not cands.slots:
             return out
@@ -572,7 +585,7 @@ ACTION_TYPES = {"absolute": AbsoluteAim, "relative": RelativeAim, "ghost": Ghost
                 "candidates_aim": CandidateAim}
 
 
-def action_factory(config: "EnvConfig", placement: bool = False, declarations: tuple[str, ...] = (),
+def action_factory(config: "EnvConfig", placement: bool = False, declarations: tuple[Declaration, ...] = (),
                    n_pockets: int = 6) -> ActionType:
     """The action type named by ``config.action_type`` (with spin dims per ``config.spin_action``, placement dims
     when the task has ball in hand, and the task's declarations)."""

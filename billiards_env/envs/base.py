@@ -19,7 +19,7 @@ scenes given through ``reset(options=...)`` are validated there.
 from __future__ import annotations
 
 import contextlib
-from typing import Any, Callable, ClassVar, Iterator, Mapping, Sequence
+from typing import Any, Callable, ClassVar, Iterator, Mapping, NamedTuple, Sequence
 
 import gymnasium as gym
 import numpy as np
@@ -30,9 +30,8 @@ from billiards_env.games import GAMES
 from billiards_env.games.infos import mask_of
 from billiards_env.games.session import GameSession
 from billiards_env.physics.codes import STATUS_NAMES
-from billiards_env.physics.layout import (CAROM_IDS, DIAMOND_ORDER, RACK_ORDER, carom_start_positions,
-                                          diamond_positions, foot_spot, head_spot, head_string_x, place_random,
-                                          rack_rows, snooker_balls, triangle_positions)
+from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_positions, foot_spot, head_spot,
+                                          head_string_x, place_random, rack_rows, triangle_positions)
 from billiards_env.physics.model import Physics
 from billiards_env.physics.simulate import Simulator
 from billiards_env.physics.table import Table
@@ -69,6 +68,18 @@ def check_options_mapping(options: Any) -> None:
     if not isinstance(options, Mapping):
         raise ValueError(f"reset options must be a dict, got {type(options).__name__} {options!r}; e.g. "
                          "reset(options={'positions': ...}) or reset() for the usual start")
+
+
+class StartLayout(NamedTuple):
+    """Where ``reset`` puts the balls: ``fixed_rows`` at ``fixed_xy`` (a rack, a head-spot cue ball, a game's own
+    layout), the ``random_rows`` each uniformly in its region (``regions`` rows ``(x0, x_span, y0, y_span)``), clear
+    of the ``pockets`` (centres ``(P, 2)``)."""
+
+    fixed_rows: list[int]
+    fixed_xy: np.ndarray
+    random_rows: np.ndarray
+    regions: np.ndarray
+    pockets: np.ndarray
 
 
 class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
@@ -128,7 +139,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         #: (:func:`~billiards_env.envs.info.info_schema`; ``docs/infos.md``).
         self.info_schema = info_schema(c)
         self._driver = Driver(self._play, self._opponent_shot)
-        self._exact_type: ActionType | None = None  # see _acting_type()
+        self._exact_type: ActionType | None = None  # see acting_type()
 
         #: Whether steps may take the compiled fast path (tests switch it off to compare with the Python path).
         self._fast = True
@@ -151,6 +162,12 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._animations: list[tuple[Any, dict[str, Any]]] = []  # (trajectory, what to draw with it)
         self._shot_view: dict[str, Any] = {}  # what to draw with the shot just played (recording modes)
         self._orientations: np.ndarray | None = None  # the balls' orientations (spin model, animations)
+
+    @property
+    def start_layout(self) -> "StartLayout":
+        """Where ``reset`` puts the balls (checked when the env was made): the native vector env places its tables
+        by it."""
+        return StartLayout(list(self._fixed_rows), self._fixed_xy, self._random_rows, self._regions, self._pockets)
 
     # --- the table state's parts, as shortcuts -------------------------------------------------------------------
     @property
@@ -198,7 +215,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         b.ang.fill(0.0)
         b.on_table.fill(True)
         if options:
-            self._set_positions(options)
+            self.set_positions(options)
         else:
             self._place(self.np_random, b.pos)
         self.shots = 0
@@ -209,11 +226,21 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.state.changed()
         info = blank_info(self.info_schema)  # the schema's keys: the task's, and no shot yet
         info.update(self.task.reset(self.state, self.np_random, options, self._driver))
+        self.show_new_episode()
+        return self.observation_type.observe(self.state), info
+
+    def show_new_episode(self) -> None:
+        """What ``reset`` draws: the frame list started afresh with the table now (``rgb_array_list``), or the table
+        shown (``human``); nothing otherwise. The native vector env calls it on the table it draws."""
         if self.render_mode == "rgb_array_list":
             self._frames = [self._draw_state()]
         elif self.render_mode == "human":
             self._show(None)
-        return self.observation_type.observe(self.state), info
+
+    def attach_window(self, window: Any) -> None:
+        """Show the human mode's frames in ``window`` (an object with ``closed``, ``show(surface, fps)`` and
+        ``close()``) instead of a window of the env's own: ``billiards-play`` shows them in its window so."""
+        self._window = window
 
     def step(self, action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
         """Strike the cue ball with ``action``, simulate until every ball is at rest, score the shot.
@@ -225,7 +252,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                     "reset() to start a new one (vector envs and SB3 do this for you)")
             raise gym.error.ResetNeeded("call reset() before step(): the table has no balls yet")
         if self._pot_fast is not None and self._fast and not self._record:
-            return self._pot_fast.step(self, action)
+            obs, reward, terminated, truncated, info = self._pot_fast.step(self, action)
+            self._animations = []
+            self._needs_reset = terminated or truncated
+            return obs, reward, terminated, truncated, info
         shot = self.action_type.shot(self.state, action)
         self.task.before_shot(shot)
         self._animations = []
@@ -265,7 +295,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                 self._animations.append((played.trajectory, self._shot_view))
         return played
 
-    def _acting_type(self) -> ActionType:
+    def acting_type(self) -> ActionType:
         """The action type a player acts in as the opponent: the env's, or, when the env's cannot express every shot
         (``candidates``), the absolute type with the same dims (so the player plays the shots it chose)."""
         at = self.action_type
@@ -280,7 +310,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         made only for a policy that reads it (a player whose ``reads_observation`` is False gets None)."""
         reads = getattr(self.task.opponent, "reads_observation", True)
         obs = self.observation_type.observe(self.state) if reads else None
-        action, codec = self.task.opponent_action(self.state, obs, self.action_type, self._acting_type(), self)
+        action, codec = self.task.opponent_action(self.state, obs, self.action_type, self.acting_type(), self)
         return codec.shot(self.state, action)
 
     def observe(self, player: int | None = None) -> np.ndarray:
@@ -323,25 +353,26 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     # ======================================================================================================
     def shot_from_action(self, action: Any) -> CueShot:
         """The shot an action means now (no noise): a :class:`~billiards_env.shot_path.CueShot` ``(angle rad,
-        speed m/s, side, top, place, pocket, push)``. NaN/inf raise ValueError; finite values outside [-1, 1] are
+        speed m/s, side, top, place, calls)``. NaN/inf raise ValueError; finite values outside [-1, 1] are
         clipped."""
         return self.action_type.shot(self.state, action)
 
     def action_from_shot(self, angle: float, speed: float, side: float = 0.0, top: float = 0.0,
-                         place: tuple[float, float] | None = None, pocket: int | None = None,
-                         push: bool = False) -> np.ndarray:
+                         place: tuple[float, float] | None = None, **calls: Any) -> np.ndarray:
         """The action that strikes the cue ball at ``angle`` (rad, 0 = +x, CCW) and ``speed`` (m/s) with tip
-        offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand), calling ``pocket`` for the 8 or
-        declaring ``push`` (games), in the active action type (inverse of :meth:`shot_from_action`); dims not given
-        are neutral. Arguments the env cannot play raise ``ValueError`` naming the valid range: a speed outside
-        [speed_min, speed_max], tip offsets without spin dims or beyond ``max_tip_offset``, a place without ball in
-        hand or outside its area, a pocket or a push-out the game does not declare. (A policy's actions are never
-        refused: they are clipped, see :mod:`.actions`.)"""
-        self._check_shot_arguments(float(angle), float(speed), float(side), float(top), place, pocket, push)
-        return self.action_type.action(self.state, angle, speed, side, top, place, pocket, push)
+        offsets ``side``/``top`` (spin dims) from ``place`` (ball in hand), with the game's declarations ``calls``
+        by name (:class:`~billiards_env.games.declarations.Declaration`: ``pocket=`` the pocket called for the 8 or
+        straight pool's ball, ``ball=`` straight pool's called ball, ``push=True`` a 9-ball push-out), in the active
+        action type (inverse of :meth:`shot_from_action`); dims not given are neutral. Arguments the env cannot play
+        raise ``ValueError`` naming the valid range: a speed outside [speed_min, speed_max], tip offsets without spin
+        dims or beyond ``max_tip_offset``, a place without ball in hand or outside its area, a declaration the game
+        does not make or a value it cannot take. (A policy's actions are never refused: they are clipped, see
+        :mod:`.actions`.)"""
+        self._check_shot_arguments(float(angle), float(speed), float(side), float(top), place, calls)
+        return self.action_type.action(self.state, angle, speed, side, top, place, **calls)
 
     def _check_shot_arguments(self, angle: float, speed: float, side: float, top: float,
-                              place: Any, pocket: Any, push: bool) -> None:
+                              place: Any, calls: dict[str, Any]) -> None:
         at = self.action_type
         s = self.state.settings
         for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
@@ -372,17 +403,21 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             if not area.contains(x, y):
                 raise ValueError(f"action_from_shot: place ({x:.4g}, {y:.4g}) is outside the ball-in-hand area "
                                  f"{area.describe()}")
-        if pocket is not None:
-            if "pocket" not in at.declarations:
-                raise ValueError(f"action_from_shot: pocket given, but {self.task.name!r} calls no pocket (only "
-                                 "8-ball with rules call_eight); leave pocket None")
-            if isinstance(pocket, bool) or not isinstance(pocket, (int, np.integer)) or \
-                    not 0 <= int(pocket) < at.n_pockets:
-                raise ValueError(f"action_from_shot: pocket must be a pocket index 0..{at.n_pockets - 1}, got "
-                                 f"{pocket!r}")
-        if push and "push" not in at.declarations:
-            raise ValueError(f"action_from_shot: push=True, but {self.task.name!r} has no push-outs (9-ball with "
-                             "rules={'push_out': True})")
+        declared = {d.name: d for d in at.declarations}
+        for name, value in calls.items():
+            d = declared.get(name)
+            if d is None:
+                if value is None or value is False:  # nothing declared: fine for any game
+                    continue
+                makes = ", ".join(map(repr, declared)) or "none"
+                raise ValueError(f"action_from_shot: {name}={value!r} given, but {self.task.name!r} declares no "
+                                 f"{name!r} with its rules options (its declarations: {makes}; 8-ball calls a "
+                                 "pocket with call_eight, 9-ball pushes out with push_out, straight pool calls a "
+                                 "ball and a pocket); leave it out")
+            try:
+                d.check(value, at.n_pockets, at.n_balls)
+            except ValueError as exc:
+                raise ValueError(f"action_from_shot: {exc}") from None
 
     def target_ball(self) -> int | None:
         """Row of the ball to hit first (the relative and ghost aim's target): the lowest-numbered object ball on
@@ -420,9 +455,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             for slot, number in enumerate(DIAMOND_ORDER):
                 rows.append(number)
                 pts.append((float(dia[slot, 0]), float(dia[slot, 1])))
-        if c.placement in ("snooker", "carom"):  # every ball on its spot, by id
-            spots = snooker_balls(self.table, radius=c.ball_radius).pos if c.placement == "snooker" else \
-                np.array([carom_start_positions(self.table)[i] for i in CAROM_IDS])
+        game = GAMES.get(c.task)
+        if game is not None and c.placement in game.session_class.placements:  # the game's own layout, every row
+            spots = game.session_class.start_layout(c.placement, self.table, c.ball_radius)
             rows = list(range(len(spots)))
             pts = [(float(x), float(y)) for x, y in spots]
         return rows, np.array(pts, dtype=float).reshape(-1, 2)
@@ -464,7 +499,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                 f"{self.env_id}: could not place the balls at random; lower n_object_balls, pocket_margin, "
                 "ball_gap or cushion_margin") from None
 
-    def _set_positions(self, options: dict[str, Any], balls: Balls | None = None,
+    def set_positions(self, options: dict[str, Any], balls: Balls | None = None,
                        rng: np.random.Generator | None = None) -> None:
         """Set up ``balls`` (default: the env's) from reset ``options`` (checked), placing at random from ``rng``
         (default: ``np_random``) when no positions are given."""
@@ -507,7 +542,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             game = self.state.game
             self._renderer = TableRenderer(self.table, self.config.ball_radius, width_px=self.config.render_width,
                                            hud=self.task.hud() is not None,
-                                           markings=game.markings() if game is not None else None)
+                                           markings=game.markings() if game is not None else None,
+                                           palette=game.palette if game is not None else None)
         return self._renderer
 
     def _cue_overlay(self) -> tuple[float, float, float] | None:
@@ -575,9 +611,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             times = [np.linspace(0.0, float(t.duration), m) if m > 1 else np.full(m, float(t.duration))
                      for (t, _), m in zip(shots, shares)]
         for k, ((trajectory, view), when) in enumerate(zip(shots, times)):
-            self._animate(trajectory, view, final=k == len(shots) - 1, times=when)
+            self.animate(trajectory, view, final=k == len(shots) - 1, times=when)
 
-    def _animate(self, trajectory: Any, view: dict[str, Any] | None = None, final: bool = True,
+    def animate(self, trajectory: Any, view: dict[str, Any] | None = None, final: bool = True,
                  times: np.ndarray | None = None) -> None:
         """Draw a shot just simulated: frames at :meth:`animation_times` of its trajectory, with ``view`` (the
         shot's cue, tip and HUD); the last one is the state after the shot (``final``: the table now, cue ball
@@ -615,7 +651,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
               view: dict[str, Any] | None = None) -> bool:
         """Human mode: show one frame (``state``: positions, flags, orientations, drawn with ``view``; or now) at
         render_fps, as soon as it is drawn; False once the user closed the window. The window is a :class:`~billiards_env.render.HumanWindow` made on first use, or
-        whatever a front-end put in ``_window`` before (``closed``, ``show(surface, fps)``, ``close()``):
+        the one a front-end attached (:meth:`attach_window`) (``closed``, ``show(surface, fps)``, ``close()``):
         ``billiards-play`` shows the env's frames in its own window that way."""
         import pygame
 
@@ -653,4 +689,4 @@ def make_policy(policy: Any, env: gym.Env) -> Callable[[np.ndarray], np.ndarray]
                     f"{type(policy).__name__}")
 
 
-__all__: Sequence[str] = ["BilliardsEnv", "RENDER_MODES", "check_options_mapping", "make_policy"]
+__all__: Sequence[str] = ["BilliardsEnv", "StartLayout", "RENDER_MODES", "check_options_mapping", "make_policy"]

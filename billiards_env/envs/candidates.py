@@ -181,7 +181,7 @@ def _kick_slot(state: "TableState", lo: float, hi: float) -> Slot | None:
     b = state.balls
     sim = state.simulator
     found, j, a, speed, d = kick_of(b.pos, b.on_table, b.radius, b.mass, _targets(state), *state_model(state), lo, hi,
-                                    sim._pocket_xy, sim._pocket_r, sim._params, sim._spin, int(sim.max_events))
+                                    sim.pocket_xy, sim.pocket_r, sim.params, sim.has_spin, int(sim.max_events))
     if not found:
         return None
     shot = ShotCandidate(j, -1, a, speed, speed, math.nan, 0.0, d, 0.0, 0.0, 0.0, True, True, False, 0.0)

@@ -46,7 +46,9 @@ from .observations import OBSERVATION_TYPES as _OBSERVATION_TYPES
 #: Directory of the packaged scene files (one per registered id).
 SCENES_DIR = Path(__file__).resolve().parent / "scenes"
 
-PLACEMENTS = ("random", "rack", "diamond", "snooker", "carom")
+#: The generic placements; a game adds its own (:attr:`GameSession.placements
+#: <billiards_env.games.session.GameSession.placements>`: snooker's ``"snooker"``, three-cushion's ``"carom"``).
+PLACEMENTS = ("random", "rack", "diamond")
 CUE_PLACEMENTS = ("random", "kitchen", "head_spot")
 #: The action and observation types' names (each type registers itself in its module's dict).
 ACTION_TYPES = tuple(_ACTION_TYPES)
@@ -54,6 +56,8 @@ OBSERVATION_TYPES = tuple(_OBSERVATION_TYPES)
 OPENINGS = ("break", "ball_in_hand", "either")
 #: ``pot`` (the scenes without rules) and every registered game (:data:`billiards_env.games.GAMES`).
 TASKS = ("pot",) + tuple(GAMES)
+#: The players every game has by name (a game may add its own: :attr:`GameSession.players
+#: <billiards_env.games.session.GameSession.players>`, which the ``opponent`` key reads).
 OPPONENTS = ("geometric", "search", "random")
 SPEED_NOISE_MODES = ("relative", "absolute")
 #: The named shot noises (config key ``noise``): the keys they set (tip_noise only under the spin model; a tip
@@ -103,8 +107,9 @@ class EnvConfig:
                           "pockets, drawn from the env's np_random at every reset), 'rack' (a touching triangle "
                           "at the foot spot, apex towards the cue; the standard 15-ball order when n = 15; the games "
                           "shuffle it as the rules say), 'diamond' (the 9-ball diamond: 1 at the apex, 9 in the "
-                          "middle), 'snooker' (the reds' triangle and the colours on their spots, the cue ball in "
-                          "the D) or 'carom' (the three-cushion start position).", default="random")
+                          "middle), or a game's own layout (its session's placements: snooker's 'snooker', the reds' "
+                          "triangle and the colours on their spots, the cue ball in the D; three-cushion's 'carom', "
+                          "the start position).", default="random")
     cue_placement: str = _doc("Where the cue ball starts: 'random' (anywhere, like the object balls), 'kitchen' "
                               "(random behind the head string, x < length/4) or 'head_spot' (length/4, width/2).",
                               default="random")
@@ -527,7 +532,8 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     n = cfg.n_object_balls
     _require(1 <= n <= MAX_OBJECT_BALLS or cfg.task in GAMES, "n_object_balls",
              f"must be 1..{MAX_OBJECT_BALLS}, got {n}")
-    _choice(cfg, "placement", PLACEMENTS)
+    own = game_spec(cfg.task).session_class.placements if cfg.task in GAMES else ()
+    _choice(cfg, "placement", PLACEMENTS + tuple(own))
     _choice(cfg, "cue_placement", CUE_PLACEMENTS)
     _choice(cfg, "action_type", ACTION_TYPES)
     _choice(cfg, "observation_type", OBSERVATION_TYPES)
@@ -543,8 +549,9 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     _require(1 <= cfg.candidate_slots <= 12, "candidate_slots", f"must be 1..12, got {cfg.candidate_slots}")
     _require(cfg.candidate_speed_factor > 1.0, "candidate_speed_factor",
              f"must be > 1 (a[1] = +-1 multiplies / divides the shot's speed by it), got {cfg.candidate_speed_factor}")
-    _require(cfg.opponent is None or cfg.opponent in OPPONENTS, "opponent",
-             f"unknown player {cfg.opponent!r}; use one of {', '.join(map(repr, OPPONENTS))} or None (play alone)")
+    players = tuple(game_spec(cfg.task).session_class.players) if cfg.task in GAMES else OPPONENTS
+    _require(cfg.opponent is None or cfg.opponent in players, "opponent",
+             f"unknown player {cfg.opponent!r}; use one of {', '.join(map(repr, players))} or None (play alone)")
     if game:
         spec = game_spec(cfg.task)
         _require(cfg.n_object_balls == spec.n_object_balls, "n_object_balls",
@@ -595,9 +602,8 @@ def _validate(cfg: EnvConfig) -> None:  # noqa: C901 - one flat list of checks
     if cfg.placement == "random":
         free = min(t.length, t.width) - 2 * (r + cfg.cushion_margin)
         _require(free > 0, "cushion_margin", f"{cfg.cushion_margin} m leaves no room on the table; lower it")
-    elif cfg.placement in ("snooker", "carom"):
-        want = {"snooker": 21, "carom": 2}[cfg.placement]
-        _require(n == want, "placement", f"{cfg.placement!r} places {want} object balls, got n_object_balls {n}")
+    elif cfg.placement in own:  # the game's own layout: its ball count is the game's (checked above)
+        pass
     elif cfg.placement == "diamond":
         _require(n == 9, "placement", f"'diamond' racks 9 object balls, got n_object_balls {n}")
         _require(rack_fits(t, 15, r, cfg.rack_gap), "rack_gap",

@@ -53,6 +53,7 @@ class GameTask(Task):
         self.spec = spec
         self.name = spec.name
         self.session: GameSession = spec.session_class(spec, config.rules, state)
+        state.attach_game(self.session, self.session.view)
         self.declarations = self.session.declarations
         self.has_ball_in_hand = self.session.ball_in_hand
         self.n_features = self.session.n_features

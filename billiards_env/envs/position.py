@@ -159,8 +159,8 @@ def position_features(state: "TableState", cands: object, n_slots: int, speed_ra
     grid = rest_grid(float(b.pos[0, 0]), float(b.pos[0, 1]), rows, b.pos[targets], contact, float(speed_range[0]),
                      float(speed_range[1]), float(log_factor), float(max_tip), _POWERS, _TOPS, float(b.radius[0]),
                      float(b.mass[0]), mo, float(t.length), float(t.width), float(t.cushion_restitution),
-                     float(ph.ball_restitution), sim._pocket_xy, sim._pocket_r, int(law), float(acc), float(kk),
-                     float(ph.min_speed), sim._params)
+                     float(ph.ball_restitution), sim.pocket_xy, sim.pocket_r, int(law), float(acc), float(kk),
+                     float(ph.min_speed), sim.params)
     tm = state_model(state)
     sigma = max(float(state.settings.angle_noise), EASE_SPREAD)
     return _position_map(grid, rows, b.pos, b.on_table, b.radius, _targets(state), _numbers(state), float(t.length),

@@ -46,8 +46,9 @@ class Task:
     has_ball_in_hand = False
     #: Extra keys of ``reset(options=...)`` the task reads (besides ``positions`` and ``pocketed``).
     option_keys: tuple[str, ...] = ()
-    #: Declarations the action carries (``"pocket"``: the 8's called pocket; ``"push"``: a 9-ball push-out).
-    declarations: tuple[str, ...] = ()
+    #: Declarations the action carries (:class:`~billiards_env.games.declarations.Declaration`: e.g. the 8's called
+    #: pocket, a 9-ball push-out; a game's session names them).
+    declarations: tuple[Any, ...] = ()
     #: Game features appended to every observation (values in [0, 1]).
     n_features = 0
 

@@ -151,13 +151,14 @@ class BilliardsVectorEnv(VectorEnv):
         self._ever_reset = False
         self._has_shot = np.zeros(n, np.bool_)  # a shot since the last reset (the rendered cue line)
         # Layout of a reset (the template's, checked when it was made).
-        self._fixed_rows = np.asarray(t._fixed_rows, np.int64)
-        self._fixed_xy = np.ascontiguousarray(t._fixed_xy, dtype=float).reshape(-1, 2)
-        self._rand_rows = np.asarray(t._random_rows, np.int64)
-        self._regions = np.asarray(t._regions, dtype=float).reshape(-1, 4)
-        self._pockets = np.asarray(t._pockets, dtype=float).reshape(-1, 2)
+        lay = t.start_layout
+        self._fixed_rows = np.asarray(lay.fixed_rows, np.int64)
+        self._fixed_xy = np.ascontiguousarray(lay.fixed_xy, dtype=float).reshape(-1, 2)
+        self._rand_rows = np.asarray(lay.random_rows, np.int64)
+        self._regions = np.asarray(lay.regions, dtype=float).reshape(-1, 4)
+        self._pockets = np.asarray(lay.pockets, dtype=float).reshape(-1, 2)
         # Shots and scoring.
-        self._spin_model = t._spin
+        self._spin_model = t.physics.has_spin
         self._positions_obs = bool(self._icfg[I_POSITIONS_OBS])
         self._bits = np.arange(nb, dtype=np.int64)  # a pocketed bit mask -> its row mask
         # Per-sub-env random generators (as each single env's np_random), and the compiled code's view of them.
@@ -253,7 +254,7 @@ class BilliardsVectorEnv(VectorEnv):
         else:
             step = pot_step_spin if self._spin_model else pot_step
             ok = step(act, active, self.pos, self.vel, self.ang, self.on_table, self.shots, self._radius, self._mass,
-                      sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), self._cfg, self._icfg, noise,
+                      sim.pocket_xy, sim.pocket_r, sim.params, int(sim.max_events), self._cfg, self._icfg, noise,
                       out, fout, iout, self._obs)
         if not ok:
             raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
@@ -398,7 +399,7 @@ class BilliardsVectorEnv(VectorEnv):
         b.vel.fill(0.0)
         b.ang.fill(0.0)
         b.on_table.fill(True)
-        self.template._set_positions(options, b, self._rngs[k])
+        self.template.set_positions(options, b, self._rngs[k])
         state.changed()
 
     def _observe(self, rows: np.ndarray) -> None:
@@ -579,11 +580,7 @@ class BilliardsVectorEnv(VectorEnv):
         if self.render_mode not in ("rgb_array_list", "human") or self.render_env not in rows:
             return
         self._sync_template()
-        t = self.template
-        if self.render_mode == "rgb_array_list":
-            t._frames = [t._draw_state()]
-        else:
-            t._show(None)
+        self.template.show_new_episode()
 
     def _render_snapshot(self, active: np.ndarray) -> Balls | None:
         """The rendered table before its shot (animated modes only), to re-simulate with the trajectory kept."""
@@ -600,7 +597,7 @@ class BilliardsVectorEnv(VectorEnv):
         t = self.template
         res = t.simulator.run(before, record=True, validate=False)
         self._sync_template()
-        t._animate(res.trajectory, final=True)
+        t.animate(res.trajectory, final=True)
 
 
 def _autoreset_mode(mode: str | AutoresetMode) -> AutoresetMode:

@@ -37,10 +37,22 @@ class CaromSession(GameSession):
     n_features = N_CAROM_FEATURES
     option_keys = ("score", "break_shot")
     reasons = REASONS
+    scored_unit = "points"
     ball_in_hand = False
     players = {"random": "billiards_env.players.random:RandomPlayer",
                "geometric": "billiards_env.players.three_cushion:CaromGeometricPlayer",
                "search": "billiards_env.players.three_cushion:CaromSearchPlayer"}
+
+    placements = ("carom",)
+    palette = {CAROM_NUMBERS["white"]: (248, 246, 238), CAROM_NUMBERS["yellow"]: (250, 214, 40),
+               CAROM_NUMBERS["red"]: (204, 26, 30)}
+
+    @classmethod
+    def start_layout(cls, placement: str, table: Any, radius: float) -> np.ndarray:
+        """``"carom"``: the UMB start position (player 0 breaking), rows white, yellow, red."""
+        if placement != "carom":
+            return super().start_layout(placement, table, radius)
+        return np.array([carom_start_positions(table)[i] for i in CAROM_IDS])
 
     @classmethod
     def ball_set(cls, n_object_balls: int) -> tuple[tuple[str, ...], tuple[int, ...]]:

@@ -17,15 +17,18 @@ from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, head_string
 from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.physics.table import Table
 from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions,
-                                 GameState, NineBall, NineBallOptions, RulesError, ShotInfo, summarize_outcome)
+                                 GameState, NineBall, NineBallOptions, RulesError, ShotInfo, ShotSummary,
+                                 summarize_outcome)
 from billiards_env.rules.pool_judge import REASONS
 from billiards_env.rules.state import Call
 from billiards_env.table_state import Area, RectArea, ShotView, TableState
 
+from .declarations import CALLED_POCKET, PUSH_OUT, Declaration
 from .hud import base_hud
 from .infos import InfoSpec, code
 from .session import GameSession, Verdict, flag_option
 
+_NO_DECLARATION = ShotInfo()
 #: The game features every pool game observes (see :meth:`PoolSession.features`).
 N_POOL_FEATURES = 11
 #: ``info["ball_in_hand"]``: the code of the state's value (0 none, 1 anywhere, 2 in the kitchen).
@@ -83,6 +86,23 @@ class PoolSession(GameSession):
     def needs_called_pocket(self) -> bool:
         """The shooter must call a pocket for the next shot (8-ball, on the 8)."""
         return bool(self.rules.needs_called_pocket(self.state))
+
+    def needs_calls(self) -> bool:
+        return self.needs_called_pocket()
+
+    def calls_for(self, pocket: np.ndarray) -> dict[str, Any]:
+        """On the 8 with calls on: the pocket the shot sends the 8 into (none if it stays up)."""
+        if not self.needs_called_pocket():
+            return {}
+        k = int(pocket[self.row_of[8]])
+        return {"pocket": k if k >= 0 else None}
+
+    def declared_for(self, summary: ShotSummary) -> ShotInfo:
+        """The declarations a shooter would have made for the outcome ``summary`` (the search player judges
+        outcomes so): on the 8 with calls on, the pocket the 8 dropped into."""
+        if self.needs_called_pocket() and 8 in summary.pocketed:
+            return ShotInfo(called_pocket=summary.pockets[summary.pocketed.index(8)])
+        return _NO_DECLARATION
 
     def new_game(self, rng: np.random.Generator, placement: str) -> None:
         self.order_rack(rng, placement)
@@ -170,8 +190,8 @@ class PoolSession(GameSession):
     def _call(self, outcome: ShotOutcome, shot: Any) -> tuple[Call, GameState]:
         s = self.state
         summary = summarize_outcome(outcome, self.numbers)
-        push = bool(shot is not None and shot.push and s.push_out_available)
-        pocket = shot.pocket if (shot is not None and self.needs_called_pocket()) else None
+        push = bool(shot is not None and shot.call("push", False) and s.push_out_available)
+        pocket = shot.call("pocket") if (shot is not None and self.needs_called_pocket()) else None
         return self.rules.play(s, summary, ShotInfo(push_out=push, called_pocket=pocket))
 
     def _apply(self, call: Call, outcome: ShotOutcome) -> None:
@@ -228,7 +248,7 @@ class PoolSession(GameSession):
             "kitchen_x": head_string_x(self.table.table) if in_hand == KITCHEN else None,
             "targets": self.hud_targets(targets),
             "call_pocket": calling and shot is None,
-            "called_pocket": shot.pocket if (calling and shot is not None) else None,
+            "called_pocket": shot.call("pocket") if (calling and shot is not None) else None,
         }
 
     def hud_targets(self, targets: tuple[int, ...]) -> tuple[int, ...]:
@@ -245,8 +265,8 @@ class NineBallSession(PoolSession):
     opening_respot = 9
 
     @classmethod
-    def declared(cls, rules: Any) -> tuple[str, ...]:
-        return ("push",) if rules.options.push_out else ()
+    def declared(cls, rules: Any) -> tuple[Declaration, ...]:
+        return (PUSH_OUT,) if rules.options.push_out else ()
 
     def rack_order(self, n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
         """The diamond's numbers slot by slot: the 1 at the apex, the 9 in the middle, the others drawn."""
@@ -264,8 +284,8 @@ class EightBallSession(PoolSession):
     opening_respot = 8
 
     @classmethod
-    def declared(cls, rules: Any) -> tuple[str, ...]:
-        return ("pocket",) if rules.options.call_eight else ()
+    def declared(cls, rules: Any) -> tuple[Declaration, ...]:
+        return (CALLED_POCKET,) if rules.options.call_eight else ()
 
     def rack_order(self, n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
         """The triangle's numbers slot by slot: the 8 in the middle of the third row, a solid and a stripe in the

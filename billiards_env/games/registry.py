@@ -78,5 +78,8 @@ register_game(GameSpec("snooker", "snooker", "BilliardsSnooker-v0", "billiards_e
 register_game(GameSpec("three_cushion", "three-cushion", "BilliardsThreeCushion-v0",
                        "billiards_env.envs.three_cushion:ThreeCushionEnv", "three_cushion", "three_cushion_v0", 2,
                        "billiards_env.games.carom:CaromSession"))
+register_game(GameSpec("straight_pool", "straight pool", "BilliardsStraightPool-v0",
+                       "billiards_env.envs.straight_pool:StraightPoolEnv", "straight_pool", "straight_pool_v0", 15,
+                       "billiards_env.games.straight_pool:StraightPoolSession"))
 
 __all__ = ["GameSpec", "GAMES", "register_game", "game_spec", "game_of_env"]

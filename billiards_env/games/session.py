@@ -23,6 +23,7 @@ from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.rules.errors import RulesError, check_keywords
 from billiards_env.table_state import ShotView, TableState
 
+from .declarations import Declaration
 from .hud import Score
 from .infos import InfoSpec, mask_of
 from .registry import GameSpec
@@ -66,8 +67,9 @@ class Verdict(NamedTuple):
 
 
 class GameSession(ABC):
-    """A game on ``table`` under the rules options ``rules`` (layered over the game's env defaults). Installs itself
-    as ``table.game`` and as the source of ``table.view``.
+    """A game on ``table`` under the rules options ``rules`` (layered over the game's env defaults). Whoever runs it
+    attaches it to the table (:meth:`TableState.attach_game <billiards_env.table_state.TableState.attach_game>`:
+    ``table.game`` and the source of ``table.view``; the env's task does).
 
     ``state`` is the rules' state; ``last_call`` the call on the last shot; ``verdict`` its :class:`Verdict`;
     ``score`` the games won and the balls each player pocketed; ``shot_under_way`` the shot being played (between
@@ -85,17 +87,25 @@ class GameSession(ABC):
     ball_in_hand: ClassVar[bool] = True
     #: The env's ``opening`` values this game plays (``"break"`` always).
     openings: ClassVar[tuple[str, ...]] = ("break",)
+    #: The config's ``placement`` values this game adds to the generic ones (``random``, ``rack``, ``diamond``): its
+    #: own opening layouts, each placed by :meth:`start_layout` (snooker: ``"snooker"``; three-cushion: ``"carom"``).
+    placements: ClassVar[tuple[str, ...]] = ()
     #: The built-in players by name: ``module:Class`` of each (a class taking ``seed``, with ``act(state, obs,
     #: codec)``); the env's ``opponent`` names one.
     players: ClassVar[dict[str, str]] = {}
+    #: The colours of the game's plain balls by drawing number (above 15: the renderer draws 0-15 as the pool set),
+    #: handed to the renderer as plain data (snooker's reds and colours, the carom set).
+    palette: ClassVar[dict[int, tuple[int, int, int]]] = {}
+    #: What :attr:`Verdict.scored` counts, in words (the league's "per inning" column): ``"balls"``, ``"points"``.
+    scored_unit: ClassVar[str] = "balls"
     #: Every reason a call may give (``Verdict.reason``): the info's ``call`` and ``foul_reason`` are codes into it.
     reasons: ClassVar[tuple[str, ...]] = ()
 
     def __init__(self, spec: GameSpec, rules: Any, table: TableState) -> None:
         self.spec = spec
         self.rules = self.make_rules(rules)
-        #: What the shooter declares besides the shot (action dims): e.g. ``"pocket"``, ``"push"``.
-        self.declarations: tuple[str, ...] = self.declared(self.rules)
+        #: What the shooter declares besides the shot (action dims): :class:`~.declarations.Declaration` objects.
+        self.declarations: tuple[Declaration, ...] = self.declared(self.rules)
         self.table = table
         self.state: Any = self.rules.initial_state()
         self.last_call: Any = None
@@ -103,9 +113,6 @@ class GameSession(ABC):
         self.score = Score()
         self.shot_under_way: Any = None
         self._viewer: int | None = None
-        table.game = self
-        table.view_source = self.view
-        table.changed()
 
     # --- configuration -------------------------------------------------------------------------------------------
     @classmethod
@@ -125,9 +132,15 @@ class GameSession(ABC):
         return cls.ruleset(cls.options(overrides))
 
     @classmethod
-    def declared(cls, rules: Any) -> tuple[str, ...]:
-        """The declaration dims of the action under ``rules`` (none by default)."""
+    def declared(cls, rules: Any) -> tuple[Declaration, ...]:
+        """The declarations of the action under ``rules``, one dim each (none by default)."""
         return ()
+
+    @classmethod
+    def start_layout(cls, placement: str, table: Any, radius: float) -> np.ndarray:
+        """The positions ``(n_balls, 2)`` of every row in the game's own layout ``placement`` (one of
+        :attr:`placements`) on ``table`` with balls of ``radius``: the env places them at every reset."""
+        raise ValueError(f"placement {placement!r}: {cls.__name__} has no layouts of its own")
 
     @classmethod
     def ball_set(cls, n_object_balls: int) -> tuple[tuple[str, ...], tuple[int, ...]]:
@@ -205,6 +218,18 @@ class GameSession(ABC):
         """The balls the shooter may hit first as a boolean array over the rows (``info["legal_targets"]``; all
         False once the game is over)."""
         return mask_of(() if self.game_over else self.legal_rows(), self.table.n_balls)
+
+    # --- declarations ------------------------------------------------------------------------------------------------
+    def needs_calls(self) -> bool:
+        """Whether the next shot's declarations are read (a called pocket, a called ball...): players then say
+        what their shot does with :meth:`calls_for`. None by default."""
+        return False
+
+    def calls_for(self, pocket: np.ndarray) -> dict[str, Any]:
+        """The declarations (by :class:`~.declarations.Declaration` name) a shooter makes for a shot that sends each
+        row into pocket ``pocket[row]`` (-1: stays on the table): what a player that simulated its shot calls.
+        None by default."""
+        return {}
 
     # --- shots -------------------------------------------------------------------------------------------------------
     def begin_shot(self, shot: Any) -> None:

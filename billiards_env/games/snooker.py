@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from billiards_env.physics.layout import (SNOOKER_COLOURS, SNOOKER_IDS, d_geometry, nearest_point_in_d,
-                                          spot_snooker_colours)
+                                          snooker_balls, spot_snooker_colours)
 from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.rules.errors import RulesError
 from billiards_env.rules.snooker import (COLOUR_VALUES, IN_D, ON_COLOUR, ON_NAMES, ON_RED, REASONS, RED_VALUE,
@@ -44,9 +44,16 @@ class SnookerSession(GameSession):
     n_features = N_SNOOKER_FEATURES
     option_keys = ("ball_in_hand", "on", "score")  # the reds: those on the table (positions, pocketed)
     reasons = REASONS
+    scored_unit = "points"
     players = {"random": "billiards_env.players.random:RandomPlayer",
                "geometric": "billiards_env.players.snooker:SnookerGeometricPlayer",
                "search": "billiards_env.players.snooker:SnookerSearchPlayer"}
+
+    placements = ("snooker",)
+    palette = {RED_NUMBER: (196, 22, 28), COLOUR_NUMBERS["yellow"]: (250, 204, 20),
+               COLOUR_NUMBERS["green"]: (0, 120, 64), COLOUR_NUMBERS["brown"]: (120, 70, 30),
+               COLOUR_NUMBERS["blue"]: (22, 70, 180), COLOUR_NUMBERS["pink"]: (244, 140, 170),
+               COLOUR_NUMBERS["black"]: (18, 18, 20)}
 
     def __init__(self, spec: Any, rules: Any, table: TableState) -> None:
         self.values = np.asarray(snooker_values(table.ids), dtype=np.int64)
@@ -54,6 +61,13 @@ class SnookerSession(GameSession):
         self._before: Any = None  # the balls before the shot under way (a miss puts them back)
         self._snookered = False
         super().__init__(spec, rules, table)
+
+    @classmethod
+    def start_layout(cls, placement: str, table: Any, radius: float) -> np.ndarray:
+        """``"snooker"``: the reds' triangle, the colours on their spots, the cue ball in the D."""
+        if placement != "snooker":
+            return super().start_layout(placement, table, radius)
+        return snooker_balls(table, radius=radius).pos
 
     @classmethod
     def ball_set(cls, n_object_balls: int) -> tuple[tuple[str, ...], tuple[int, ...]]:

@@ -34,10 +34,27 @@ PettingZoo is a dependency; Gymnasium's registry does not list these (PettingZoo
 """
 from __future__ import annotations
 
-from . import eight_ball_v0, nine_ball_v0, snooker_v0, three_cushion_v0
+import importlib
+from types import ModuleType
+
+from billiards_env.games import GAMES
+
 from .aec import AGENTS, BilliardsGameAEC
 from .match import GameRecord, MatchResult, play_match
 from .parallel import BilliardsParallelEnv
 
-__all__ = ["nine_ball_v0", "eight_ball_v0", "snooker_v0", "three_cushion_v0", "BilliardsGameAEC",
-           "BilliardsParallelEnv", "AGENTS", "play_match", "MatchResult", "GameRecord"]
+#: Every game's two-player module name (``nine_ball_v0``...), from the game registry: a new game's module is listed
+#: by its registry entry, and imported on first use (``from billiards_env.multi import nine_ball_v0``, or
+#: ``billiards_env.multi.nine_ball_v0``).
+GAME_MODULES: tuple[str, ...] = tuple(g.aec_module for g in GAMES.values())
+
+
+def __getattr__(name: str) -> ModuleType:
+    """A registered game's two-player module, imported on first use."""
+    if name in GAME_MODULES:
+        return importlib.import_module(f"{__name__}.{name}")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+__all__ = [*GAME_MODULES, "GAME_MODULES", "BilliardsGameAEC", "BilliardsParallelEnv", "AGENTS", "play_match",
+           "MatchResult", "GameRecord"]

@@ -121,7 +121,7 @@ def _check_simulator(sim: Simulator) -> bool:
     if sim.solver != "exact":
         raise SceneError(f"solver.name: batches run the exact solver, got {sim.solver!r}; make the Simulator "
                          "with solver='exact' (or loop over Simulator.run for the step solver)")
-    return sim._kernels.spin
+    return sim.kernels.spin
 
 
 def _as_rows(name: str, values, n: int | None, dtype=float) -> np.ndarray:
@@ -193,8 +193,8 @@ def simulate_into(sim: Simulator, pos: np.ndarray, vel: np.ndarray, on: np.ndarr
     """The hot loop of :func:`run_tables` without its checks and allocations, for callers that keep their arrays
     (a vector env): simulate every row in place into ``out`` (from :func:`new_outputs`). ``radius``/``mass``:
     ``(1, B)`` or ``(N, B)``; ``ang``: ``(N, B, 3)`` (read only under the spin model); ``struck``: ``(N,)`` int64."""
-    ks = sim._kernels
-    common = (radius, mass, sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), struck, out)
+    ks = sim.kernels
+    common = (radius, mass, sim.pocket_xy, sim.pocket_r, sim.params, int(sim.max_events), struck, out)
     if use_parallel(pos.shape[0], threads):
         with _thread_count(threads):
             ks.rows_parallel(pos, vel, ang, on, *common)
@@ -208,9 +208,9 @@ def _simulate_rows(sim: Simulator, pos, vel, ang, on, radius, mass, struck, even
     out = new_outputs(n, b)
     log = None
     if events:
-        common = (radius, mass, sim._pocket_xy, sim._pocket_r, sim._params, int(sim.max_events), struck, out)
+        common = (radius, mass, sim.pocket_xy, sim.pocket_r, sim.params, int(sim.max_events), struck, out)
         empty = _empty_log(n, 16 * n + 16)
-        raw = sim._kernels.rows(pos, vel, ang, on, *common, True, empty)
+        raw = sim.kernels.rows(pos, vel, ang, on, *common, True, empty)
         m = int(raw[0][n])
         log = EventBatch(raw[0], *(a[:m] for a in raw[1:]))
     else:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -75,6 +76,32 @@ class Simulator:
     @property
     def name(self) -> str:
         return "exact" if self.solver == "exact" else f"step-{self.contact}"
+
+    @property
+    def params(self) -> np.ndarray:
+        """The kernels' parameter record of this table, physics and time cap (:func:`~.kernel_io.kernel_params`):
+        what compiled callers (the native vector env, the players' batches) pass the kernels."""
+        return self._params
+
+    @property
+    def pocket_xy(self) -> np.ndarray:
+        """The pockets' centres ``(P, 2)`` as the kernels take them (C-contiguous float64)."""
+        return self._pocket_xy
+
+    @property
+    def pocket_r(self) -> np.ndarray:
+        """The pockets' capture radii ``(P,)`` as the kernels take them."""
+        return self._pocket_r
+
+    @property
+    def kernels(self) -> Any:
+        """The compiled kernels of this physics (:func:`~.kernels.kernels_for`: exact, step, rows, spin)."""
+        return self._kernels
+
+    @property
+    def has_spin(self) -> bool:
+        """The balls carry spin (the spin model's kernels)."""
+        return bool(self._spin)
 
     def run_in_place(self, balls: Balls) -> tuple[str, float, int, np.ndarray, np.ndarray]:
         """The hot path for RL: simulate ``balls`` in place (its ``pos``/``vel``/``on_table`` arrays become the

@@ -72,12 +72,12 @@ def player_inputs(source: Any, codec: Any = None) -> tuple[TableState, Any]:
 
 
 def to_action(codec: Any, state: TableState, angle: float, speed: float, place: tuple[float, float] | None = None,
-              pocket: int | None = None, side: float = 0.0, top: float = 0.0) -> np.ndarray:
-    """The action of ``codec`` (an action type) for a shot ``(angle, speed)`` (from ``place`` with ball in hand,
-    calling ``pocket`` for the 8; tip offsets ``side``, ``top`` when the action has spin dims, else dropped),
-    inside its space."""
+              side: float = 0.0, top: float = 0.0, **calls: Any) -> np.ndarray:
+    """The action of ``codec`` (an action type) for a shot ``(angle, speed)`` (from ``place`` with ball in hand; tip
+    offsets ``side``, ``top`` when the action has spin dims, else dropped), with the player's whole call ``calls``
+    (e.g. ``pocket=``, ``ball=``: the codec keeps the declarations its game makes), inside its space."""
     tip = {"side": side, "top": top} if codec.spin else {}
-    a = np.asarray(codec.action(state, angle, speed, place=place, pocket=pocket, **tip), dtype=np.float32)
+    a = np.asarray(codec.action(state, angle, speed, place=place, **tip, **calls), dtype=np.float32)
     return np.clip(a, codec.space.low, codec.space.high)
 
 

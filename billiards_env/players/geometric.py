@@ -96,7 +96,9 @@ class GeometricPlayer:
         state or an env)."""
         state, codec = player_inputs(source, codec)
         d = self.decide(shot_context(state, codec))
-        return to_action(codec, state, d.angle, d.speed, place=d.place, pocket=d.pocket if d.shot >= 0 else None)
+        aimed = d.shot >= 0  # a ghost-ball shot: its ball and pocket are the call (the game keeps what it declares)
+        return to_action(codec, state, d.angle, d.speed, place=d.place, pocket=d.pocket if aimed else None,
+                         ball=self.last.target if (aimed and self.last is not None) else None)
 
 
 __all__ = ["geometric_shot", "break_shot", "choose_placement", "GeometricPlayer", "context_model"]

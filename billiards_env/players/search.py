@@ -27,7 +27,7 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics.batch import BatchResult, run_shots
-from billiards_env.rules import ShotInfo, ShotSummary, summarize_arrays
+from billiards_env.rules import ShotSummary, summarize_arrays
 
 from .context import ShotContext, player_inputs, shot_context, to_action
 from .geometric import break_shot
@@ -156,7 +156,6 @@ def _rails(mask: int) -> tuple[int, ...]:
 
 
 _RAILS: dict[int, tuple[int, ...]] = {}
-_NO_CALL = ShotInfo()
 
 
 class Judge:
@@ -172,7 +171,6 @@ class Judge:
         game = ctx.game
         self.ctx = ctx
         self.numbers = np.ascontiguousarray(game.numbers, dtype=np.int64)
-        self.eight_called = game.needs_called_pocket() and 8 in game.row_of
         #: Whether the verdict may depend on which balls reached a cushion (the break), not only on whether one did.
         self.rail_detail = bool(game.state.break_shot)
         self.verdicts: dict[bytes, int] = {}  #: outcome key -> index into the lists below
@@ -202,8 +200,7 @@ class Judge:
         pocketed = tuple(k[4:4 + n_pot])
         pockets = tuple(k[4 + b:4 + b + n_pot])
         summary = ShotSummary(None if k[0] < 0 else k[0], rails, pocketed, pockets, k[1] >= 0, k[1])
-        info = ShotInfo(called_pocket=pockets[pocketed.index(8)]) if self.eight_called and 8 in pocketed \
-            else _NO_CALL
+        info = game.declared_for(summary)  # what the shooter would have called for this outcome
         state = game.state
         call = game.rules.call(state, summary, info)
         if call.game_over:
@@ -648,9 +645,8 @@ class SearchPlayer:
         assert best is not None
         place, angle, speed, self.last, play = best
         with state.cue_moved_to(place):
-            pocket = self._called_pocket(ctx, angle, speed, self.last)
-        action = to_action(codec, state, angle, speed, place=place, pocket=pocket, side=self.last.side,
-                           top=self.last.top)
+            calls = self.calls_for(ctx, angle, speed, self.last)
+        action = to_action(codec, state, angle, speed, place=place, side=self.last.side, top=self.last.top, **calls)
         searched = None if play is None else play.action_for(angle, speed, self.last.side, self.last.top)
         if searched is not None:  # the shot dims of the very action searched (the call and place stay)
             shot_dims = 4 if codec.spin else 2
@@ -658,16 +654,17 @@ class SearchPlayer:
         return action
 
     @staticmethod
-    def _called_pocket(ctx: ShotContext, angle: float, speed: float, out: Outcome) -> int | None:
-        """On the 8: the pocket the chosen shot sends it into (None if it does not)."""
-        if ctx.game is None or not ctx.game.needs_called_pocket():
-            return None
+    def calls_for(ctx: ShotContext, angle: float, speed: float, out: Outcome) -> dict[str, Any]:
+        """The declarations of the chosen shot (the game's :meth:`~billiards_env.games.session.GameSession.calls_for`
+        on where the shot sends the balls: 8-ball on the 8, the 8's pocket; straight pool, the ball it pots and its
+        pocket); none outside a game or when the game needs none now."""
+        if ctx.game is None or not ctx.game.needs_calls():
+            return {}
         spin = ctx.physics.has_spin
         shot = ctx.balls.strike(ctx.cue, angle, speed, **({"side": out.side, "top": out.top} if spin else {}),
                                 physics=ctx.physics)
         res = ctx.simulator.run(shot, validate=False)
-        k = int(res.pocket[ctx.game.row_of[8]])
-        return k if k >= 0 else None
+        return ctx.game.calls_for(np.asarray(res.pocket, dtype=np.int64))
 
 
 __all__ = ["Outcome", "SearchSettings", "search_shot", "SearchPlayer", "playable_shots", "Playable", "next_shot_ease",

@@ -39,8 +39,10 @@ _DOT_TILT = (math.radians(35.0), math.radians(25.0))
 _FLIP = np.array([1.0, -1.0, 1.0])
 
 
-def ball_rgba(number: int, radius_px: float, supersample: int = SUPERSAMPLE) -> np.ndarray:
+def ball_rgba(number: int, radius_px: float, supersample: int = SUPERSAMPLE,
+              palette: tuple[tuple[int, C.RGB], ...] = ()) -> np.ndarray:
     """A shaded, anti-aliased ``(S, S, 4) uint8`` sprite of ball ``number`` at rest; the centre is pixel ``S//2``.
+    ``palette``: the game's plain balls as ``(number, colour)`` pairs.
 
     Shading (rim darkening, a highlight to the top left) and the number disc stay outside a central core,
     so the centre pixel is the ball's main colour exactly (also enforced for tiny radii).
@@ -53,7 +55,7 @@ def ball_rgba(number: int, radius_px: float, supersample: int = SUPERSAMPLE) -> 
     inside = r2 <= 1.0
     nz = np.sqrt(np.clip(1.0 - r2, 0.0, 1.0))
     normal = np.stack([u, v, nz], axis=-1)
-    colour = ball_albedo([number], normal.reshape(-1, 3))[0].reshape(normal.shape)
+    colour = ball_albedo([number], normal.reshape(-1, 3), palette=palette)[0].reshape(normal.shape)
     colour = _shade(colour, u, v, np.sqrt(r2))
     w = inside.astype(float)
     block = (size, supersample, size, supersample)
@@ -61,17 +63,21 @@ def ball_rgba(number: int, radius_px: float, supersample: int = SUPERSAMPLE) -> 
     summed = (colour * w[..., None]).reshape(block + (3,)).sum(axis=(1, 3))
     rgb = summed / np.maximum(cover * supersample * supersample, 1e-9)[..., None]
     rgba = np.dstack([np.clip(np.rint(rgb), 0, 255), np.rint(cover * 255)]).astype(np.uint8)
-    rgba[half, half] = (*C.ball_colour(number), 255)
+    rgba[half, half] = (*C.ball_colour(number, dict(palette)), 255)
     return rgba
 
 
 class _Markings:
-    """The markings of the 16 balls as arrays indexed by ball number (built once)."""
+    """The markings of the 16 pool balls and a game's plain balls (``palette``: ``(number, colour)`` pairs) as
+    arrays indexed by ball number (built once per palette)."""
 
-    def __init__(self) -> None:
-        n = C.MAX_DRAW_NUMBER + 1  # the plain balls (16..) keep a zero disc axis: no disc, no number
-        self.main = np.array([C.ball_colour(k) for k in range(n)], dtype=float)
-        self.stripe = np.array([C.is_stripe(k) for k in range(n)])
+    def __init__(self, palette: tuple[tuple[int, C.RGB], ...] = ()) -> None:
+        colours = dict(palette)
+        n = max([C.MAX_BALL_NUMBER, *colours]) + 1  # the plain balls (16..) keep a zero disc axis: no disc, number
+        known = [k for k in range(n) if k <= C.MAX_BALL_NUMBER or k in colours]
+        self.main = np.zeros((n, 3))
+        self.main[known] = [C.ball_colour(k, colours) for k in known]
+        self.stripe = np.array([9 <= k <= C.MAX_BALL_NUMBER for k in range(n)])
         self.disc_dir = np.zeros((n, 3))
         self.band_axis = np.zeros((n, 3))
         self.e1 = np.zeros((n, 3))
@@ -109,21 +115,22 @@ class _Markings:
         self.dots = np.concatenate([axes, -axes])  # (6, 3)
 
 
-@lru_cache(maxsize=1)
-def _markings() -> _Markings:
-    return _Markings()
+@lru_cache(maxsize=8)
+def _markings(palette: tuple[tuple[int, C.RGB], ...] = ()) -> _Markings:
+    return _Markings(palette)
 
 
 def ball_albedo(numbers: Sequence[int], normal: np.ndarray, turn: np.ndarray | None = None,
-                cue_dots: bool = False) -> np.ndarray:
+                cue_dots: bool = False, palette: tuple[tuple[int, C.RGB], ...] = ()) -> np.ndarray:
     """Surface colours ``(B, P, 3)`` (0-255 floats) of balls ``numbers`` (B,) seen at screen normals ``(P, 3)``
     (unit vectors, sprite frame), each ball turned by ``turn`` (``(B, 3, 3)`` rotations in the sprite frame, body
     to screen; None: as at rest): the body colour, the stripe band (9-15), the number disc and its printed number
     (mapped onto the tilted disc so it foreshortens with it), and with ``cue_dots`` the cue ball's six red dots.
 
     A body-frame direction ``a`` is seen along ``R a``, so each sample's coordinate along it is ``n . (R a)``:
-    the few axes are turned, not the many normals."""
-    mk = _markings()
+    the few axes are turned, not the many normals. ``palette``: the game's plain balls, ``(number, colour)``
+    pairs."""
+    mk = _markings(palette)
     nums = np.asarray(numbers, dtype=int).reshape(-1)
     axes = mk.frames[nums] if turn is None else np.matmul(turn, mk.frames[nums])  # (B, 3, 4)
     # each sample's coordinates along the band axis, the disc axis and the glyph's two axes
@@ -205,7 +212,9 @@ class OrientedSprites:
     the identity is the ball as drawn at rest.
     """
 
-    def __init__(self, radius_px: float, supersample: int = ORIENTED_SUPERSAMPLE) -> None:
+    def __init__(self, radius_px: float, supersample: int = ORIENTED_SUPERSAMPLE,
+                 palette: tuple[tuple[int, C.RGB], ...] = ()) -> None:
+        self.palette = tuple(palette)
         self.radius_px = float(radius_px)
         self.supersample = ss = int(supersample)
         self.half = half = int(math.ceil(radius_px)) + 1
@@ -231,7 +240,8 @@ class OrientedSprites:
     def rgba(self, numbers: Sequence[int], orientations: np.ndarray, cue_dots: bool = True) -> np.ndarray:
         """``(B, S, S, 4) uint8`` sprites of balls ``numbers`` (B,) at ``orientations`` (B, 3, 3)."""
         turn = np.asarray(orientations, dtype=float).reshape(-1, 3, 3) * _FLIP[None, :, None] * _FLIP[None, None, :]
-        colour = ball_albedo(numbers, self._normal, turn, cue_dots) * self._gain[None] + self._base[None]
+        colour = ball_albedo(numbers, self._normal, turn, cue_dots, self.palette) * self._gain[None] + \
+            self._base[None]
         n, s = len(turn), self.size
         rgb = np.zeros((n, s * s, 3))
         rgb[:, self._pixels] = np.add.reduceat(colour, self._starts, axis=1) / self._norm[None]

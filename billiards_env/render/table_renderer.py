@@ -77,12 +77,14 @@ class TableRenderer:
     ``ball_radius`` is in metres: one value for all balls or one per ball (``(N,)``, matching ``draw``).
     The image is ``width_px`` wide; its height follows the table's aspect ratio plus the rail border, plus a
     tray strip below the table for pocketed balls when ``tray`` is true, plus the game panel when ``hud`` is true
-    (frames then need a ``hud`` mapping).
+    (frames then need a ``hud`` mapping). ``palette``: the game's plain balls (drawing numbers above 15 mapped to
+    ``(r, g, b)``, as its session declares them: snooker's reds and colours, the carom set); balls 0-15 are the
+    pool set.
     """
 
     def __init__(
         self, table: "Table", ball_radius: float | np.ndarray, width_px: int = 800, tray: bool = True,
-        hud: bool = False, markings: dict[str, Any] | None = None,
+        hud: bool = False, markings: dict[str, Any] | None = None, palette: C.Palette | None = None,
     ) -> None:
         if int(width_px) < 64:
             raise ValueError(f"width_px must be at least 64, got {width_px!r}")
@@ -93,6 +95,9 @@ class TableRenderer:
             pygame.font.init()
         self.table = table
         self.ball_radius = radius
+        #: The game's plain balls (drawing number -> colour; :mod:`.colors`), as given.
+        self.palette = C.check_palette(palette)
+        self._palette_items = tuple(sorted(self.palette.items()))
         self.length = float(table.length)
         self.width = float(table.width)
         self.width_px = int(width_px)
@@ -248,7 +253,7 @@ class TableRenderer:
         flags = np.asarray(on_table).reshape(-1).astype(bool)
         raw = list(numbers)
         for num in set(raw):
-            C.ball_colour(num)  # raises on anything but a drawing number (0-25)
+            C.ball_colour(num, self.palette)  # raises on anything but a drawing number (0-15, the palette's)
         nums = np.asarray(raw, dtype=int).reshape(-1)
         if len(flags) != n or len(nums) != n:
             raise ValueError(f"{n} positions but {len(flags)} on_table flags and {len(nums)} numbers")
@@ -283,7 +288,7 @@ class TableRenderer:
                 stale.setdefault(key[1], []).append(k)
         for rk, rows in stale.items():
             if rk not in self._oriented:
-                self._oriented[rk] = OrientedSprites(rk / 10.0)
+                self._oriented[rk] = OrientedSprites(rk / 10.0, palette=self._palette_items)
             maker = self._oriented[rk]
             for k, rgba in zip(rows, maker.rgba(nums[rows], rot[rows])):
                 self._turned[k] = (keys[k], surface_from_rgba(rgba), maker.half)
@@ -330,7 +335,7 @@ class TableRenderer:
         """Cached shaded sprite of ball ``number`` and its centre offset (the sprite's middle pixel)."""
         key = (number, radius_key(radius_px))
         if key not in self._sprites:
-            rgba = ball_rgba(number, key[1] / 10.0)
+            rgba = ball_rgba(number, key[1] / 10.0, palette=self._palette_items)
             self._sprites[key] = (surface_from_rgba(rgba), rgba.shape[0] // 2)
         return self._sprites[key]
 

@@ -29,11 +29,12 @@ from .eight_ball import EightBall, EightBallOptions, eight_ball_targets, group_o
 from .errors import RulesError
 from .nine_ball import NineBall, NineBallOptions, nine_ball_targets
 from .ruleset import Ruleset
-from .state import (ANYWHERE, EIGHT_BALL, FOULS, KITCHEN, NINE_BALL, SOLIDS, STRIPES, BallInHand, Call, GameState,
-                    ShotInfo)
+from .state import (ANYWHERE, EIGHT_BALL, FOULS, GAMES, KITCHEN, NINE_BALL, SOLIDS, STRIPES, TARGETS, BallInHand, Call,
+                    GameState, ShotInfo)
 from .summary import CUE, ShotSummary, ball_numbers, summarize_arrays, summarize_outcome, summarize_result
 
-RULESETS = {NINE_BALL: NineBall, EIGHT_BALL: EightBall}
+#: Every game's ruleset by the game's name (each :class:`Ruleset` subclass adds itself: :data:`.state.GAMES`).
+RULESETS = GAMES
 
 
 def ruleset_for(game: str, options: object | None = None) -> Ruleset:
@@ -44,9 +45,6 @@ def ruleset_for(game: str, options: object | None = None) -> Ruleset:
         raise RulesError(f"game: unknown game {game!r}; use one of {', '.join(RULESETS)}") from None
     return cls(options)  # type: ignore[abstract, arg-type]
 
-
-#: Each game's legal-target function (the balls the shooter may hit first), by the game's name.
-TARGETS = {NINE_BALL: nine_ball_targets, EIGHT_BALL: eight_ball_targets}
 
 
 def legal_targets(state: GameState) -> tuple[int, ...]:
@@ -63,5 +61,5 @@ __all__ = [
     "NineBall", "NineBallOptions", "EightBall", "EightBallOptions", "Ruleset", "RulesError", "GameState",
     "ShotInfo", "Call", "ShotSummary", "BallInHand", "summarize_arrays", "summarize_outcome", "summarize_result",
     "ball_numbers", "legal_targets", "nine_ball_targets", "eight_ball_targets", "group_of", "ruleset_for",
-    "RULESETS", "CUE", "NINE_BALL", "EIGHT_BALL", "ANYWHERE", "KITCHEN", "SOLIDS", "STRIPES", "FOULS",
+    "RULESETS", "TARGETS", "CUE", "NINE_BALL", "EIGHT_BALL", "ANYWHERE", "KITCHEN", "SOLIDS", "STRIPES", "FOULS",
 ]

@@ -79,6 +79,7 @@ class EightBall(Ruleset):
     """WPA 8-ball. ``EightBall(EightBallOptions(...))``; see :class:`~.ruleset.Ruleset` for the methods."""
 
     game = EIGHT_BALL
+    targets = staticmethod(eight_ball_targets)
     full_rack = tuple(range(1, 16))
 
     def __init__(self, options: EightBallOptions | None = None) -> None:

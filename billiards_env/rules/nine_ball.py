@@ -46,6 +46,7 @@ class NineBall(Ruleset):
     """WPA 9-ball. ``NineBall(NineBallOptions(...))``; see :class:`~.ruleset.Ruleset` for the methods."""
 
     game = NINE_BALL
+    targets = staticmethod(nine_ball_targets)
     full_rack = tuple(range(1, 10))
 
     def __init__(self, options: NineBallOptions | None = None) -> None:

@@ -3,11 +3,11 @@ turning a call into the next state)."""
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from typing import Any, ClassVar, Iterable
+from typing import Any, Callable, ClassVar, Iterable
 
 from .errors import RulesError
 from .state import (ANYWHERE, ILLEGAL_BREAK, NO_CONTACT, NO_RAIL, SCRATCH, WRONG_BALL_FIRST, BallInHand, Call,
-                    GameState, ShotInfo)
+                    GameState, ShotInfo, register_rules)
 from .summary import ShotSummary
 
 _NO_DECLARATION = ShotInfo()
@@ -52,6 +52,19 @@ class Ruleset(ABC):
 
     game: ClassVar[str]
     full_rack: ClassVar[tuple[int, ...]]  #: object balls of a full game
+    #: The game's legal-target function (``state -> balls``), registered with the game.
+    targets: ClassVar[Callable[[GameState], tuple[int, ...]]]
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        """A subclass that names its ``game`` registers it (:func:`~.state.register_rules`): the game's states are
+        then valid :class:`~.state.GameState` objects and ``ruleset_for`` / ``legal_targets`` know it."""
+        super().__init_subclass__(**kwargs)
+        if "game" in cls.__dict__:
+            targets = cls.__dict__.get("targets")
+            if not isinstance(targets, staticmethod):
+                raise RulesError(f"{cls.__name__}: a ruleset that names its game also names its legal-target function, "
+                                 "targets = staticmethod(f) with f(state) -> the balls the shooter may hit first")
+            register_rules(cls.game, cls, targets.__func__)
 
     def __init__(self, options: Any) -> None:
         self.options = options

@@ -3,13 +3,30 @@ declares before a shot) and :class:`Call` (the referee's call on a shot). All fr
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
-from typing import Literal, Union
+from typing import Any, Callable, Literal, Union
 
 from .errors import RulesError
 
 NINE_BALL = "nine_ball"
 EIGHT_BALL = "eight_ball"
-GAMES = (NINE_BALL, EIGHT_BALL)
+#: The games a :class:`GameState` may hold: name -> its ruleset class. Not a list kept by hand: every
+#: :class:`~.ruleset.Ruleset` subclass that names its ``game`` adds itself (:func:`register_rules`), so 10-ball is its
+#: ruleset module and nothing else here.
+GAMES: dict[str, type] = {}
+#: Each game's legal-target function (the balls the shooter may hit first), by name (filled with :data:`GAMES`).
+TARGETS: dict[str, Callable[["GameState"], tuple[int, ...]]] = {}
+
+
+def register_rules(game: str, ruleset: type, targets: Callable[["GameState"], tuple[int, ...]]) -> None:
+    """Add ``game`` (its ruleset class and legal-target function) to :data:`GAMES` and :data:`TARGETS`; a name taken
+    by another ruleset is an error."""
+    if not isinstance(game, str) or not game:
+        raise RulesError(f"register_rules: game must be a non-empty name, got {game!r}")
+    known: Any = GAMES.get(game)
+    if known is not None and known.__qualname__ != ruleset.__qualname__:
+        raise RulesError(f"register_rules: game {game!r} is played by {known.__name__} already")
+    GAMES[game] = ruleset
+    TARGETS[game] = targets
 
 #: Ball in hand for the next shooter: ``False`` (play the cue ball where it lies), ``"anywhere"`` on the table,
 #: or ``"kitchen"`` (behind the head string). The env places the cue ball; the rules only say where it may go.
@@ -180,7 +197,7 @@ class Call:
 
 
 __all__ = [
-    "NINE_BALL", "EIGHT_BALL", "GAMES", "ANYWHERE", "KITCHEN", "BallInHand", "SOLIDS", "STRIPES", "GROUPS",
+    "NINE_BALL", "EIGHT_BALL", "GAMES", "TARGETS", "register_rules", "ANYWHERE", "KITCHEN", "BallInHand", "SOLIDS", "STRIPES", "GROUPS",
     "LEGAL", "PUSH_OUT", "SCRATCH", "NO_CONTACT", "WRONG_BALL_FIRST", "NO_RAIL", "ILLEGAL_BREAK", "FOULS",
     "NINE_POCKETED", "EIGHT_POCKETED", "EIGHT_ON_BREAK", "EIGHT_EARLY", "EIGHT_ON_FOUL", "EIGHT_WRONG_POCKET",
     "EIGHT_NOT_CALLED", "THREE_FOULS", "GameState", "ShotInfo", "Call",

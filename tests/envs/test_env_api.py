@@ -30,9 +30,15 @@ def test_spaces_and_types(env_id):
     env = gym.make(env_id)
     n = env.unwrapped.n_balls
     game = env_id in GAME_IDS
-    # aim, power (+ place, + pocket; three-cushion: + side, top, no place)
+    # aim, power (+ side, top with spin dims) (+ place with ball in hand) (+ the game's declarations, in order)
+    u = env.unwrapped
+    names = ["aim", "power"] + (["side", "top"] if u.action_type.spin else []) \
+        + (["place_x", "place_y"] if game and u.task.session.ball_in_hand else []) \
+        + ([d.name for d in u.task.session.declarations] if game else [])
+    assert u.action_type.layout() == ", ".join(names)
+    # pinned for the games whose layouts the docs print (a game registered later follows its declarations)
     n_act = {"Billiards9Ball-v0": 4, "Billiards8Ball-v0": 5, "BilliardsSnooker-v0": 4,
-             "BilliardsThreeCushion-v0": 4}.get(env_id, 2)
+             "BilliardsThreeCushion-v0": 4}.get(env_id, len(names) if game else 2)
     n_obs = 3 * n + (env.unwrapped.task.n_features if game else 0)  # positions, pocketed flags (+ the game's)
     assert (env.unwrapped.task.n_features > 0) == game
     assert env.action_space == gym.spaces.Box(-1, 1, (n_act,), np.float32)

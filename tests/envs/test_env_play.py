@@ -205,7 +205,7 @@ def test_calling_the_pocket_for_the_8():
     assert hud_frame["call_pocket"]
     _feed(app, list(play.mouse_shot(app, 0.5)))
     assert app.shots == 1
-    assert core.shot_from_action(app.last_action).pocket == 4
+    assert core.shot_from_action(app.last_action).call("pocket") == 4
     app.close()
 
 

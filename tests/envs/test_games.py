@@ -136,7 +136,7 @@ def test_action_round_trip_with_placement_and_called_pocket():
     place = (0.4, 0.5)
     for pocket in range(6):
         shot = u.shot_from_action(u.action_from_shot(0.7, 3.0, place=place, pocket=pocket))
-        assert shot.pocket == pocket and shot.place == pytest.approx(place, abs=1e-6)
+        assert shot.call("pocket") == pocket and shot.place == pytest.approx(place, abs=1e-6)
         assert math.cos(shot.angle - 0.7) == pytest.approx(1.0, abs=1e-8) and shot.speed == pytest.approx(3.0)
 
 

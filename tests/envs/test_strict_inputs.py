@@ -85,8 +85,8 @@ def test_a_three_cushion_score_below_the_target_still_sets_up_the_table():
     ({"place": (5.0, 5.0)}, r"outside the ball-in-hand area x in \[0.02857, 0.635\]"),
     ({"place": (math.nan, 0.6)}, "place must be finite"),
     ({"side": 0.3}, "no tip-offset dims"),
-    ({"pocket": 2}, "calls no pocket"),
-    ({"push": True}, "no push-outs"),
+    ({"pocket": 2}, "declares no 'pocket'"),
+    ({"push": True}, "declares no 'push'"),
     ({"speed": 9.0}, r"outside this env's range \[0.5, 8.0\]"),
 ])
 def test_action_from_shot_refuses_what_it_cannot_play(kwargs, message):
@@ -99,10 +99,10 @@ def test_action_from_shot_refuses_what_it_cannot_play(kwargs, message):
 def test_eight_ball_called_pocket_is_checked_not_wrapped():
     env = gym.make("Billiards8Ball-v0")
     env.reset(seed=0)
-    with pytest.raises(ValueError, match=r"pocket index 0..5, got 7"):
+    with pytest.raises(ValueError, match=r"pocket: must be a pocket index 0..5, got 7"):
         env.unwrapped.action_from_shot(0.0, 2.0, pocket=7)
     a = env.unwrapped.action_from_shot(0.0, 2.0, pocket=4)
-    assert env.unwrapped.shot_from_action(a).pocket == 4
+    assert env.unwrapped.shot_from_action(a).call("pocket") == 4
 
 
 def test_spin_tip_offset_beyond_the_limit_is_refused():

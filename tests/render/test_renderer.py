@@ -134,7 +134,7 @@ def test_pocketed_ball_goes_to_the_tray(renderer: TableRenderer) -> None:
 def test_bad_state_is_rejected(renderer: TableRenderer) -> None:
     with pytest.raises(ValueError, match="numbers"):
         renderer.draw(POSITIONS, np.ones(4, bool), [0, 1, 2])
-    with pytest.raises(ValueError, match="0-25"):
+    with pytest.raises(ValueError, match="0-15"):
         renderer.draw(POSITIONS, np.ones(4, bool), [0, 1, 2, 26])
     with pytest.raises(ValueError, match="shape"):
         renderer.draw(np.zeros((4, 3)), np.ones(4, bool), NUMBERS)
