@@ -11,6 +11,7 @@ import argparse
 import hashlib
 import multiprocessing
 import os
+import re
 import sys
 import time
 from collections.abc import Callable, Sequence
@@ -23,11 +24,15 @@ _PACKAGE = Path(__file__).resolve().parent
 _STAMP = _PACKAGE / "__pycache__" / "kernels.sha256"
 
 
+#: A line that compiles a function: ``@njit(...)`` or ``@numba.njit(...)``.
+_COMPILED = re.compile(r"^\s*@(?:numba\.)?njit\b", re.MULTILINE)
+
+
 def kernel_sources() -> list[Path]:
-    """Every module of the package with compiled code (``njit``), and all of ``physics/``."""
+    """Every module of the package with compiled code (an ``@njit`` decorator), and all of ``physics/``."""
     out = set((_PACKAGE / "physics").glob("*.py"))
     for path in _PACKAGE.rglob("*.py"):
-        if "njit" in path.read_text():
+        if _COMPILED.search(path.read_text()):
             out.add(path)
     return sorted(out)
 
@@ -144,11 +149,11 @@ TASKS: dict[str, Callable[[], None]] = {
 }
 #: The order of the tasks: each phase's tasks run in parallel after the previous phase, longest first. The physics
 #: kernels come first (everything calls them), then the players (the games' opponents call them), then the envs.
+_EARLY_ENVS = ("env:BilliardsOneBall-v0", "env:BilliardsThreeCushion-v0", "env:BilliardsSnooker-v0")
 PHASES: tuple[tuple[str, ...], ...] = (
     ("exact", "exact_spin", "step", "step_spin"),
-    ("players", "vector_pots", "env:BilliardsOneBall-v0", "env:BilliardsThreeCushion-v0", "env:BilliardsSnooker-v0"),
-    ("vector_games", "candidates", "env:Billiards9Ball-v0", "env:Billiards8Ball-v0", "env:BilliardsThreeBalls-v0",
-     "env:BilliardsRack-v0"),
+    ("players", "vector_pots", *_EARLY_ENVS),
+    ("vector_games", "candidates", *(f"env:{i}" for i in ENV_IDS if f"env:{i}" not in _EARLY_ENVS)),
 )
 
 
