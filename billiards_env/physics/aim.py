@@ -35,6 +35,7 @@ from numba.extending import intrinsic
 
 from .collide import resolve_ball_ball
 from .motion import speed_after_distance, stop_distance
+from .roots import ray_circle_below
 from .walls import normal_at, ray_walls_hit
 
 if TYPE_CHECKING:
@@ -60,26 +61,6 @@ def ray_circle_entry(px: float, py: float, ux: float, uy: float, cx: float, cy: 
     """
     return ray_circle_below(px, py, ux, uy, cx, cy, r, math.inf)
 
-
-@njit(cache=True)
-def ray_circle_below(px: float, py: float, ux: float, uy: float, cx: float, cy: float, r: float,
-                     limit: float) -> float:
-    """:func:`ray_circle_entry`, or ``inf`` early when the entry is surely not nearer than ``limit``: the root is at
-    least ``c / (-2 b)`` (a margin far above round-off), so beyond that bound no square root is taken."""
-    dx = px - cx
-    dy = py - cy
-    c = dx * dx + dy * dy - r * r
-    if c <= 0.0:
-        return 0.0
-    b = ux * dx + uy * dy
-    if b >= 0.0:
-        return math.inf
-    if c >= -2.0 * b * limit * (1.0 + 1e-12):
-        return math.inf
-    disc = b * b - c
-    if disc < 0.0:
-        return math.inf
-    return c / (-b + math.sqrt(disc))
 
 
 @njit(cache=True)
@@ -643,7 +624,7 @@ def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table,
 
 __all__ = [
     "WINDOW_SAMPLES", "window_of", "pocket_windows", "dot2", "cos_between", "segment_distance",
-    "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "ray_circle_entry", "ray_circle_below",
+    "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "ray_circle_entry",
     "ray_cushion_hit", "cushion_ahead", "bounce_off", "ray_cushion_distance", "ray_circle_entries", "ray_cushion_distances", "aim_angle",
     "direction_vector", "wrap_angle", "angular_radius", "ghost_ball_position", "cut_cosine", "cut_angle",
     "offset_aim_angle", "aim_offset", "pocket_window", "pocket_mouth_axes", "pocket_bearings", "segment_blocked",

@@ -17,7 +17,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .aim import ray_circle_below, ray_cushion_hit
+from .aim import ray_cushion_hit
 from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLING, STATUS_EVENT_CAP, STATUS_REST,
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS, resolve_ball_ball, resolve_cushion
@@ -26,7 +26,7 @@ from .kernel_logs import (append_event, contact_cluster, count_burst, internal, 
                           rescan_row, reserve_states, set_pair)
 from .motion import (distance, drag_phi, drag_time_for_phi, speed_after, stop_distance, time_for_distance,
                      time_to_stop)
-from .roots import first_entry
+from .roots import first_entry, ray_circle_below
 from .walls import (cluster_off_walls, has_walls, path_box_clear, ray_wall_hit, reflect_off, touch_wall,
                     wall_normal_at)
 

@@ -17,6 +17,8 @@ from .pocket_specs import N_SEGMENTS, N_TIPS, SEG_COLS, TIP_COLS
 #: Room for a jaw table's cushions in the parameter record (a six-pocket table uses 18 segments and 12 tips).
 MAX_SEGMENTS = N_SEGMENTS
 MAX_TIPS = N_TIPS
+#: A jaw table's pockets, each with its two jaw faces and two tips: the groups of :func:`wall_groups`.
+MAX_GROUPS = N_TIPS // 2
 
 if TYPE_CHECKING:  # pragma: no cover
     from .model import Physics
@@ -64,6 +66,8 @@ PARAMS_DTYPE = np.dtype(
         ("segs", np.float64, (MAX_SEGMENTS, SEG_COLS)),  # ax, ay, bx, by, nx, ny (normal to the open side)
         ("n_tips", np.int64),  # rounded jaw tips used
         ("tips", np.float64, (MAX_TIPS, TIP_COLS)),  # cx, cy, radius
+        ("n_groups", np.int64),  # a jaw table's pockets' wall groups (wall_groups), 0 if its walls are not grouped
+        ("groups", np.float64, (MAX_GROUPS, 3)),  # cx, cy, radius of a circle holding a pocket's faces and tips
     ],
     align=True,
 )
@@ -96,7 +100,29 @@ def kernel_params(table: "Table", physics: "Physics", max_time: float) -> np.nda
     r["segs"][: len(segs)] = segs
     r["n_tips"] = len(tips)
     r["tips"][: len(tips)] = tips
+    groups = wall_groups(segs, tips)
+    r["n_groups"] = len(groups)
+    r["groups"][: len(groups)] = groups
     return p
+
+
+def wall_groups(segs: np.ndarray, tips: np.ndarray) -> np.ndarray:
+    """Circles ``(cx, cy, radius)`` each holding one pocket's walls, so that the exact solver can pass over a pocket
+    whose walls a ball cannot reach (:func:`.walls.ray_wall_hit`). The walls are in :func:`.pocket_specs.build_walls`'
+    order: the rails, then two jaw faces per pocket; two tips per pocket. Group ``g``: the faces ``n_rails + 2g``,
+    ``n_rails + 2g + 1`` and the tips ``2g``, ``2g + 1``; none (shape ``(0, 3)``) for walls not in that order."""
+    n_tips = len(tips)
+    n_rails = len(segs) - n_tips
+    if n_tips == 0 or n_tips % 2 or n_rails < 0:
+        return np.zeros((0, 3))
+    out = np.zeros((n_tips // 2, 3))
+    for g in range(n_tips // 2):
+        ends = np.array([segs[n_rails + 2 * g + q, 2 * e:2 * e + 2] for q in range(2) for e in range(2)])
+        centres = tips[2 * g:2 * g + 2, :2]
+        c = np.vstack([ends, centres]).mean(axis=0)
+        reach = max(float(np.hypot(*(ends - c).T).max()), float((np.hypot(*(centres - c).T) + tips[2 * g:2 * g + 2, 2]).max()))
+        out[g] = (c[0], c[1], reach * (1.0 + 1e-9) + 1e-9)
+    return out
 
 
 class KernelResult(NamedTuple):
@@ -117,4 +143,4 @@ class KernelResult(NamedTuple):
     n_tunnelled: int  #: pairs that passed through each other within a step (step solver)
 
 
-__all__ = ["N_STATE_COLS", "N_STATE_COLS_SPIN", "PARAMS_DTYPE", "CONTACT_SPEED_FLOOR", "kernel_params", "KernelResult"]
+__all__ = ["wall_groups", "MAX_GROUPS", "N_STATE_COLS", "N_STATE_COLS_SPIN", "PARAMS_DTYPE", "CONTACT_SPEED_FLOOR", "kernel_params", "KernelResult"]

@@ -169,3 +169,26 @@ def first_entry(c4: float, c3: float, c2: float, c1: float, c0: float, t_max: fl
         left = right
         f_left = f_right
     return math.inf
+
+
+@njit(cache=True)
+def ray_circle_below(px: float, py: float, ux: float, uy: float, cx: float, cy: float, r: float,
+                     limit: float) -> float:
+    """Distance along the ray ``p + t u`` (``u`` a unit vector) to where it enters the circle of centre ``c``, radius
+    ``r`` (:func:`.aim.ray_circle_entry`: the smaller root of ``t^2 + 2 b t + c``), or ``inf`` early when the entry
+    is surely not nearer than ``limit``: the root is at least ``c / (-2 b)`` (a margin far above round-off), so
+    beyond that bound no square root is taken."""
+    dx = px - cx
+    dy = py - cy
+    c = dx * dx + dy * dy - r * r
+    if c <= 0.0:
+        return 0.0
+    b = ux * dx + uy * dy
+    if b >= 0.0:
+        return math.inf
+    if c >= -2.0 * b * limit * (1.0 + 1e-12):
+        return math.inf
+    disc = b * b - c
+    if disc < 0.0:
+        return math.inf
+    return c / (-b + math.sqrt(disc))

@@ -24,7 +24,7 @@ import numpy as np
 from numba import njit
 
 from .kernel_logs import inlined, internal, rewind_time
-from .roots import first_entry, quadratic_roots_in
+from .roots import first_entry, quadratic_roots_in, ray_circle_below
 
 #: A ball whose centre's projection lies this far (m) beyond a segment's end still counts as on the segment: the
 #: rounding of a projection computed at the contact point (a ball meeting a rail exactly where its jaw tip begins).
@@ -129,8 +129,40 @@ def ray_tip_below(px, py, ux, uy, r, tip, limit):
 
 @internal
 def ray_wall_hit(px, py, ux, uy, r, prm, limit):
-    """The first wall of the record ``prm`` the ray meets nearer than ``limit`` (:func:`ray_walls_below`)."""
-    return ray_walls_below(px, py, ux, uy, r, prm.segs[:prm.n_segs], prm.tips[:prm.n_tips], limit)
+    """The first wall of the record ``prm`` the ray meets nearer than ``limit`` (:func:`ray_walls_below`): the same
+    answer, with a pocket's jaw faces and tips passed over when the ray does not reach their group's circle
+    (:func:`.kernel_io.wall_groups`, widened by ``r``: a ball touching one of them has its centre in it) nearer
+    than the best hit so far."""
+    if prm.n_groups == 0:
+        return ray_walls_below(px, py, ux, uy, r, prm.segs[:prm.n_segs], prm.tips[:prm.n_tips], limit)
+    best = limit
+    wall = -1
+    n_rails = prm.n_segs - prm.n_tips
+    pad = r * (1.0 + 1e-9) + 1e-9
+    for k in range(n_rails):
+        d = ray_line_hit(px, py, ux, uy, r, prm.segs[k])
+        if d < best and on_seg(px + d * ux, py + d * uy, prm.segs[k]):
+            best = d
+            wall = k
+    for g in range(prm.n_groups):
+        if not ray_circle_below(px, py, ux, uy, prm.groups[g, 0], prm.groups[g, 1], prm.groups[g, 2] + pad,
+                                best) < best:
+            continue
+        for k in range(n_rails + 2 * g, n_rails + 2 * g + 2):
+            d = ray_line_hit(px, py, ux, uy, r, prm.segs[k])
+            if d < best and on_seg(px + d * ux, py + d * uy, prm.segs[k]):
+                best = d
+                wall = k
+    for g in range(prm.n_groups):
+        if not ray_circle_below(px, py, ux, uy, prm.groups[g, 0], prm.groups[g, 1], prm.groups[g, 2] + pad,
+                                best) < best:
+            continue
+        for k in range(2 * g, 2 * g + 2):
+            d = ray_tip_below(px, py, ux, uy, r, prm.tips[k], best)
+            if d < best:
+                best = d
+                wall = prm.n_segs + k
+    return best, wall
 
 
 @internal
@@ -516,7 +548,19 @@ def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, acc_tol, far, prm):
     y1 = y + 0.5 * vy * window if bounded else 0.0
     x2 = x + window * (vx + 0.5 * ax * window) if bounded else 0.0
     y2 = y + window * (vy + 0.5 * ay * window) if bounded else 0.0
+    # A pocket's jaw faces and tips (their group's circle, kernel_io.wall_groups, widened by r) that the path's
+    # bounding box clears are not met either: passed over together.
+    n_rails = prm.n_segs - prm.n_tips
+    pad = r * (1.0 + 1e-9) + 1e-9
+    clear = False
     for k in range(prm.n_segs):
+        if prm.n_groups > 0 and k >= n_rails:
+            if (k - n_rails) % 2 == 0:
+                g = (k - n_rails) // 2
+                clear = path_box_clear(prm.groups[g, 0], prm.groups[g, 1], prm.groups[g, 2] + pad, x, y, vx, vy, ax,
+                                       ay, window)
+            if clear:
+                continue
         nx = prm.segs[k, 4]
         ny = prm.segs[k, 5]
         c0 = (x - prm.segs[k, 0]) * nx + (y - prm.segs[k, 1]) * ny - r
@@ -533,6 +577,13 @@ def path_wall_time(x, y, vx, vy, ax, ay, r, window, tol, acc_tol, far, prm):
             best = tau
             wall = k
     for k in range(prm.n_tips):
+        if prm.n_groups > 0:
+            if k % 2 == 0:
+                g = k // 2
+                clear = path_box_clear(prm.groups[g, 0], prm.groups[g, 1], prm.groups[g, 2] + pad, x, y, vx, vy, ax,
+                                       ay, window)
+            if clear:
+                continue
         dx = x - prm.tips[k, 0]
         dy = y - prm.tips[k, 1]
         rho = r + prm.tips[k, 2]
