@@ -148,6 +148,16 @@ class ActionType:
         """Index of each declaration's dim, by its name."""
         return dict(self._declare_at)
 
+    def with_calls(self, action: np.ndarray, **calls: Any) -> np.ndarray:
+        """``action`` with the dims of the declarations in ``calls`` set to their values (names this type does not
+        declare are ignored; the other dims stay as they are)."""
+        out = np.array(action, dtype=np.float32, copy=True)
+        for d in self.declarations:
+            if d.name in calls:
+                out[self._declare_at[d.name]] = np.float32(np.clip(d.encode(calls[d.name], self.n_pockets,
+                                                                            self.n_balls), -1.0, 1.0))
+        return out
+
     # --- the aim component (a subclass's part) ----------------------------------------------------------------
     #: The :func:`aim_to_angle` code of this aim type.
     code = AIM_ABSOLUTE

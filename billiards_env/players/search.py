@@ -644,14 +644,28 @@ class SearchPlayer:
                 best = (place, angle, speed, out, play)
         assert best is not None
         place, angle, speed, self.last, play = best
-        with state.cue_moved_to(place):
-            calls = self.calls_for(ctx, angle, speed, self.last)
-        action = to_action(codec, state, angle, speed, place=place, side=self.last.side, top=self.last.top, **calls)
+        action = to_action(codec, state, angle, speed, place=place, side=self.last.side, top=self.last.top)
         searched = None if play is None else play.action_for(angle, speed, self.last.side, self.last.top)
         if searched is not None:  # the shot dims of the very action searched (the call and place stay)
             shot_dims = 4 if codec.spin else 2
             action[:shot_dims] = searched[:shot_dims]
-        return action
+        return codec.with_calls(action, **self.calls_of_action(ctx, codec, action))
+
+    @staticmethod
+    def calls_of_action(ctx: ShotContext, codec: Any, action: np.ndarray) -> dict[str, Any]:
+        """The declarations of the shot ``action`` plays (decoded by ``codec``, from its own placement: the very
+        shot the env plays without noise, so a call on a shot that scatters balls names what it pockets): the
+        game's :meth:`~billiards_env.games.session.GameSession.calls_for` on where it sends the balls."""
+        if ctx.game is None or not ctx.game.needs_calls():
+            return {}
+        state = ctx.table_state
+        shot = codec.shot(state, action)
+        spin = ctx.physics.has_spin
+        with state.cue_moved_to(shot.place):
+            struck = ctx.balls.strike(ctx.cue, shot.angle, shot.speed,
+                                      **({"side": shot.side, "top": shot.top} if spin else {}), physics=ctx.physics)
+            res = ctx.simulator.run(struck, validate=False)
+        return ctx.game.calls_for(np.asarray(res.pocket, dtype=np.int64))
 
     @staticmethod
     def calls_for(ctx: ShotContext, angle: float, speed: float, out: Outcome) -> dict[str, Any]:
