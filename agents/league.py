@@ -36,7 +36,6 @@ import argparse
 import importlib
 import itertools
 import json
-import math
 import sys
 import time
 from dataclasses import asdict, dataclass, field

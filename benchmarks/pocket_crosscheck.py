@@ -52,7 +52,6 @@ def scenes(s: PocketSpecs, seed: int = 0) -> list[tuple[str, list[list[float]], 
     L, W = s.l, s.w
     c = R * 1.05
     corner = np.array([0.0, 0.0])
-    side = np.array([L / 2, 0.0])
     out = []
     # Clean pots: along the corner's diagonal, square into the side pocket, a cut into the corner.
     out.append(("corner, straight in", [[0.45, 0.45]], _aim((0.45, 0.45), (0, 0)), 1.5, 0.0, 0.0))

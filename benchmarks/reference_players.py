@@ -30,6 +30,7 @@ from billiards_env.physics.pocket_specs import N_RAILS
 from billiards_env.physics.walls import on_rail_span
 from billiards_env.physics.motion import launch_speed, speed_after_distance, stop_distance
 from billiards_env.players.context import ShotContext, shot_context
+from billiards_env.players.shots import MAX_CUT, ShotCandidate, pot_probability
 
 
 def to_action(env: Any, angle: float, speed: float, place: tuple[float, float] | None = None,
@@ -41,7 +42,6 @@ def to_action(env: Any, angle: float, speed: float, place: tuple[float, float] |
     tip = {"side": side, "top": top} if at.spin else {}
     a = np.asarray(at.action(u.state, angle, speed, place=place, pocket=pocket, **tip), dtype=np.float32)
     return np.clip(a, env.action_space.low, env.action_space.high)
-from billiards_env.players.shots import MAX_CUT, ShotCandidate, pot_probability
 
 Vec2 = Any
 
@@ -180,19 +180,19 @@ def ghost_ball_shots(
     for j in targets:
         if not on[j] or j == cue:
             continue
-        O = balls.pos[j]
+        Obj = balls.pos[j]
         ro = float(balls.radius[j])
         mo = float(balls.mass[j])
         others_c = [k for k in range(len(balls)) if on[k] and k not in (cue, j)]
         opos = balls.pos[others_c] if others_c else np.zeros((0, 2))
         orad = balls.radius[others_c] if others_c else np.zeros(0)
         for p in range(table.n_pockets):
-            win = pocket_window(O, ro, table, p)
+            win = pocket_window(Obj, ro, table, p)
             if win is None:
                 continue
             obj_angle, half, d_obj = win
             u = direction_vector(obj_angle)
-            G = ghost_ball_position(O, obj_angle, rc + ro)
+            G = ghost_ball_position(Obj, obj_angle, rc + ro)
             cg = G - C
             d_cue = float(np.hypot(*cg))
             if d_cue < 1e-9:
@@ -206,7 +206,7 @@ def ghost_ball_shots(
             if not (rc <= G[0] <= table.length - rc and rc <= G[1] <= table.width - rc):
                 continue
             clear = not segment_blocked(C, G, opos, orad + rc) and \
-                not segment_blocked(O, O + u * d_obj, opos, orad + ro)
+                not segment_blocked(Obj, Obj + u * d_obj, opos, orad + ro)
             transfer = object_ball_speed(1.0, cos_cut, e, mc, mo)  # object ball speed per unit impact speed
             speed, v0, risk, reachable = hi, math.inf, True, False
             # Softest arrival that leaves the cue ball out of the pockets (tried in order).

@@ -21,5 +21,5 @@ from .three_balls import ThreeBallsEnv
 #: Registered id -> environment class (the ids are billiards_env.registration.ENV_IDS).
 ENV_CLASSES: dict[str, type[BilliardsEnv]] = {env_id: load_env_creator(entry) for env_id, entry in ENVS.items()}
 
-__all__ = ["BilliardsEnv", "OneBallEnv", "ThreeBallsEnv", "RackEnv", "EnvConfig", "ConfigError", "UnknownKeyError",
-           "load_config", "RENDER_MODES", "ENV_CLASSES"]
+__all__ = ["BilliardsEnv", "OneBallEnv", "ThreeBallsEnv", "RackEnv", "NineBallEnv", "EightBallEnv", "EnvConfig",
+           "ConfigError", "UnknownKeyError", "load_config", "RENDER_MODES", "ENV_CLASSES"]

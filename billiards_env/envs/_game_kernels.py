@@ -34,7 +34,7 @@ from numba import njit
 from billiards_env.physics.aim import ray_circle_entry
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
-from billiards_env.physics.layout import (PLACE_BATCH, PLACE_TRIES, nearest_free_xy, place_random_rows, py_hypot,
+from billiards_env.physics.layout import (PLACE_BATCH, PLACE_TRIES, nearest_free_xy, place_random_rows,
                                           spot_cue_row, spot_object_row)
 from billiards_env.physics.outcome import scan_shot
 from billiards_env.physics.spin_collide import strike_ball

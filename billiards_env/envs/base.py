@@ -18,8 +18,7 @@ scenes given through ``reset(options=...)`` are validated there.
 """
 from __future__ import annotations
 
-import contextlib
-from typing import Any, Callable, ClassVar, Iterator, Mapping, NamedTuple, Sequence
+from typing import Any, Callable, ClassVar, Mapping, NamedTuple, Sequence
 
 import gymnasium as gym
 import numpy as np

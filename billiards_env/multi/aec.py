@@ -25,7 +25,6 @@ from billiards_env.envs.base import RENDER_MODES, BilliardsEnv
 from billiards_env.envs.config import ConfigError
 from billiards_env.envs.games import GameTask
 from billiards_env.games import GAMES
-from billiards_env.rules import GameState
 
 #: The two agents; ``player_k`` is player ``k`` of the rules (``GameState.shooter``, ``Call.winner``).
 AGENTS = ("player_0", "player_1")

@@ -96,7 +96,6 @@ def _impulse_tilted(vel, ang, i, nx, ny, d, r, e_c, mu_c, h):
     su = math.sqrt(ux * ux + uy * uy + uz * uz)
     jx = jn * n3x
     jy = jn * n3y
-    jz = jn * n3z
     vel[i, 0] += jx
     vel[i, 1] += jy
     if su > 0.0 and mu_c > 0.0:

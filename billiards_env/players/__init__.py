@@ -31,7 +31,8 @@ from typing import Any, Callable, Protocol
 
 import numpy as np
 
-from .context import ShotContext, player_inputs, shot_context, to_action
+from .context import ShotContext, shot_context, to_action
+from .context import player_inputs as player_inputs  # importable from here (geometric, search), not in __all__
 from .geometric import GeometricPlayer, geometric_shot
 from .geometry import Decision, TableModel, geometric_decision, table_model
 from .random import RandomPlayer

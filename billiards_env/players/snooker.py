@@ -373,7 +373,6 @@ def _evaluate(b: Balls, sim: Simulator, state: SnookerState, values: np.ndarray,
     spin = sim.physics.has_spin
     res = run_shots(sim, b, shots[:, 0], shots[:, 1], ball=cue, side=shots[:, 2] if spin else None,
                     top=shots[:, 3] if spin else None, validate=False)
-    n = len(shots)
     fouls, penalty, points, _, respot, next_on, _, _, frame_end = judge_batch(
         res.first_contact, res.pocket, values, cue, state.on_value, 0, free, state.reds, state.colour_mask)
     me = state.shooter

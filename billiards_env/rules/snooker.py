@@ -38,7 +38,7 @@ from typing import Literal, Sequence, Union
 import numpy as np
 from numba import njit
 
-from ..physics.codes import EV_COLLISION, EV_POCKET
+from ..physics.codes import EV_POCKET
 from ..physics.layout import SNOOKER_COLOURS
 from ..physics.outcome import first_contact_row
 from .errors import RulesError, checked_keywords

@@ -11,7 +11,7 @@ import pytest  # noqa: E402
 from gymnasium.utils.env_checker import check_env as gym_check_env  # noqa: E402
 from stable_baselines3.common.env_checker import check_env as sb3_check_env  # noqa: E402
 
-from env_helpers import FAST_RENDER, GAME_IDS, IDS, POT_IDS, RENDER_MODES  # noqa: E402
+from env_helpers import FAST_RENDER, GAME_IDS, IDS, RENDER_MODES  # noqa: E402
 
 
 @pytest.mark.parametrize("env_id", IDS)

@@ -90,7 +90,9 @@ def test_throw_conserves_momentum_and_loses_energy():
         r = rng.uniform(0.02, 0.04, 2)
         th = rng.uniform(-math.pi, math.pi)
         p0 = m[0] * vel[0] + m[1] * vel[1]
-        ke = lambda v, w: sum(0.5 * m[k] * v[k] @ v[k] + 0.2 * m[k] * r[k] ** 2 * w[k] @ w[k] for k in range(2))
+        def ke(v, w):
+            return sum(0.5 * m[k] * v[k] @ v[k] + 0.2 * m[k] * r[k] ** 2 * w[k] @ w[k] for k in range(2))
+
         k0 = ke(vel, ang)
         resolve_ball_ball_alciatore(vel, ang, 0, 1, math.cos(th), math.sin(th), m[0], m[1], r[0], r[1],
                                     rng.uniform(0, 1), A, B, C, 1e-3, False)
@@ -210,7 +212,9 @@ def test_cushion_laws_never_add_energy():
         v0 = (float(rng.uniform(-1, 1) * speed), float(rng.uniform(0.01, 1) * speed))
         w0 = tuple(float(x) for x in rng.uniform(-1, 1, 3) * speed / R)
         v, w, _ = _cushion(physics, v0, w0, cushion=3, e_c=float(rng.uniform(0, 1)))
-        k = lambda v, w: 0.5 * (v @ v) + 0.2 * R * R * (w @ w)
+        def k(v, w):
+            return 0.5 * (v @ v) + 0.2 * R * R * (w @ w)
+
         assert k(v, w) <= k(np.array(v0), np.array(w0)) * (1 + 1e-13)
 
 

@@ -45,12 +45,12 @@ def test_thirty_degree_cut_into_corner_pocket():
     # Object ball on the diagonal of the top-right corner; the cue ball placed so that the cut is 30 degrees.
     P = TABLE.pocket_xy[TOP_RIGHT]
     u = np.array([1.0, 1.0]) / math.sqrt(2.0)
-    O = P - 0.6 * u
-    G = O - 2 * R * u
+    Obj = P - 0.6 * u
+    G = Obj - 2 * R * u
     rot = math.radians(30.0)
     w = np.array([u[0] * math.cos(rot) - u[1] * math.sin(rot), u[0] * math.sin(rot) + u[1] * math.cos(rot)])
     C = G - 0.7 * w  # cue path direction w is 30 degrees off the object's path u
-    ctx = _ctx([C, O])
+    ctx = _ctx([C, Obj])
     angle, speed, cand = geometric_shot(ctx)
     assert cand is not None and cand.pocket == TOP_RIGHT
     assert abs(math.degrees(cand.cut) - 30.0) < 2.0
@@ -84,14 +84,14 @@ def test_blocked_path_is_flagged_and_avoided():
 @pytest.mark.parametrize("start", [(0.27, 0.3), (0.9, 0.6), (1.27, 0.5), (2.0, 0.15), (1.7, 0.06)])
 def test_pocket_window_matches_the_simulator(start):
     # A lone ball rolled along the window's centre and edges drops in the bottom side pocket; outside, it doesn't.
-    O = np.array(start)
-    win = pocket_window(O, R, TABLE, BOTTOM_SIDE)
+    Obj = np.array(start)
+    win = pocket_window(Obj, R, TABLE, BOTTOM_SIDE)
     assert win is not None
     centre, half, _ = win
     for off, should_drop in ((0.0, True), (0.8 * half, True), (-0.8 * half, True), (1.6 * half, False),
                              (-1.6 * half, False)):
         ang = centre + off
-        balls = Balls.from_positions([O], velocities=[[2.0 * math.cos(ang), 2.0 * math.sin(ang)]])
+        balls = Balls.from_positions([Obj], velocities=[[2.0 * math.cos(ang), 2.0 * math.sin(ang)]])
         res = SIM.run(balls)
         dropped_here = res.pocket[0] == BOTTOM_SIDE and res.events.kind[0] == 2  # first event: the pocket
         assert dropped_here == should_drop, (start, off / half)
@@ -140,11 +140,11 @@ def test_search_player_finds_a_pot_the_geometric_aimer_scratches_or_misses():
 def test_cut_angles_pot_by_construction(cut_deg):
     P = TABLE.pocket_xy[BOTTOM_SIDE]
     u = np.array([0.0, -1.0])
-    O = P - 0.5 * u
-    G = O - 2 * R * u
+    Obj = P - 0.5 * u
+    G = Obj - 2 * R * u
     rot = math.radians(cut_deg)
     w = np.array([u[0] * math.cos(rot) - u[1] * math.sin(rot), u[0] * math.sin(rot) + u[1] * math.cos(rot)])
-    ctx = _ctx([G - 0.5 * w, O])
+    ctx = _ctx([G - 0.5 * w, Obj])
     angle, speed, cand = geometric_shot(ctx)
     res = _play(ctx, angle, speed)
     assert cand is not None and res.pocket[1] >= 0 and res.pocket[0] == -1

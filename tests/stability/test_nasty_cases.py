@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from billiards_env.physics.codes import EV_COLLISION, EV_CUSHION, EV_POCKET, EV_STOP
+from billiards_env.physics.codes import EV_COLLISION, EV_CUSHION, EV_POCKET
 from billiards_env.physics.layout import rack_balls, triangle_positions
 
 from .helpers import L, R, W, assert_invariants, scene_dict
