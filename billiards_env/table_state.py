@@ -50,7 +50,8 @@ class RectArea(NamedTuple):
 
     def nearest(self, x: float, y: float, balls: Balls, holes: np.ndarray) -> tuple[float, float]:
         """The legal point nearest ``(x, y)``: in the area, off the other balls and the pockets' capture circles."""
-        return nearest_free_point(x, y, balls.pos, balls.on_table, balls.radius, 0, tuple(self), holes=holes)
+        return nearest_free_point(x, y, balls.pos, balls.on_table, balls.radius, 0,
+                                  (self.x0, self.x1, self.y0, self.y1), holes=holes)
 
     def describe(self) -> str:
         return f"x in [{self.x0:.4g}, {self.x1:.4g}], y in [{self.y0:.4g}, {self.y1:.4g}] m"

@@ -239,6 +239,7 @@ def validate_balls(balls: Balls, table: Table, allow_spin: bool = True) -> None:
     if bad == 1:
         _raise_ball_error(balls, table, i)
     if table.has_jaws:
+        assert table.specs is not None  # a jaw table has specs (Table.__post_init__)
         on = np.asarray(balls.on_table, bool)
         if on.any():
             leak = throat_leak(table.specs, float(np.min(np.asarray(balls.radius)[on])))

@@ -215,7 +215,8 @@ def _simulate_rows(sim: Simulator, pos, vel, ang, on, radius, mass, struck, even
         log = EventBatch(raw[0], *(a[:m] for a in raw[1:]))
     else:
         simulate_into(sim, pos, vel, on, radius, mass, ang, struck, out, threads)
-    return BatchResult(out[0], out[1], out[2], pos, vel, on, *out[3:], ang if spin else None, log)
+    return BatchResult(out[0], out[1], out[2], pos, vel, on, out[3], out[4], out[5], out[6], out[7], out[8],
+                       ang if spin else None, log)
 
 
 def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int = 0, side=None, top=None,

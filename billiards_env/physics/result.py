@@ -98,7 +98,7 @@ class ShotResult:
                 "vx": float(b.vel[i, 0]),
                 "vy": float(b.vel[i, 1]),
             }
-            if spin:
+            if self.motion_state is not None:  # spin
                 ball.update(wx=float(b.ang[i, 0]), wy=float(b.ang[i, 1]), wz=float(b.ang[i, 2]),
                             state=MOTION_STATES[int(self.motion_state[i])])
             ball.update(pocketed=pocketed, pocket=int(self.pocket[i]) if self.pocket[i] >= 0 else None,
@@ -123,7 +123,7 @@ class ShotResult:
         tr = self.trajectory
         if tr is None or tr.interpolate or tr.state.shape[1] < 9:
             return
-        row = self.trajectory.n_balls
+        row = tr.n_balls
         codes = tr.state[:, 8]
         for ev, k, o in zip(events, self.events.kind.tolist(), self.events.other.tolist()):
             n_rows = 2 if k == EV_COLLISION else (o if k == EV_JAM else 1)

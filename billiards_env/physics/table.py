@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Callable
 
 import numpy as np
 
@@ -65,8 +66,8 @@ class Table:
     length: float = DEFAULT_LENGTH
     width: float = DEFAULT_WIDTH
     cushion_restitution: float = DEFAULT_CUSHION_RESTITUTION
-    pocket_xy: np.ndarray = field(default=None)  # type: ignore[assignment]
-    pocket_radius: np.ndarray = field(default=None)  # type: ignore[assignment]
+    pocket_xy: np.ndarray = field(default=None)  # type: ignore[arg-type]  # filled in __post_init__
+    pocket_radius: np.ndarray = field(default=None)  # type: ignore[arg-type]  # filled in __post_init__
     specs: PocketSpecs | None = None
     pocket_model: str = "capture"
 
@@ -117,7 +118,7 @@ class Table:
             and np.array_equal(self.pocket_xy, other.pocket_xy) \
             and np.array_equal(self.pocket_radius, other.pocket_radius)
 
-    __hash__ = None  # type: ignore[assignment]  (mutable-looking arrays inside: not hashable)
+    __hash__ = None  # type: ignore[assignment]  # mutable-looking arrays inside: not hashable
 
     @property
     def n_pockets(self) -> int:
@@ -267,6 +268,6 @@ def capture_table(specs: PocketSpecs, ball_radius: float = POOL_BALL_RADIUS,
 #: capture circles (the default table), ``snooker`` the 12-ft table with capture circles, ``carom`` no pockets;
 #: with jaws: ``wpa`` a WPA 9-ft table, ``pooltool`` pooltool's 7-ft default table, ``snooker_match`` the 12-ft
 #: table with its rounded pockets (:mod:`.pocket_specs`).
-TABLE_PRESETS = {"pool": Table, "snooker": snooker_table, "carom": carom_table,
-                 "wpa": lambda: jaw_table(WPA_9FT), "pooltool": lambda: jaw_table(POOLTOOL_7FT),
-                 "snooker_match": lambda: jaw_table(SNOOKER_12FT)}
+TABLE_PRESETS: dict[str, Callable[[], Table]] = {
+    "pool": Table, "snooker": snooker_table, "carom": carom_table, "wpa": lambda: jaw_table(WPA_9FT),
+    "pooltool": lambda: jaw_table(POOLTOOL_7FT), "snooker_match": lambda: jaw_table(SNOOKER_12FT)}

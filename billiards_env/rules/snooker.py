@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
-from typing import Literal, Sequence, Union
+from typing import Any, Final, Literal, Sequence, Union
 
 import numpy as np
 from numba import njit
@@ -55,7 +55,7 @@ ON_COLOUR = "colour"
 _ON_CODE = {ON_RED: 1, ON_COLOUR: 0, **COLOUR_VALUES}
 _ON_NAME = {v: k for k, v in _ON_CODE.items()}
 #: Ball in hand: the cue ball is placed on or within the lines of the D.
-IN_D = "d"
+IN_D: Final = "d"
 BallInHand = Union[Literal[False], Literal["d"]]
 #: The smallest penalty.
 MIN_PENALTY = 4
@@ -629,7 +629,7 @@ class Snooker:
         score[opp] += penalty
         foul = bool(fouls)
         brk = state.break_points + points
-        common = dict(points=int(points), foul=foul, foul_points=int(penalty), fouls=fouls, shooter=me,
+        common: dict[str, Any] = dict(points=int(points), foul=foul, foul_points=int(penalty), fouls=fouls, shooter=me,
                       reds_potted=summary.reds_potted, colours_potted=summary.colours_potted,
                       nominated=VALUE_NAMES[nom] if nom else None, free_ball=VALUE_NAMES[free] if free else None,
                       break_points=int(brk), respot=_names(respot))
@@ -652,12 +652,13 @@ class Snooker:
                                **common)
         return self._continue(state, common, score, nxt, foul)
 
-    def _continue(self, state: SnookerState, common: dict, score: list[int], nxt: int, foul: bool) -> SnookerCall:
+    def _continue(self, state: SnookerState, common: dict[str, Any], score: list[int], nxt: int,
+                  foul: bool) -> SnookerCall:
         """The frame goes on: the striker continues after scoring, else the opponent plays (from the D after an
         in-off)."""
         keep = common["points"] > 0
         reason = common["fouls"][0] if foul else (POT if keep else NO_POT)
-        bih = IN_D if foul and IN_OFF in common["fouls"] else False
+        bih: BallInHand = IN_D if foul and IN_OFF in common["fouls"] else False
         return SnookerCall(score=(score[0], score[1]), on=_ON_NAME[nxt], reason=reason, turn_over=not keep,
                            next_shooter=state.shooter if keep else state.opponent, ball_in_hand=bih, **common)
 
@@ -672,7 +673,7 @@ class Snooker:
         best[me] = max(best[me], call.break_points)
         misses = list(state.misses)
         misses[me] = misses[me] + 1 if call.miss else 0
-        common = dict(score=call.score, best_break=(best[0], best[1]), misses=(misses[0], misses[1]),
+        common: dict[str, Any] = dict(score=call.score, best_break=(best[0], best[1]), misses=(misses[0], misses[1]),
                       shot_number=state.shot_number + 1)
         if call.frame_over:
             return replace(state, frame_over=True, winner=call.winner, break_points=0, ball_in_hand=False,

@@ -3,7 +3,7 @@ declares before a shot) and :class:`Call` (the referee's call on a shot). All fr
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
-from typing import Any, Callable, Literal, Union
+from typing import Any, Callable, Final, Literal, Union
 
 from .errors import RulesError
 
@@ -30,8 +30,8 @@ def register_rules(game: str, ruleset: type, targets: Callable[["GameState"], tu
 
 #: Ball in hand for the next shooter: ``False`` (play the cue ball where it lies), ``"anywhere"`` on the table,
 #: or ``"kitchen"`` (behind the head string). The env places the cue ball; the rules only say where it may go.
-ANYWHERE = "anywhere"
-KITCHEN = "kitchen"
+ANYWHERE: Final = "anywhere"
+KITCHEN: Final = "kitchen"
 BallInHand = Union[Literal[False], Literal["anywhere"], Literal["kitchen"]]
 BALL_IN_HAND = (False, ANYWHERE, KITCHEN)
 
