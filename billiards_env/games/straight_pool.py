@@ -129,7 +129,7 @@ class StraightPoolSession(GameSession):
         s = self.state
         on = table.balls.on_table
         rows = [r for r in self.legal_rows() if on[r] and r != 0] if not s.game_over else []
-        area = pool_place_area(s, table.table, float(table.balls.radius[0]))  # type: ignore[arg-type]
+        area = pool_place_area(s, table.table, float(table.balls.radius[0]))
         return ShotView(tuple(rows), min(rows) if rows else None, area, bool(s.break_shot and not s.game_over),
                         not s.game_over, False, s.shooter)
 

@@ -292,8 +292,8 @@ def check_shot(scene: Any, result: Any, sample_between: bool = True) -> Report:
                 first_off = int(np.argmax(~flags))
                 if flags[first_off:].any():
                     rep.fail("pocket", f"ball {b} back on the table after being pocketed")
-    pocket_t = {}
-    for q in np.flatnonzero(kinds == EV_POCKET):
+    pocket_t: dict[int, int] = {}  # ball -> its pocket event
+    for q in np.flatnonzero(kinds == EV_POCKET).tolist():
         pocket_t.setdefault(int(ev.ball[q]), q)
     if pocket_t:
         for q in range(len(ev)):

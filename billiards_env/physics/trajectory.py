@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 from numba import njit
 
 from .codes import MS_POCKETED, MS_ROLLING, MS_STATIONARY, SPIN
@@ -86,18 +87,18 @@ class Trajectory:
     #: spin model: the sliding, rolling and spinning decelerations ``mu_slide g, mu_roll g, mu_spin g`` (m/s^2)
     spin_decel: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
-    def _times(self, times: np.ndarray, who: str) -> np.ndarray:
+    def _times(self, times: npt.ArrayLike, who: str) -> np.ndarray:
         t = np.clip(np.asarray(times, dtype=float).reshape(-1), 0.0, self.duration)
         if np.any(np.diff(t) < 0):
             raise ValueError(f"Trajectory.{who}: times must be ascending")
         return t
 
-    def sample(self, times: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def sample(self, times: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
         """Positions ``(T, N, 2)`` and on-table flags ``(T, N)`` at ascending ``times`` (s)."""
         states, on, _ = self.sample_states(self._times(times, "sample"))
         return np.ascontiguousarray(states[:, :, :2]), on
 
-    def sample_states(self, times: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def sample_states(self, times: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Full states at ascending ``times`` (s): ``(T, N, 7)`` columns ``x, y, vx, vy, wx, wy, wz`` (angular
         velocities 0 outside the spin model), on-table flags ``(T, N)`` and motion-state codes ``(T, N)``
         (:data:`.codes.MOTION_STATES`; under ``rolling``/``drag`` a moving ball counts as rolling)."""

@@ -5,6 +5,7 @@ The set-up script runs this after installing, so a user's first shot loads compi
 from __future__ import annotations
 
 import time
+from typing import Any
 
 from .balls import Balls
 from .model import Physics
@@ -52,7 +53,7 @@ def _warm_batch(sim: Simulator, balls: Balls) -> None:
     from .batch import run_shots
 
     spin = sim.physics.has_spin
-    kw = {"side": [0.1, 0.0], "top": [0.0, -0.1]} if spin else {}
+    kw: dict[str, Any] = {"side": [0.1, 0.0], "top": [0.0, -0.1]} if spin else {}
     for threads, events in ((1, True), (2, False)):
         run_shots(sim, balls, [0.0, 1.0], [1.0, 0.5], threads=threads, events=events, **kw)
 

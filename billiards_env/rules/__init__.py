@@ -43,7 +43,7 @@ def ruleset_for(game: str, options: object | None = None) -> Ruleset:
         cls = RULESETS[game]
     except KeyError:
         raise RulesError(f"game: unknown game {game!r}; use one of {', '.join(RULESETS)}") from None
-    return cls(options)  # type: ignore[abstract, arg-type]
+    return cls(options)
 
 
 

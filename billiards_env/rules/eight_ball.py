@@ -116,6 +116,7 @@ class EightBall(Ruleset):
             if not summary.pocketed:
                 return clean_call(state, summary, LEGAL, keep_turn=False)
             mine = group_of(summary.pocketed[0])
+            assert mine is not None  # not the 8: a shot that pots it returned above
             theirs = STRIPES if mine == SOLIDS else SOLIDS
             groups = (mine, theirs) if state.shooter == 0 else (theirs, mine)
             return clean_call(state, summary, LEGAL, keep_turn=True, groups=groups)

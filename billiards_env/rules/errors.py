@@ -16,7 +16,7 @@ class RulesError(ValueError):
 def check_keywords(cls: type, keys: Any) -> None:
     """Refuse a keyword of ``keys`` that the options dataclass ``cls`` does not have: :class:`RulesError` naming the
     allowed options, with a did-you-mean (every game's rules options go through this, e.g. an env's ``rules``)."""
-    names = [f.name for f in fields(cls)]  # type: ignore[arg-type]
+    names = [f.name for f in fields(cls)]
     for key in keys:
         if key not in names:
             close = difflib.get_close_matches(str(key), names, n=1)

@@ -28,7 +28,7 @@ from .nine_ball import NineBall, NineBallOptions
 from .state import (ANYWHERE, EIGHT_BALL, EIGHT_EARLY, EIGHT_NOT_CALLED, EIGHT_ON_BREAK, EIGHT_ON_FOUL,
                     EIGHT_POCKETED, EIGHT_WRONG_POCKET, FOULS, ILLEGAL_BREAK, KITCHEN, LEGAL, NINE_BALL, NINE_POCKETED,
                     NO_CONTACT, NO_RAIL, PUSH_OUT, SCRATCH, SOLIDS, STRIPES, THREE_FOULS, WRONG_BALL_FIRST, Call,
-                    GameState)
+                    BallInHand, GameState)
 
 #: Columns of a game state row.
 S_GAME, S_ON, S_SHOOTER, S_BIH, S_GROUPS, S_FOULS0, S_FOULS1, S_BREAK, S_PUSH_AVAILABLE, S_PUSH_PENDING, S_OVER, \
@@ -61,7 +61,7 @@ STRIPES_MASK = sum(1 << n for n in range(9, 16))
 EIGHT_BIT = 1 << 8
 
 _BIH_CODE = {False: BIH_NO, ANYWHERE: BIH_ANYWHERE, KITCHEN: BIH_KITCHEN}
-_BIH_VALUE = (False, ANYWHERE, KITCHEN)
+_BIH_VALUE: tuple[BallInHand, ...] = (False, ANYWHERE, KITCHEN)
 _GROUPS_VALUE = (None, (SOLIDS, STRIPES), (STRIPES, SOLIDS))
 
 

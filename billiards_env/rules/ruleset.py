@@ -3,7 +3,7 @@ turning a call into the next state)."""
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from typing import Any, Callable, ClassVar, Iterable
+from typing import Any, ClassVar, Iterable
 
 from .errors import RulesError
 from .state import (ANYWHERE, ILLEGAL_BREAK, NO_CONTACT, NO_RAIL, SCRATCH, WRONG_BALL_FIRST, BallInHand, Call,
@@ -53,7 +53,7 @@ class Ruleset(ABC):
     game: ClassVar[str]
     full_rack: ClassVar[tuple[int, ...]]  #: object balls of a full game
     #: The game's legal-target function (``state -> balls``), registered with the game.
-    targets: ClassVar[Callable[[GameState], tuple[int, ...]]]
+    targets: ClassVar[staticmethod[[GameState], tuple[int, ...]]]
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         """A subclass that names its ``game`` registers it (:func:`~.state.register_rules`): the game's states are
