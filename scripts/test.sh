@@ -7,6 +7,8 @@
 # runs the client libraries in .venv-clients (`scripts/setup.sh --clients`): tests/clients, each library as its
 # docs show; and it builds the docs site strictly (`mkdocs build --strict` in .venv-docs, `scripts/setup.sh --docs`:
 # a broken link, a page missing from the nav or an API reference that does not resolve fails it) into site/.
+# Without args it first lints: `ruff check` (the whole repository, [tool.ruff] in pyproject.toml) and `mypy` (the
+# typed layers: physics, rules, games, table_state; [tool.mypy]), both from the dev extra in .venv.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rllib=0
@@ -29,6 +31,9 @@ if [ $# -eq 0 ]; then bash scripts/setup.sh --clients; bash scripts/setup.sh --d
 export SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy
 status=0
 if [ $# -eq 0 ]; then
+  echo "test: linting (ruff check; mypy on physics, rules, games, table_state)"
+  .venv/bin/python -m ruff check || status=$?
+  .venv/bin/python -m mypy || status=$?
   echo "test: building the docs site (mkdocs build --strict)"
   NO_MKDOCS_2_WARNING=1 .venv-docs/bin/mkdocs build --strict || status=$?  # not --quiet: it hides the warnings strict counts
   .venv/bin/python -m pytest -n 2 --ignore=tests/clients || status=$?  # tests/clients: in .venv-clients below

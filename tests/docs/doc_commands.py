@@ -69,6 +69,9 @@ RULES: list[Rule] = [
     Rule(r"\.venv-docs/bin/mkdocs build", "the docs site (scripts/test.sh builds it too): strictly, into a temporary "
          "folder, in .venv-docs", add='--site-dir "$(mktemp -d)"', venv=".venv-docs", slow=True, timeout=300,
          cwd="root"),
+    Rule(r"python -m (ruff|mypy)\b", "the linters (scripts/test.sh runs them too): on the checkout, whose "
+         "pyproject.toml configures them and whose billiards_env/ they read (the sandbox links neither)",
+         timeout=300, cwd="root"),
     Rule(r"pip install", "install commands: every package they name is installed (or is an extra of "
                          "pyproject.toml), not reinstalled", kind="pip"),
     Rule(r"python -m agents\.train --resume", "resume with a total budget above what the tiny run spent (a total "
