@@ -52,8 +52,9 @@ class Ruleset(ABC):
 
     game: ClassVar[str]
     full_rack: ClassVar[tuple[int, ...]]  #: object balls of a full game
-    #: The game's legal-target function (``state -> balls``), registered with the game.
-    targets: ClassVar[staticmethod[[GameState], tuple[int, ...]]]
+    #: The game's legal-target function (``state -> balls``), registered with the game: a staticmethod (a
+    #: ``Callable`` class variable would read to a type checker as a method bound to the ruleset).
+    targets: ClassVar[staticmethod]
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
         """A subclass that names its ``game`` registers it (:func:`~.state.register_rules`): the game's states are
