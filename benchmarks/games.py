@@ -101,7 +101,7 @@ class _Stepper:
                 a = self.rng.uniform(-1.0, 1.0, env.action_space.shape).astype(np.float32)
                 _, _, term, trunc, info = env.step(a)
                 self.steps += 1
-                self.shots += 1 + info.get("opponent_shots", 0)
+                self.shots += 1 + int(info.get("opponent_shots", 0))
                 if term or trunc:
                     self.shots += env.reset()[1].get("opponent_shots", 0)
         return time.perf_counter() - t0, time.process_time() - c0

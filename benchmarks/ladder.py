@@ -1,6 +1,7 @@
 """The model ladder: how often each physics model, from the lecture's drag to the ``pooltool`` preset, plays a shot
 to the same outcome as the preset, and what it costs. ``python -m benchmarks --only ladder`` writes
-``docs/bench/ladder.md`` and ``ladder.json`` (``--quick``: fewer shots).
+``docs/bench/ladder.md`` and ``ladder.json`` (``--quick``: fewer shots); ``python -m benchmarks.ladder --pockets``
+measures the pocket rung alone (``--write``: into the committed report, the other rungs kept).
 
 Models (rungs), each a :class:`~billiards_env.physics.Physics`:
 
@@ -28,6 +29,7 @@ the ball arrays, as the envs call it), the median of interleaved rounds.
 """
 from __future__ import annotations
 
+import json
 import math
 import statistics
 import time
@@ -41,7 +43,7 @@ from billiards_env.physics.aim import cut_angle, ghost_point, path_clear, pocket
 from billiards_env.physics.layout import diamond_positions, foot_spot
 
 from .common import (DRAG_FACTOR, DRAG_FRAME_DT, DRAG_MIN_SPEED, load_now, log, machine_info, machine_markdown,
-                     publish, rerender)
+                     publish, rerender, write_json)
 
 R = 0.028575
 #: Final positions within this of the preset's count as the same outcome (m).
@@ -351,3 +353,30 @@ def main(out: Path | None, quick: bool = False) -> dict[str, Any]:
     doc["end_load"] = load_now()
     publish(doc, render_markdown(doc), out, "ladder")
     return doc
+
+
+def main_pockets(out: Path | None, quick: bool = False) -> list[dict[str, Any]]:
+    """Measure the pocket rung alone and print it; with ``out``, put it into ``out/ladder.json`` (the other rungs as
+    they were, the rung's own machine line) and re-write ``ladder.md``."""
+    machine = machine_info()
+    rows = run_pockets(quick)
+    print("\n".join(render_pockets(rows)))
+    if out is not None:
+        doc = json.loads((out / "ladder.json").read_text())
+        doc.update(pockets=rows, pockets_machine=machine, pockets_end_load=load_now())
+        write_json(out / "ladder.json", doc)
+        rerender(out, "ladder", render_markdown)
+        log(f"[ladder] wrote the pocket rung into {out / 'ladder.md'}")
+    return rows
+
+
+if __name__ == "__main__":
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="python -m benchmarks.ladder", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--pockets", action="store_true", required=True,
+                        help="the pocket rung alone: capture circles against jaws, outcomes and CPU time per shot")
+    parser.add_argument("--quick", action="store_true", help="fewer shots")
+    parser.add_argument("--write", action="store_true", help="put it into docs/bench/ladder.json and ladder.md")
+    args = parser.parse_args()
+    main_pockets(Path(__file__).resolve().parents[1] / "docs" / "bench" if args.write else None, args.quick)

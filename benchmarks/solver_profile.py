@@ -440,14 +440,24 @@ def _replays() -> dict[str, Any]:
     return _COMPILED
 
 
+#: The least CPU time one measurement of :func:`_cpu` spans: ``fn`` is called as often as that takes (as timeit
+#: does), so a call of a few microseconds is not lost in the clock's and the scheduler's noise.
+MIN_MEASURE_S = 2e-3
+
+
 def _cpu(fn: Callable[[], Any], repeats: int) -> float:
-    """Median CPU seconds of ``fn`` over ``repeats`` calls (after one warm-up call)."""
+    """Median CPU seconds of one call of ``fn`` over ``repeats`` measurements (after a warm-up call), each measurement
+    looping ``fn`` for at least :data:`MIN_MEASURE_S`."""
+    c = time.process_time_ns()
     fn()
+    once = (time.process_time_ns() - c) * 1e-9
+    loops = max(1, min(100_000, int(MIN_MEASURE_S / max(once, 1e-9)) + 1))
     times = []
     for _ in range(repeats):
         c = time.process_time_ns()
-        fn()
-        times.append((time.process_time_ns() - c) * 1e-9)
+        for _ in range(loops):
+            fn()
+        times.append((time.process_time_ns() - c) * 1e-9 / loops)
     return statistics.median(times)
 
 

@@ -183,7 +183,7 @@ def time_env(env_id: str, seconds: float, wrapped: bool = True, fast: bool = Tru
             _, _, term, trunc, info = env.step(a)
             t_step += time.perf_counter() - t0
             steps += 1
-            events += info["n_events"]
+            events += int(info["n_events"])
             if term or trunc:
                 t0 = time.perf_counter()
                 env.reset()

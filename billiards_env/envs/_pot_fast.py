@@ -75,7 +75,7 @@ class PotFastStep:
         pocketed = self.masks.get(mask)
         if pocketed is None:
             pocketed = self.masks[mask] = (mask >> self.rows) & 1 != 0
-        info = {"is_success": i[O_SUCCESS] != 0}
+        info = {"is_success": np.array(i[O_SUCCESS] != 0, np.bool_)}
         info.update(shot_info(pocketed.copy(), i[O_SCRATCH] != 0, int(out[5][0]), int(out[2][0]), float(out[1][0]),
                               int(out[0][0]), env.shots, CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP])))
         env.state.changed()

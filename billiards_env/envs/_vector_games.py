@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from billiards_env.games.infos import conform
 from billiards_env.games.pool import EightBallSession, NineBallSession
 from billiards_env.physics.batch import use_parallel
 from billiards_env.physics.errors import SceneError
@@ -360,6 +361,9 @@ class GameTables:
                   "ball_in_hand": b, "groups": g}
                  for s, r, f, b, g, fo, sc, to, p, a, sp in zip(*ints, *flags, pocketed, rec[:, gk.R_ANGLE].tolist(),
                                                                 rec[:, gk.R_SPEED].tolist())]
+        schema = self.venv.info_schema
+        for turn in turns:  # the single env's forms (numpy scalars, 0-d flags)
+            conform(turn, schema)
         return [turns[s:s + c] for s, c in zip(starts.tolist(), counts.tolist())]
 
     def columns(self, rows: np.ndarray, step: bool) -> "InfoColumns":
@@ -433,13 +437,12 @@ class InfoColumns:
         self.cols = cols
 
     def dicts(self) -> list[dict[str, Any]]:
-        """Table ``rows[i]``'s info as the single env returns it (Python scalars, arrays), for each ``i``."""
+        """Table ``rows[i]``'s info as the single env returns it (numpy scalars, 0-d arrays for flags, arrays), for
+        each ``i``."""
         keys = list(self.cols)
         rows = self.rows
-        values = []
-        for arr in self.cols.values():
-            got = arr[rows]
-            values.append(list(got) if got.ndim > 1 else got.tolist())
+        values = [[np.array(v) for v in arr[rows]] if arr.ndim == 1 and arr.dtype == np.bool_ else list(arr[rows])
+                  for arr in self.cols.values()]
         return [dict(zip(keys, vals)) for vals in zip(*values)]
 
 

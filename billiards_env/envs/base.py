@@ -26,7 +26,7 @@ import numpy as np
 from billiards_env.physics.balls import Balls, validate_balls
 from billiards_env.physics.errors import SceneError
 from billiards_env.games import GAMES
-from billiards_env.games.infos import mask_of
+from billiards_env.games.infos import conform, mask_of
 from billiards_env.games.session import GameSession
 from billiards_env.physics.codes import STATUS_NAMES
 from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, diamond_positions, foot_spot, head_spot,
@@ -226,7 +226,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         info = blank_info(self.info_schema)  # the schema's keys: the task's, and no shot yet
         info.update(self.task.reset(self.state, self.np_random, options, self._driver))
         self.show_new_episode()
-        return self.observation_type.observe(self.state), info
+        return self.observation_type.observe(self.state), self._conformed(info)
 
     def show_new_episode(self) -> None:
         """What ``reset`` draws: the frame list started afresh with the table now (``rgb_array_list``), or the table
@@ -270,7 +270,14 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         if self._record:  # the agent's shot, then the opponent's reply in a game
             self._animate_step([(played.trajectory, view)] + self._animations)
         self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
-        return self.observation_type.observe(self.state), reward, terminated, truncated, info
+        return self.observation_type.observe(self.state), reward, terminated, truncated, self._conformed(info)
+
+    def _conformed(self, info: dict[str, Any]) -> dict[str, Any]:
+        """``info`` (and each of its ``opponent_turns``) in the schema's forms: its scalars numpy scalars."""
+        conform(info, self.info_schema)
+        for turn in info.get(OPPONENT_TURNS, ()):
+            conform(turn, self.info_schema)
+        return info
 
     def info_words(self, info: dict[str, Any], ids: Sequence[str] | None = None) -> dict[str, Any]:
         """``info`` in words (:func:`~billiards_env.envs.info.info_words`): the balls as ids, the codes as names.

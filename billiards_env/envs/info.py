@@ -3,9 +3,10 @@ dtype, shape, meaning), which the env, its compiled pot step, the native vector 
 :func:`shot_info`, the builder of the shot's keys.
 
 The same keys come at reset and at every step, each of one type, dtype and shape, so that RL libraries can stack
-infos step by step (Tianshou), write them to HDF5 (Minari) or average them (PufferLib): Python ``bool``/``int``/
-``float`` scalars and numpy arrays; balls as boolean masks over the ball rows (``pocketed``, ``legal_targets``) or a
-row index (``first_contact``, -1 none); categories as ``int`` codes (``status``, ``call``, ``foul_reason``,
+infos step by step (Tianshou), write them to HDF5 (Minari), average them (PufferLib) or read them into tensors
+(TorchRL): every value with a dtype (numbers ``np.int64``/``np.float64`` scalars, flags 0-d boolean arrays, the
+rest numpy arrays: :func:`billiards_env.games.infos.single`); balls as boolean masks over the ball rows (``pocketed``, ``legal_targets``) or a
+row index (``first_contact``, -1 none); categories as integer codes (``status``, ``call``, ``foul_reason``,
 ``ball_in_hand``, ``groups``, ``on``: ``info_schema(config)[key].names[code]`` is the name, -1 none). The
 opponent's shots one by one (a list of dicts, one per shot, in the same forms) come only with the config key
 ``opponent_infos=True`` (``info["opponent_turns"]``), outside the schema; by default the step sums them up
@@ -89,19 +90,20 @@ def shot_info(pocketed: np.ndarray, scratch: bool, first_contact: int, n_events:
               status: int, shots: int, played: Any) -> dict[str, Any]:
     """The shot keys of ``info`` (:func:`shot_keys`): ``pocketed`` (a mask over the rows), ``scratch``,
     ``first_contact`` (a row, -1 none), ``n_events``, ``sim_time``, ``status`` (a code), ``shots`` (of the episode),
-    and the shot as played (``played``: ``angle``, ``speed``, ``side``, ``top``, noise included)."""
+    and the shot as played (``played``: ``angle``, ``speed``, ``side``, ``top``, noise included); single values in
+    the schema's forms (:func:`~billiards_env.games.infos.single`)."""
     return {
         "pocketed": pocketed,
-        "scratch": bool(scratch),
-        "first_contact": int(first_contact),
-        "n_events": int(n_events),
-        "sim_time": float(sim_time),
-        "status": int(status),
-        "shots": int(shots),
-        "angle": float(played.angle),
-        "speed": float(played.speed),
-        "side": float(played.side),
-        "top": float(played.top),
+        "scratch": np.array(scratch, np.bool_),
+        "first_contact": np.int64(first_contact),
+        "n_events": np.int64(n_events),
+        "sim_time": np.float64(sim_time),
+        "status": np.int64(status),
+        "shots": np.int64(shots),
+        "angle": np.float64(played.angle),
+        "speed": np.float64(played.speed),
+        "side": np.float64(played.side),
+        "top": np.float64(played.top),
     }
 
 

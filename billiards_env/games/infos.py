@@ -2,7 +2,10 @@
 the names of a code), and the helpers that make values of that form.
 
 Every info value has one fixed type, dtype and shape per env id (RL libraries stack infos step by step, average them
-or write them to HDF5): Python ``bool``/``int``/``float`` for scalars, numpy arrays for the rest (a boolean mask over
+or write them to HDF5, or read them into tensors): every value carries its dtype, which TorchRL's info reader asks of
+each. Numbers are numpy scalars (``np.int64``, ``np.float64``); flags are 0-d boolean arrays (numpy's ``np.bool_`` is
+no ``np.number``, so Gymnasium's ``SyncVectorEnv`` would stack it as objects; a 0-d array stacks as ``bool``); the
+rest are numpy arrays (a boolean mask over
 the ball rows instead of a tuple of ids), an ``int`` code instead of a string (``names[code]`` is its name, -1 none).
 The games' own keys are declared beside the values they give (each session's ``info_keys``); the env's schema joins
 them (:func:`billiards_env.envs.info.info_schema`). No Gymnasium here.
@@ -15,8 +18,8 @@ import numpy as np
 
 
 class InfoSpec(NamedTuple):
-    """One info key: ``dtype`` (``np.bool_``, ``np.int64`` or ``np.float64``), ``shape`` (``()`` a Python scalar of
-    that kind, else a numpy array), ``meaning`` (for the docs), ``blank`` (the value when there is nothing to report:
+    """One info key: ``dtype`` (``np.bool_``, ``np.int64`` or ``np.float64``), ``shape`` (``()`` a single value: a 0-d
+    boolean array for ``np.bool_``, else a numpy scalar of the dtype; else a numpy array), ``meaning`` (for the docs), ``blank`` (the value when there is nothing to report:
     a reset's shot keys, no call yet) and ``names`` (a code's names: ``names[code]``; empty if not a code)."""
 
     dtype: type
@@ -27,22 +30,22 @@ class InfoSpec(NamedTuple):
 
 
 def flag(meaning: str) -> InfoSpec:
-    """A Python ``bool`` key (False when there is nothing to report)."""
+    """A flag: a 0-d boolean array (False when there is nothing to report)."""
     return InfoSpec(np.bool_, (), meaning, False)
 
 
 def integer(meaning: str, blank: int = 0) -> InfoSpec:
-    """A Python ``int`` key."""
+    """An ``np.int64`` key."""
     return InfoSpec(np.int64, (), meaning, blank)
 
 
 def real(meaning: str) -> InfoSpec:
-    """A Python ``float`` key (0.0 when there is nothing to report)."""
+    """An ``np.float64`` key (0.0 when there is nothing to report)."""
     return InfoSpec(np.float64, (), meaning, 0.0)
 
 
 def code(meaning: str, names: Iterable[str], blank: int = -1) -> InfoSpec:
-    """An ``int`` code: ``names[code]`` is its name; ``blank`` (-1 unless given) when there is none."""
+    """An ``np.int64`` code: ``names[code]`` is its name; ``blank`` (-1 unless given) when there is none."""
     return InfoSpec(np.int64, (), meaning, blank, tuple(names))
 
 
@@ -52,10 +55,31 @@ def row_mask(meaning: str, n_balls: int) -> InfoSpec:
 
 
 def blank_value(spec: InfoSpec) -> Any:
-    """A fresh value of ``spec`` saying nothing: its ``blank`` as a Python scalar, or an array filled with it."""
+    """A fresh value of ``spec`` saying nothing: its ``blank`` in the form of :func:`single`, or an array filled
+    with it."""
     if spec.shape:
         return np.full(spec.shape, spec.blank, dtype=spec.dtype)
-    return {np.bool_: bool, np.int64: int, np.float64: float}[spec.dtype](spec.blank)
+    return single(spec.dtype, spec.blank)
+
+
+def single(dtype: type, value: Any) -> Any:
+    """``value`` as an info value of shape ``()`` and ``dtype``: a 0-d boolean array for ``np.bool_`` (Gymnasium's
+    vector envs stack it as ``bool``; an ``np.bool_`` they would stack as objects), else a numpy scalar
+    (``np.int64``, ``np.float64``). Each has a ``dtype``, as TorchRL's info reader needs."""
+    if dtype is np.bool_:
+        return np.array(value, np.bool_)
+    return dtype(value)
+
+
+def conform(info: dict[str, Any], schema: dict[str, InfoSpec]) -> dict[str, Any]:
+    """``info`` with its keys of shape ``()`` in ``schema`` in the form of :func:`single`, in place (returned too):
+    the games and tasks write plain Python values where they decide them; this is the one place they take the
+    schema's form. Arrays and keys outside the schema stay as they are."""
+    for key, value in info.items():
+        spec = schema.get(key)
+        if spec is not None and not spec.shape:
+            info[key] = single(spec.dtype, value)
+    return info
 
 
 def mask_of(rows: Iterable[int], n: int) -> np.ndarray:
@@ -70,4 +94,4 @@ def code_of(names: tuple[str, ...], name: Any) -> int:
     return -1 if name is None else names.index(name)
 
 
-__all__ = ["InfoSpec", "flag", "integer", "real", "code", "row_mask", "blank_value", "mask_of", "code_of"]
+__all__ = ["InfoSpec", "flag", "integer", "real", "code", "row_mask", "blank_value", "single", "conform", "mask_of", "code_of"]

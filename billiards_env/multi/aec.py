@@ -25,6 +25,7 @@ from billiards_env.envs.base import RENDER_MODES, BilliardsEnv
 from billiards_env.envs.config import ConfigError
 from billiards_env.envs.games import GameTask
 from billiards_env.games import GAMES
+from billiards_env.games.infos import single
 
 #: The two agents; ``player_k`` is player ``k`` of the rules (``GameState.shooter``, ``Call.winner``).
 AGENTS = ("player_0", "player_1")
@@ -237,7 +238,8 @@ class BilliardsGameAEC(AECEnv, EzPickle):
         common = {k: v for k, v in info.items() if k not in _SINGLE_AGENT_KEYS}
         s = self.task.session
         return {a: {**{k_: v.copy() if isinstance(v, np.ndarray) else v for k_, v in common.items()},
-                    "player": k, "shot_by": shot_by, "is_success": bool(s.game_over and s.winner == k)}
+                    "player": np.int64(k), "shot_by": np.int64(shot_by),
+                    "is_success": single(np.bool_, s.game_over and s.winner == k)}
                 for a, k in self.agent_index.items()}
 
 

@@ -36,9 +36,6 @@ def test_gymenv_specs_and_rollout(env_id):
     env.close()
 
 
-@pytest.mark.xfail(strict=True, raises=AttributeError,
-                   reason="the infos hold Python scalars (bool, int, float); TorchRL's info reader reads each value's "
-                          ".dtype, so it needs numpy values (np.bool_, np.int64, np.float64): with them it passes")
 @pytest.mark.parametrize("env_id", ENV_IDS)
 def test_gymenv_reads_the_infos(env_id):
     require("torchrl")

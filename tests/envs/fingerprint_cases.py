@@ -42,6 +42,8 @@ def canon(x: Any) -> Any:
         return {str(k): canon(v) for k, v in sorted(x.items(), key=lambda kv: str(kv[0]))
                 if str(k).lstrip("_") not in ADDED_INFO_KEYS}
     if isinstance(x, np.ndarray):
+        if x.ndim == 0 and x.dtype != object:  # a flag of the infos: its value, as a scalar of the dtype
+            return canon(x[()])
         if x.dtype == object:
             return [canon(v) for v in x.tolist()]
         return [str(x.dtype), list(x.shape), hashlib.sha256(np.ascontiguousarray(x).tobytes()).hexdigest()]

@@ -50,7 +50,8 @@ def test_spaces_and_types(env_id):
     assert type(reward) is float and type(terminated) is bool and type(truncated) is bool
     for key in ("is_success", "pocketed", "scratch", "first_contact", "n_events", "sim_time", "status"):
         assert key in info, key
-    assert type(info["is_success"]) is bool and type(info["scratch"]) is bool
+    for flag in ("is_success", "scratch"):  # flags: 0-d boolean arrays (a dtype each, stacked as bool by vector envs)
+        assert type(info[flag]) is np.ndarray and info[flag].dtype == np.bool_ and info[flag].shape == ()
     assert info["status"] in (0, 1, 2) and -1 <= info["first_contact"] < n
     assert info["pocketed"].dtype == np.bool_ and info["pocketed"].shape == (n,)
     assert info["sim_time"] > 0 and info["n_events"] >= 1

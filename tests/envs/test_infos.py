@@ -16,13 +16,10 @@ from billiards_env.envs.config import load_config
 from billiards_env.envs.info import OPPONENT_TURNS, info_schema
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "infos.md"
-#: The Python type of a scalar of each dtype.
-SCALAR = {np.bool_: bool, np.int64: int, np.float64: float}
-
-
 def check_info(info: dict, schema: dict, where: str) -> None:
-    """``info`` has exactly the schema's keys in its order, each value of its form: a Python scalar of the dtype's
-    kind for shape (), else a numpy array of the dtype and shape; ``np.asarray`` of it never an object array."""
+    """``info`` has exactly the schema's keys in its order, each value of its form: for shape () a 0-d boolean
+    array (a flag) or a numpy scalar of the dtype (TorchRL reads each value's dtype; Gymnasium's vector envs stack
+    neither as objects), else a numpy array of the dtype and shape; ``np.asarray`` of it never an object array."""
     assert list(info) == list(schema), (where, list(info), list(schema))
     for key, spec in schema.items():
         value = info[key]
@@ -32,7 +29,8 @@ def check_info(info: dict, schema: dict, where: str) -> None:
         if spec.shape:
             assert type(value) is np.ndarray, (where, key, type(value))
         else:
-            assert type(value) is SCALAR[spec.dtype], (where, key, type(value))
+            want = np.ndarray if spec.dtype is np.bool_ else spec.dtype
+            assert type(value) is want, (where, key, type(value))
         if spec.names and value >= 0:
             assert value < len(spec.names), (where, key, value)
 
