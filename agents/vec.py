@@ -22,6 +22,8 @@ import numpy as np
 from gymnasium.vector import AutoresetMode
 from stable_baselines3.common.vec_env.base_vec_env import VecEnv, VecEnvIndices, VecEnvStepReturn
 
+from billiards_env.games.infos import unstack
+
 
 class BilliardsVecEnv(VecEnv):
     """``n_envs`` tables of ``env_id`` (with ``env_kwargs``) as one SB3 ``VecEnv``; ``threads``: numba threads of
@@ -107,7 +109,8 @@ class BilliardsVecEnv(VecEnv):
 
 
 def _per_env(info: dict[str, Any], n: int) -> list[dict[str, Any]]:
-    """Gymnasium's vector info (arrays with ``_key`` masks) as one dict per env with plain Python values."""
+    """Gymnasium's vector info (arrays with ``_key`` masks) as one dict per env, each value in the single env's form
+    (:func:`billiards_env.games.infos.unstack`)."""
     out: list[dict[str, Any]] = [{} for _ in range(n)]
     for key, value in info.items():
         if key.startswith("_") or key in ("final_obs", "final_info"):
@@ -119,10 +122,7 @@ def _per_env(info: dict[str, Any], n: int) -> list[dict[str, Any]]:
             for k in rows:
                 out[k][key] = nested[k]
             continue
-        if isinstance(value, np.ndarray) and value.dtype != object:  # a row per env: scalars, or arrays (masks)
-            items = value.tolist() if value.ndim == 1 else [v.copy() for v in value]
-        else:
-            items = list(value)
+        items = unstack(value) if isinstance(value, np.ndarray) else list(value)  # the single env's forms
         for k in rows:
             out[k][key] = items[k]
     return out

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from billiards_env.games.infos import conform
+from billiards_env.games.infos import conform, unstack
 from billiards_env.games.pool import EightBallSession, NineBallSession
 from billiards_env.physics.batch import use_parallel
 from billiards_env.physics.errors import SceneError
@@ -441,8 +441,7 @@ class InfoColumns:
         each ``i``."""
         keys = list(self.cols)
         rows = self.rows
-        values = [[np.array(v) for v in arr[rows]] if arr.ndim == 1 and arr.dtype == np.bool_ else list(arr[rows])
-                  for arr in self.cols.values()]
+        values = [unstack(arr[rows]) for arr in self.cols.values()]
         return [dict(zip(keys, vals)) for vals in zip(*values)]
 
 

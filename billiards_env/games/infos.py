@@ -71,6 +71,16 @@ def single(dtype: type, value: Any) -> Any:
     return dtype(value)
 
 
+def unstack(column: np.ndarray) -> list[Any]:
+    """The per-table values of a stacked info column (``(n, *shape)``, a vector env's ``info[key]``) in the single
+    env's forms (:func:`single` for shape ``()``, fresh arrays otherwise; an object column's items as they are)."""
+    if column.dtype == object:
+        return list(column)
+    if column.ndim == 1:
+        return [np.array(v) for v in column] if column.dtype == np.bool_ else list(column)
+    return [v.copy() for v in column]
+
+
 def conform(info: dict[str, Any], schema: dict[str, InfoSpec]) -> dict[str, Any]:
     """``info`` with its keys of shape ``()`` in ``schema`` in the form of :func:`single`, in place (returned too):
     the games and tasks write plain Python values where they decide them; this is the one place they take the
@@ -94,4 +104,4 @@ def code_of(names: tuple[str, ...], name: Any) -> int:
     return -1 if name is None else names.index(name)
 
 
-__all__ = ["InfoSpec", "flag", "integer", "real", "code", "row_mask", "blank_value", "single", "conform", "mask_of", "code_of"]
+__all__ = ["InfoSpec", "flag", "integer", "real", "code", "row_mask", "blank_value", "single", "unstack", "conform", "mask_of", "code_of"]
