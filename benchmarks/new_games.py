@@ -24,7 +24,9 @@ from typing import Any
 import numpy as np
 
 from billiards_env.physics import Balls, Physics, Simulator
-from billiards_env.physics.layout import CAROM_IDS, place_random, snooker_balls
+from billiards_env.games.carom_layout import CAROM_IDS
+from billiards_env.games.snooker_layout import snooker_balls
+from billiards_env.physics.layout import place_random
 from billiards_env.physics.table import CAROM_BALL_MASS, CAROM_BALL_RADIUS, carom_table, snooker_table
 from billiards_env.players.referee import noisy, snooker_turn
 from billiards_env.players.snooker import snooker_geometric_shot, snooker_search_shot

@@ -132,7 +132,7 @@ class PlayApp:
             self._record_calls()
             task = self.core.task
             if self.two_people:
-                task.auto_opponent = False  # nobody plays inside step: the players take turns at the window
+                task.seat.auto = False  # nobody plays inside step: the players take turns at the window
                 task.player_names = ("player 1", "player 2")
             else:
                 task.player_names = ("you", task.names()[1])

@@ -22,7 +22,7 @@ from typing import Any, Callable, Iterator, NamedTuple
 import numpy as np
 
 from billiards_env.physics.balls import Balls
-from billiards_env.physics.layout import nearest_free_point, nearest_point_in_d
+from billiards_env.physics.layout import half_disc_point, nearest_free_point, nearest_point_in_half_disc
 from billiards_env.physics.model import Physics
 from billiards_env.physics.simulate import Simulator
 from billiards_env.physics.table import Table
@@ -59,7 +59,8 @@ class RectArea(NamedTuple):
 
 class HalfDiscArea(NamedTuple):
     """Where the cue ball may be placed: the half-disc of radius ``x1 - x0`` centred on ``(x1, (y0 + y1) / 2)`` on its
-    ``x <= x1`` side (snooker's D; ``table`` for the nearest legal point). Unpacks as its bounding box."""
+    ``x <= x1`` side (snooker's D is one: :class:`billiards_env.games.snooker_layout.DArea`). Unpacks as its
+    bounding box."""
 
     x0: float
     x1: float
@@ -74,11 +75,7 @@ class HalfDiscArea(NamedTuple):
     def point(self, u: float, v: float) -> tuple[float, float]:
         """The point of ``(u, v)`` in ``[-1, 1]^2``: ``u`` across (``y``), ``v`` from the arc (-1) to the straight
         side (+1) along the line ``y`` fixed; continuous and one to one."""
-        cx, cy, r = self.geometry
-        u = min(max(float(u), -1.0), 1.0)
-        v = min(max(float(v), -1.0), 1.0)
-        depth = math.sqrt(max(r * r - (r * u) ** 2, 0.0))
-        return cx - depth * 0.5 * (1.0 - v), cy + r * u
+        return half_disc_point(u, v, *self.geometry)
 
     def square(self, x: float, y: float) -> tuple[float, float]:
         cx, cy, r = self.geometry
@@ -92,7 +89,9 @@ class HalfDiscArea(NamedTuple):
         return x <= cx + tol and math.hypot(x - cx, y - cy) <= r + tol
 
     def nearest(self, x: float, y: float, balls: Balls, table: Table) -> tuple[float, float]:
-        return nearest_point_in_d(x, y, balls.pos, balls.on_table, balls.radius, 0, table)
+        """The legal point nearest ``(x, y)``: in the half-disc, off the other balls (``table``: the game's area
+        may place by the table's own markings, as the D does)."""
+        return nearest_point_in_half_disc(x, y, balls.pos, balls.on_table, balls.radius, 0, *self.geometry)
 
     def describe(self) -> str:
         cx, cy, r = self.geometry

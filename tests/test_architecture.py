@@ -198,3 +198,35 @@ def test_agents_do_not_import_the_benchmarks():
     graph = _graph(include_lazy=True)
     bad = [(m, t) for m, ts in graph.items() for t in ts if m.startswith("agents") and t.startswith("benchmarks")]
     assert bad == []
+
+
+#: Attributes with a leading underscore that are public API (namedtuple's).
+_NAMEDTUPLE_API = ("_replace", "_asdict", "_fields", "_make")
+
+
+def _private_reaches(path: Path) -> list[str]:
+    """``line: x._name`` for every read of a private attribute of an object other than ``self``/``cls``/``super()``
+    in ``path`` (another object's private fields: a reach across modules)."""
+    out = []
+    for node in ast.walk(ast.parse(path.read_text())):
+        if not (isinstance(node, ast.Attribute) and node.attr.startswith("_") and not node.attr.startswith("__")):
+            continue
+        base = node.value
+        if isinstance(base, ast.Name) and base.id in ("self", "cls") or node.attr in _NAMEDTUPLE_API:
+            continue
+        if isinstance(base, ast.Call) and isinstance(base.func, ast.Name) and base.func.id == "super":
+            continue
+        out.append(f"{node.lineno}: {ast.unparse(node)}")
+    return out
+
+
+def test_the_package_reads_no_other_objects_private_attributes():
+    """Parts use each other's public properties and methods (the native vector env's tables, the rules' states)."""
+    bad = {mod: r for mod, path in MODULES.items() if mod.startswith("billiards_env") and (r := _private_reaches(path))}
+    assert bad == {}
+
+
+def test_a_planted_private_reach_is_found(tmp_path):
+    path = tmp_path / "m.py"
+    path.write_text("def f(env, x):\n    a = self._ok\n    b = x._replace(a=1)\n    return env._hidden\n")
+    assert _private_reaches(path) == ["4: env._hidden"]

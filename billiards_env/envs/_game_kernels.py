@@ -13,7 +13,7 @@ single env with the same seed and actions, bit for bit (``tests/envs/test_vector
 - the rules (:mod:`billiards_env.rules.pool_judge`, held equal to the Python rules by its tests), the respots
   (:func:`~billiards_env.physics.layout.spot_object_row`, :func:`~billiards_env.physics.layout.spot_cue_row`);
 - the geometric opponent (:func:`billiards_env.players.geometry.geometric_decision_arrays`), its action in the
-  acting action type and that action read back (``GameTask.opponent_action`` then ``ActionType.shot``);
+  acting action type and that action read back (``Opponent.action`` then ``ActionType.shot``);
 - the ``candidates`` action and observation types (``CandidateShots.shot``, ``CandidateFeatures``: the slot lists
   of :mod:`billiards_env.players.slots`, the kick verified by simulating its fan of aims on a copy of the table, kept
   per table between the observation and the next action), the ``position_reward`` shaping

@@ -190,16 +190,14 @@ class GameTables:
         tm = state_model(t.state)
         holes = np.column_stack([table.pocket_xy, table.pocket_radius]).astype(np.float64) if table.n_pockets else \
             np.zeros((0, 3))
-        self.consts = (venv._radius[0], venv._mass[0])
+        self.consts = (venv.ball_radius[0], venv.ball_mass[0])
         self.tables = (sim.pocket_xy, sim.pocket_r, sim.params, tm.pocket_xy, tm.pocket_r, tm.params,
                        np.ascontiguousarray(holes))
         # The rack's slots as order_rack takes them (the positions of the numbers of the rack order in the layout).
         fixed = {int(row): xy for row, xy in zip(t.start_layout.fixed_rows, t.start_layout.fixed_xy)}
         self.rack_slots = np.array([fixed[n] for n in order], dtype=np.float64).reshape(-1, 2) \
             if icfg[gk.J_RACK] != gk.RACK_NONE else np.zeros((0, 2))
-        self.layout = (np.asarray(t.start_layout.fixed_rows, np.int64),
-                       np.ascontiguousarray(t.start_layout.fixed_xy, dtype=float).reshape(-1, 2), venv._rand_rows, venv._regions,
-                       venv._pockets)
+        self.layout = venv.layout_arrays
         self._no_act = np.zeros((n, at.n))
         self.gst = np.zeros((n, pj.N_STATE), np.int64)
         self.cap = int(icfg[gk.J_TURN_CAP])
@@ -214,7 +212,7 @@ class GameTables:
         # One table state per table (views of the batch arrays) for what stays in Python.
         self.states = []
         for k in range(n):
-            st = TableState(venv._states[k].balls, table, t.physics, sim, t.state.numbers, t.state.settings)
+            st = TableState(venv.table_states[k].balls, table, t.physics, sim, t.state.numbers, t.state.settings)
             st.attach_game(_TableGame(self, k), lambda s, k=k: self.view(k))
             self.states.append(st)
         self.ids = t.ball_ids
@@ -250,9 +248,9 @@ class GameTables:
         batch or the machine says so (:func:`~billiards_env.physics.batch.use_parallel`)."""
         v = self.venv
         threads = min(v.threads or default_threads(), len(rows)) if use_parallel(len(rows), v.threads) else 1
-        shared = (self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts, v._gen_list(), self.gst, self.opts,
+        shared = (self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts, v.generators(), self.gst, self.opts,
                   self.cfg, self.icfg, *self.tables, self.layout, self.rack_slots, self.full, self.rec_agent,
-                  self.rec_opp, self.reward, self.tout, v._obs, self.windows)
+                  self.rec_opp, self.reward, self.tout, v.observations, self.windows)
         if threads == 1:
             gk.play_tables(rows, resets, act, *shared)
         else:  # slices of the tables on threads (the kernel releases the GIL); each table's result is the same
@@ -277,7 +275,7 @@ class GameTables:
         its balls and game state copied to the table."""
         v = self.venv
         t = v.template
-        t.np_random = v._rngs[k]
+        t.np_random = v.table_rngs[k]
         _, info = t.reset(options=options)
         b = t.balls
         v.pos[k] = b.pos
@@ -293,7 +291,7 @@ class GameTables:
     def _observe_compiled(self, rows: np.ndarray) -> None:
         v = self.venv
         gk.observe_tables(rows, v.pos, v.on_table, *self.consts, self.gst, self.cfg, self.icfg, self.tables[3],
-                          self.tables[4], self.tables[5], *self.tables[:3], self.kc, v._obs)
+                          self.tables[4], self.tables[5], *self.tables[:3], self.kc, v.observations)
 
     def step(self, rows: np.ndarray, act: np.ndarray) -> None:
         """One step of tables ``rows`` (``act``: the batch's actions, float64 clipped)."""
@@ -307,7 +305,7 @@ class GameTables:
         v = self.venv
         ot = v.template.observation_type
         for k in rows.tolist():
-            v._obs[k] = ot.observe(self.states[k])
+            v.observations[k] = ot.observe(self.states[k])
 
     def _check(self, rows: np.ndarray) -> None:
         err = self.tout[rows, gk.T_ERROR]

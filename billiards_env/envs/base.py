@@ -43,7 +43,8 @@ from .actions import AbsoluteAim, ActionType, action_factory
 from .config import ConfigError, EnvConfig, load_config
 from .info import OPPONENT_TURNS, blank_info, info_schema, info_words, shot_info
 from .observations import observation_factory
-from .games import task_factory
+from .games import GameTask, task_factory
+from .opponent import Opponent
 from .tasks import Driver
 
 RENDER_MODES = ["human", "rgb_array", "rgb_array_list"]
@@ -137,8 +138,11 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         #: Every key of ``info`` with its dtype, shape and meaning: the same keys at reset and at every step
         #: (:func:`~billiards_env.envs.info.info_schema`; ``docs/infos.md``).
         self.info_schema = info_schema(c)
-        self._driver = Driver(self._play, self._opponent_shot)
+        self._driver = Driver(self._play)
         self._exact_type: ActionType | None = None  # see acting_type()
+        if isinstance(self.task, GameTask):  # the opponent plays its shots on the table state the task gives it
+            self.task.take_opponent(Opponent(self.observation_type, self.action_type, self.acting_type(),
+                                             self.task.spec.name, policy=c.opponent, handle=self))
 
         #: Whether steps may take the compiled fast path (tests switch it off to compare with the Python path).
         self._fast = True
@@ -310,14 +314,6 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         if self._exact_type is None:
             self._exact_type = AbsoluteAim(self.config, at.placement, at.declarations, at.n_pockets)
         return self._exact_type
-
-    def _opponent_shot(self) -> CueShot:
-        """The opponent policy's shot on the table now (see :meth:`GameTask.opponent_action`). The observation is
-        made only for a policy that reads it (a player whose ``reads_observation`` is False gets None)."""
-        reads = getattr(self.task.opponent, "reads_observation", True)
-        obs = self.observation_type.observe(self.state) if reads else None
-        action, codec = self.task.opponent_action(self.state, obs, self.action_type, self.acting_type(), self)
-        return codec.shot(self.state, action)
 
     def observe(self, player: int | None = None) -> np.ndarray:
         """The observation of the table now (what ``reset`` and ``step`` return). ``player`` (games: 0 or 1): the

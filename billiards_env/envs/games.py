@@ -3,7 +3,8 @@ alone.
 
 A :class:`GameTask` runs a :class:`~billiards_env.games.session.GameSession` on the env's table state (the rules'
 state, the calls, the respots, the score), and when the turn passes it lets the opponent shoot until it is the
-agent's turn again or the game is over: one ``env.step`` is one shot of the agent plus the opponent's reply
+agent's turn again or the game is over (the :class:`~billiards_env.envs.opponent.Opponent` its env gives it plays the
+opponent's shots on the table state; :class:`~billiards_env.envs.opponent.Seat` says who sits where): one ``env.step`` is one shot of the agent plus the opponent's reply
 (``info["opponent_shots"]``, ``opponent_pocketed`` and ``opponent_fouls`` sum it up; with ``opponent_infos=True``
 ``info["opponent_turns"]`` describes each of its shots). With ``opponent=None`` the agent plays alone and the
 episode ends at its first foul or miss (run-out practice). In two-player mode (:mod:`billiards_env.multi`) nobody
@@ -16,7 +17,6 @@ Reward (the agent's): ``+win_reward`` for a won game, ``-loss_penalty`` for a lo
 """
 from __future__ import annotations
 
-import inspect
 from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
@@ -25,12 +25,12 @@ from billiards_env.games import GameSpec, game_spec
 from billiards_env.games.infos import code_of, mask_of
 from billiards_env.games.session import GameSession, Verdict
 from billiards_env.physics.aim import aim_angle
-from billiards_env.players import make_player
 from billiards_env.shot_path import CueShot, PlayedShot
 from billiards_env.table_state import TableState
 
 from .candidates import next_shot_ease
 from .info import OPPONENT_TURNS
+from .opponent import Opponent, Seat
 from .tasks import Driver, PotTask, Task
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -58,13 +58,10 @@ class GameTask(Task):
         self.has_ball_in_hand = self.session.ball_in_hand
         self.n_features = self.session.n_features
         self.option_keys = self.session.option_keys
-        self.agent = 0
-        #: Whether the opponent's turns are played inside ``step`` (single-agent mode).
-        self.auto_opponent = True
-        self.opponent: Any = None
-        self._opponent_codec = False  # the opponent's act takes an action type (see set_opponent)
-        if config.opponent is not None:
-            self.set_opponent(config.opponent)
+        #: Who sits where: the agent's player, and whether the opponent's turns are played inside ``step``.
+        self.seat = Seat()
+        #: What plays the opponent's shots (given by the env once its action and observation types are made).
+        self.opponent_player: Opponent | None = None
         #: The players' names in the HUD (None: "agent" and the opponent's name).
         self.player_names: tuple[str, str] | None = None
         self._ease = 0.0  # the next shot's ease after the last call (position_reward)
@@ -97,41 +94,46 @@ class GameTask(Task):
     def score(self) -> Any:
         return self.session.score
 
+    @property
+    def agent(self) -> int:
+        """The player the agent plays (the seat's)."""
+        return self.seat.agent
+
+    @property
+    def auto_opponent(self) -> bool:
+        """Whether the opponent's turns are played inside ``step`` (the seat's; off in two-player mode)."""
+        return self.seat.auto
+
+    @auto_opponent.setter
+    def auto_opponent(self, value: bool) -> None:
+        self.seat.auto = bool(value)
+
     # --- configuration -------------------------------------------------------------------------------------------
+    def take_opponent(self, opponent: Opponent) -> None:
+        """Play against ``opponent`` (:class:`~billiards_env.envs.opponent.Opponent`: its policy plays the
+        opponent's shots on the table state it is given)."""
+        self.opponent_player = opponent
+
+    @property
+    def opponent(self) -> Any:
+        """The opponent's policy, or None (the agent plays alone)."""
+        return None if self.opponent_player is None else self.opponent_player.policy
+
     def set_opponent(self, policy: Any) -> None:
         """The opponent's policy: a player (an object whose ``act(state, obs, codec)`` takes a table state and the
         action type to act in, as the players of :mod:`billiards_env.players` do), an object with ``act(env, obs)``,
         an SB3-style model (``predict``), a callable ``obs -> action``, or None (play alone). A name (``"geometric"``,
         ``"search"``, ``"random"``) makes that player of this game. Anything else raises ``TypeError`` now, not at
-        the next step."""
-        if isinstance(policy, str):
-            policy = make_player(policy, seed=0, game=self.spec.name)
-        if policy is not None and not (hasattr(policy, "act") or hasattr(policy, "predict") or callable(policy)):
-            raise TypeError(f"opponent: expected a player (act), a model (predict), a callable obs -> action, a "
-                            f"player's name or None; got {type(policy).__name__}")
-        self.opponent = policy
-        act = getattr(policy, "act", None)
-        self._opponent_codec = act is not None and "codec" in inspect.signature(act).parameters
-
-    def opponent_action(self, state: TableState, obs: np.ndarray, env_action_type: Any, acting: Any,
-                        env: Any) -> tuple[np.ndarray, Any]:
-        """The opponent's action on ``state`` and the action type it is in: a player acts in ``acting`` (the env's
-        type, or an exact type when the env's cannot express every shot); an ``act(env, obs)`` object, a model or a
-        callable act in the env's own type."""
-        opp = self.opponent
-        if self._opponent_codec:
-            return opp.act(state, obs, codec=acting), acting
-        if hasattr(opp, "act"):
-            return opp.act(env, obs), env_action_type
-        if hasattr(opp, "predict"):
-            return opp.predict(obs, deterministic=True)[0], env_action_type
-        return opp(obs), env_action_type
+        the next step (:meth:`~billiards_env.envs.opponent.Opponent.set_policy`)."""
+        if self.opponent_player is None:
+            raise RuntimeError("set_opponent: this task has no opponent seat yet; its env gives it one when made")
+        self.opponent_player.set_policy(policy)
 
     # --- episode ---------------------------------------------------------------------------------------------
     def reset(self, state: TableState, rng: np.random.Generator, options: dict[str, Any] | None,
               driver: Driver) -> dict[str, Any]:
-        if self.opponent is not None and hasattr(self.opponent, "reset"):
-            self.opponent.reset(int(rng.integers(2**31)))
+        if self.opponent_player is not None:
+            self.opponent_player.reset(rng)
         s = self.session
         opts = options or {}
         given = [k for k in self.option_keys if k in opts]
@@ -243,7 +245,7 @@ class GameTask(Task):
         turns: list[dict[str, Any]] = []
         cap = max(MAX_TURN_SHOTS, self.config.max_shots)
         while not s.game_over and s.shooter != self.agent and len(turns) < cap:
-            shot = driver.opponent_shot()
+            shot = self.opponent_player.shot(s.table)
             self.before_shot(shot)
             played = driver.play(shot, "opponent")
             turns.append(self._turn_info(self._judge(s.table, played), played))
@@ -305,10 +307,7 @@ class GameTask(Task):
             return str(self.player_names[0]), str(self.player_names[1])
         if not self.auto_opponent:
             return "player 0", "player 1"
-        opp = self.opponent
-        if opp is None:
-            return "agent", "nobody"
-        return "agent", str(getattr(opp, "name", None) or type(opp).__name__)
+        return "agent", "nobody" if self.opponent_player is None else self.opponent_player.name()
 
     def hud(self) -> dict[str, Any]:
         """What the game shows on screen (its session's HUD)."""

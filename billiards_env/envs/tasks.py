@@ -4,7 +4,8 @@
 A task reads the :class:`~billiards_env.table_state.TableState`, never the env: the env plays a shot through the one
 shot path (:func:`billiards_env.shot_path.play_shot`) and hands the task the :class:`PlayedShot`; the task scores
 it. A task that needs more shots played within a step (a game's opponent, the ``ball_in_hand`` opening's break)
-asks the env's :class:`Driver` for them. :class:`PotTask` is the three scenes without rules (pot one ball, three
+plays them through the shot path the env lends it (:class:`Driver`); a game's opponent chooses its shots itself
+(:class:`~billiards_env.envs.opponent.Opponent`, given to the game's task). :class:`PotTask` is the three scenes without rules (pot one ball, three
 balls, a rack); games are tasks with rules (:mod:`billiards_env.envs.games`).
 """
 from __future__ import annotations
@@ -26,11 +27,9 @@ if TYPE_CHECKING:  # pragma: no cover
 class Driver(NamedTuple):
     """What the env lends a task for the shots it plays within a step: ``play(shot, by)`` plays a shot through the
     env's shot path (its noise, its recording; ``by``: ``"opponent"``, animated after the agent's shot, or
-    ``"table"``, nobody's shot, not drawn) and ``opponent_shot()`` asks the opponent policy for its shot on the
-    table now."""
+    ``"table"``, nobody's shot, not drawn)."""
 
     play: Callable[[CueShot, str], PlayedShot]
-    opponent_shot: Callable[[], CueShot]
 
 
 def first_contact(events: np.ndarray, ball: int = 0) -> int:

@@ -238,7 +238,7 @@ class BilliardsVectorEnv(VectorEnv):
         fout, iout, out = self._fout, self._iout, self._out
         noise = self._noise
         if self._noisy:
-            draw_noise(active, self._gen_list(), self._cfg, noise)
+            draw_noise(active, self.generators(), self._cfg, noise)
         # Serially: one compiled call for the whole step. In parallel (or animating the rendered table): strike,
         # simulate (spread over threads) and score in three calls.
         split = use_parallel(n, self.threads) or self.render_mode in ("rgb_array_list", "human")
@@ -326,6 +326,40 @@ class BilliardsVectorEnv(VectorEnv):
         return self._sync.envs
 
     # ======================================================================================================
+    # Native path: what the games' tables read
+    # ======================================================================================================
+    @property
+    def table_states(self) -> list[TableState]:
+        """One table state per sub-env (views of the batch arrays ``pos``, ``vel``, ``on_table``...)."""
+        return self._states
+
+    @property
+    def table_rngs(self) -> list[np.random.Generator | None]:
+        """Each sub-env's random generator (as a single env's ``np_random``; None until its first reset)."""
+        return self._rngs
+
+    @property
+    def observations(self) -> np.ndarray:
+        """The batch of observations ``(N, ...)`` the native path writes in place (``step`` returns a copy)."""
+        return self._obs
+
+    @property
+    def ball_radius(self) -> np.ndarray:
+        """The balls' radii as a ``(1, B)`` float64 row (what the kernels take)."""
+        return self._radius
+
+    @property
+    def ball_mass(self) -> np.ndarray:
+        """The balls' masses as a ``(1, B)`` float64 row."""
+        return self._mass
+
+    @property
+    def layout_arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The template's start layout as the kernels take it: fixed rows, their points, random rows, their regions
+        ``(x0, x_span, y0, y_span)`` and the pocket centres."""
+        return self._fixed_rows, self._fixed_xy, self._rand_rows, self._regions, self._pockets
+
+    # ======================================================================================================
     # Native path: the parts of a step
     # ======================================================================================================
     def _parse(self, actions: Any, clip: bool = True) -> np.ndarray:
@@ -358,8 +392,9 @@ class BilliardsVectorEnv(VectorEnv):
         if changed:
             self._gens = None
 
-    def _gen_list(self) -> Any:
-        """The sub-envs' generators as a numba typed list (rebuilt only when a generator was replaced)."""
+    def generators(self) -> Any:
+        """The sub-envs' generators as a numba typed list, for compiled code that draws per table (rebuilt only
+        when a generator was replaced)."""
         if self._gens is None:
             self._gens = typed.List(self._rngs)
         return self._gens
@@ -384,7 +419,7 @@ class BilliardsVectorEnv(VectorEnv):
             return
         t = self.template
         c = t.config
-        bad = place_tables(rows, self._gen_list(), self.pos, self.vel, self.ang, self.on_table, self._fixed_rows,
+        bad = place_tables(rows, self.generators(), self.pos, self.vel, self.ang, self.on_table, self._fixed_rows,
                            self._fixed_xy, self._rand_rows, self._regions, self._pockets, c.pocket_margin,
                            2.0 * c.ball_radius + c.ball_gap, PLACE_BATCH, PLACE_TRIES)
         if bad != PLACED:

@@ -1,7 +1,7 @@
 """Three-cushion (carom) as a session (the rules themselves are :mod:`billiards_env.rules.three_cushion`).
 
 The table is the pocketless match table (scene ``table: {preset: carom}``), the balls the two cue balls and the red
-(ids :data:`~billiards_env.physics.layout.CAROM_IDS`: player 0 plays ``"white"``, player 1 ``"yellow"``). The
+(ids :data:`~billiards_env.rules.three_cushion.CAROM_IDS`: player 0 plays ``"white"``, player 1 ``"yellow"``). The
 shooter's cue ball is always row 0 (the row every shot strikes and every observation lists first): when the turn
 passes the session swaps the first two rows (positions, flags, ids and drawing numbers), so a policy always sees
 its own ball first, then the opponent's, then the red. Nothing is re-spotted, there is no ball in hand. The opening
@@ -13,7 +13,6 @@ from typing import Any
 
 import numpy as np
 
-from billiards_env.physics.layout import CAROM_IDS, carom_start_positions
 from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.rules.errors import RulesError
 from billiards_env.rules.three_cushion import (REASONS, ThreeCushion, ThreeCushionCall, ThreeCushionOptions,
@@ -22,6 +21,7 @@ from billiards_env.table_state import ShotView, TableState
 
 from .hud import base_hud
 from .infos import InfoSpec, flag, integer
+from .carom_layout import CAROM_IDS, carom_start_positions
 from .session import GameSession, Verdict, flag_option, pair_option
 
 #: Drawing numbers of the white, the yellow and the red (the renderer's plain carom balls).

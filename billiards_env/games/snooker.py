@@ -1,7 +1,7 @@
 """Snooker as a session (the rules themselves are :mod:`billiards_env.rules.snooker`; docs/rules.md).
 
 The table is the 12 ft snooker table (scene ``table: {preset: snooker}``), the balls the cue ball, 15 reds and the
-six colours (ids :data:`~billiards_env.physics.layout.SNOOKER_IDS`). The cue ball in hand goes in the D (the action's
+six colours (ids :data:`~billiards_env.rules.snooker.SNOOKER_IDS`). The cue ball in hand goes in the D (the action's
 placement dims map the square onto the half-disc: :class:`~billiards_env.table_state.HalfDiscArea`). After each call
 the session re-spots the colours the rules name, puts every ball back after a miss (option ``miss_rule``), and
 after an in-off puts the cue ball in the D (where the next striker's placement moves it). The colour nominated
@@ -14,19 +14,19 @@ from typing import Any
 
 import numpy as np
 
-from billiards_env.physics.layout import (SNOOKER_COLOURS, SNOOKER_IDS, d_geometry, nearest_point_in_d,
-                                          snooker_balls, spot_snooker_colours)
 from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.rules.errors import RulesError
 from billiards_env.rules.snooker import (COLOUR_VALUES, IN_D, ON_COLOUR, ON_NAMES, ON_RED, REASONS, RED_VALUE,
                                          VALUE_NAMES, Snooker,
                                          SnookerCall, SnookerOptions, SnookerShotInfo, SnookerState, SnookerSummary,
                                          ball_on_mask, snooker_values, snookered)
-from billiards_env.table_state import HalfDiscArea, ShotView, TableState
+from billiards_env.table_state import ShotView, TableState
 
 from .hud import base_hud
 from .infos import InfoSpec, code, code_of, integer
 from .session import GameSession, Verdict, pair_option
+from .snooker_layout import (SNOOKER_COLOURS, SNOOKER_IDS, DArea, d_geometry, nearest_point_in_d, snooker_balls,
+                             spot_snooker_colours)
 
 #: The most points of a frame without fouls (15 reds with blacks, then the colours): the features' scale.
 MAX_BREAK = 147.0
@@ -109,10 +109,9 @@ class SnookerSession(GameSession):
         return () if self.game_over else tuple(self.rules.legal_targets(self.state))
 
     # --- what the shooter sees ---------------------------------------------------------------------------------------
-    def place_area(self) -> HalfDiscArea:
+    def place_area(self) -> DArea:
         """The D."""
-        cx, cy, r = d_geometry(self.table.table)
-        return HalfDiscArea(cx - r, cx, cy - r, cy + r)
+        return DArea.of(self.table.table)
 
     def view(self, table: TableState) -> ShotView:
         s = self.state

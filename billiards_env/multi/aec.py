@@ -4,7 +4,7 @@ It is not a second copy of the game. It holds one single-agent game env (``game_
 :class:`~billiards_env.envs.nine_ball.NineBallEnv` or :class:`~billiards_env.envs.eight_ball.EightBallEnv` made
 with ``opponent=None``) whose task (:class:`~billiards_env.envs.games.GameTask`) judges every shot with the rules,
 places the ball-in-hand cue ball, respots balls and keeps the :class:`~billiards_env.rules.GameState`. Its
-``auto_opponent`` is off, so nobody plays automatically: one AEC ``step`` is one shot of the agent to shoot
+seat's ``auto`` is off (``task.seat``), so nobody plays automatically: one AEC ``step`` is one shot of the agent to shoot
 (``game_env.step``), and the turn passes as the rules say (``task.state.shooter``). Each agent observes the table
 from its own point of view (``game_env.observe(player)``), and each gets its own reward for the shot
 (``task.reward_of(verdict, player)``).
@@ -132,7 +132,7 @@ class BilliardsGameAEC(AECEnv, EzPickle):
         if not isinstance(game.task, GameTask):
             raise ConfigError(f"task: {game.config.task!r} is not a game; the two-player env plays one of "
                               f"{', '.join(GAMES)} (leave the key out)")
-        game.task.auto_opponent = False  # the AEC env passes the turn; nobody plays inside step
+        game.task.seat.auto = False  # the AEC env passes the turn; nobody plays inside step
         #: The single-agent game env the shots are played on (players act on it: ``player.act(game_env, obs)``).
         self.game_env: BilliardsEnv = game
         self.task: GameTask = game.task

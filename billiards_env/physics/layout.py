@@ -5,8 +5,10 @@ Table markings (the x axis runs along the length from the head cushion at ``x = 
 ``x = length/4`` (the kitchen is ``x < length/4``), the head spot is ``(length/4, width/2)``, the foot spot
 ``(3 length/4, width/2)`` and the long string the line ``y = width/2``. Every other module asks this one.
 
-Snooker (the baulk cushion at ``x = 0``): the baulk line, the D, the colours' spots, the reds' triangle, the
-WPBSA re-spotting of colours and the cue ball in hand in the D. Three-cushion: the UMB opening position.
+A half-disc area (snooker's D is one): whether a point is in it, a point of it for an action's placement dims, and
+the nearest legal point in it for a ball in hand. The games' own layouts (snooker's spots and D, three-cushion's
+opening position) live with the games: :mod:`billiards_env.games.snooker_layout`,
+:mod:`billiards_env.games.carom_layout`.
 """
 from __future__ import annotations
 
@@ -18,8 +20,7 @@ from numba import njit
 
 from .balls import BALL_RADIUS, Balls
 from .errors import SceneError
-from .table import (CAROM_BALL_MASS, CAROM_BALL_RADIUS, CAROM_WIDTH, SNOOKER_BALL_MASS,
-                    SNOOKER_BALL_RADIUS, SNOOKER_LENGTH, SNOOKER_WIDTH, Table)
+from .table import Table
 
 #: Ball numbers of the 15-ball rack, row by row from the apex (8-ball in the middle of the third row).
 RACK_ORDER = (1, 9, 2, 10, 8, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15)
@@ -499,64 +500,19 @@ def nearest_free_xy(x: float, y: float, pos: np.ndarray, on: np.ndarray, radius:
                         x0, x1, y0, y1)
 
 
-# --- snooker ------------------------------------------------------------------------------------------------------
-# WPBSA markings, measured on the 3569 x 1778 mm table from the baulk cushion (``x = 0``) and scaled with the table's
-# length (along x) and width (across) on any other table. Viewed from the baulk end (looking along +x), the yellow
-# spot is on the right (``y < width/2``) and the green on the left.
+# --- a half-disc (e.g. snooker's D) ------------------------------------------------------------------------------
+# The half-disc of radius ``r`` centred on ``(cx, cy)`` on its ``x <= cx`` side: the straight side is the line
+# ``x = cx`` (snooker's baulk line), the arc faces ``x = 0``. A game gives its own geometry (games/snooker_layout.py).
 
-#: The baulk line: 737 mm (29 in) from the face of the baulk cushion.
-SNOOKER_BAULK_LINE = 0.737
-#: The radius of the D (a half-disc on the baulk side of the baulk line, centred on its middle): 292 mm (11 1/2 in).
-SNOOKER_D_RADIUS = 0.292
-#: The black spot: 324 mm (12 3/4 in) from the face of the top cushion.
-SNOOKER_BLACK_FROM_TOP = 0.324
-#: The colours in ascending value (yellow 2 ... black 7): their ids in a snooker scene.
-SNOOKER_COLOURS = ("yellow", "green", "brown", "blue", "pink", "black")
-#: Ids of the 15 reds.
-SNOOKER_REDS = tuple(f"red{k}" for k in range(1, 16))
-#: Ball ids of a snooker scene, in row order: the cue ball, the reds, the colours in ascending value.
-SNOOKER_IDS = ("cue",) + SNOOKER_REDS + SNOOKER_COLOURS
-#: Gap (m) between the pink and the apex red: "as near as possible without touching".
-SNOOKER_PINK_GAP = 0.002
-
-
-def _snooker_scale(table: Table) -> tuple[float, float]:
-    return table.length / SNOOKER_LENGTH, table.width / SNOOKER_WIDTH
-
-
-def baulk_line_x(table: Table) -> float:
-    """x of the baulk line (737 mm from the baulk cushion on the standard table)."""
-    return SNOOKER_BAULK_LINE * _snooker_scale(table)[0]
-
-
-def d_geometry(table: Table) -> tuple[float, float, float]:
-    """The D as ``(cx, cy, r)``: the half-disc of radius ``r`` centred on the middle of the baulk line
-    ``(cx, cy)``, on its baulk side (``x <= cx``)."""
-    return baulk_line_x(table), 0.5 * table.width, SNOOKER_D_RADIUS * _snooker_scale(table)[1]
-
-
-def snooker_spots(table: Table) -> dict[str, tuple[float, float]]:
-    """The colours' spots by colour id: yellow and green at the ends of the D, brown in the middle of the baulk
-    line, blue in the centre of the table, pink midway between the blue spot and the top cushion, black 324 mm
-    from the top cushion."""
-    cx, cy, r = d_geometry(table)
-    sx = _snooker_scale(table)[0]
-    return {"yellow": (cx, cy - r), "green": (cx, cy + r), "brown": (cx, cy),
-            "blue": (0.5 * table.length, cy), "pink": (0.75 * table.length, cy),
-            "black": (table.length - SNOOKER_BLACK_FROM_TOP * sx, cy)}
-
-
-def in_d(x: float, y: float, table: Table, tol: float = 1e-9) -> bool:
-    """Whether ``(x, y)`` is on or within the lines of the D."""
-    cx, cy, r = d_geometry(table)
+def in_half_disc(x: float, y: float, cx: float, cy: float, r: float, tol: float = 1e-9) -> bool:
+    """Whether ``(x, y)`` is on or within the half-disc ``(cx, cy, r)``."""
     return x <= cx + tol and (x - cx) ** 2 + (y - cy) ** 2 <= (r + tol) ** 2
 
 
-def d_point(u: float, v: float, table: Table) -> tuple[float, float]:
-    """The point of the D for ``(u, v)`` in ``[-1, 1]^2`` (clipped): ``u`` across the table (``-1`` the yellow end
-    of the D, ``+1`` the green), ``v`` from the arc (``-1``) to the baulk line (``+1``) along the line ``y``
-    fixed. A continuous one-to-one map of the square onto the half-disc, for an action's placement dims."""
-    cx, cy, r = d_geometry(table)
+def half_disc_point(u: float, v: float, cx: float, cy: float, r: float) -> tuple[float, float]:
+    """The point of the half-disc ``(cx, cy, r)`` for ``(u, v)`` in ``[-1, 1]^2`` (clipped): ``u`` across (``y =
+    cy - r`` at -1, ``cy + r`` at +1), ``v`` from the arc (-1) to the straight side (+1) along the line ``y`` fixed.
+    A continuous one-to-one map of the square onto the half-disc, for an action's placement dims."""
     u = min(max(float(u), -1.0), 1.0)
     v = min(max(float(v), -1.0), 1.0)
     y = cy + r * u
@@ -564,104 +520,23 @@ def d_point(u: float, v: float, table: Table) -> tuple[float, float]:
     return cx - depth * 0.5 * (1.0 - v), y
 
 
-def snooker_rack(table: Table, radius: float = SNOOKER_BALL_RADIUS) -> dict[str, tuple[float, float]]:
-    """Where the object balls start: the colours on their spots and the 15 reds in a touching triangle whose apex
-    red sits behind the pink spot (towards the top cushion) without touching the pink, its back row parallel to
-    the top cushion. Ids :data:`SNOOKER_REDS` (row by row from the apex) and :data:`SNOOKER_COLOURS`."""
-    spots = snooker_spots(table)
-    px, py = spots["pink"]
-    reds = triangle_positions((px + 2.0 * radius + SNOOKER_PINK_GAP, py), radius)
-    out = {rid: (float(x), float(y)) for rid, (x, y) in zip(SNOOKER_REDS, reds)}
-    out.update(spots)
-    return out
-
-
-def snooker_balls(table: Table, cue_xy: tuple[float, float] | None = None, radius: float = SNOOKER_BALL_RADIUS,
-                  mass: float = SNOOKER_BALL_MASS) -> Balls:
-    """A snooker frame's opening layout (:func:`snooker_rack`) with the cue ball at ``cue_xy`` (default: on the
-    baulk line halfway between the brown and yellow spots, a point of the D). Ids :data:`SNOOKER_IDS`."""
-    rack = snooker_rack(table, radius)
-    if cue_xy is None:
-        cx, cy, r = d_geometry(table)
-        cue_xy = (cx, cy - 0.5 * r)
-    pos = [tuple(cue_xy)] + [rack[i] for i in SNOOKER_IDS[1:]]
-    return Balls.from_positions(pos, ids=SNOOKER_IDS, radius=radius, mass=mass)
-
-
-def _spot_free(x: float, y: float, pos: np.ndarray, on_table: np.ndarray, rad: np.ndarray, row: int) -> bool:
-    """No ball on the table (but ``row``) would touch a ball of row ``row`` placed at ``(x, y)``."""
-    for k in range(len(pos)):
-        if k != row and on_table[k]:
-            need = rad[row] + rad[k] + 1e-6
-            if (x - pos[k, 0]) ** 2 + (y - pos[k, 1]) ** 2 < need * need:
-                return False
-    return True
-
-
-def spot_snooker_colours(pos: np.ndarray, on_table: np.ndarray, radius: np.ndarray | float, table: Table,
-                         colours: dict[str, int]) -> None:
-    """Re-spot snooker colours (``colours``: colour id -> ball row), as the WPBSA rules say: each on its own spot
-    if that is free (a spot is taken when a ball placed there would touch another); the others, the highest value
-    first, on the highest-value free spot; if every spot is taken, as near its own spot as possible between it and
-    the top cushion (on the line parallel to the long cushions through the spot), and for the pink and black,
-    when that is full too, as near as possible below their spot on the centre line. Sets ``pos`` and
-    ``on_table`` of those rows."""
-    unknown = sorted(set(colours) - set(SNOOKER_COLOURS))
-    if unknown:
-        raise SceneError(f"colours: {unknown} are not snooker colours; use {', '.join(SNOOKER_COLOURS)}")
-    rad = np.broadcast_to(np.asarray(radius, dtype=float), (len(pos),))
-    spots = snooker_spots(table)
-    order = sorted(colours, key=SNOOKER_COLOURS.index, reverse=True)  # highest value first
-    for name in order:  # rows being respotted are not on the table while the others are placed
-        on_table[colours[name]] = False
-    left = []
-    for name in order:
-        row = colours[name]
-        x, y = spots[name]
-        if _spot_free(x, y, pos, on_table, rad, row):
-            pos[row] = (x, y)
-            on_table[row] = True
-        else:
-            left.append(name)
-    for name in left:
-        row = colours[name]
-        for spot in reversed(SNOOKER_COLOURS):
-            x, y = spots[spot]
-            if _spot_free(x, y, pos, on_table, rad, row):
-                pos[row] = (x, y)
-                on_table[row] = True
-                break
-        else:
-            x0, y0 = spots[name]
-            step = rad[row] / 8.0
-            up = [x0 + k * step for k in range(1, int((table.length - rad[row] - x0) / step) + 1)]
-            down = [x0 - k * step for k in range(1, int((x0 - rad[row]) / step) + 1)] \
-                if name in ("pink", "black") else []
-            for x in up + down:
-                if _spot_free(x, y0, pos, on_table, rad, row):
-                    pos[row] = (x, y0)
-                    on_table[row] = True
-                    break
-            else:
-                raise SceneError(f"could not re-spot the {name}: its line is full")  # pragma: no cover
-
-
-def nearest_point_in_d(x: float, y: float, pos: np.ndarray, on_table: np.ndarray, radius: np.ndarray | float,
-                       row: int, table: Table, clearance: float = 1e-6) -> tuple[float, float]:
-    """The legal point for the cue ball in hand (row ``row``) nearest to ``(x, y)``: in the D (:func:`in_d`) and
-    at least ``r_row + r_other + clearance`` from every other ball on the table. As
-    :func:`nearest_free_point` does for a rectangle: the point itself moved into the D, or its projection onto a
-    ball's forbidden disc, or where two boundaries meet (disc/disc, disc/baulk line, disc/arc), the nearest legal
-    candidate. Raises :class:`SceneError` if the D is covered."""
-    cx, cy, r = d_geometry(table)
+def nearest_point_in_half_disc(x: float, y: float, pos: np.ndarray, on_table: np.ndarray,
+                               radius: np.ndarray | float, row: int, cx: float, cy: float, r: float,
+                               clearance: float = 1e-6, area: str = "the half-disc") -> tuple[float, float]:
+    """The legal point for ball ``row`` (a cue ball in hand) nearest to ``(x, y)``: in the half-disc ``(cx, cy, r)``
+    (:func:`in_half_disc`) and at least ``r_row + r_other + clearance`` from every other ball on the table. As
+    :func:`nearest_free_point` does for a rectangle: the point itself moved into the half-disc, or its projection
+    onto a ball's forbidden disc, or where two boundaries meet (disc/disc, disc/straight side, disc/arc), the
+    nearest legal candidate. Raises :class:`SceneError` if the half-disc is covered (``area`` names it in the
+    message)."""
     rad = np.broadcast_to(np.asarray(radius, dtype=float), (len(pos),))
     discs = [(float(pos[k, 0]), float(pos[k, 1]), float(rad[row] + rad[k] + clearance))
              for k in range(len(pos)) if on_table[k] and k != row]
-    discs = [q for q in discs if math.hypot(q[0] - cx, q[1] - cy) < r + q[2]]  # only those reaching into the D
+    discs = [q for q in discs if math.hypot(q[0] - cx, q[1] - cy) < r + q[2]]  # only those reaching into it
 
-    def into_d(px: float, py: float) -> tuple[float, float]:
+    def into_half_disc(px: float, py: float) -> tuple[float, float]:
         dx, dy = px - cx, py - cy
-        if dx > 0.0:  # beyond the baulk line: onto the line, then into the half-disc
+        if dx > 0.0:  # beyond the straight side: onto it, then into the half-disc
             dx = 0.0
         d = math.hypot(dx, dy)
         if d > r:
@@ -669,10 +544,10 @@ def nearest_point_in_d(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
         return cx + dx, cy + dy
 
     def legal(px: float, py: float) -> bool:
-        return in_d(px, py, table, 1e-12) and all(
+        return in_half_disc(px, py, cx, cy, r, 1e-12) and all(
             (px - qx) ** 2 + (py - qy) ** 2 >= (rr * (1.0 - 1e-12)) ** 2 for qx, qy, rr in discs)
 
-    px, py = into_d(x, y)
+    px, py = into_half_disc(x, y)
     if legal(px, py):
         return px, py
     cands: list[tuple[float, float]] = [(cx, cy - r), (cx, cy + r)]
@@ -681,7 +556,7 @@ def nearest_point_in_d(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
         d = math.hypot(dx, dy)
         ux, uy = (dx / d, dy / d) if d > 0.0 else (-1.0, 0.0)
         cands.append((qx + ux * rr, qy + uy * rr))
-        h2 = rr * rr - (cx - qx) ** 2  # the disc meets the baulk line
+        h2 = rr * rr - (cx - qx) ** 2  # the disc meets the straight side
         if h2 >= 0.0:
             cands += [(cx, qy + math.sqrt(h2)), (cx, qy - math.sqrt(h2))]
     circles = discs + [(cx, cy, r)]  # disc/disc and disc/arc intersections
@@ -699,57 +574,20 @@ def nearest_point_in_d(x: float, y: float, pos: np.ndarray, on_table: np.ndarray
                       (mx + h * (by - ay) / d, my - h * (bx - ax) / d)]
     best, best_d2 = None, math.inf
     for qx, qy in cands:
-        qx, qy = into_d(qx, qy)
+        qx, qy = into_half_disc(qx, qy)
         if legal(qx, qy):
             d2 = (qx - px) ** 2 + (qy - py) ** 2
             if d2 < best_d2:
                 best, best_d2 = (qx, qy), d2
     if best is None:
-        raise SceneError("no legal point in the D for the cue ball: it is covered by other balls")
+        raise SceneError(f"no legal point in {area} for the cue ball: it is covered by other balls")
     return best
 
 
-# --- three-cushion (carom) -----------------------------------------------------------------------------------------
-#: Ball ids of a carom scene: player 0's cue ball, player 1's cue ball, the red.
-CAROM_IDS = ("white", "yellow", "red")
-#: UMB: the starting spots on the head string, 182 mm either side of the head spot (on the 1.42 m wide table).
-CAROM_START_OFFSET = 0.182
-
-
-def carom_start_positions(table: Table, breaker: int = 0, side: int = 1) -> dict[str, tuple[float, float]]:
-    """The UMB opening position: the red on the top spot (``3 length/4``, the foot spot), the opponent's cue ball
-    on the head spot (``length/4``), and the breaker's cue ball (``"white"`` for player 0, ``"yellow"`` for
-    player 1) on the head string 182 mm (scaled with the width) to one side of it: ``side`` +1 towards ``y =
-    width``, -1 towards ``y = 0``."""
-    if breaker not in (0, 1):
-        raise SceneError(f"breaker: must be player 0 or 1, got {breaker!r}")
-    if side not in (-1, 1):
-        raise SceneError(f"side: must be -1 or +1, got {side!r}")
-    hx, hy = head_spot(table)
-    off = CAROM_START_OFFSET * table.width / CAROM_WIDTH
-    mine, theirs = CAROM_IDS[breaker], CAROM_IDS[1 - breaker]
-    return {mine: (hx, hy + side * off), theirs: (hx, hy), "red": foot_spot(table)}
-
-
-def carom_balls(table: Table, positions: dict[str, tuple[float, float]] | None = None, breaker: int = 0,
-                side: int = 1, radius: float = CAROM_BALL_RADIUS, mass: float = CAROM_BALL_MASS) -> Balls:
-    """The three carom balls (ids :data:`CAROM_IDS`) at ``positions`` (default: the opening position of
-    :func:`carom_start_positions`)."""
-    pos = carom_start_positions(table, breaker, side) if positions is None else positions
-    missing = [i for i in CAROM_IDS if i not in pos]
-    if missing:
-        raise SceneError(f"positions: missing {missing}; give a position for each of {', '.join(CAROM_IDS)}")
-    return Balls.from_positions([pos[i] for i in CAROM_IDS], ids=CAROM_IDS, radius=radius, mass=mass)
-
-
 __all__ = [
-    "SNOOKER_BAULK_LINE", "SNOOKER_D_RADIUS", "SNOOKER_BLACK_FROM_TOP", "SNOOKER_COLOURS", "SNOOKER_REDS",
-    "SNOOKER_IDS", "SNOOKER_PINK_GAP", "baulk_line_x", "d_geometry", "snooker_spots", "in_d", "d_point",
-    "snooker_rack", "snooker_balls", "spot_snooker_colours", "nearest_point_in_d", "CAROM_IDS",
-    "CAROM_START_OFFSET", "carom_start_positions", "carom_balls",
     "RACK_ORDER", "DIAMOND_ORDER", "head_string_x", "head_spot", "foot_spot", "rack_rows", "triangle_positions",
     "diamond_positions", "rack_balls", "rack_fits", "place_random", "place_random_rows", "place_rows", "place_row",
-    "spot_cue_ball",
-    "spot_cue_row", "spot_object_ball", "spot_object_row",
+    "spot_cue_ball", "spot_cue_row", "spot_object_ball", "spot_object_row",
     "nearest_free_point", "nearest_free", "nearest_free_xy", "free_discs", "py_hypot",
+    "in_half_disc", "half_disc_point", "nearest_point_in_half_disc",
 ]

@@ -11,8 +11,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from billiards_env.games.snooker_layout import d_geometry, nearest_point_in_d, spot_snooker_colours
 from billiards_env.physics import Balls, Simulator
-from billiards_env.physics.layout import d_geometry, nearest_point_in_d, spot_snooker_colours
 from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.rules.snooker import (VALUE_NAMES, Snooker, SnookerCall, SnookerShotInfo, SnookerState,
                                          snookered, summarize_snooker)

@@ -27,10 +27,10 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from billiards_env.games.snooker_layout import SNOOKER_COLOURS, d_point, nearest_point_in_d, spot_snooker_colours
 from billiards_env.physics import Balls, Simulator, Table
 from billiards_env.physics.aim import aim_angle, direction_vector, ghost_ball_position, pocket_window, segment_blocked
 from billiards_env.physics.batch import run_shots
-from billiards_env.physics.layout import SNOOKER_COLOURS, d_point, nearest_point_in_d, spot_snooker_colours
 from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.rules.snooker import (COLOUR_VALUES, VALUE_NAMES, Snooker, SnookerState, ball_on_mask,
                                          judge_batch)
@@ -105,7 +105,7 @@ def _with_cue(balls: Balls, cue: int, place: tuple[float, float] | None) -> Ball
 def d_placements(balls: Balls, sim: Simulator, cue: int, targets: list[int], n: int, sigma: float = 0.003,
                  windows: dict | None = None) -> list[tuple[float, float]]:
     """Ball in hand: up to ``n`` legal places in the D (at least a ball apart) that leave the easiest pot of a ball
-    of ``targets``, best first. Tried: a grid over the D (:func:`~billiards_env.physics.layout.d_point`) and, for
+    of ``targets``, best first. Tried: a grid over the D (:func:`~billiards_env.games.snooker_layout.d_point`) and, for
     every target and pocket, the points behind its ghost ball moved into the D; scored by
     :func:`pot_chances`."""
     table = sim.table

@@ -12,8 +12,8 @@ often is played: a robust point, not a lucky one. Without a point, the shot that
 
 Decision functions over plain physics objects (a simulator and the balls), no env::
 
+    from billiards_env.games.carom_layout import carom_balls
     from billiards_env.physics import Physics, Simulator
-    from billiards_env.physics.layout import carom_balls
     from billiards_env.physics.table import carom_table
     from billiards_env.players.three_cushion import three_cushion_shot
 

@@ -399,7 +399,7 @@ def state_row(state: GameState) -> np.ndarray:
 def game_state(row: np.ndarray) -> GameState:
     """The :class:`GameState` of a state row (the values a ruleset gives: Python ints and bools)."""
     r = [int(v) for v in row]
-    return GameState._trusted(NINE_BALL if r[S_GAME] == GAME_NINE else EIGHT_BALL, numbers_of(r[S_ON]),
+    return GameState.trusted(NINE_BALL if r[S_GAME] == GAME_NINE else EIGHT_BALL, numbers_of(r[S_ON]),
                               r[S_SHOOTER], _BIH_VALUE[r[S_BIH]], _GROUPS_VALUE[r[S_GROUPS]],
                               (r[S_FOULS0], r[S_FOULS1]), bool(r[S_BREAK]), bool(r[S_PUSH_AVAILABLE]),
                               bool(r[S_PUSH_PENDING]), bool(r[S_OVER]), None if r[S_WINNER] < 0 else r[S_WINNER],

@@ -118,7 +118,7 @@ class Ruleset(ABC):
         on = (set(state.on_table) - set(call.pocketed)) | set(call.respot)
         fouls = list(state.fouls_in_a_row)
         fouls[call.shooter] = fouls[call.shooter] + 1 if call.foul else 0
-        return GameState._trusted(
+        return GameState.trusted(
             self.game, tuple(sorted(on)), call.next_shooter, call.ball_in_hand, call.groups, (fouls[0], fouls[1]),
             False, self._push_out_next(state, call), call.push_out and not call.foul and not call.game_over,
             call.game_over, call.winner, state.shot_number + 1)

@@ -13,8 +13,8 @@ does it for a search player's batch of candidate shots. :class:`Snooker` wraps i
 
 Example::
 
+    from billiards_env.games.snooker_layout import snooker_balls
     from billiards_env.physics import Physics, Simulator
-    from billiards_env.physics.layout import snooker_balls
     from billiards_env.physics.table import snooker_table
     from billiards_env.rules.snooker import Snooker, SnookerShotInfo, snooker_values, summarize_snooker
 
@@ -39,11 +39,16 @@ import numpy as np
 from numba import njit
 
 from ..physics.codes import EV_POCKET
-from ..physics.layout import SNOOKER_COLOURS
 from ..physics.outcome import first_contact_row
 from .errors import RulesError, checked_keywords
 
 SNOOKER = "snooker"
+#: The colours in ascending value (yellow 2 ... black 7): their ids in a snooker scene.
+SNOOKER_COLOURS = ("yellow", "green", "brown", "blue", "pink", "black")
+#: Ids of the 15 reds.
+SNOOKER_REDS = tuple(f"red{k}" for k in range(1, 16))
+#: Ball ids of a snooker scene, in row order: the cue ball, the reds, the colours in ascending value.
+SNOOKER_IDS = ("cue",) + SNOOKER_REDS + SNOOKER_COLOURS
 #: Ball values: the cue ball 0, a red 1, the colours 2..7 in the order of :data:`SNOOKER_COLOURS`.
 RED_VALUE = 1
 COLOUR_VALUES = {name: k + 2 for k, name in enumerate(SNOOKER_COLOURS)}
@@ -532,7 +537,7 @@ class SnookerCall:
     (whoever plays it). ``reason``: :data:`POT`, :data:`NO_POT`, the first foul, :data:`MISS`, or what ended the
     frame. ``nominated`` / ``free_ball``: the colour nominated and the free ball, as judged (the first ball hit
     when not declared). ``respot``: colours the env puts back on their spots
-    (:func:`~billiards_env.physics.layout.spot_snooker_colours`); the other potted balls stay down.
+    (:func:`~billiards_env.games.snooker_layout.spot_snooker_colours`); the other potted balls stay down.
     ``reds_potted`` / ``colours_potted``. ``break_points``: the striker's break after the shot (its total when
     the turn passes). ``turn_over``, ``next_shooter``, ``ball_in_hand`` (``"d"`` after an in-off; with
     ``replace`` whatever it was before the shot). ``miss`` / ``replace``: a miss was called and the env puts every
@@ -723,7 +728,8 @@ class Snooker:
 
 
 __all__ = [
-    "SNOOKER", "RED_VALUE", "COLOUR_VALUES", "VALUE_NAMES", "ON_RED", "ON_COLOUR", "IN_D", "MIN_PENALTY", "IN_OFF",
+    "SNOOKER", "SNOOKER_COLOURS", "SNOOKER_REDS", "SNOOKER_IDS", "RED_VALUE", "COLOUR_VALUES", "VALUE_NAMES",
+    "ON_RED", "ON_COLOUR", "IN_D", "MIN_PENALTY", "IN_OFF",
     "NO_BALL_HIT", "BALL_NOT_ON_FIRST", "BALL_NOT_ON_POTTED", "FOULS", "POT", "NO_POT", "MISS", "THREE_MISSES",
     "FRAME_OVER", "RESPOTTED_BLACK", "REASONS", "ON_NAMES", "snooker_values", "judge", "judge_batch", "ball_on_mask",
     "snookered",

@@ -128,12 +128,13 @@ class GameState:
         return 1 - self.shooter
 
     @classmethod
-    def _trusted(cls, game: str, on_table: tuple[int, ...], shooter: int, ball_in_hand: BallInHand,
+    def trusted(cls, game: str, on_table: tuple[int, ...], shooter: int, ball_in_hand: BallInHand,
                  groups: tuple[str, str] | None, fouls_in_a_row: tuple[int, int], break_shot: bool,
                  push_out_available: bool, push_out_pending: bool, game_over: bool, winner: int | None,
                  shot_number: int) -> "GameState":
         """A state from fields a ruleset derived from a checked state and its own call (skips the checks of
-        ``__post_init__``, which cost more than the rest of a call; ``on_table`` must be sorted)."""
+        ``__post_init__``, which cost more than the rest of a call; ``on_table`` must be sorted). For the rulesets
+        and the compiled rules only: anything else builds a ``GameState`` (checked)."""
         obj = object.__new__(cls)
         for name, value in zip(_STATE_FIELDS, (game, on_table, shooter, ball_in_hand, groups, fouls_in_a_row,
                                                break_shot, push_out_available, push_out_pending, game_over, winner,

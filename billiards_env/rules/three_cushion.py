@@ -11,8 +11,8 @@ Every rule and simplification: docs/rules.md.
 
 Example::
 
+    from billiards_env.games.carom_layout import carom_balls
     from billiards_env.physics import Physics, Simulator
-    from billiards_env.physics.layout import carom_balls
     from billiards_env.physics.table import carom_table
     from billiards_env.rules.three_cushion import ThreeCushion, carom_rows, summarize_carom
 
@@ -35,10 +35,11 @@ import numpy as np
 from numba import njit
 
 from ..physics.codes import EV_COLLISION, EV_CUSHION
-from ..physics.layout import CAROM_IDS
 from .errors import RulesError, checked_keywords
 
 THREE_CUSHION = "three_cushion"
+#: Ball ids of a carom scene: player 0's cue ball, player 1's cue ball, the red.
+CAROM_IDS = ("white", "yellow", "red")
 #: The cushions the cue ball must touch before it meets the second ball.
 CUSHIONS_NEEDED = 3
 
@@ -312,7 +313,7 @@ class ThreeCushion:
         return f"ThreeCushion({self.options!r})"
 
     def initial_state(self, first_shooter: int = 0) -> ThreeCushionState:
-        """The state before the opening shot: ``first_shooter`` breaks (from :func:`~billiards_env.physics.layout.
+        """The state before the opening shot: ``first_shooter`` breaks (from :func:`~billiards_env.games.carom_layout.
         carom_start_positions`)."""
         _check_player("first_shooter", first_shooter)
         innings = (1, 0) if first_shooter == 0 else (0, 1)

@@ -3,6 +3,7 @@ geometric, search and random players) is not observed for; any other policy gets
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from env_helpers import gym
 
 from billiards_env.players import GeometricPlayer, RandomPlayer, SearchPlayer
@@ -39,3 +40,37 @@ def test_players_that_ignore_the_observation_are_not_observed_for():
             assert all(isinstance(o, np.ndarray) and o.shape == env.observation_space.shape for o in spy.seen)
         else:
             assert all(o is None for o in spy.seen)
+
+
+def test_the_opponent_plays_on_the_table_state_it_is_given():
+    """The opponent is an object the game's task is given: it chooses its shot from the table state handed to it;
+    the task and its session hold no reference to the env."""
+    from billiards_env.envs.opponent import Opponent, Seat
+    from billiards_env.shot_path import CueShot
+
+    env = gym.make("Billiards9Ball-v0")
+    env.reset(seed=5)
+    u = env.unwrapped
+    task = u.task
+    assert isinstance(task.opponent_player, Opponent) and isinstance(task.seat, Seat)
+    assert task.seat.agent == 0 and task.seat.opponent == 1 and task.auto_opponent
+    assert not hasattr(u, "_opponent_shot") and not hasattr(task, "opponent_action")
+    assert all(v is not u for v in vars(task).values()) and all(v is not u for v in vars(task.session).values())
+    shot = task.opponent_player.shot(u.state)
+    assert isinstance(shot, CueShot)
+    again = task.opponent_player.shot(u.state)  # the geometric player: deterministic on the same table
+    assert (again.angle, again.speed) == (shot.angle, shot.speed)
+    task.seat.auto = False  # two-player mode: nobody plays inside step
+    assert not task.auto_opponent and task.names() == ("player 0", "player 1")
+
+
+def test_an_opponent_without_a_policy_says_so():
+    from billiards_env.envs.opponent import Opponent
+
+    env = gym.make("Billiards9Ball-v0", opponent=None)
+    env.reset(seed=0)
+    opp = env.unwrapped.task.opponent_player
+    assert opp.policy is None and opp.name() == "nobody" and env.unwrapped.task.names()[1] == "nobody"
+    assert isinstance(opp, Opponent)
+    with pytest.raises(RuntimeError, match="no policy"):
+        opp.shot(env.unwrapped.state)

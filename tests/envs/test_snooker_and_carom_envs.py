@@ -10,7 +10,8 @@ import pytest
 from env_helpers import gym
 
 from billiards_env.multi import three_cushion_v0
-from billiards_env.physics.layout import SNOOKER_IDS, carom_start_positions, d_geometry, snooker_spots
+from billiards_env.games.carom_layout import carom_start_positions
+from billiards_env.games.snooker_layout import SNOOKER_IDS, d_geometry, snooker_spots
 from billiards_env.table_state import HalfDiscArea
 
 L, W = 3.569, 1.778

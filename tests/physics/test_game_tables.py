@@ -1,4 +1,5 @@
-"""The snooker and carom tables and their layouts: pocket sizes, markings, the reds' triangle, the D, re-spotting
+"""The snooker and carom tables and their layouts (the games' own: games/snooker_layout.py, games/carom_layout.py,
+on the physics' generic half-disc): pocket sizes, markings, the reds' triangle, the D, re-spotting
 colours, the three-cushion opening position, and pocketless shots through every kernel."""
 from __future__ import annotations
 
@@ -10,10 +11,10 @@ import pytest
 from billiards_env.physics import BALL_RADIUS, Balls, Physics, Simulator, Table, validate_balls
 from billiards_env.physics.batch import run_shots
 from billiards_env.physics.invariants import check_shot
-from billiards_env.physics.layout import (CAROM_IDS, SNOOKER_COLOURS, SNOOKER_IDS, SNOOKER_REDS, baulk_line_x,
-                                         carom_balls, carom_start_positions, d_geometry, d_point, in_d,
-                                         nearest_point_in_d, snooker_balls, snooker_rack, snooker_spots,
-                                         spot_snooker_colours)
+from billiards_env.games.carom_layout import CAROM_IDS, carom_balls, carom_start_positions
+from billiards_env.games.snooker_layout import (SNOOKER_COLOURS, SNOOKER_IDS, SNOOKER_REDS, baulk_line_x, d_geometry,
+                                                d_point, in_d, nearest_point_in_d, snooker_balls, snooker_rack,
+                                                snooker_spots, spot_snooker_colours)
 from billiards_env.physics.scene import Scene, Shot
 from billiards_env.physics.table import (CAROM_BALL_MASS, CAROM_BALL_RADIUS, CORNER_POCKET_RADIUS,
                                         POOL_BALL_RADIUS, POOL_CORNER_MOUTH, POOL_SIDE_MOUTH,

@@ -209,3 +209,33 @@ def test_spot_object_ball_equals_the_python_it_replaced():
         assert np.array_equal(a_pos, b_pos) and np.array_equal(a_on, b_on) and a_on[row]
         moved += a_pos[row, 0] != fx
     assert moved >= 20
+
+
+# --- a half-disc area (the generic geometry snooker's D stands on) -------------------------------------------------
+def test_a_half_disc_places_the_ball_in_hand_nearest_and_legal():
+    from billiards_env.physics.layout import half_disc_point, in_half_disc, nearest_point_in_half_disc
+
+    cx, cy, r = 1.0, 0.6, 0.3
+    pos = np.array([(0.2, 0.2), (cx - 0.1, cy)])  # the cue ball (row 0) and a ball inside the half-disc
+    on = np.array([True, True])
+    # a free point stays; beyond the straight side it goes onto it; beyond the arc onto the arc
+    assert nearest_point_in_half_disc(cx - 0.2, cy + 0.2, pos, on, R, 0, cx, cy, r) == (cx - 0.2, cy + 0.2)
+    assert nearest_point_in_half_disc(cx + 0.4, cy - 0.2, pos, on, R, 0, cx, cy, r) == pytest.approx((cx, cy - 0.2))
+    assert nearest_point_in_half_disc(cx - 1.0, cy, pos, on, R, 0, cx, cy, r) == pytest.approx((cx - r, cy))
+    # asked on the ball: pushed out to touching distance, still in the half-disc
+    x, y = nearest_point_in_half_disc(cx - 0.1 + 1e-3, cy, pos, on, R, 0, cx, cy, r)
+    assert in_half_disc(x, y, cx, cy, r) and math.hypot(x - (cx - 0.1), y - cy) == pytest.approx(2 * R + 1e-6)
+    # the square maps onto it: corners of the straight side, the far point of the arc, clipped beyond [-1, 1]
+    assert half_disc_point(-1, 1, cx, cy, r) == pytest.approx((cx, cy - r))
+    assert half_disc_point(0, -1, cx, cy, r) == pytest.approx((cx - r, cy))
+    assert half_disc_point(3, 3, cx, cy, r) == half_disc_point(1, 1, cx, cy, r)
+    assert not in_half_disc(cx + 0.01, cy, cx, cy, r) and not in_half_disc(cx - r - 0.01, cy, cx, cy, r)
+
+
+def test_a_covered_half_disc_raises_naming_the_area():
+    from billiards_env.physics.layout import nearest_point_in_half_disc
+
+    cx, cy, r = 1.0, 0.6, 0.1
+    pos = np.array([(0.2, 0.2), (cx - 0.05, cy)])
+    with pytest.raises(SceneError, match="no legal point in the box for the cue ball"):
+        nearest_point_in_half_disc(cx, cy, pos, np.ones(2, bool), 0.1, 0, cx, cy, r, area="the box")

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from billiards_env.physics import Balls, Physics, Simulator
-from billiards_env.physics.layout import SNOOKER_COLOURS, in_d, snooker_balls, snooker_spots
+from billiards_env.games.snooker_layout import SNOOKER_COLOURS, in_d, snooker_balls, snooker_spots
 from billiards_env.physics.table import SNOOKER_BALL_MASS, SNOOKER_BALL_RADIUS, snooker_table
 from billiards_env.players.referee import snooker_turn
 from billiards_env.players.snooker import (SnookerSearchSettings, SnookerShot, snooker_geometric_shot,

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from billiards_env.physics import Balls, Physics, Simulator
-from billiards_env.physics.layout import CAROM_IDS, carom_balls
+from billiards_env.games.carom_layout import CAROM_IDS, carom_balls
 from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.physics.table import CAROM_BALL_MASS, CAROM_BALL_RADIUS, carom_table
 from billiards_env.players.referee import three_cushion_turn

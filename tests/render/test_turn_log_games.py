@@ -11,7 +11,7 @@ import numpy as np  # noqa: E402
 import pygame  # noqa: E402
 
 from billiards_env import play  # noqa: E402
-from billiards_env.physics.layout import SNOOKER_IDS  # noqa: E402
+from billiards_env.rules.snooker import SNOOKER_IDS  # noqa: E402
 from billiards_env.render.turn_log import TurnLog, potted_names, scroll_hint, turn_line  # noqa: E402
 
 E = pygame.event.Event

@@ -14,7 +14,7 @@ import numpy as np
 
 from billiards_env.physics import Balls, Physics, Simulator
 from billiards_env.physics.codes import EV_COLLISION, EV_CUSHION
-from billiards_env.physics.layout import CAROM_IDS
+from billiards_env.rules.three_cushion import CAROM_IDS
 from billiards_env.physics.table import CAROM_BALL_MASS, CAROM_BALL_RADIUS, carom_table
 
 TABLE = carom_table()

@@ -12,10 +12,11 @@ import numpy as np
 import rules_helpers
 from rules_helpers import angle_to, unit  # noqa: F401 (the scenes use them)
 
+from billiards_env.games.snooker_layout import snooker_spots
 from billiards_env.physics import Balls, Physics, Simulator
-from billiards_env.physics.layout import SNOOKER_COLOURS, SNOOKER_REDS, snooker_spots
 from billiards_env.physics.table import SNOOKER_BALL_MASS, SNOOKER_BALL_RADIUS, snooker_table
-from billiards_env.rules.snooker import SnookerSummary, snooker_values, summarize_snooker
+from billiards_env.rules.snooker import (SNOOKER_COLOURS, SNOOKER_REDS, SnookerSummary, snooker_values,
+                                         summarize_snooker)
 
 R = SNOOKER_BALL_RADIUS
 TABLE = snooker_table()

@@ -10,7 +10,7 @@ from snooker_helpers import (R, SIM, SPOTS, TABLE, angle_to, hit_and_stay, in_of
                              pot_two)
 
 from billiards_env.physics.batch import run_shots
-from billiards_env.physics.layout import SNOOKER_COLOURS, snooker_balls
+from billiards_env.games.snooker_layout import SNOOKER_COLOURS, snooker_balls
 from billiards_env.rules import RulesError
 from billiards_env.rules import snooker as S
 from billiards_env.rules.snooker import (Snooker, SnookerOptions, SnookerShotInfo, SnookerState, SnookerSummary,

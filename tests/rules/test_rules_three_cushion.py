@@ -11,7 +11,7 @@ from carom_helpers import SIM, carom, place_on_path, run
 from billiards_env.physics import Physics, Simulator
 from billiards_env.physics.batch import run_shots
 from billiards_env.physics.codes import EV_COLLISION, EV_CUSHION, EV_JAM, EV_ROLL, EV_STOP
-from billiards_env.physics.layout import CAROM_IDS, carom_balls
+from billiards_env.games.carom_layout import CAROM_IDS, carom_balls
 from billiards_env.physics.table import carom_table
 from billiards_env.rules import RulesError
 from billiards_env.rules import three_cushion as T
