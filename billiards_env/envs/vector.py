@@ -26,7 +26,8 @@ their sub-envs one by one (the same results, at single-env speed; ``not_native``
 Options (keyword arguments besides the env's own config keys): ``autoreset_mode`` (``"next_step"``, Gymnasium's
 default, ``"same_step"`` or ``"disabled"``; declared in ``metadata["autoreset_mode"]``), ``render_mode`` and
 ``render_env`` (the sub-env drawn; ``rgb_array`` returns its frame, ``rgb_array_list`` its animated shots),
-``threads`` (numba threads for the physics: None chooses, 1 runs serially; the results do not depend on it).
+``threads`` (threads for the physics: None chooses, 1 runs serially; the results do not depend on it; the pot
+task runs slices of its tables on Python threads, one compiled call each, as the games do).
 """
 from __future__ import annotations
 
