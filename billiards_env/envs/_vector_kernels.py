@@ -13,7 +13,8 @@ test ``tests/envs/test_vector_env.py`` checks it):
   with :func:`~billiards_env.physics.layout.spot_cue_row`, the single env's code), and :func:`observe_positions`
   the positions observation;
 - :func:`pot_step` (:func:`pot_step_spin`) does all of a step's shots in one serial call: strike, physics, score,
-  observation. The native vector env uses it when it runs serially, and the single env for its fast path.
+  observation. The native vector env uses it when it runs serially, and the single env for its fast path;
+  :func:`pot_step_parallel` does the same on several threads (:func:`pot_step_rows` on slices of the tables).
 
 Random numbers come from each sub-env's own ``numpy.random.Generator`` (numba draws from the same bit generator
 state, with numpy's algorithms), in the single env's order.
@@ -291,6 +292,53 @@ def pot_step_spin(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy
     return ok
 
 
+@njit(cache=True, nogil=True)
+def pot_step_rows(rows, act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events,
+                  cfg, icfg, noise, out, fout, iout, obs):
+    """:func:`pot_step` on tables ``rows`` only (int64), without the GIL: :func:`pot_step_parallel` runs slices of
+    the tables on several Python threads at once (a table's result does not depend on the slice it is in)."""
+    ok = True
+    for q in range(rows.shape[0]):
+        k = rows[q]
+        if active[k]:
+            _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
+            res = simulate_exact(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
+                                 max_events, False)
+            ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
+    return ok
+
+
+@njit(cache=True, nogil=True)
+def pot_step_rows_spin(rows, act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params,
+                       max_events, cfg, icfg, noise, out, fout, iout, obs):
+    """:func:`pot_step_rows` for the spin model."""
+    ok = True
+    for q in range(rows.shape[0]):
+        k = rows[q]
+        if active[k]:
+            _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
+            res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
+                                      max_events, False)
+            ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
+    return ok
+
+
+def pot_step_parallel(spin: bool, threads: int, act: np.ndarray, active: np.ndarray, *args: Any) -> bool:
+    """:func:`pot_step` spread over ``threads`` Python threads: the active tables in ``threads`` contiguous slices,
+    one compiled call (:func:`pot_step_rows`, which releases the GIL) per slice, as the games' vector kernel runs
+    (threads rather than numba's ``prange``). ``args``: :func:`pot_step`'s arguments after ``active``. Every table
+    is struck, simulated and scored by the same code as serially, so the results do not depend on ``threads``."""
+    from ._vector_games import _pool
+
+    kernel = pot_step_rows_spin if spin else pot_step_rows
+    rows = np.flatnonzero(active).astype(np.int64)
+    threads = max(1, min(threads, rows.size))
+    if threads == 1:
+        return bool(kernel(rows, act, active, *args))
+    slices = np.array_split(rows, threads)
+    return all(list(_pool(threads).map(lambda r: bool(kernel(r, act, active, *args)), slices)))
+
+
 __all__ = ["AIM_ABSOLUTE", "AIM_RELATIVE", "AIM_GHOST", "PLACED", "pack_config", "place_tables", "prepare_shots",
            "finish_shots", "observe_positions", "pot_step", "draw_noise",
-           "pot_step_spin"]
+           "pot_step_spin", "pot_step_rows", "pot_step_rows_spin", "pot_step_parallel"]

@@ -26,7 +26,8 @@ their sub-envs one by one (the same results, at single-env speed; ``not_native``
 Options (keyword arguments besides the env's own config keys): ``autoreset_mode`` (``"next_step"``, Gymnasium's
 default, ``"same_step"`` or ``"disabled"``; declared in ``metadata["autoreset_mode"]``), ``render_mode`` and
 ``render_env`` (the sub-env drawn; ``rgb_array`` returns its frame, ``rgb_array_list`` its animated shots),
-``threads`` (numba threads for the physics: None chooses, 1 runs serially; the results do not depend on it).
+``threads`` (threads for the physics: None chooses, 1 runs serially; the results do not depend on it; the pot
+task runs slices of its tables on Python threads, one compiled call each, as the games do).
 """
 from __future__ import annotations
 
@@ -47,12 +48,12 @@ from billiards_env.table_state import TableState
 
 from ._pot_fast import compiled_action
 from ._seeding import np_random
-from ._vector_games import GameTables, InfoColumns, native_games, stack_columns, stack_infos
+from ._vector_games import GameTables, InfoColumns, default_threads, native_games, stack_columns, stack_infos
 from ._game_kernels import T_TERMINATED, T_TRUNCATED
 from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP,
                               I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
                               draw_noise, finish_shots, observe_positions, pack_config, place_tables, pot_step,
-                              pot_step_spin, prepare_shots)
+                              pot_step_parallel, pot_step_spin, prepare_shots)
 from .base import RENDER_MODES, BilliardsEnv, check_options_mapping
 from .config import ConfigError
 
@@ -210,7 +211,7 @@ class BilliardsVectorEnv(VectorEnv):
         self._ever_reset = True
         if self.games is not None:  # the games' reset info, stacked as SyncVectorEnv stacks it
             return self._obs.copy(), self._game_infos([(rows, False)], rows)
-        return self._obs.copy(), _select(self._blank_info(), rows, n)
+        return self._obs.copy(), _select(self._blank_info(), rows, n, fresh=True)
 
     def step(self, actions: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
         """Step every sub-env (one shot each; sub-envs whose episode ended reset as ``autoreset_mode`` says)."""
@@ -239,10 +240,13 @@ class BilliardsVectorEnv(VectorEnv):
         noise = self._noise
         if self._noisy:
             draw_noise(active, self.generators(), self._cfg, noise)
-        # Serially: one compiled call for the whole step. In parallel (or animating the rendered table): strike,
-        # simulate (spread over threads) and score in three calls.
-        split = use_parallel(n, self.threads) or self.render_mode in ("rgb_array_list", "human")
+        # Serially: one compiled call for the whole step; in parallel, one per thread on a slice of the tables.
+        # Animating the rendered table: strike, simulate and score in three calls.
+        split = self.render_mode in ("rgb_array_list", "human")
         render_before = None
+        step_args = (self.pos, self.vel, self.ang, self.on_table, self.shots, self._radius, self._mass, sim.pocket_xy,
+                     sim.pocket_r, sim.params, int(sim.max_events), self._cfg, self._icfg, noise, out, fout, iout,
+                     self._obs)
         if split:
             prepare_shots(act, active, self.pos, self.on_table, self._radius[0], self._cfg, self._icfg, noise,
                           self.vel, self.ang, fout)
@@ -251,11 +255,11 @@ class BilliardsVectorEnv(VectorEnv):
                           out, self.threads)
             ok = finish_shots(active, out[3], out[5], self.pos, self.on_table, self.vel, self.ang, self.shots,
                               self._cfg, self._icfg, fout, iout)
+        elif use_parallel(n, self.threads):
+            ok = pot_step_parallel(self._spin_model, self.threads or default_threads(), act, active, *step_args)
         else:
             step = pot_step_spin if self._spin_model else pot_step
-            ok = step(act, active, self.pos, self.vel, self.ang, self.on_table, self.shots, self._radius, self._mass,
-                      sim.pocket_xy, sim.pocket_r, sim.params, int(sim.max_events), self._cfg, self._icfg, noise,
-                      out, fout, iout, self._obs)
+            ok = step(act, active, *step_args)
         if not ok:
             raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
         status, sim_time, n_events, _, _, first = out[:6]
@@ -273,9 +277,7 @@ class BilliardsVectorEnv(VectorEnv):
         infos: dict[str, Any] = {}
         if mode == AutoresetMode.SAME_STEP and done.any():
             ended = np.flatnonzero(done)
-            final_obs = np.full(n, None, dtype=object)
-            for k, row in zip(ended.tolist(), self._obs[ended]):  # (rows of a fresh copy)
-                final_obs[k] = row
+            final_obs = _object_rows(n, ended, self._obs)
             final_mask = done.copy()
             final = {"final_obs": final_obs, "_final_obs": final_mask,
                      "final_info": _select(step_info, ended, n), "_final_info": final_mask.copy()}
@@ -286,7 +288,7 @@ class BilliardsVectorEnv(VectorEnv):
             self._observe(ended)
             self._needs_reset[:] = False
         else:
-            infos = _select(self._blank_info(step_info, np.flatnonzero(resetting)), np.arange(n), n)
+            infos = _select(self._blank_info(step_info, np.flatnonzero(resetting)), np.arange(n), n, fresh=True)
             self._needs_reset = done
         if resetting.any():
             rows = np.flatnonzero(resetting)
@@ -489,9 +491,7 @@ class BilliardsVectorEnv(VectorEnv):
             ended = np.flatnonzero(done)
             kept = np.flatnonzero(~done)
             if ended.size:
-                final_obs = np.full(n, None, dtype=object)
-                for k, row in zip(ended.tolist(), self._obs[ended]):  # (rows of a fresh copy)
-                    final_obs[k] = row
+                final_obs = _object_rows(n, ended, self._obs)
                 self._reset_rows(ended, None)
                 self._observe(ended)
             extra = None
@@ -646,19 +646,33 @@ def _autoreset_mode(mode: str | AutoresetMode) -> AutoresetMode:
                      "AutoresetMode)")
 
 
-def _select(info: dict[str, np.ndarray], rows: np.ndarray, n: int) -> dict[str, np.ndarray]:
+def _select(info: dict[str, np.ndarray], rows: np.ndarray, n: int, fresh: bool = False) -> dict[str, np.ndarray]:
     """The vector ``info`` of the sub-envs ``rows``: each key's array with the others blanked as Gymnasium's
-    vector envs leave them (0, False or None), and its ``_key`` mask. Empty if ``rows`` is."""
+    vector envs leave them (0, False or None), and its ``_key`` mask. Empty if ``rows`` is. ``fresh``: ``info``'s
+    arrays are the caller's own new ones, returned as they are when ``rows`` holds every sub-env."""
     if rows.size == 0:
         return {}
     mask = np.zeros(n, np.bool_)
     mask[rows] = True
+    every = rows.size == n  # (rows are distinct table indices: all of them, the arrays copied whole)
     out: dict[str, np.ndarray] = {}
     for key, arr in info.items():
-        blank = np.full(n, None, dtype=object) if arr.dtype == object else np.zeros(arr.shape, dtype=arr.dtype)
-        blank[rows] = arr[rows]
-        out[key] = blank
+        if every:
+            out[key] = arr if fresh else arr.copy()
+        else:
+            blank = np.full(n, None, dtype=object) if arr.dtype == object else np.zeros(arr.shape, dtype=arr.dtype)
+            np.copyto(blank, arr, where=mask.reshape((n,) + (1,) * (arr.ndim - 1)))
+            out[key] = blank
         out["_" + key] = mask.copy()
+    return out
+
+
+def _object_rows(n: int, rows: np.ndarray, obs: np.ndarray) -> np.ndarray:
+    """An object array of ``n`` entries, entry ``k`` of ``rows`` the row ``k`` of a fresh copy of ``obs`` (a view
+    of it), the others None: the final observations as Gymnasium's vector envs stack them, without a Python loop
+    over the tables."""
+    out = np.full(n, None, dtype=object)
+    out[rows] = np.fromiter(obs[rows], dtype=object, count=rows.size)
     return out
 
 

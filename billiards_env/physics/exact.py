@@ -22,8 +22,8 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLIN
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
-from .kernel_logs import (append_event, contact_cluster, count_burst, internal, next_event, pocket_holding,
-                          rescan_row, reserve_states, set_pair)
+from .kernel_logs import (contact_cluster, count_burst, inlined, internal, next_event, pocket_holding,
+                          reserve_events, rescan_row, reserve_states, set_pair)
 from .motion import (distance, drag_phi, drag_time_for_phi, speed_after, stop_distance, time_for_distance,
                      time_to_stop)
 from .roots import first_entry, ray_circle_below
@@ -35,7 +35,7 @@ from .walls import (cluster_off_walls, has_walls, path_box_clear, ray_wall_hit, 
 _ZERO = np.int64(0)
 
 
-@internal
+@inlined
 def _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k):
     """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state (``sp0[i]``: its speed
     then, ``hypot`` of ``v0[i]``, kept with it so that it is not worked out again at every call)."""
@@ -56,14 +56,14 @@ def _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k):
     return x, y, ux * sp, uy * sp
 
 
-@internal
+@inlined
 def _advance(i, t, t0, p0, v0, sp0, tstop, law, a, k):
     """Move ball ``i``'s reference state to time ``t`` (its speed ``sp0[i]`` too: :func:`_advance_only`)."""
     _advance_only(i, t, t0, p0, v0, sp0, tstop, law, a, k)
     sp0[i] = math.hypot(v0[i, 0], v0[i, 1])
 
 
-@internal
+@inlined
 def _advance_only(i, t, t0, p0, v0, sp0, tstop, law, a, k):
     """:func:`_advance` leaving ``sp0[i]`` stale: for an event that sets the velocity (and with it the speed) anew
     before anything reads the speed (a collision, a cushion, a stop; a jam sets it first)."""
@@ -75,7 +75,7 @@ def _advance_only(i, t, t0, p0, v0, sp0, tstop, law, a, k):
     t0[i] = t
 
 
-@internal
+@inlined
 def _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min):
     """Ball ``i``'s stop time and speed ``sp0[i]`` after its velocity ``v0[i]`` was set (at rest below ``v_min``)."""
     s = math.hypot(v0[i, 0], v0[i, 1])
@@ -285,7 +285,7 @@ def _jam_cluster(seed, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst,
     return count
 
 
-@internal
+@inlined
 def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table):
     sc_t[n_sc] = t
     sc_ball[n_sc] = i
@@ -474,14 +474,21 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             sp0[bi] = 0.0
             tstop[bi] = t
 
-        ev_t, ev_int, ev_speed = append_event(ev_t, ev_int, ev_speed, n_events, t, kind, bi, bj, speed)
+        if n_events >= ev_t.shape[0]:  # (the log written in place; grown by doubling only when full)
+            ev_t, ev_int, ev_speed = reserve_events(ev_t, ev_int, ev_speed, n_events + 1)
+        ev_t[n_events] = t
+        ev_int[n_events, 0] = kind
+        ev_int[n_events, 1] = bi
+        ev_int[n_events, 2] = bj
+        ev_speed[n_events] = speed
         n_events += 1
 
         have_states = False
         for q in range(n_inv):
             i = involved[q]
             if record:
-                sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
+                if n_sc >= sc_t.shape[0]:
+                    sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
                 _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table)
                 n_sc += 1
             if not on_table[i]:
@@ -515,11 +522,16 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             vxi = st[i, 2]
             vyi = st[i, 3]
             rest_i = vxi == 0.0 and vyi == 0.0
+            # The pair of two involved balls (a collision's) is worked out once, at the second (whose own prediction,
+            # which the pair's window reads, is new by then): at the first, the pair holds inf meanwhile.
+            later = involved[1] if q == 0 and n_inv == 2 else -1
             for m in range(n):
                 if m == i:
                     continue
                 tm = math.inf
-                if on_table[m]:
+                if m == later:
+                    pass
+                elif on_table[m]:
                     xm = st[m, 0]
                     ym = st[m, 1]
                     vxm = st[m, 2]

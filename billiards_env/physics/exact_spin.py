@@ -24,8 +24,8 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPI
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS
 from .kernel_io import N_STATE_COLS_SPIN, KernelResult
-from .kernel_logs import (append_event, carve, contact_cluster, count_burst, internal, next_event, pocket_holding,
-                          rescan_row, reserve_states, set_pair)
+from .kernel_logs import (carve, contact_cluster, count_burst, inlined, internal, next_event, pocket_holding,
+                          rescan_row, reserve_events, reserve_states, set_pair)
 from .roots import first_entry
 from .cushion_models import wall_hit
 from .spin_collide import ball_hit, is_pressed_pair, merge_pair, settle_on_cushion, settle_on_wall, wall_normal
@@ -73,7 +73,7 @@ def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
     _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin)
 
 
-@internal
+@inlined
 def _state_at(bs, i, t):
     """``(x, y, vx, vy, wx, wy, wz)`` of ball ``i`` at time ``t`` (not past its piece's end)."""
     tau = min(t, bs[i, TEND]) - bs[i, T0]
@@ -83,7 +83,7 @@ def _state_at(bs, i, t):
                    bs[i, AY], bs[i, DWX], bs[i, DWY], bs[i, ALPHA])
 
 
-@internal
+@inlined
 def _move_to(bs, i, t):
     """Move ball ``i``'s reference state to time ``t`` (on the same piece)."""
     x, y, vx, vy, wx, wy, wz = _state_at(bs, i, t)
@@ -392,7 +392,7 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
     return count
 
 
-@internal
+@inlined
 def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, bs, st, on_table):
     sc_t[n_sc] = t
     sc_ball[n_sc] = i
@@ -666,13 +666,20 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
             kind = EV_ROLL if nxt == MS_ROLLING else (EV_SPIN if nxt == MS_SPINNING else EV_STOP)
             bj = -1
 
-        ev_t, ev_int, ev_speed = append_event(ev_t, ev_int, ev_speed, n_events, t, kind, bi, bj, speed)
+        if n_events >= ev_t.shape[0]:  # (the log written in place; grown by doubling only when full)
+            ev_t, ev_int, ev_speed = reserve_events(ev_t, ev_int, ev_speed, n_events + 1)
+        ev_t[n_events] = t
+        ev_int[n_events, 0] = kind
+        ev_int[n_events, 1] = bi
+        ev_int[n_events, 2] = bj
+        ev_speed[n_events] = speed
         n_events += 1
 
         for q in range(n_inv):
             i = involved[q]
             if record:
-                sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
+                if n_sc >= sc_t.shape[0]:
+                    sc_t, sc_ball, sc_state = reserve_states(sc_t, sc_ball, sc_state, n_sc)
                 _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, bs, st, on_table)
                 n_sc += 1
             if on_table[i]:

@@ -59,18 +59,6 @@ def reserve_events(ev_t, ev_int, ev_speed, need):
 
 
 @internal
-def append_event(ev_t, ev_int, ev_speed, n, t, kind, ball, other, speed):
-    """Write event ``n`` (time, kind, ball, other, speed), growing the log if it is full; returns the arrays."""
-    ev_t, ev_int, ev_speed = reserve_events(ev_t, ev_int, ev_speed, n + 1)
-    ev_t[n] = t
-    ev_int[n, 0] = kind
-    ev_int[n, 1] = ball
-    ev_int[n, 2] = other
-    ev_speed[n] = speed
-    return ev_t, ev_int, ev_speed
-
-
-@internal
 def reserve_states(sc_t, sc_ball, sc_state, n):
     """The state log's arrays with room for row ``n`` (grown by doubling when full)."""
     if n >= sc_t.shape[0]:

@@ -273,6 +273,36 @@ def test_result_does_not_depend_on_the_thread_count(env_id, n, steps):
             assert np.array_equal(x, y)
 
 
+@pytest.mark.parametrize("kwargs", [{}, {"physics": {"friction": "spin"}, "spin_action": True, "angle_noise": 0.01}])
+def test_pot_step_on_threads_gives_the_serial_batch(kwargs):
+    """The pot task's parallel step (slices of the tables on Python threads, one compiled call each) gives the serial
+    step's batch and infos on any thread count, the final observations and infos of a same-step autoreset too."""
+    runs = []
+    for threads in (1, 2, 3):
+        vec = gym.make_vec("BilliardsThreeBalls-v0", 20, threads=threads, autoreset_mode="same_step", **kwargs)
+        vec.reset(seed=3)
+        rng = np.random.default_rng(4)
+        runs.append([vec.step(rng.uniform(-1, 1, vec.action_space.shape)) for _ in range(6)])
+    for other in runs[1:]:
+        for a, b in zip(runs[0], other):
+            for x, y in zip(a[:4], b[:4]):
+                assert np.array_equal(x, y)
+            _assert_same_info(a[4], b[4])
+
+
+def _assert_same_info(a: dict, b: dict) -> None:
+    """Two vector infos alike: the same keys in the same order, arrays of the same dtype and values."""
+    assert list(a) == list(b)
+    for key in a:
+        x, y = a[key], b[key]
+        if isinstance(x, dict):
+            _assert_same_info(x, y)
+        elif x.dtype == object:
+            assert all((u is None and v is None) or np.array_equal(u, v) for u, v in zip(x, y))
+        else:
+            assert x.dtype == y.dtype and np.array_equal(x, y)
+
+
 def test_render_draws_the_chosen_sub_env():
     vec = gym.make_vec("BilliardsThreeBalls-v0", 3, render_mode="rgb_array", render_env=2, **FAST_RENDER)
     single = gym.make("BilliardsThreeBalls-v0", render_mode="rgb_array", **FAST_RENDER)
