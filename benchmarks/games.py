@@ -335,8 +335,8 @@ class GameRecord:
         radius = np.ascontiguousarray(b.radius, dtype=float)
         mass = np.ascontiguousarray(b.mass, dtype=float)
         pos, vel, ang, on = (np.stack([s[c] for s in shots]) for c in range(4))
-        self.shot_args = (sim._kernels.exact, pos, vel, ang, on, radius, mass, sim._pocket_xy, sim._pocket_r,
-                          sim._params, int(sim.max_events))
+        self.shot_args = (sim.kernels.exact, pos, vel, ang, on, radius, mass, sim.pocket_xy, sim.pocket_r,
+                          sim.params, int(sim.max_events))
         assert all(d[5] == 0 for d in decisions), "the games' cue ball is row 0"
         if not decisions:  # (a tiny run whose opponent never shot)
             decisions.append((pos[0], on[0], np.arange(1, radius.shape[0], dtype=np.int64), None, False, 0))

@@ -107,7 +107,7 @@ def _record_calls(sim: Any, states: tuple[np.ndarray, ...]) -> dict[str, Any]:
     the event count. Only meaningful with ``NUMBA_DISABLE_JIT=1``."""
     from billiards_env.physics import exact, exact_spin, walls
 
-    spin = sim._kernels.spin
+    spin = sim.kernels.spin
     mod = exact_spin if spin else exact
     rec: dict[str, list[Any]] = {k: [] for k in ("roots_pair", "roots_ball", "quad", "pair", "ball", "select",
                                                   "state")}
@@ -177,7 +177,7 @@ def _record_calls(sim: Any, states: tuple[np.ndarray, ...]) -> dict[str, Any]:
 
     undo.append(wrap(mod, "next_event", "select", select_conv))
     kernel = mod.simulate_exact_spin if spin else mod.simulate_exact
-    params = sim._params.view(np.recarray)
+    params = sim.params.view(np.recarray)
     pos, vel, ang, on = states
     events = 0
     b = pos.shape[1]
@@ -185,8 +185,8 @@ def _record_calls(sim: Any, states: tuple[np.ndarray, ...]) -> dict[str, Any]:
     mass = np.full(b, 0.17)
     try:
         for k in range(pos.shape[0]):
-            res = kernel(pos[k].copy(), vel[k].copy(), ang[k].copy(), radius, mass, on[k].copy(), sim._pocket_xy,
-                         sim._pocket_r, params, sim.max_events, False)
+            res = kernel(pos[k].copy(), vel[k].copy(), ang[k].copy(), radius, mass, on[k].copy(), sim.pocket_xy,
+                         sim.pocket_r, params, sim.max_events, False)
             events += int(res.n_events)
     finally:
         for u in undo:
@@ -469,7 +469,7 @@ def _kernel_time(sim: Any, states: tuple[np.ndarray, ...], repeats: int) -> tupl
     b = pos.shape[1]
     radius = np.full(b, 0.028575)
     mass = np.full(b, 0.17)
-    args = (sim._kernels.exact, pos, vel, ang, on, radius, mass, sim._pocket_xy, sim._pocket_r, sim._params,
+    args = (sim.kernels.exact, pos, vel, ang, on, radius, mass, sim.pocket_xy, sim.pocket_r, sim.params,
             int(sim.max_events))
     events = fns["shots"](*args)
     total = _cpu(lambda: fns["shots"](*args), repeats)
@@ -480,14 +480,14 @@ def _kernel_time(sim: Any, states: tuple[np.ndarray, ...], repeats: int) -> tupl
 def profile_scene(sim: Any, states: tuple[np.ndarray, ...], calls: dict[str, Any], repeats: int) -> dict[str, Any]:
     """The per-event profile of one scene and model (µs per event per part, calls per event)."""
     fns = _replays()
-    spin = sim._kernels.spin
+    spin = sim.kernels.spin
     per_shot, events = _kernel_time(sim, states, repeats)
     # The kernel's Python can round a libm function differently from the compiled kernel and, once in a long break,
     # take another event: the parts are per event of the recorded run, the total per event of the compiled one.
     recorded = calls["events"]
     n_shots = states[0].shape[0]
     ev_per_shot = events / n_shots
-    params = sim._params
+    params = sim.params
 
     def part(name: str, fn: Callable[[], Any], n: int) -> dict[str, float]:
         if n == 0:
@@ -505,12 +505,12 @@ def profile_scene(sim: Any, states: tuple[np.ndarray, ...], calls: dict[str, Any
     pc, bc, sc = calls["pair"], calls["ball"], calls["state"]
     if spin:
         out["pair re-prediction"] = part("pair", lambda: fns["pair_spin"](pc), pc.shape[0])
-        out["ball's own event"] = part("ball", lambda: fns["ball_spin"](bc, sim._pocket_xy, sim._pocket_r, params),
+        out["ball's own event"] = part("ball", lambda: fns["ball_spin"](bc, sim.pocket_xy, sim.pocket_r, params),
                                        bc.shape[0])
         out["state at the event"] = part("state", lambda: fns["state_spin"](sc), sc.shape[0])
     else:
         out["pair re-prediction"] = part("pair", lambda: fns["pair_linear"](pc, params), pc.shape[0])
-        out["ball's own event"] = part("ball", lambda: fns["ball_linear"](bc, sim._pocket_xy, sim._pocket_r,
+        out["ball's own event"] = part("ball", lambda: fns["ball_linear"](bc, sim.pocket_xy, sim.pocket_r,
                                                                           params), bc.shape[0])
         out["state at the event"] = part("state", lambda: fns["state_linear"](sc, params), sc.shape[0])
     sel = calls["select"]
