@@ -277,7 +277,8 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         return self.observation_type.observe(self.state), reward, terminated, truncated, self._conformed(info)
 
     def _conformed(self, info: dict[str, Any]) -> dict[str, Any]:
-        """``info`` (and each of its ``opponent_turns``) in the schema's forms: its scalars numpy scalars."""
+        """``info`` (and each of its ``opponent_turns``) in the schema's forms (numbers numpy scalars, flags 0-d
+        boolean arrays: :func:`~billiards_env.games.infos.single`)."""
         conform(info, self.info_schema)
         for turn in info.get(OPPONENT_TURNS, ()):
             conform(turn, self.info_schema)

@@ -5,8 +5,7 @@ Every info value has one fixed type, dtype and shape per env id (RL libraries st
 or write them to HDF5, or read them into tensors): every value carries its dtype, which TorchRL's info reader asks of
 each. Numbers are numpy scalars (``np.int64``, ``np.float64``); flags are 0-d boolean arrays (numpy's ``np.bool_`` is
 no ``np.number``, so Gymnasium's ``SyncVectorEnv`` would stack it as objects; a 0-d array stacks as ``bool``); the
-rest are numpy arrays (a boolean mask over
-the ball rows instead of a tuple of ids), an ``int`` code instead of a string (``names[code]`` is its name, -1 none).
+rest are numpy arrays (a boolean mask over the ball rows instead of a tuple of ids), an integer code instead of a string (``names[code]`` is its name, -1 none).
 The games' own keys are declared beside the values they give (each session's ``info_keys``); the env's schema joins
 them (:func:`billiards_env.envs.info.info_schema`). No Gymnasium here.
 """
@@ -19,8 +18,9 @@ import numpy as np
 
 class InfoSpec(NamedTuple):
     """One info key: ``dtype`` (``np.bool_``, ``np.int64`` or ``np.float64``), ``shape`` (``()`` a single value: a 0-d
-    boolean array for ``np.bool_``, else a numpy scalar of the dtype; else a numpy array), ``meaning`` (for the docs), ``blank`` (the value when there is nothing to report:
-    a reset's shot keys, no call yet) and ``names`` (a code's names: ``names[code]``; empty if not a code)."""
+    boolean array for ``np.bool_``, else a numpy scalar of the dtype; else a numpy array), ``meaning`` (for the
+    docs), ``blank`` (the value when there is nothing to report: a reset's shot keys, no call yet) and ``names`` (a
+    code's names: ``names[code]``; empty if not a code)."""
 
     dtype: type
     shape: tuple[int, ...]
