@@ -5,9 +5,10 @@ Every info value has one fixed type, dtype and shape per env id (RL libraries st
 or write them to HDF5, or read them into tensors): every value carries its dtype, which TorchRL's info reader asks of
 each. Numbers are numpy scalars (``np.int64``, ``np.float64``); flags are 0-d boolean arrays (numpy's ``np.bool_`` is
 no ``np.number``, so Gymnasium's ``SyncVectorEnv`` would stack it as objects; a 0-d array stacks as ``bool``); the
-rest are numpy arrays (a boolean mask over the ball rows instead of a tuple of ids), an integer code instead of a string (``names[code]`` is its name, -1 none).
-The games' own keys are declared beside the values they give (each session's ``info_keys``); the env's schema joins
-them (:func:`billiards_env.envs.info.info_schema`). No Gymnasium here.
+rest are numpy arrays (a boolean mask over the ball rows instead of a tuple of ids), an integer code instead of a
+string (``names[code]`` is its name, -1 none). The games' own keys are declared beside the values they give (each
+session's ``info_keys``); the env's schema joins them (:func:`billiards_env.envs.info.info_schema`). No Gymnasium
+here.
 """
 from __future__ import annotations
 
@@ -104,4 +105,5 @@ def code_of(names: tuple[str, ...], name: Any) -> int:
     return -1 if name is None else names.index(name)
 
 
-__all__ = ["InfoSpec", "flag", "integer", "real", "code", "row_mask", "blank_value", "single", "unstack", "conform", "mask_of", "code_of"]
+__all__ = ["InfoSpec", "flag", "integer", "real", "code", "row_mask", "blank_value", "single", "unstack", "conform",
+           "mask_of", "code_of"]
