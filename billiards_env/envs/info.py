@@ -2,13 +2,13 @@
 dtype, shape, meaning), which the env, its compiled pot step, the native vector env and the docs' table all read, and
 :func:`shot_info`, the builder of the shot's keys.
 
-The same keys come at reset and at every step, each of one type, dtype and shape, so that RL libraries can stack
-infos step by step (Tianshou), write them to HDF5 (Minari), average them (PufferLib) or read them into tensors
-(TorchRL): every value with a dtype (numbers ``np.int64``/``np.float64`` scalars, flags 0-d boolean arrays, the
-rest numpy arrays: :func:`billiards_env.games.infos.single`); balls as boolean masks over the ball rows
-(``pocketed``, ``legal_targets``) or a row index (``first_contact``, -1 none); categories as integer codes
-(``status``, ``call``, ``foul_reason``, ``ball_in_hand``, ``groups``, ``on``:
-``info_schema(config)[key].names[code]`` is the name, -1 none). The opponent's shots one by one (a list of dicts, one per shot, in the same forms) come only with the config key
+The same keys come at reset and at every step, each of one type, dtype and shape, so that RL libraries can stack infos
+step by step (Tianshou), write them to HDF5 (Minari), average them (PufferLib) or read them into tensors (TorchRL):
+every value with a dtype (numbers ``np.int64``/``np.float64`` scalars, flags 0-d boolean arrays, the rest numpy
+arrays: :func:`billiards_env.games.infos.single`); balls as boolean masks over the ball rows (``pocketed``,
+``legal_targets``) or a row index (``first_contact``, -1 none); categories as integer codes (``status``, ``call``,
+``foul_reason``, ``ball_in_hand``, ``groups``, ``on``: ``info_schema(config)[key].names[code]`` is the name, -1 none).
+The opponent's shots one by one (a list of dicts, one per shot, in the same forms) come only with the config key
 ``opponent_infos=True`` (``info["opponent_turns"]``), outside the schema; by default the step sums them up
 (``opponent_shots``, ``opponent_pocketed``, ``opponent_fouls``). See ``docs/infos.md``.
 """
