@@ -10,7 +10,7 @@ Every action is a ``Box(-1, 1)`` vector laid out as::
   :class:`CandidateShots` (``candidates``: one of the candidate (ball, pocket) shots of
   :mod:`billiards_env.envs.candidates`; ``power`` then scales that shot's own speed, and with ball in hand the
   placement is set relative to it: see the class); :class:`CandidateAim` (``candidates_aim``) adds a last dim,
-  ``offset``: where in the chosen pot's entry window the object ball is sent (:mod:`billiards_env.envs.cue_path`).
+  ``offset``: where in the chosen pot's entry window the object ball is sent (:mod:`billiards_env.envs.window_offsets`).
 - ``power``: ``speed = speed_min + (a + 1) / 2 (speed_max - speed_min)``.
 - ``side``, ``top``: the square ``[-1, 1]^2`` mapped onto the disc of tip offsets of radius ``max_tip_offset``
   (fractions of the ball radius) by the elliptical grid mapping ``(u, v) = (x sqrt(1 - y^2/2), y sqrt(1 - x^2/2))``:
@@ -48,7 +48,7 @@ from billiards_env.players.shots import direct_hit
 from billiards_env.shot_path import CueShot, noisy_shot
 
 from .candidates import candidate_slots
-from .cue_path import OFFSET_SPAN, OFFSETS, offset_ghost, offset_of
+from .window_offsets import OFFSET_SPAN, OFFSETS, offset_ghost, offset_of
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.table_state import TableState

@@ -14,7 +14,7 @@
   values each (pocket, cut, distances, ease, clear paths, scratch risk, speed), best first.
 - :class:`CuePathFeatures` (``"candidates_path"``): the ``candidates`` values, then per slot where the cue ball goes
   after contact: at five offsets across the pocket's window, the least ``power`` that pots the ball and the least at
-  which the deflected cue ball follows into a pocket (:mod:`billiards_env.envs.cue_path`); for the
+  which the deflected cue ball follows into a pocket (:mod:`billiards_env.envs.window_offsets`); for the
   ``candidates_aim`` action type.
 - :class:`CuePositionFeatures` (``"candidates_position"``): the ``candidates`` values, then per slot a *position
   map*: on a grid of the ``candidates`` action's own ``power`` and ``top`` values, whether the ball drops, whether
@@ -39,7 +39,7 @@ from billiards_env.physics.aim import pocket_bearings, pocket_mouth_axes, wrap_a
 
 from ._kernels import observation
 from .candidates import EASY_TOLERANCE, SLOT_FEATURES, candidate_slots, slot_features  # noqa: F401
-from .cue_path import OFFSETS, PATH_FEATURES, offset_rows, power_of, thresholds
+from .window_offsets import OFFSETS, PATH_FEATURES, offset_rows, power_of, thresholds
 from .position import POINT_VALUES, POSITION_FEATURES, POWERS, TOPS, position_features
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -155,7 +155,7 @@ class CandidateFeatures(ObservationType):
 
 
 class CuePathFeatures(CandidateFeatures):
-    """The ``candidates`` observation, then per slot :data:`~billiards_env.envs.cue_path.PATH_FEATURES` values
+    """The ``candidates`` observation, then per slot :data:`~billiards_env.envs.window_offsets.PATH_FEATURES` values
     (where the cue ball goes after contact: :mod:`billiards_env.physics.cue_path`), in
     the units of the ``power`` dim of the ``candidates`` actions, each clipped to ``[-1, 1]``: for each offset of
     :data:`OFFSETS` (the ``offset`` dim of :class:`CandidateAim`), ``pot_at``, the least ``a[1]`` at which the

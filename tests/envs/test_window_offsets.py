@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import billiards_env  # noqa: F401
-from billiards_env.envs.cue_path import OFFSETS, PATH_FEATURES, offset_ghost, offset_of, offset_rows, thresholds
+from billiards_env.envs.window_offsets import OFFSETS, PATH_FEATURES, offset_ghost, offset_of, offset_rows, thresholds
 from billiards_env.physics.cue_path import path_pocket_speed
 from billiards_env.envs.candidates import candidate_slots
 from billiards_env.physics.batch import run_shots

@@ -1,10 +1,10 @@
-"""The hand-written rule on the ``candidates_path`` observation (``python -m agents.cue_path``)."""
+"""The hand-written rule on the ``candidates_path`` observation (``python -m agents.path_rule``)."""
 from __future__ import annotations
 
 import gymnasium as gym
 
 import billiards_env  # noqa: F401
-from agents.cue_path import interval_action
+from agents.path_rule import interval_action
 
 
 def _env():
@@ -13,7 +13,7 @@ def _env():
 
 
 def test_the_interval_rule_pots_where_the_observation_says_it_can():
-    """The hand-written rule on the observation (agents/cue_path.py) pots the ball without a scratch on most tables:
+    """The hand-written rule on the observation (agents/path_rule.py) pots the ball without a scratch on most tables:
     the thresholds are the engine's (a wrong sign or unit would send it into the jaws or after the object ball)."""
     env = _env()
     ok = 0

@@ -5,7 +5,7 @@ line, runs on into a pocket, which its observation did not show. The ``candidate
 (:class:`billiards_env.envs.observations.CuePathFeatures`) states, per candidate shot and offset across the pocket's
 window, the interval of the ``power`` dim that pots the ball and leaves the cue ball on the table; the
 ``candidates_aim`` action type (:class:`billiards_env.envs.actions.CandidateAim`) plays exactly those offsets.
-:func:`interval_action` plays the widest interval at its middle: ``python -m agents.cue_path`` prints its pocket
+:func:`interval_action` plays the widest interval at its middle: ``python -m agents.path_rule`` prints its pocket
 rate, the ceiling of what the observation alone states (the main job's agent learns from the same types).
 """
 from __future__ import annotations
@@ -15,7 +15,7 @@ from typing import Any
 import gymnasium as gym
 import numpy as np
 
-from billiards_env.envs.cue_path import OFFSETS, PATH_FEATURES
+from billiards_env.envs.window_offsets import OFFSETS, PATH_FEATURES
 
 
 def interval_action(obs: np.ndarray, n_slots: int, n_balls: int = 2) -> np.ndarray:
@@ -39,12 +39,12 @@ def interval_action(obs: np.ndarray, n_slots: int, n_balls: int = 2) -> np.ndarr
 
 
 def main(argv: Any = None) -> int:
-    """``python -m agents.cue_path``: the pocket rate of :func:`interval_action` on the one-ball tables."""
+    """``python -m agents.path_rule``: the pocket rate of :func:`interval_action` on the one-ball tables."""
     import argparse
 
     import billiards_env  # noqa: F401
 
-    p = argparse.ArgumentParser(prog="python -m agents.cue_path", description=main.__doc__)
+    p = argparse.ArgumentParser(prog="python -m agents.path_rule", description=main.__doc__)
     p.add_argument("--episodes", type=int, default=1000)
     p.add_argument("--seed", type=int, default=100_000)
     p.add_argument("--slots", type=int, default=7)
