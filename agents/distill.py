@@ -111,11 +111,11 @@ def label_episodes(env_id: str, env_kwargs: dict[str, Any], wrapper: Any, teache
             label = np.asarray(player.act(env, obs), dtype=np.float32).reshape(-1)
             obs_l.append(np.asarray(obs, dtype=np.float32))
             act_l.append(label)
-            view = u.state.view
+            view = u.table_state.view
             if hand and view.place_area is not None and not view.break_shot:
                 from .option_policies import hand_label
 
-                o_p, t = hand_label(u.state, u.observation_type, u.action_type, label)
+                o_p, t = hand_label(u.table_state, u.observation_type, u.action_type, label)
                 hand_obs.append(o_p)
                 hand_target.append(t)
             played = label

@@ -117,7 +117,7 @@ class TrainedPlayer:
         if not u.action_type.exact_inverse:
             raise ValueError(f"{self.name}: the env's action type ({u.action_type.name}) cannot express every shot; "
                              "play trained policies on an env with an exact type (the league uses 'absolute')")
-        shot = self.shot(u.state)
+        shot = self.shot(u.table_state)
         return u.action_from_shot(shot.angle, shot.speed, shot.side, shot.top, shot.place, **dict(shot.calls))
 
     def shot(self, state: Any) -> Any:

@@ -102,11 +102,11 @@ def decision_ms(spec: PlayerSpec, tables: int, seed: int) -> dict[str, float]:
     try:
         for k in range(tables):
             env.reset(seed=seed + k)
-            memo = getattr(getattr(u.state, "view", None), "memo", None)
+            memo = getattr(getattr(u.table_state, "view", None), "memo", None)
             if memo is not None:  # what reset computed of this table (the candidate shots) is computed again
                 memo.clear()
             t0 = time.thread_time()
-            obs = u.observation_type.observe(u.state)
+            obs = u.observation_type.observe(u.table_state)
             t1 = time.thread_time()
             spec.act(env, obs)
             t2 = time.thread_time()

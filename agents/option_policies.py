@@ -283,9 +283,9 @@ class Scorer:
         hand the :meth:`shot` from its place in the env's action (a ``candidates`` action places the cue ball
         behind the chosen ghost ball: as near that place as it can say)."""
         u = env.unwrapped
-        view = u.state.view
+        view = u.table_state.view
         if self.hand and view.place_area is not None and not view.break_shot:
-            s = self.shot(u.state, u.observation_type, u.action_type)
+            s = self.shot(u.table_state, u.observation_type, u.action_type)
             return u.action_from_shot(s.angle, s.speed, s.side, s.top, s.place, **dict(s.calls))
         return self.predict(obs)
 

@@ -161,7 +161,7 @@ class PriorSearchPlayer:
         state, codec = player_inputs(source, codec)
         ctx = shot_context(state, codec)
         env = getattr(source, "unwrapped", None)
-        if ctx.game is not None and ctx.game.state.break_shot:
+        if ctx.game is not None and ctx.game.game_state.break_shot:
             place, angle, speed = break_shot(ctx)
             return to_action(codec, state, angle, speed, place=place)
         self.policy._types(env)

@@ -43,7 +43,7 @@ def measure(games: int, seed: int = 0) -> dict[str, Any]:
         env.reset(seed=seed + k)
         done = False
         while not done:
-            st = u.state
+            st = u.table_state
             c = candidate_slots(st, ot.n_slots, ot.speed_range)
             if c.rows is not None and not c.in_hand and not c.break_shot and c.rows.shape[0]:
                 feats = position_features(st, c, ot.n_slots, ot.speed_range, ot.log_factor, ot.max_tip)

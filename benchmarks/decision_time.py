@@ -49,11 +49,11 @@ def measure(specs: Sequence[str], games: int, seed: int = 0) -> dict[str, dict[s
             acts = []
             for i, p in enumerate(players):
                 p._types(u)
-                u.state.changed()
+                u.table_state.changed()
                 t0 = time.perf_counter()
-                p._obs_type.observe(u.state)
+                p._obs_type.observe(u.table_state)
                 t1 = time.perf_counter()
-                u.state.changed()
+                u.table_state.changed()
                 t2 = time.perf_counter()
                 acts.append(p.act(ge, obs))
                 t3 = time.perf_counter()

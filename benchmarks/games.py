@@ -164,7 +164,7 @@ def decisions(env_id: str, sizes: dict[str, Any], search: bool) -> dict[str, Any
         for env, obs in game_decisions(env_id, sizes["games"], sizes["steps"]):
             ctx = shot_context(env)
             b = ctx.balls
-            brk = bool(ctx.game.state.break_shot)
+            brk = bool(ctx.game.game_state.break_shot)
             args = (b.pos, b.on_table, b.radius, b.mass, np.asarray(ctx.targets, dtype=np.int64), context_model(ctx),
                     ctx.speed_range, ctx.place_area, brk)
             if not warm:  # load the compiled code outside the timings
@@ -344,8 +344,8 @@ class GameRecord:
         targets = np.zeros((len(decisions), radius.shape[0]), np.int64)
         for i, d in enumerate(decisions):
             targets[i, :counts[i]] = d[2]
-        tm = state_model(u.state)
-        lo, hi = u.state.settings.speed_range
+        tm = state_model(u.table_state)
+        lo, hi = u.table_state.settings.speed_range
         self.decision_args = (
             geometric_decision_arrays, np.stack([d[0] for d in decisions]), np.stack([d[1] for d in decisions]),
             radius, mass, targets, counts,

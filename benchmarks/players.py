@@ -116,7 +116,7 @@ def run_game(env_id: str, sizes: dict[str, int]) -> dict[str, Any]:
         for env, obs in game_decisions(env_id, sizes["games"], sizes["steps"]):
             ctx = shot_context(env)
             b = ctx.balls
-            brk = bool(ctx.game.state.break_shot)
+            brk = bool(ctx.game.game_state.break_shot)
             args = (b.pos.copy(), b.on_table.copy(), b.radius.copy(), b.mass.copy(),
                     np.asarray(ctx.targets, dtype=np.int64), table_model(ctx.table, ctx.physics), ctx.speed_range,
                     ctx.place_area, brk)

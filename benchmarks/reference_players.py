@@ -40,7 +40,7 @@ def to_action(env: Any, angle: float, speed: float, place: tuple[float, float] |
     u = env.unwrapped
     at = u.action_type
     tip = {"side": side, "top": top} if at.spin else {}
-    a = np.asarray(at.action(u.state, angle, speed, place=place, pocket=pocket, **tip), dtype=np.float32)
+    a = np.asarray(at.action(u.table_state, angle, speed, place=place, pocket=pocket, **tip), dtype=np.float32)
     return np.clip(a, env.action_space.low, env.action_space.high)
 
 Vec2 = Any
@@ -317,7 +317,7 @@ def reference_geometric_act(env: Any, max_cut: float = MAX_CUT):
     """``GeometricPlayer.act`` before issue 21, without the final action: ``(place, angle, speed, candidate)``."""
     ctx = shot_context(env)
     u = env.unwrapped
-    if ctx.game is not None and ctx.game.state.break_shot:
+    if ctx.game is not None and ctx.game.game_state.break_shot:
         place, angle, speed = break_shot(ctx)
         return place, angle, speed, None
     place = choose_placement(env, ctx, max_cut) if ctx.place_area is not None else None
@@ -443,7 +443,7 @@ def _judge_arrays(ctx: ShotContext, events: np.ndarray, pocket: np.ndarray) -> t
     game = ctx.game
     summary = summarize_arrays(events, pocket, game.numbers)
     eight = pocket[game.row_of[8]] if game.needs_called_pocket() and 8 in game.row_of else None
-    state = game.state
+    state = game.game_state
     call = game.rules.call(state, summary, ShotInfo(called_pocket=None if eight is None or eight < 0
                                                     else int(eight)))
     if call.game_over:
@@ -726,7 +726,7 @@ def playable_shots(env: Any, place: tuple[float, float] | None = None
         out = []
         for angle, speed, side, top, src in cands:
             action = to_action(env, angle, speed, place=place, side=side, top=top)
-            s = u.action_type.shot(u.state, action)
+            s = u.action_type.shot(u.table_state, action)
             out.append((s.angle, s.speed, s.side, s.top, src))
             play.actions[(s.angle, s.speed, s.side, s.top)] = action
         return out
@@ -761,7 +761,7 @@ class ReferenceSearchPlayer:
         (:func:`placement_candidates`) and plays the best shot of all."""
         ctx = shot_context(env)
         u = env.unwrapped
-        if ctx.game is not None and ctx.game.state.break_shot:
+        if ctx.game is not None and ctx.game.game_state.break_shot:
             place, angle, speed = break_shot(ctx)
             self.last = None
             return to_action(env, angle, speed, place=place)

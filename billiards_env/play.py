@@ -110,7 +110,7 @@ class PlayApp:
             self.env = gym.make(env_id, render_mode="human", render_width=width, render_speedup=speedup,
                                 **env_kwargs)
             self.core = self.env.unwrapped
-            self.is_game = hasattr(self.core.task, "state")
+            self.is_game = hasattr(self.core.task, "game_state")
             if opponent is not None and not self.is_game:
                 from billiards_env.games import GAMES
 
@@ -222,7 +222,7 @@ class PlayApp:
         base = "aim with the mouse; press, drag and release to shoot"
         if self.is_game and self.opponent_shots:
             names = self._names()
-            base = f"{names[1]} broke; {names[self.core.task.state.shooter]} to shoot"
+            base = f"{names[1]} broke; {names[self.core.task.game_state.shooter]} to shoot"
         self.status = self._hint(base)
 
     def _opponent_wins(self) -> int:
@@ -297,12 +297,12 @@ class PlayApp:
 
     def in_hand(self) -> bool:
         """The shooter has the cue ball in hand (games)."""
-        return not self.done and self.core.state.view.place_area is not None
+        return not self.done and self.core.table_state.view.place_area is not None
 
     def needs_pocket(self) -> bool:
         """The shooter must call a pocket (8-ball on the 8; every shot of straight pool, whose called ball is the
         one aimed at)."""
-        return not self.done and self.is_game and self.core.state.view.call_pocket
+        return not self.done and self.is_game and self.core.table_state.view.call_pocket
 
     def aimed_ball(self) -> int | None:
         """Row of the first object ball on the cue's line from where the cue ball is (or will be placed), or None:
@@ -351,7 +351,7 @@ class PlayApp:
         self.status = f"shot {self.shots + 1}: {self.speed():.2f} m/s ... (Space skips the animation)"
         self.dragging, self.power = False, 0.0  # released: the bar goes, the balls move
         self.place = None
-        shooter = int(self.core.task.state.shooter) if self.is_game else 0
+        shooter = int(self.core.task.game_state.shooter) if self.is_game else 0
         self._calls = []
         self.skipping = self.too_soft = False
         try:

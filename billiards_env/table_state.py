@@ -257,10 +257,10 @@ class TableState:
 
 
 def state_of(source: Any) -> TableState:
-    """The :class:`TableState` of ``source``: itself, or a billiards env's (wrapped or not; ``.unwrapped.state``)."""
+    """The :class:`TableState` of ``source``: itself, or a billiards env's (wrapped or not; ``.unwrapped.table_state``)."""
     if isinstance(source, TableState):
         return source
-    state = getattr(getattr(source, "unwrapped", source), "state", None)
+    state = getattr(getattr(source, "unwrapped", source), "table_state", None)
     if not isinstance(state, TableState):
         raise TypeError(f"expected a TableState or a billiards env, got {type(source).__name__}")
     return state

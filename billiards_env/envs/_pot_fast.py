@@ -43,7 +43,7 @@ class PotFastStep:
         self.obs = np.zeros((1,) + env.observation_space.shape, np.float32)
         self.positions = bool(self.icfg[I_POSITIONS_OBS])
         self.kernel = pot_step_spin if env.physics.has_spin else pot_step
-        self.settings = env.state.settings
+        self.settings = env.table_state.settings
         self.noisy = self.settings.noisy
         b = env.balls  # the live arrays (updated in place), as one-table batches
         self.table = (b.pos[None], b.vel[None], b.ang[None], b.on_table[None])
@@ -78,8 +78,8 @@ class PotFastStep:
         info = {"is_success": np.array(i[O_SUCCESS] != 0, np.bool_)}
         info.update(shot_info(pocketed.copy(), i[O_SCRATCH] != 0, int(out[5][0]), int(out[2][0]), float(out[1][0]),
                               int(out[0][0]), env.shots, CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP])))
-        env.state.changed()
-        obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env.state)
+        env.table_state.changed()
+        obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env.table_state)
         return obs, f[F_REWARD], terminated, truncated, info
 
 

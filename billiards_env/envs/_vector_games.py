@@ -71,7 +71,7 @@ def native_games(env: "BilliardsEnv", render_mode: str | None) -> str | None:
     if c.placement not in (placement, "random"):
         return f"placement {c.placement!r}"
     full = session.rules.full_rack
-    if c.n_object_balls != len(full) or tuple(env.state.numbers) != tuple(range(len(full) + 1)):
+    if c.n_object_balls != len(full) or tuple(env.table_state.numbers) != tuple(range(len(full) + 1)):
         return "the ball set"
     return None
 
@@ -132,13 +132,13 @@ class GameTables:
         cfg[gk.K_KITCHEN_X] = head_string_x(table)
         cfg[gk.K_HEAD_X], cfg[gk.K_HEAD_Y] = hx, hy
         cfg[gk.K_FOOT_X], cfg[gk.K_FOOT_Y] = fx, fy
-        cfg[gk.K_SPEED_MIN], cfg[gk.K_SPEED_MAX] = t.state.settings.speed_range
+        cfg[gk.K_SPEED_MIN], cfg[gk.K_SPEED_MAX] = t.table_state.settings.speed_range
         cfg[gk.K_WIN] = c.win_reward
         cfg[gk.K_LOSS] = c.loss_penalty
         cfg[gk.K_FOUL_PENALTY] = c.foul_penalty
         cfg[gk.K_POT_REWARD] = c.pot_reward
         cfg[gk.K_POSITION_REWARD] = c.position_reward
-        cfg[gk.K_EASE_SIGMA] = max(t.state.settings.angle_noise, EASE_SPREAD)
+        cfg[gk.K_EASE_SIGMA] = max(t.table_state.settings.angle_noise, EASE_SPREAD)
         cfg[gk.K_SX] = 1.0 / table.length
         cfg[gk.K_SY] = 1.0 / table.width
         cfg[gk.K_POCKET_MARGIN] = c.pocket_margin
@@ -187,7 +187,7 @@ class GameTables:
         icfg[gk.J_GAME] = pj.GAME_NINE if type(session) is NineBallSession else pj.GAME_EIGHT
         self.icfg = icfg
         sim = t.simulator
-        tm = state_model(t.state)
+        tm = state_model(t.table_state)
         holes = np.column_stack([table.pocket_xy, table.pocket_radius]).astype(np.float64) if table.n_pockets else \
             np.zeros((0, 3))
         self.consts = (venv.ball_radius[0], venv.ball_mass[0])
@@ -212,12 +212,12 @@ class GameTables:
         # One table state per table (views of the batch arrays) for what stays in Python.
         self.states = []
         for k in range(n):
-            st = TableState(venv.table_states[k].balls, table, t.physics, sim, t.state.numbers, t.state.settings)
+            st = TableState(venv.table_states[k].balls, table, t.physics, sim, t.table_state.numbers, t.table_state.settings)
             st.attach_game(_TableGame(self, k), lambda s, k=k: self.view(k))
             self.states.append(st)
         self.ids = t.ball_ids
         self._bits = np.arange(nb, dtype=np.int64)  # a bit mask over the rows -> its row mask
-        self._numbers = np.asarray(t.state.numbers, np.int64)  # a bit mask over the numbers -> its row mask
+        self._numbers = np.asarray(t.table_state.numbers, np.int64)  # a bit mask over the numbers -> its row mask
         self._radius = r
         self._reset_infos: dict[int, dict[str, Any] | None] = {}
         self.legal = np.zeros(n, np.int64)
@@ -282,7 +282,7 @@ class GameTables:
         v.vel[k] = b.vel
         v.ang[k] = b.ang
         v.on_table[k] = b.on_table
-        self.gst[k] = pj.state_row(t.task.session.state)
+        self.gst[k] = pj.state_row(t.task.session.game_state)
         self.kc[k, gk.KC_VALID] = 0.0
         self.states[k].changed()
         self._reset_infos[k] = info

@@ -89,9 +89,9 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     mapping or an :class:`~billiards_env.envs.config.EnvConfig` layered over the class's packaged scene, and
     ``overrides`` are config keys (see :mod:`billiards_env.envs.config`).
 
-    Live state for players and tools: ``state`` (the :class:`~billiards_env.table_state.TableState` every part
-    reads: ``state.balls``, updated IN PLACE by every shot (``copy()`` it to keep a snapshot), ``state.view``: who is
-    to shoot and what they may do), and as shortcuts ``balls``, ``table``, ``physics``, ``simulator`` (to try shots:
+    Live state for players and tools: ``table_state`` (the :class:`~billiards_env.table_state.TableState` every
+    part reads: ``table_state.balls``, updated IN PLACE by every shot (``copy()`` it to keep a snapshot),
+    ``table_state.view``: who is to shoot and what they may do; ``state`` is the same object), and as shortcuts ``balls``, ``table``, ``physics``, ``simulator`` (to try shots:
     ``simulator.run(balls.strike(0, angle, speed), validate=False)``); ``config``, ``task``, ``action_type``,
     ``observation_type``, ``shots`` (shots taken in this episode), ``last_shot`` (``(x, y, angle, speed)`` of the
     last shot or None).
@@ -122,14 +122,14 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                                 float(c.tip_noise), spin and bool(c.spin_action), float(c.max_tip_offset),
                                 c.speed_noise_mode == "absolute")
         #: The table state every part reads (see the class docstring).
-        self.state = TableState(balls, c.table, c.physics, simulator, numbers, settings)
+        self.table_state = TableState(balls, c.table, c.physics, simulator, numbers, settings)
         self.shots = 0
         self.last_shot: tuple[float, float, float, float] | None = None
         #: Tip offsets ``(side, top)`` of the last shot (fractions of R; spin model).
         self.last_tip: tuple[float, float] = (0.0, 0.0)
         self._needs_reset = True
 
-        self.task = task_factory(c, self.state)
+        self.task = task_factory(c, self.table_state)
         self.action_type: ActionType = action_factory(c, self.task.has_ball_in_hand, self.task.declarations,
                                                       c.table.n_pockets)
         self.observation_type = observation_factory(c, c.table, n, self.task.n_features)
@@ -174,34 +174,39 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
 
     # --- the table state's parts, as shortcuts -------------------------------------------------------------------
     @property
+    def state(self) -> TableState:
+        """The same object as :attr:`table_state` (its earlier name, kept for code written against it)."""
+        return self.table_state
+
+    @property
     def balls(self) -> Balls:
         """The live balls (``state.balls``; updated in place by every shot)."""
-        return self.state.balls
+        return self.table_state.balls
 
     @property
     def table(self) -> Table:
-        return self.state.table
+        return self.table_state.table
 
     @property
     def physics(self) -> Physics:
-        return self.state.physics
+        return self.table_state.physics
 
     @property
     def simulator(self) -> Simulator:
-        return self.state.simulator
+        return self.table_state.simulator
 
     @property
     def n_balls(self) -> int:
-        return self.state.n_balls
+        return self.table_state.n_balls
 
     @property
     def ball_ids(self) -> tuple[str, ...]:
-        return self.state.ids
+        return self.table_state.ids
 
     @property
     def ball_numbers(self) -> tuple[int, ...]:
         """Ball number of each row for drawing (0 = cue ball)."""
-        return self.state.numbers
+        return self.table_state.numbers
 
     # ======================================================================================================
     # Gymnasium API
@@ -226,11 +231,11 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self.last_tip = (0.0, 0.0)
         self._orientations = None
         self._needs_reset = False
-        self.state.changed()
+        self.table_state.changed()
         info = blank_info(self.info_schema)  # the schema's keys: the task's, and no shot yet
-        info.update(self.task.reset(self.state, self.np_random, options, self._driver))
+        info.update(self.task.reset(self.table_state, self.np_random, options, self._driver))
         self.show_new_episode()
-        return self.observation_type.observe(self.state), self._conformed(info)
+        return self.observation_type.observe(self.table_state), self._conformed(info)
 
     def show_new_episode(self) -> None:
         """What ``reset`` draws: the frame list started afresh with the table now (``rgb_array_list``), or the table
@@ -259,13 +264,13 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
             self._animations = []
             self._needs_reset = terminated or truncated
             return obs, reward, terminated, truncated, info
-        shot = self.action_type.shot(self.state, action)
+        shot = self.action_type.shot(self.table_state, action)
         self.task.before_shot(shot)
         self._animations = []
         played = self._play(shot, "agent")
         view = self._shot_view
         self.shots += 1
-        reward, terminated, truncated, info = self.task.on_shot(self.state, played, self.shots, self._driver)
+        reward, terminated, truncated, info = self.task.on_shot(self.table_state, played, self.shots, self._driver)
         o = played.outcome
         info.update(shot_info(mask_of(o.pocketed, self.n_balls), o.scratch, o.first_contact, o.n_events, o.sim_time,
                               STATUS_NAMES.index(o.status), self.shots, played.shot))
@@ -274,7 +279,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         if self._record:  # the agent's shot, then the opponent's reply in a game
             self._animate_step([(played.trajectory, view)] + self._animations)
         self._needs_reset = terminated or truncated  # stepping on after the end raises ResetNeeded
-        return self.observation_type.observe(self.state), reward, terminated, truncated, self._conformed(info)
+        return self.observation_type.observe(self.table_state), reward, terminated, truncated, self._conformed(info)
 
     def _conformed(self, info: dict[str, Any]) -> dict[str, Any]:
         """``info`` (and each of its ``opponent_turns``) in the schema's forms (numbers numpy scalars, flags 0-d
@@ -293,7 +298,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     def _play(self, shot: CueShot, by: str = "agent") -> PlayedShot:
         """Play ``shot`` through the shot path with the env's noise (``np_random``) and recording; ``by``:
         ``"agent"``, ``"opponent"`` (animated after the agent's shot) or ``"table"`` (nobody's shot: not drawn)."""
-        played = play_shot(self.state, shot, self.np_random, record=self._record)
+        played = play_shot(self.table_state, shot, self.np_random, record=self._record)
         if by == "table":
             self.last_shot, self.last_tip = None, (0.0, 0.0)
             return played
@@ -321,12 +326,12 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         game features take that player's point of view (own group, own fouls, whose turn) instead of the shooter's;
         the two-player env (:mod:`billiards_env.multi`) observes each agent so."""
         if player is not None:
-            if self.state.game is None:
+            if self.table_state.game is None:
                 raise ValueError(f"observe(player={player!r}): task {self.task.name!r} has no players; call "
                                  "observe()")
             if player not in (0, 1):
                 raise ValueError(f"player: must be 0 or 1, got {player!r}")
-        return self.observation_type.observe(self.state, player)
+        return self.observation_type.observe(self.table_state, player)
 
     def render(self) -> np.ndarray | list[np.ndarray] | None:
         """``rgb_array``: the table now, ``(H, W, 3) uint8`` (the last shot's cue line drawn).
@@ -358,7 +363,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         """The shot an action means now (no noise): a :class:`~billiards_env.shot_path.CueShot` ``(angle rad,
         speed m/s, side, top, place, calls)``. NaN/inf raise ValueError; finite values outside [-1, 1] are
         clipped."""
-        return self.action_type.shot(self.state, action)
+        return self.action_type.shot(self.table_state, action)
 
     def action_from_shot(self, angle: float, speed: float, side: float = 0.0, top: float = 0.0,
                          place: tuple[float, float] | None = None, **calls: Any) -> np.ndarray:
@@ -372,12 +377,12 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         does not make or a value it cannot take. (A policy's actions are never refused: they are clipped, see
         :mod:`.actions`.)"""
         self._check_shot_arguments(float(angle), float(speed), float(side), float(top), place, calls)
-        return self.action_type.action(self.state, angle, speed, side, top, place, **calls)
+        return self.action_type.action(self.table_state, angle, speed, side, top, place, **calls)
 
     def _check_shot_arguments(self, angle: float, speed: float, side: float, top: float,
                               place: Any, calls: dict[str, Any]) -> None:
         at = self.action_type
-        s = self.state.settings
+        s = self.table_state.settings
         for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
             if not np.isfinite(v):
                 raise ValueError(f"action_from_shot: {name} must be a finite number, got {v!r}")
@@ -399,7 +404,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                     from None
             if not (np.isfinite(x) and np.isfinite(y)):
                 raise ValueError(f"action_from_shot: place must be finite, got ({x}, {y})")
-            area = self.state.view.place_area if at.placement else None
+            area = self.table_state.view.place_area if at.placement else None
             if area is None:
                 raise ValueError("action_from_shot: place given, but the shooter has no ball in hand now "
                                  "(state.view.place_area is None); leave place None")
@@ -425,15 +430,15 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     def target_ball(self) -> int | None:
         """Row of the ball to hit first (the relative and ghost aim's target): the lowest-numbered object ball on
         the table, or the legal ball of a game, or None (``state.view.target``)."""
-        return self.state.view.target
+        return self.table_state.view.target
 
     def legal_cue_position(self, x: float, y: float) -> tuple[float, float]:
         """Where a ball-in-hand cue ball asked for at ``(x, y)`` goes (:meth:`TableState.legal_cue_position`)."""
-        return self.state.legal_cue_position(x, y)
+        return self.table_state.legal_cue_position(x, y)
 
     def cue_moved_to(self, place: tuple[float, float]) -> Any:
         """Temporarily put the cue ball at ``place`` (:meth:`TableState.cue_moved_to`)."""
-        return self.state.cue_moved_to(place)
+        return self.table_state.cue_moved_to(place)
 
     # ======================================================================================================
     # Placement
@@ -542,7 +547,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         if self._renderer is None:
             from billiards_env.render import TableRenderer
 
-            game = self.state.game
+            game = self.table_state.game
             self._renderer = TableRenderer(self.table, self.config.ball_radius, width_px=self.config.render_width,
                                            hud=self.task.hud() is not None,
                                            markings=game.markings() if game is not None else None,

@@ -68,13 +68,13 @@ class GameTask(Task):
 
     # --- the game, for readers ------------------------------------------------------------------------------------
     @property
-    def state(self) -> Any:
+    def game_state(self) -> Any:
         """The rules' state (shooter, game over, winner, and the game's own fields); setting it continues the game
         from there (a situation set up by hand)."""
-        return self.session.state
+        return self.session.game_state
 
-    @state.setter
-    def state(self, value: Any) -> None:
+    @game_state.setter
+    def game_state(self, value: Any) -> None:
         self.session.set_state(value)
 
     @property

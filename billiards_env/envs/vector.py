@@ -168,7 +168,7 @@ class BilliardsVectorEnv(VectorEnv):
         self._gens: Any = None
         # One table state per table (views of the batch arrays) for the parts that stay in Python (the features and
         # candidates observations, reset options).
-        s = t.state
+        s = t.table_state
         self._states = [TableState(Balls(self.ball_ids, self.pos[k], self.vel[k], t.balls.radius, t.balls.mass,
                                          self.on_table[k], self.ang[k]), s.table, s.physics, s.simulator, s.numbers,
                                    s.settings) for k in range(n)]

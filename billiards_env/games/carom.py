@@ -108,12 +108,12 @@ class CaromSession(GameSession):
     def view(self, table: TableState) -> ShotView:
         """Both object balls may be met first (the red first on the opening shot); the aim types' target is the
         red; no ball in hand."""
-        s = self.state
+        s = self.game_state
         targets = () if s.game_over else ((2,) if s.break_shot and self.rules.options.break_red_first else (1, 2))
         return ShotView(targets, None if s.game_over else 2, None, False, False, False, s.shooter)
 
     def legal_names(self) -> tuple[Any, ...]:
-        s = self.state
+        s = self.game_state
         if s.game_over:
             return ()
         return ("red",) if s.break_shot and self.rules.options.break_red_first else ("opponent", "red")
@@ -121,7 +121,7 @@ class CaromSession(GameSession):
     def features(self, player: int | None = None) -> np.ndarray:
         """The game seen by the player: its points and its opponent's / the target, its run / the target, the
         opening shot, its turn, its innings / the innings limit (0 without one) (values in [0, 1])."""
-        s = self.state
+        s = self.game_state
         me = self.viewer(player)
         opts = self.rules.options
         goal = float(opts.target_points)
@@ -137,7 +137,7 @@ class CaromSession(GameSession):
 
     # --- shots -------------------------------------------------------------------------------------------------------
     def _call(self, outcome: ShotOutcome, shot: Any) -> tuple[ThreeCushionCall, ThreeCushionState]:
-        return self.rules.play(self.state, summarize_carom(outcome.events, (0, 1, 2)))
+        return self.rules.play(self.game_state, summarize_carom(outcome.events, (0, 1, 2)))
 
     def _apply(self, call: ThreeCushionCall, outcome: ShotOutcome) -> None:
         if not call.game_over:
@@ -150,7 +150,7 @@ class CaromSession(GameSession):
     def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
         """``point`` (the shot scored), ``cushions`` (the cue ball's cushion contacts before the second ball),
         ``score`` (both players), ``run`` (the shooter's points in this inning)."""
-        s = self.state
+        s = self.game_state
         call = verdict.call if verdict is not None else None
         return {"point": bool(call.point) if call is not None else False,
                 "cushions": int(call.cushions) if call is not None else 0,
@@ -164,7 +164,7 @@ class CaromSession(GameSession):
                 "run": integer("the shooter's points in this inning")}
 
     def hud(self, names: tuple[str, str]) -> dict[str, Any]:
-        s = self.state
+        s = self.game_state
         call = self.last_call
         what = None
         if call is not None:

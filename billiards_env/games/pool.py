@@ -81,11 +81,11 @@ class PoolSession(GameSession):
 
     def legal_rows(self) -> list[int]:
         """Rows of the balls the shooter may hit first (the rules' legal targets)."""
-        return [self.row_of[n] for n in self.rules.legal_targets(self.state)]
+        return [self.row_of[n] for n in self.rules.legal_targets(self.game_state)]
 
     def needs_called_pocket(self) -> bool:
         """The shooter must call a pocket for the next shot (8-ball, on the 8)."""
-        return bool(self.rules.needs_called_pocket(self.state))
+        return bool(self.rules.needs_called_pocket(self.game_state))
 
     def needs_calls(self) -> bool:
         return self.needs_called_pocket()
@@ -153,7 +153,7 @@ class PoolSession(GameSession):
 
     # --- the view ----------------------------------------------------------------------------------------------------
     def view(self, table: TableState) -> ShotView:
-        s = self.state
+        s = self.game_state
         rows = self.legal_rows()
         on = table.balls.on_table
         area = pool_place_area(s, table.table, float(table.balls.radius[0]))
@@ -165,7 +165,7 @@ class PoolSession(GameSession):
         """The game seen by the player: ball in hand (anywhere / kitchen), break shot, its lowest legal target / 15,
         its group (solids, stripes), on the 8, its own and its opponent's fouls in a row / 2, push-out available,
         and whether it is its turn (eleven values in [0, 1])."""
-        s = self.state
+        s = self.game_state
         me = self.viewer(player)
         out = np.zeros(N_POOL_FEATURES, np.float32)
         mine = s.shooter == me and not s.game_over
@@ -188,7 +188,7 @@ class PoolSession(GameSession):
 
     # --- shots -------------------------------------------------------------------------------------------------------
     def _call(self, outcome: ShotOutcome, shot: Any) -> tuple[Call, GameState]:
-        s = self.state
+        s = self.game_state
         summary = summarize_outcome(outcome, self.numbers)
         push = bool(shot is not None and shot.call("push", False) and s.push_out_available)
         pocket = shot.call("pocket") if (shot is not None and self.needs_called_pocket()) else None
@@ -218,7 +218,7 @@ class PoolSession(GameSession):
                                "stripes", GROUPS_NAMES, 0)}
 
     def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
-        s = self.state
+        s = self.game_state
         return {"ball_in_hand": _BIH_CODE[s.ball_in_hand] if not s.game_over else 0,
                 "groups": _GROUPS_CODE[None if s.groups is None else tuple(s.groups)]}
 
@@ -235,7 +235,7 @@ class PoolSession(GameSession):
         """The HUD: the common keys, the groups, ball in hand (the kitchen's line), the ringed targets (9-ball the
         lowest ball, 8-ball the 8 once it is the target), and the called pocket. While a shot is under way (the
         frames of its animation) the cue ball is no longer in hand and the called pocket is ringed."""
-        s = self.state
+        s = self.game_state
         over = s.game_over
         targets = () if over else tuple(self.rules.legal_targets(s))
         shot = self.shot_under_way

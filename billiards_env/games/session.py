@@ -107,7 +107,7 @@ class GameSession(ABC):
         #: What the shooter declares besides the shot (action dims): :class:`~.declarations.Declaration` objects.
         self.declarations: tuple[Declaration, ...] = self.declared(self.rules)
         self.table = table
-        self.state: Any = self.rules.initial_state()
+        self.game_state: Any = self.rules.initial_state()
         self.last_call: Any = None
         self.verdict: Verdict | None = None
         self.score = Score()
@@ -151,20 +151,20 @@ class GameSession(ABC):
     # --- the game's state --------------------------------------------------------------------------------------------
     def set_state(self, state: Any) -> None:
         """Continue from ``state`` (a new game, a table set up by hand)."""
-        self.state = state
+        self.game_state = state
         self.table.changed()
 
     @property
     def shooter(self) -> int:
-        return int(self.state.shooter)
+        return int(self.game_state.shooter)
 
     @property
     def game_over(self) -> bool:
-        return bool(self.state.game_over)
+        return bool(self.game_state.game_over)
 
     @property
     def winner(self) -> int | None:
-        return self.state.winner
+        return self.game_state.winner
 
     @abstractmethod
     def new_game(self, rng: np.random.Generator, placement: str) -> None:
@@ -208,7 +208,7 @@ class GameSession(ABC):
 
     def legal_names(self) -> tuple[Any, ...]:
         """The balls the shooter may hit first, as the rules name them (the HUD's, the players')."""
-        return () if self.game_over else tuple(self.rules.legal_targets(self.state))
+        return () if self.game_over else tuple(self.rules.legal_targets(self.game_state))
 
     def legal_rows(self) -> list[int]:
         """Rows of the balls the shooter may hit first."""
@@ -241,7 +241,7 @@ class GameSession(ABC):
         declarations; default the one under way), apply the call to the table and the state, keep the score."""
         shot = self.shot_under_way if shot is None else shot
         call, state = self._call(outcome, shot)
-        self.state = state
+        self.game_state = state
         self._apply(call, outcome)
         verdict = self._verdict(call)
         self.last_call = call

@@ -78,7 +78,7 @@ class SnookerSession(GameSession):
     # --- the state ---------------------------------------------------------------------------------------------------
     @property
     def game_over(self) -> bool:
-        return bool(self.state.frame_over)
+        return bool(self.game_state.frame_over)
 
     def new_game(self, rng: np.random.Generator, placement: str) -> None:
         """The frame's opening layout is the env's (``placement: snooker``): nothing is drawn."""
@@ -102,11 +102,11 @@ class SnookerSession(GameSession):
 
     def legal_rows(self) -> list[int]:
         """Rows of the balls on (the balls the striker may hit first, without a free ball)."""
-        mask = ball_on_mask(self.values, self.state.on) & self.table.balls.on_table
+        mask = ball_on_mask(self.values, self.game_state.on) & self.table.balls.on_table
         return [int(i) for i in np.flatnonzero(mask)]
 
     def legal_names(self) -> tuple[Any, ...]:
-        return () if self.game_over else tuple(self.rules.legal_targets(self.state))
+        return () if self.game_over else tuple(self.rules.legal_targets(self.game_state))
 
     # --- what the shooter sees ---------------------------------------------------------------------------------------
     def place_area(self) -> DArea:
@@ -114,7 +114,7 @@ class SnookerSession(GameSession):
         return DArea.of(self.table.table)
 
     def view(self, table: TableState) -> ShotView:
-        s = self.state
+        s = self.game_state
         rows = tuple(self.legal_rows()) if not s.frame_over else ()
         area = self.place_area() if (s.ball_in_hand and not s.frame_over) else None
         return ShotView(rows, rows[0] if rows else None, area, False, False, False, s.shooter)
@@ -123,7 +123,7 @@ class SnookerSession(GameSession):
         """The frame seen by the player: its ball in hand, on a red, on any colour, the named colour's value / 7,
         its score and its opponent's / 147, the points left / 147, its break / 147, a free ball possible (the
         opponent fouled), its turn (values in [0, 1])."""
-        s = self.state
+        s = self.game_state
         me = self.viewer(player)
         mine = s.shooter == me and not s.frame_over
         out = np.zeros(N_SNOOKER_FEATURES, np.float32)
@@ -146,7 +146,7 @@ class SnookerSession(GameSession):
         super().begin_shot(shot)
         b = self.table.balls
         self._before = (b.pos.copy(), b.on_table.copy())
-        s = self.state
+        s = self.game_state
         self._snookered = bool(not s.frame_over and not s.ball_in_hand and b.on_table[0]
                                and snookered(b.pos, b.on_table, b.radius, self.values, s.on, 0))
 
@@ -160,7 +160,7 @@ class SnookerSession(GameSession):
                               tuple(VALUE_NAMES[int(v[r])] for r in down if v[r] >= 2), bool(outcome.scratch))
 
     def _call(self, outcome: ShotOutcome, shot: Any) -> tuple[SnookerCall, SnookerState]:
-        s = self.state
+        s = self.game_state
         info = SnookerShotInfo(snookered=self._snookered)
         return self.rules.play(s, self._summary(outcome), info)
 
@@ -194,7 +194,7 @@ class SnookerSession(GameSession):
     def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
         """``points`` (scored by the shot), ``foul_points`` (the penalty it gave away), ``score`` (both players),
         ``on`` (the ball on now, a code), ``break`` (the striker's break), ``ball_in_hand`` (1: in the D)."""
-        s = self.state
+        s = self.game_state
         call = verdict.call if verdict is not None else None
         return {"points": int(call.points) if call is not None else 0,
                 "foul_points": int(call.foul_points) if call is not None else 0,
@@ -221,7 +221,7 @@ class SnookerSession(GameSession):
     def hud(self, names: tuple[str, str]) -> dict[str, Any]:
         """The HUD: the common keys, each player's points, the ball on and the break, the D when in hand, the colour
         on ringed."""
-        s = self.state
+        s = self.game_state
         call = self.last_call
         what = None
         if call is not None:

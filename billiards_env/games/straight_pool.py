@@ -83,11 +83,11 @@ class StraightPoolSession(GameSession):
 
     def legal_rows(self) -> list[int]:
         """Rows of the balls the shooter may hit first (any ball on the table)."""
-        return [self.row_of[n] for n in self.rules.legal_targets(self.state)]
+        return [self.row_of[n] for n in self.rules.legal_targets(self.game_state)]
 
     def needs_called_pocket(self) -> bool:
         """Every shot calls a pocket (and a ball)."""
-        return bool(self.rules.needs_called_pocket(self.state))
+        return bool(self.rules.needs_called_pocket(self.game_state))
 
     def new_game(self, rng: np.random.Generator, placement: str) -> None:
         """The env's triangle (``placement`` ``"rack"``) ordered as :meth:`rack_order` says; other placements as
@@ -126,7 +126,7 @@ class StraightPoolSession(GameSession):
 
     # --- the view ----------------------------------------------------------------------------------------------------
     def view(self, table: TableState) -> ShotView:
-        s = self.state
+        s = self.game_state
         on = table.balls.on_table
         rows = [r for r in self.legal_rows() if on[r] and r != 0] if not s.game_over else []
         area = pool_place_area(s, table.table, float(table.balls.radius[0]))
@@ -137,7 +137,7 @@ class StraightPoolSession(GameSession):
         """The game seen by the player: its ball in hand (kitchen), the break shot, its score and its opponent's /
         target (clipped to [0, 1]), its own and its opponent's fouls in a row / 2, the object balls on the table /
         15, and whether it is its turn (eight values in [0, 1])."""
-        s = self.state
+        s = self.game_state
         me = self.viewer(player)
         mine = s.shooter == me and not s.game_over
         out = np.zeros(N_STRAIGHT_FEATURES, np.float32)
@@ -153,7 +153,7 @@ class StraightPoolSession(GameSession):
 
     # --- declarations ------------------------------------------------------------------------------------------------
     def needs_calls(self) -> bool:
-        return not self.state.game_over
+        return not self.game_state.game_over
 
     def calls_for(self, pocket: np.ndarray) -> dict[str, Any]:
         """The ball a simulated shot pockets (the lowest row of those it pockets) and its pocket; none if it pockets
@@ -178,12 +178,12 @@ class StraightPoolSession(GameSession):
         if row is None or pocket is None or not 0 < int(row) < len(self.numbers):
             return CalledShot()
         number = int(self.numbers[int(row)])
-        return CalledShot(number, int(pocket)) if number in self.state.on_table else CalledShot()
+        return CalledShot(number, int(pocket)) if number in self.game_state.on_table else CalledShot()
 
     # --- shots -------------------------------------------------------------------------------------------------------
     def _call(self, outcome: ShotOutcome, shot: Any) -> tuple[StraightPoolCall, StraightPoolState]:
         summary = summarize_outcome(outcome, self.numbers)
-        return self.rules.play(self.state, summary, self.called(shot))
+        return self.rules.play(self.game_state, summary, self.called(shot))
 
     def _apply(self, call: StraightPoolCall, outcome: ShotOutcome) -> None:
         """Spot the balls pocketed illegally; re-rack (the 14, the 15, or all 15 for a re-break), placing the 15th
@@ -195,8 +195,8 @@ class StraightPoolSession(GameSession):
             spot_object_ball(b.pos, b.on_table, r, t.table, self.row_of[n])
         if call.rerack:
             in_hand = self._rerack(call)
-            if in_hand and not self.state.game_over and self.state.ball_in_hand is False:
-                self.state = replace(self.state, ball_in_hand=KITCHEN)
+            if in_hand and not self.game_state.game_over and self.game_state.ball_in_hand is False:
+                self.game_state = replace(self.game_state, ball_in_hand=KITCHEN)
         if not b.on_table[0]:
             spot_cue_ball(b.pos, b.on_table, r, t.table)  # in hand for the next shooter
 
@@ -243,7 +243,7 @@ class StraightPoolSession(GameSession):
             b.pos[row] = nearest_free_point(x, y, b.pos, b.on_table, b.radius, row, area)
         numbers = sorted(int(self.numbers[row]) for row in rackable)
         first = 0 if len(numbers) == 15 else 1  # 14: the apex spot stays empty
-        order = self.rack_order(15, np.random.default_rng(self.state.racks)) if len(numbers) == 15 else numbers
+        order = self.rack_order(15, np.random.default_rng(self.game_state.racks)) if len(numbers) == 15 else numbers
         for slot, number in zip(range(first, first + len(order)), order, strict=True):
             row = self.row_of[number]
             b.pos[row] = slots[slot]
@@ -269,7 +269,7 @@ class StraightPoolSession(GameSession):
                 "rerack": integer("object balls racked after the shot (0, 14 or 15)")}
 
     def call_info(self, verdict: Verdict | None) -> dict[str, Any]:
-        s = self.state
+        s = self.game_state
         call = verdict.call if verdict is not None else None
         return {"points": int(call.points) if call is not None else 0,
                 "score": np.array(s.score, dtype=np.int64),
@@ -287,7 +287,7 @@ class StraightPoolSession(GameSession):
     def hud(self, names: tuple[str, str]) -> dict[str, Any]:
         """The HUD: the common keys, each player's points out of the target, ball in hand (the kitchen's line), and
         while a shot is under way its called ball ringed and its called pocket."""
-        s = self.state
+        s = self.game_state
         over = s.game_over
         shot = self.shot_under_way
         in_hand = False if (over or shot is not None) else s.ball_in_hand

@@ -5,7 +5,7 @@ It is not a second copy of the game. It holds one single-agent game env (``game_
 with ``opponent=None``) whose task (:class:`~billiards_env.envs.games.GameTask`) judges every shot with the rules,
 places the ball-in-hand cue ball, respots balls and keeps the :class:`~billiards_env.rules.GameState`. Its
 seat's ``auto`` is off (``task.seat``), so nobody plays automatically: one AEC ``step`` is one shot of the agent to shoot
-(``game_env.step``), and the turn passes as the rules say (``task.state.shooter``). Each agent observes the table
+(``game_env.step``), and the turn passes as the rules say (``task.game_state.shooter``). Each agent observes the table
 from its own point of view (``game_env.observe(player)``), and each gets its own reward for the shot
 (``task.reward_of(verdict, player)``).
 """
@@ -209,7 +209,7 @@ class BilliardsGameAEC(AECEnv, EzPickle):
     @property
     def game_state(self) -> Any:
         """The rules' state (its shooter, and the game's own fields: 9-ball's ball in hand, snooker's score...)."""
-        return self.task.state
+        return self.task.game_state
 
     @property
     def game_over(self) -> bool:

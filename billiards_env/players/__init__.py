@@ -7,7 +7,7 @@
 A player reads a table state (:class:`~billiards_env.table_state.TableState`: the balls, the table, the physics,
 who is to shoot and what they may do), chooses a shot ``(angle, speed)`` in physical units and turns it into an
 action of an action type (``codec.action(state, angle, speed, ...)``), so the same player works with every action
-type: ``player.act(state, obs, codec)``. Given an env, it reads ``env.unwrapped.state`` and acts in the env's own
+type: ``player.act(state, obs, codec)``. Given an env, it reads ``env.unwrapped.table_state`` and acts in the env's own
 action type. The decision functions (:func:`geometric_shot`, :func:`search_shot`) take plain physics objects (a
 :class:`ShotContext`), so they can be used without an environment::
 

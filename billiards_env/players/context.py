@@ -4,7 +4,7 @@ action of an action type (the ``codec``: an env's action type, whose ``action`` 
 and back).
 
 Players take the state, never the env: ``player.act(state, obs, codec)``. Given an env instead
-(``player.act(env, obs)``, the Gymnasium habit), they read ``env.unwrapped.state`` and act in
+(``player.act(env, obs)``, the Gymnasium habit), they read ``env.unwrapped.table_state`` and act in
 ``env.unwrapped.action_type``.
 """
 from __future__ import annotations

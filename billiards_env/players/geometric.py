@@ -86,7 +86,7 @@ class GeometricPlayer:
         """The decision for a table (:func:`billiards_env.players.geometry.geometric_decision`): in a game it follows
         the rules: the legal balls only, a full-power break, ball in hand placed for the easiest shot, and the
         pocket of its shot called when on the 8."""
-        is_break = ctx.game is not None and ctx.game.state.break_shot
+        is_break = ctx.game is not None and ctx.game.game_state.break_shot
         d = _decide(ctx, self.max_cut, bool(is_break), ctx.place_area)
         self.last = candidate_of(d.rows[d.shot]) if d.shot >= 0 else None
         return d

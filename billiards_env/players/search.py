@@ -172,7 +172,7 @@ class Judge:
         self.ctx = ctx
         self.numbers = np.ascontiguousarray(game.numbers, dtype=np.int64)
         #: Whether the verdict may depend on which balls reached a cushion (the break), not only on whether one did.
-        self.rail_detail = bool(game.state.break_shot)
+        self.rail_detail = bool(game.game_state.break_shot)
         self.verdicts: dict[bytes, int] = {}  #: outcome key -> index into the lists below
         self.values: list[float] = []
         self.next: list[int] = []
@@ -201,7 +201,7 @@ class Judge:
         pockets = tuple(k[4 + b:4 + b + n_pot])
         summary = ShotSummary(None if k[0] < 0 else k[0], rails, pocketed, pockets, k[1] >= 0, k[1])
         info = game.declared_for(summary)  # what the shooter would have called for this outcome
-        state = game.state
+        state = game.game_state
         call = game.rules.call(state, summary, info)
         if call.game_over:
             value, nxt, rows = (WIN_VALUE if call.winner == call.shooter else -WIN_VALUE), -1, np.zeros(0, np.int64)
@@ -626,7 +626,7 @@ class SearchPlayer:
         (:func:`placement_candidates`) and plays the best shot of all."""
         state, codec = player_inputs(source, codec)
         ctx = shot_context(state, codec)
-        if ctx.game is not None and ctx.game.state.break_shot:
+        if ctx.game is not None and ctx.game.game_state.break_shot:
             place, angle, speed = break_shot(ctx)
             self.last = None
             return to_action(codec, state, angle, speed, place=place)

@@ -531,7 +531,7 @@ class _SnookerPlayer:
 
         state, codec = player_inputs(source, codec)
         session = state.game
-        s = session.state
+        s = session.game_state
         b = state.balls
         snk = bool(not s.ball_in_hand and snookered(b.pos, b.on_table, b.radius, session.values, s.on, 0))
         self.last = shot = self._shot(state, session, snk)
@@ -545,7 +545,7 @@ class SnookerGeometricPlayer(_SnookerPlayer):
 
     def _shot(self, state: Any, session: Any, snookered_now: bool) -> SnookerShot:
         st = state.settings
-        return snooker_geometric_shot(state.balls, state.simulator, session.state, session.values, st.speed_range,
+        return snooker_geometric_shot(state.balls, state.simulator, session.game_state, session.values, st.speed_range,
                                       snookered_now, session.rules, max(st.angle_noise, 0.003))
 
 
@@ -565,7 +565,7 @@ class SnookerSearchPlayer(_SnookerPlayer):
 
     def _shot(self, state: Any, session: Any, snookered_now: bool) -> SnookerShot:
         st = state.settings
-        return snooker_search_shot(state.balls, state.simulator, session.state, session.values, self.settings,
+        return snooker_search_shot(state.balls, state.simulator, session.game_state, session.values, self.settings,
                                    st.speed_range, snookered_now, session.rules, st.angle_noise, st.speed_noise,
                                    st.tip_noise, self.rng, self._windows)
 

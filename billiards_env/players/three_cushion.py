@@ -328,7 +328,7 @@ class _CaromPlayer:
 
         state, codec = player_inputs(source, codec)
         session = state.game
-        opening = bool(session.state.break_shot and session.rules.options.break_red_first)
+        opening = bool(session.game_state.break_shot and session.rules.options.break_red_first)
         self.last = shot = self._shot(state, opening)
         return to_action(codec, state, shot.angle, shot.speed, side=shot.side, top=shot.top)
 

@@ -61,7 +61,7 @@ def test_the_prior_search_plays_at_the_search_players_budget(policy_zip, monkeyp
     space = env.action_space
     assert space.contains(np.asarray(a_prior, np.float32)) and space.contains(np.asarray(a_plain, np.float32))
     # its proposals: the policy's own shot first, within the budget
-    state = env.unwrapped.state
+    state = env.unwrapped.table_state
     prior.policy._types(env.unwrapped)
     mine = prior.policy._action_type.shot(state, prior.policy.predict(prior.policy._obs_type.observe(state)))
     rows = prior.proposals(state, mine, True)
@@ -104,7 +104,7 @@ def test_under_noise_the_sweep_pays_for_more_re_runs(policy_zip):
 
     prior = prior_search_player(policy_zip, "nine_ball", seed=1)
     env, obs = _noisy_table(EASY)
-    state = env.unwrapped.state
+    state = env.unwrapped.table_state
     assert pot_chance(state, prior.search.settings.ease_noise) > REALLOCATE_POT_CHANCE
     prior.policy._types(env.unwrapped)
     rows = prior.proposals(state, prior.policy.shot(state), True)
@@ -132,7 +132,7 @@ def test_on_a_hard_table_the_sweep_stays(policy_zip):
 
     prior = prior_search_player(policy_zip, "nine_ball", seed=1)
     env, _ = _noisy_table(HARD)
-    state = env.unwrapped.state
+    state = env.unwrapped.table_state
     st = prior.search.settings
     assert pot_chance(state, st.ease_noise) < REALLOCATE_POT_CHANCE
     prior.policy._types(env.unwrapped)

@@ -20,14 +20,14 @@ def _in_hand_env(seed: int):
     env = gym.make("Billiards9Ball-v0", **RULE_KWARGS, opponent="geometric", opening="ball_in_hand",
                    first_shooter="agent")
     obs, _ = env.reset(seed=seed)
-    assert env.unwrapped.state.view.place_area is not None
+    assert env.unwrapped.table_state.view.place_area is not None
     return env, obs
 
 
 def test_cue_placed_plays_the_table_from_the_place():
     env, _ = _in_hand_env(3)
     u = env.unwrapped
-    state, at = u.state, u.action_type
+    state, at = u.table_state, u.action_type
     view, cue = state.view, state.balls.pos[0].copy()
     assert at.slots(state).in_hand
     place = hand_places(state, at)[0]
@@ -43,12 +43,12 @@ def test_cue_placed_plays_the_table_from_the_place():
 def test_placed_observations_see_the_cue_ball_at_each_place():
     env, obs = _in_hand_env(4)
     u = env.unwrapped
-    places = hand_places(u.state, u.action_type)
+    places = hand_places(u.table_state, u.action_type)
     assert 1 <= len(places) <= HAND_PLACES
     for a in places:  # the search player's places: at least a ball apart
         for b in places:
-            assert a == b or math.dist(a, b) > 2 * float(u.state.balls.radius[0])
-    o = placed_observations(u.state, u.observation_type, places)
+            assert a == b or math.dist(a, b) > 2 * float(u.table_state.balls.radius[0])
+    o = placed_observations(u.table_state, u.observation_type, places)
     assert o.shape == (len(places), len(obs))
     n_game = u.task.n_features
     assert obs[-n_game] == 1.0 and not o[:, -n_game].any()  # in hand in the env's; not in the placed ones
@@ -66,18 +66,18 @@ def test_hand_labels_are_the_teachers_place_and_shot():
         env, obs = _in_hand_env(100 + seed)
         u = env.unwrapped
         label = make_player("search", seed=seed, game="nine_ball").act(env, obs)
-        obs_p, target = hand_label(u.state, u.observation_type, u.action_type, label)
+        obs_p, target = hand_label(u.table_state, u.observation_type, u.action_type, label)
         assert obs_p.shape == (HAND_PLACES, len(obs))
         if target < 0:
             env.close()
             continue
         matched += 1
         p, k = divmod(target, OPTIONS_PER_PLACE)
-        places = hand_places(u.state, u.action_type)
-        teacher = u.action_type.shot(u.state, label)
+        places = hand_places(u.table_state, u.action_type)
+        teacher = u.action_type.shot(u.table_state, label)
         assert math.dist(places[p], teacher.place) <= 0.01
-        with u.state.cue_placed(places[p]):
-            mine = u.action_type.shot(u.state, action_of(k))
+        with u.table_state.cue_placed(places[p]):
+            mine = u.action_type.shot(u.table_state, action_of(k))
         assert abs(math.remainder(mine.angle - teacher.angle, 2 * math.pi)) < 0.05
         assert abs(mine.top - teacher.top) < 0.1  # the teacher's tips are the grid's
         assert 0.55 < mine.speed / teacher.speed < 1.5  # its speed factors 0.6 and 4 are the grid's 1 and 3
@@ -95,23 +95,23 @@ def test_the_scorer_plays_from_its_own_place():
     for seed in range(7, 27):  # a table where some place has an option (else it plays predict's shot)
         env, obs = _in_hand_env(seed)
         u = env.unwrapped
-        places = hand_places(u.state, u.action_type)
-        if sc.choose_hand(placed_observations(u.state, u.observation_type, places)) is not None:
+        places = hand_places(u.table_state, u.action_type)
+        if sc.choose_hand(placed_observations(u.table_state, u.observation_type, places)) is not None:
             break
         env.close()
     else:
         raise AssertionError("no table of seeds 7-26 has an option from a ball-in-hand place")
-    view, cue = u.state.view, u.state.balls.pos[0].copy()
-    shot = sc.shot(u.state, u.observation_type, u.action_type)
+    view, cue = u.table_state.view, u.table_state.balls.pos[0].copy()
+    shot = sc.shot(u.table_state, u.observation_type, u.action_type)
     assert shot.place in places
-    assert u.state.view is view and np.array_equal(u.state.balls.pos[0], cue)
+    assert u.table_state.view is view and np.array_equal(u.table_state.balls.pos[0], cue)
     # the env's candidates action says "behind this ghost ball": near the place (a place pushed off a cushion is
     # not on that line), at the same ghost ball
-    played = u.action_type.shot(u.state, sc.act(env, obs))
+    played = u.action_type.shot(u.table_state, sc.act(env, obs))
     assert math.dist(played.place, shot.place) < 0.03
     assert abs(math.remainder(played.angle - shot.angle, 2 * math.pi)) < 0.05
     sc.hand = False
-    assert sc.shot(u.state, u.observation_type, u.action_type).place not in places or len(places) == 0
+    assert sc.shot(u.table_state, u.observation_type, u.action_type).place not in places or len(places) == 0
     env.close()
 
 
@@ -124,9 +124,9 @@ def test_the_league_plays_the_scorer_with_and_without_its_places(tmp_path):
     b, pb = load_player(f"scorer-fallback:{path}")
     assert a != b  # one league can hold both
     env, obs = _in_hand_env(5)
-    places = hand_places(env.unwrapped.state, env.unwrapped.action_type)
+    places = hand_places(env.unwrapped.table_state, env.unwrapped.action_type)
     pa._types(env.unwrapped)
     pb._types(env.unwrapped)
-    assert pa.shot(env.unwrapped.state).place in places
-    assert pb.shot(env.unwrapped.state).place not in places
+    assert pa.shot(env.unwrapped.table_state).place in places
+    assert pb.shot(env.unwrapped.table_state).place not in places
     env.close()

@@ -33,7 +33,7 @@ def after_break(seed: int = 0, **kw):
 def test_ball_in_hand_opening_breaks_for_nobody_and_gives_ball_in_hand_anywhere():
     env = after_break(3)
     u = env.unwrapped
-    s = u.task.state
+    s = u.task.game_state
     assert s.ball_in_hand == "anywhere" and not s.break_shot and s.shooter == 0 and not s.game_over
     assert u.balls.on_table[9] and u.balls.on_table[0]  # the 9 respotted if it dropped; the cue ball back
     moved = np.hypot(*(u.balls.pos[1:] - gym.make("Billiards9Ball-v0").unwrapped.balls.pos[1:]).T)
@@ -58,11 +58,11 @@ def test_either_opening_draws_the_break_or_ball_in_hand():
     kinds = []
     for seed in range(12):
         env.reset(seed=seed)
-        s = env.unwrapped.task.state
+        s = env.unwrapped.task.game_state
         kinds.append("break" if s.break_shot else s.ball_in_hand)
         again = gym.make("Billiards9Ball-v0", opening="either", opponent=None)
         again.reset(seed=seed)
-        assert again.unwrapped.task.state == s  # drawn from the seeded np_random
+        assert again.unwrapped.task.game_state == s  # drawn from the seeded np_random
     assert set(kinds) == {"break", "anywhere"}
 
 
@@ -81,7 +81,7 @@ def test_neutral_action_plays_the_geometric_players_shot():
         env.reset(seed=seed)
         env.step(env.unwrapped.action_from_shot(0.0, 8.0, place=(0.5, 0.64)))  # break
         u = env.unwrapped
-        if u.task.state.ball_in_hand or u.task.state.game_over:
+        if u.task.game_state.ball_in_hand or u.task.game_state.game_over:
             continue
         angle, speed, cand = geometric_shot(shot_context(env))
         shot = u.shot_from_action(np.zeros(env.action_space.shape))
@@ -99,9 +99,9 @@ def test_neutral_action_plays_the_geometric_players_shot():
 def test_slots_are_chosen_by_the_aim_dim_and_round_trip():
     env = after_break(1)
     u = env.unwrapped
-    u.task.state = type(u.task.state)("nine_ball", u.task.state.on_table, shooter=0, ball_in_hand=False,
+    u.task.game_state = type(u.task.game_state)("nine_ball", u.task.game_state.on_table, shooter=0, ball_in_hand=False,
                                       break_shot=False)  # play from where it lies
-    cands = candidate_slots(u.state, 4)
+    cands = candidate_slots(u.table_state, 4)
     assert not cands.in_hand and 1 <= len(cands.slots) <= 3  # the last of the 4 slots is the kick's
     for k, slot in enumerate(cands.slots):
         a = np.zeros(env.action_space.shape)
@@ -125,7 +125,7 @@ def test_a_blocked_ball_is_kicked_at_off_a_cushion():
     off = np.array([False, False, False] + [True] * 7)
     env.reset(seed=0, options={"positions": pos, "pocketed": off})
     u = env.unwrapped
-    cands = candidate_slots(u.state, 4)
+    cands = candidate_slots(u.table_state, 4)
     assert cands.kick is not None and cands.kick.target == 1 and cands.kick.pocket == -1
     assert all(not s.shot.clear for s in cands.slots)  # every pot goes through the 2
     obs = u.observe()
@@ -149,7 +149,7 @@ def test_a_blocked_ball_is_kicked_at_off_a_cushion():
 def test_ball_in_hand_places_the_cue_ball_behind_the_chosen_ghost_ball():
     env = after_break(2)
     u = env.unwrapped
-    cands = candidate_slots(u.state, 4)
+    cands = candidate_slots(u.table_state, 4)
     assert cands.in_hand and cands.slots
     slot = cands.slots[0]
     ghost = slot.ghost(2 * u.config.ball_radius, u.balls.pos)
@@ -191,7 +191,7 @@ def test_observation_describes_the_slots():
     obs = u.observe()
     assert env.observation_space.shape == (30 + 3 * SLOT_FEATURES + 11,) and env.observation_space.contains(obs)
     slots = obs[30:30 + 3 * SLOT_FEATURES].reshape(3, SLOT_FEATURES)
-    cands = candidate_slots(u.state, 3)
+    cands = candidate_slots(u.table_state, 3)
     assert slots[:, 0].tolist() == [1.0 if k < len(cands.slots) else 0.0 for k in range(3)]
     s0 = cands.slots[0]
     assert slots[0, 1] == pytest.approx(s0.target / 15) and slots[0, 2] == pytest.approx(
@@ -258,7 +258,7 @@ def test_position_reward_pays_for_the_next_shot_after_a_kept_turn():
             _, r1, t1, _, _ = shaped.step(a)
             kept = not info["turn_over"] and not t0
             if kept:
-                ease = next_shot_ease(shaped.unwrapped.state, shaped.unwrapped.config.candidate_slots)
+                ease = next_shot_ease(shaped.unwrapped.table_state, shaped.unwrapped.config.candidate_slots)
                 assert 0.0 <= ease <= 1.0 and r1 == pytest.approx(r0 + 2.0 * ease)
                 seen.add("kept")
             else:
@@ -286,9 +286,9 @@ def test_observation_values_equal_the_python_loop(env_id, golden):
         obs, _ = env.reset(seed=seed)
         for _ in range(6):
             for n in (1, 4, 6):
-                cands = candidate_slots(u.state, n, u.action_type.speed_range)
-                got = slot_features(u.state, cands, n, u.config.speed_max)
-                golden.check(got, lambda: reference_players().reference_slot_values(u.state, cands, n,
+                cands = candidate_slots(u.table_state, n, u.action_type.speed_range)
+                got = slot_features(u.table_state, cands, n, u.config.speed_max)
+                golden.check(got, lambda: reference_players().reference_slot_values(u.table_state, cands, n,
                                                                                       u.config.speed_max),
                              same=lambda a, b: a.dtype == b.dtype and np.array_equal(a, b))
                 seen["break" if cands.break_shot else "hand" if cands.in_hand else "pots"] += 1
@@ -300,9 +300,9 @@ def test_observation_values_equal_the_python_loop(env_id, golden):
     env9 = gym.make("Billiards9Ball-v0", opponent=None, **CAND)
     pos = np.array([[0.5, 0.35], [1.5, 0.35], [1.0, 0.35]] + [[0.3 + 0.1 * k, 1.2] for k in range(7)])
     env9.reset(seed=0, options={"positions": pos, "pocketed": np.array([False] * 3 + [True] * 7)})
-    cands = candidate_slots(env9.unwrapped.state, 4)
+    cands = candidate_slots(env9.unwrapped.table_state, 4)
     assert cands.kick is not None
-    golden.check(slot_features(env9.unwrapped.state, cands, 4, 5.0),
-                 lambda: reference_players().reference_slot_values(env9.unwrapped.state, cands, 4, 5.0),
+    golden.check(slot_features(env9.unwrapped.table_state, cands, 4, 5.0),
+                 lambda: reference_players().reference_slot_values(env9.unwrapped.table_state, cands, 4, 5.0),
                  same=lambda a, b: a.dtype == b.dtype and np.array_equal(a, b))
     assert seen["hand"] and seen["pots"] and seen["break"], seen

@@ -51,7 +51,7 @@ def test_an_action_type_adds_one_dim_per_declaration_in_order():
     at = AbsoluteAim(u.config, True, (PUSH_OUT, CALLED_BALL), u.table.n_pockets)
     assert at.layout() == "aim, power, place_x, place_y, push, ball" and at.space.shape == (6,)
     env.reset(seed=0)
-    shot = at.shot(u.state, at.action(u.state, 0.2, 3.0, push=True, ball=9, pocket=4))  # pocket: not declared
+    shot = at.shot(u.table_state, at.action(u.table_state, 0.2, 3.0, push=True, ball=9, pocket=4))  # pocket: not declared
     assert shot.calls == (("push", True), ("ball", 9))
     with pytest.raises(TypeError, match="Declaration objects"):
         AbsoluteAim(u.config, True, ("pocket",), 6)

@@ -172,7 +172,7 @@ def test_ball_in_hand_drag_and_click_map_to_the_placement_dims():
     assert app.place[0] == pytest.approx(kitchen_x, abs=1e-9) and app.place[1] == pytest.approx(
         core.legal_cue_position(*app.to_table(far))[1])
     wanted = app.place
-    area = core.state.view.place_area
+    area = core.table_state.view.place_area
     assert area == pytest.approx((r, kitchen_x, r, core.table.width - r))
     _feed(app, list(play.mouse_shot(app, 1.0)))
     assert app.shots == 1
@@ -243,6 +243,6 @@ def test_two_people_take_turns():
     below = (cx, cy + 40)  # straight down into the near cushion: no contact, a foul
     _feed(app, list(play.mouse_shot(app, 0.2, target=below)))
     assert app.shots == 1 and app.opponent_shots == 0
-    assert core.task.state.shooter == 1 and app.in_hand()  # player 2 to shoot, with the cue ball in hand
+    assert core.task.game_state.shooter == 1 and app.in_hand()  # player 2 to shoot, with the cue ball in hand
     assert "player 2 to shoot" in app.status
     app.close()

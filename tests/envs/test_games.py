@@ -124,7 +124,7 @@ def test_break_ball_in_hand_is_behind_the_head_string():
     env = gym.make("Billiards9Ball-v0")
     env.reset(seed=3)
     u = env.unwrapped
-    assert u.task.state.break_shot and u.state.view.place_area[1] == pytest.approx(head_string_x(u.table))
+    assert u.task.game_state.break_shot and u.table_state.view.place_area[1] == pytest.approx(head_string_x(u.table))
     shot = u.shot_from_action(np.array([0.0, 1.0, 1.0, 0.0], dtype=np.float32))  # place_x = +1: the far edge
     assert shot.place[0] <= head_string_x(u.table) + 1e-12
 
@@ -146,7 +146,7 @@ def test_eight_ball_called_pocket_decides_the_game(called, wins):
     pos, off = table(15, DIAG_CUE, {8: DIAG_BALL, 9: (0.6, 0.7)})
     env.reset(seed=0, options={"positions": pos, "pocketed": off, "groups": ("solids", "stripes")})
     u = env.unwrapped
-    assert u.state.view.call_pocket  # solids cleared: on the 8
+    assert u.table_state.view.call_pocket  # solids cleared: on the 8
     obs, reward, terminated, truncated, info = env.step(u.action_from_shot(math.pi / 4, 1.2, pocket=called))
     w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
     assert terminated and w["pocketed"] == ("8",)
@@ -168,7 +168,7 @@ def test_opponent_replies_inside_step_and_game_features_follow_the_state():
     if not terminated:
         feats = obs[-11:]
         assert feats[10] == 1.0  # the agent's turn
-        assert feats[3] == pytest.approx(min(u.task.state.on_table) / 15.0)
+        assert feats[3] == pytest.approx(min(u.task.game_state.on_table) / 15.0)
 
 
 @pytest.mark.parametrize("game", ["Billiards9Ball-v0", "Billiards8Ball-v0"])
@@ -183,8 +183,8 @@ def test_players_follow_the_rules(game, player):
     for seed in range(2 if player == "search" else 4):
         obs, _ = env.reset(seed=seed)
         for _ in range(4):
-            legal = {str(n) for n in u.task.rules.legal_targets(u.task.state)}
-            area = u.state.view.place_area
+            legal = {str(n) for n in u.task.rules.legal_targets(u.task.game_state)}
+            area = u.table_state.view.place_area
             action = p.act(env, obs)
             if area is not None:
                 place = u.shot_from_action(action).place
@@ -214,7 +214,7 @@ def test_ball_in_hand_never_places_the_cue_ball_where_it_drops_at_once():
     env.reset(seed=3)
     u = env.unwrapped
     t = u.table
-    x0, x1, y0, y1 = u.state.view.place_area
+    x0, x1, y0, y1 = u.table_state.view.place_area
     for px, py in ((0.0, 0.0), (0.0, W), (x0, y0 + 1e-3)):
         x, y = u.legal_cue_position(px, py)
         assert x0 <= x <= x1 and y0 <= y <= y1

@@ -56,9 +56,9 @@ def test_the_opponent_plays_on_the_table_state_it_is_given():
     assert task.seat.agent == 0 and task.seat.opponent == 1 and task.auto_opponent
     assert not hasattr(u, "_opponent_shot") and not hasattr(task, "opponent_action")
     assert all(v is not u for v in vars(task).values()) and all(v is not u for v in vars(task.session).values())
-    shot = task.opponent_player.shot(u.state)
+    shot = task.opponent_player.shot(u.table_state)
     assert isinstance(shot, CueShot)
-    again = task.opponent_player.shot(u.state)  # the geometric player: deterministic on the same table
+    again = task.opponent_player.shot(u.table_state)  # the geometric player: deterministic on the same table
     assert (again.angle, again.speed) == (shot.angle, shot.speed)
     task.seat.auto = False  # two-player mode: nobody plays inside step
     assert not task.auto_opponent and task.names() == ("player 0", "player 1")
@@ -73,4 +73,4 @@ def test_an_opponent_without_a_policy_says_so():
     assert opp.policy is None and opp.name() == "nobody" and env.unwrapped.task.names()[1] == "nobody"
     assert isinstance(opp, Opponent)
     with pytest.raises(RuntimeError, match="no policy"):
-        opp.shot(env.unwrapped.state)
+        opp.shot(env.unwrapped.table_state)

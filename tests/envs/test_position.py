@@ -37,7 +37,7 @@ def _a_table_with_pots(env):
     for seed in range(40):
         obs, _ = env.reset(seed=seed)
         for _ in range(6):
-            c = candidate_slots(env.unwrapped.state, env.unwrapped.config.candidate_slots)
+            c = candidate_slots(env.unwrapped.table_state, env.unwrapped.config.candidate_slots)
             if not c.in_hand and not c.break_shot and c.count:
                 return obs
             obs, _, term, trunc, _ = env.step(np.zeros(env.action_space.shape, np.float32))
@@ -70,7 +70,7 @@ def test_each_grid_point_is_the_closed_form_and_the_search_players_position_term
     env = _env()
     obs = _a_table_with_pots(env)
     u = env.unwrapped
-    state = u.state
+    state = u.table_state
     b, t, ph = u.balls, u.table, u.physics
     law, a, k = ph.path_args
     slots, grid = _split(env, obs)
@@ -106,7 +106,7 @@ def test_the_next_legal_ball_of_nine_ball_is_the_lowest_left():
     env = _env()
     env.reset(seed=3)
     u = env.unwrapped
-    state = u.state
+    state = u.table_state
     nums = state.numbers
     on = [i for i in range(1, u.n_balls) if u.balls.on_table[i]]
     lowest = min(on, key=lambda i: nums[i])
@@ -118,5 +118,5 @@ def test_the_next_legal_ball_of_nine_ball_is_the_lowest_left():
 def test_ball_in_hand_reads_zero():
     env = _env(opening="ball_in_hand")
     obs, _ = env.reset(seed=5)
-    assert env.unwrapped.state.view.place_area is not None
+    assert env.unwrapped.table_state.view.place_area is not None
     assert np.all(_split(env, obs)[1] == 0.0)

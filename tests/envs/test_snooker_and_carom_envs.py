@@ -40,10 +40,10 @@ def test_snooker_starts_from_the_spots_with_the_cue_ball_in_the_d():
     spots = snooker_spots(u.table)
     for colour, xy in spots.items():
         assert np.allclose(u.balls.pos[SNOOKER_IDS.index(colour)], xy)
-    area = u.state.view.place_area
+    area = u.table_state.view.place_area
     assert isinstance(area, HalfDiscArea) and area.contains(*u.balls.pos[0])
     assert env.observation_space.shape == (3 * 22 + 10,)
-    assert u.state.view.targets == tuple(range(1, 16))  # the reds
+    assert u.table_state.view.targets == tuple(range(1, 16))  # the reds
 
 
 def test_a_potted_red_scores_one_and_the_colour_is_on():
@@ -55,7 +55,7 @@ def test_a_potted_red_scores_one_and_the_colour_is_on():
     w = env.unwrapped.info_words(info)  # the balls as ids, the codes as names
     assert w["pocketed"] == ("red1",) and info["points"] == 1 and not info["foul"]
     assert w["on"] == "colour" and w["score"] == (1, 0) and not info["turn_over"] and not term
-    assert u.state.view.targets == tuple(SNOOKER_IDS.index(c) for c in ("yellow", "green", "brown", "blue", "pink",
+    assert u.table_state.view.targets == tuple(SNOOKER_IDS.index(c) for c in ("yellow", "green", "brown", "blue", "pink",
                                                                           "black"))
 
 
@@ -99,7 +99,7 @@ def test_ball_in_hand_places_the_cue_ball_in_the_d():
     env, u = _snooker()
     pos, pocketed = _table(u, red_at=(2.8, 1.2))
     env.reset(options={"positions": pos, "pocketed": pocketed, "ball_in_hand": "d"})
-    area = u.state.view.place_area
+    area = u.table_state.view.place_area
     for place in ((-1.0, -1.0), (1.0, 1.0), (0.0, 0.0), (1.0, -0.3)):
         shot = u.shot_from_action(np.array([0.0, 0.0, *place], np.float32))
         assert area.contains(*shot.place, tol=1e-6)
@@ -153,7 +153,7 @@ def test_the_rows_follow_the_turn():
     assert env.agent_selection == "player_1" and game.ball_ids == ("yellow", "white", "red")
     assert np.allclose(env.observe("player_1")[:2] * [game.table.length, game.table.width],
                        game.balls.pos[0], atol=1e-6)
-    assert game.task.session.state.shooter == 1
+    assert game.task.session.game_state.shooter == 1
 
 
 def test_snooker_and_carom_players_choose_legal_shots():

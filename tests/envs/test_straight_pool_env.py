@@ -87,7 +87,7 @@ def test_the_fourteenth_ball_re_racks_with_the_apex_empty_and_the_fifteenth_left
     slots = triangle_positions(foot_spot(u.table), float(b.radius[1]), rows=5)
     racked = [r for r in range(1, 16) if r != 9]
     assert sorted(np.argmin(np.hypot(*(slots - b.pos[r]).T)) for r in racked) == list(range(1, 15))
-    assert u.task.state.on_table == tuple(range(1, 16)) and u.task.state.shooter == 0 and info["ball_in_hand"] == 0
+    assert u.task.game_state.on_table == tuple(range(1, 16)) and u.task.game_state.shooter == 0 and info["ball_in_hand"] == 0
 
 
 def test_a_fifteenth_ball_in_the_rack_goes_to_the_head_spot():
@@ -106,13 +106,13 @@ def test_the_third_foul_costs_sixteen_and_racks_fifteen_for_the_offenders_re_bre
     env = gym.make(ID, opponent=None)
     u = env.unwrapped
     _table(env, {0: (0.6, 0.3), 3: (1.8, 0.9), 9: (2.0, 1.0)}, score=(10, 0))
-    u.task.state = replace(u.task.state, fouls_in_a_row=(2, 0))
+    u.task.game_state = replace(u.task.game_state, fouls_in_a_row=(2, 0))
     _, _, terminated, _, info = env.step(u.action_from_shot(-np.pi / 2, 0.6))  # into the near cushion: no contact
     assert info["foul"] and info["points"] == -16 and tuple(info["score"]) == (-6, 0) and info["rerack"] == 15
     assert not terminated and info["shooter"] == 0 and info["ball_in_hand"] == 2
-    st = u.task.state
+    st = u.task.game_state
     assert st.break_shot and st.fouls_in_a_row == (0, 0) and u.balls.on_table.all()
-    assert u.balls.pos[0, 0] <= head_string_x(u.table) and u.state.view.break_shot
+    assert u.balls.pos[0, 0] <= head_string_x(u.table) and u.table_state.view.break_shot
 
 
 @pytest.mark.parametrize("name", ["geometric", "search"])

@@ -36,7 +36,7 @@ def test_game_reset_options_need_positions_and_valid_values():
     with pytest.raises(ValueError, match="ball_in_hand: must be False, 'anywhere' or 'kitchen'"):
         env.reset(options={"positions": pos, "ball_in_hand": "everywhere"})
     env.reset(options={"positions": pos, "ball_in_hand": "anywhere"})
-    assert u.state.view.place_area is not None
+    assert u.table_state.view.place_area is not None
 
 
 @pytest.mark.parametrize("env_id, options, message", [
@@ -118,7 +118,7 @@ def test_policy_actions_are_still_clipped():
     env, u = _nine_ball()
     shot = u.shot_from_action(np.array([0.0, 40.0, -9.0, 9.0], np.float32))
     assert shot.speed == pytest.approx(u.config.speed_max)
-    x0, x1, y0, y1 = u.state.view.place_area
+    x0, x1, y0, y1 = u.table_state.view.place_area
     assert x0 - 1e-12 <= shot.place[0] <= x1 + 1e-12 and y0 - 1e-12 <= shot.place[1] <= y1 + 1e-12
 
 

@@ -63,7 +63,7 @@ def test_thresholds_match_the_engine(seed):
     env = _env()
     env.reset(seed=seed)
     u = env.unwrapped
-    state = u.state
+    state = u.table_state
     cands = candidate_slots(state, 7, (0.5, 5.0))
     rows = offset_rows(state, cands, (0.0,))
     thr = thresholds(state, rows, 5.0)
@@ -102,7 +102,7 @@ def test_the_offset_moves_the_object_ball_across_its_window():
     env = _env()
     env.reset(seed=100_001)
     u = env.unwrapped
-    state = u.state
+    state = u.table_state
     slot = candidate_slots(state, 7, (0.5, 5.0)).slots[0]
     at = u.action_type
     assert [offset_of(a) for a in (-1.0, -0.61, -0.59, 0.0, 0.19, 0.21, 1.0)] == [-1.0, -1.0, -0.5, 0.0, 0.0, 0.5, 1.0]

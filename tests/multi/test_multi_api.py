@@ -139,7 +139,7 @@ def test_bad_input_gets_clear_errors():
         env.step(np.zeros(3, dtype=np.float32))
     with pytest.warns(UserWarning, match=r"unknown key\(s\) \['positons'\]"):
         env.reset(seed=0, options={"positons": np.zeros((10, 2))})  # a typo: warned, the rack is used
-    assert env.game_env.task.state.break_shot
+    assert env.game_env.task.game_state.break_shot
 
 
 def test_step_after_the_game_raises_reset_needed():

@@ -65,8 +65,8 @@ def test_players_act_on_the_single_agent_env_and_follow_the_rules():
         if terminated or truncated:
             env.step(None)
             continue
-        legal = {str(n) for n in game.task.rules.legal_targets(game.task.state)}
-        area = game.state.view.place_area
+        legal = {str(n) for n in game.task.rules.legal_targets(game.task.game_state)}
+        area = game.table_state.view.place_area
         action = player.act(game, obs)
         assert env.action_space(agent).contains(action)
         if area is not None:

@@ -79,7 +79,7 @@ def test_search_values_the_shots_a_ghost_action_can_play():
         action = player.act(env, None)
         played = env.unwrapped.shot_from_action(action)
         assert played.angle == player.last.angle and played.speed == player.last.speed
-        play = playable_shots(env.unwrapped.state, env.unwrapped.action_type)
+        play = playable_shots(env.unwrapped.table_state, env.unwrapped.action_type)
         # A kick (cue line missing the object ball) cannot be expressed: it comes back as a direct hit.
         u = env.unwrapped
         cue, obj = u.balls.pos[0], u.balls.pos[1]

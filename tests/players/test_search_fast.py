@@ -35,7 +35,7 @@ def _decisions(env_id: str, seeds: range, steps: int, **kw):
             obs, _ = env.reset(seed=seed)
             for _ in range(steps):
                 u = env.unwrapped
-                if not u.state.view.break_shot:
+                if not u.table_state.view.break_shot:
                     yield env, obs, seed
                 action = env.action_space.sample() if rng.random() < 0.25 else geo.act(env, obs)
                 obs, _, term, trunc, _ = env.step(action)
@@ -122,7 +122,7 @@ def test_after_the_break_the_rules_read_only_whether_a_ball_reached_a_cushion():
     for env_id in ("Billiards9Ball-v0", "Billiards8Ball-v0"):
         for env, _, _ in _decisions(env_id, range(60, 64), 6):
             game = shot_context(env).game
-            on = list(game.state.on_table)
+            on = list(game.game_state.on_table)
             for _ in range(20):
                 first = int(rng.choice(on)) if rng.random() < 0.9 else None
                 pocketed = tuple(int(n) for n in rng.permutation(on)[:int(rng.integers(0, 3))])
@@ -132,7 +132,7 @@ def test_after_the_break_the_rules_read_only_whether_a_ball_reached_a_cushion():
                 calls = set()
                 for rails in ((0,), tuple(sorted(rng.permutation([0] + on)[:3].tolist())), tuple(sorted(on))):
                     summary = ShotSummary(first, tuple(int(n) for n in rails), pocketed, pockets, cue >= 0, cue)
-                    calls.add(game.rules.call(game.state, summary, called))
+                    calls.add(game.rules.call(game.game_state, summary, called))
                 assert len(calls) == 1
                 checked += 1
     assert checked >= 100
@@ -151,7 +151,7 @@ def test_absolute_round_trip_on_arrays_equals_the_envs(kw):
     tops = np.array([tips[k % 5][1] for k in range(n)])
     for place in (None, (0.5, 0.6)):
         u = env.unwrapped
-        fast, slow = Playable(u.state, u.action_type, place), Playable(u.state, u.action_type, place)
+        fast, slow = Playable(u.table_state, u.action_type, place), Playable(u.table_state, u.action_type, place)
         assert fast._fast
         slow._fast = False
         got, expected = fast.arrays(angles, speeds, sides, tops), slow.arrays(angles, speeds, sides, tops)

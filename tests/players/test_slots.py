@@ -43,7 +43,7 @@ def test_slots_as_arrays_equal_the_python_lists(env_id, seeds, golden):
         for _ in range(12):
             u = env.unwrapped
             b = u.balls
-            targets = tuple(u.state.view.targets)
+            targets = tuple(u.table_state.view.targets)
             speed_range = (float(u.config.speed_min), float(u.config.speed_max))
             tm = table_model(u.table, u.physics)
             arrays = (b.pos, b.on_table, b.radius)
@@ -52,30 +52,30 @@ def test_slots_as_arrays_equal_the_python_lists(env_id, seeds, golden):
             golden.check([(int(r[COL_TARGET]), int(r[COL_POCKET]), r[COL_OBJ_ANGLE], r[COL_WINDOW], r[COL_D_OBJ],
                            bool(r[COL_CLEAR_OBJ]), r[COL_SCORE]) for r in rows],
                          lambda: [(s.target, s.pocket, s.obj_angle, s.half, s.d_obj, s.clear_obj, s.shot.score)
-                                  for s in reference_players().reference_shot_slots(u.state, targets, speed_range)])
+                                  for s in reference_players().reference_shot_slots(u.table_state, targets, speed_range)])
             hand = in_hand_slots(*arrays, tg, *tm)
             golden.check([(int(r[0]), int(r[1]), r[2], r[3], r[4], bool(r[5])) for r in hand],
                          lambda: [(s.target, s.pocket, s.obj_angle, s.half, s.d_obj, s.clear_obj)
-                                  for s in reference_players().reference_in_hand_slots(u.state, targets)])
+                                  for s in reference_players().reference_in_hand_slots(u.table_state, targets)])
             kick = kick_candidates(*arrays, tg, *tm, *speed_range, envc.KICK_ARRIVAL, envc.KICK_MARGIN)
             golden.check([(r[0], int(r[1]), r[2], r[3]) for r in kick],
-                         lambda: reference_players().reference_kick_candidates(u.state, targets, speed_range))
+                         lambda: reference_players().reference_kick_candidates(u.table_state, targets, speed_range))
             kicks += len(kick)
             # The env's lists (the kick verified lazily, shortest first) equal the Python (all kicks in one batch).
             for n in (1, 4, 6):
-                got = envc.candidate_slots(u.state, n, speed_range)
+                got = envc.candidate_slots(u.table_state, n, speed_range)
 
                 def want(n=n):
-                    slots, kick = reference_players().reference_candidate_slots(u.state, n, speed_range)
+                    slots, kick = reference_players().reference_candidate_slots(u.table_state, n, speed_range)
                     return _slot_lists(slots), None if kick is None else _fields(kick)
 
                 golden.check((_slot_lists(got.slots), None if got.kick is None else _fields(got.kick)), want,
                              same=lambda a, b: _same_lists(a[0], b[0]) and (a[1] is None) == (b[1] is None)
                              and (a[1] is None or _same_lists([a[1]], [b[1]])))
                 chosen_kicks += got.kick is not None
-            ease = envc.next_shot_ease(u.state, u.config.candidate_slots)
-            golden.check(ease, lambda: reference_players().reference_next_shot_ease(u.state, u.config.candidate_slots))
-            view = u.state.view
+            ease = envc.next_shot_ease(u.table_state, u.config.candidate_slots)
+            golden.check(ease, lambda: reference_players().reference_next_shot_ease(u.table_state, u.config.candidate_slots))
+            view = u.table_state.view
             if view.place_area is None and not view.break_shot:
                 sigma = max(u.config.angle_noise, envc.EASE_SPREAD)
                 assert next_shot_ease(*arrays, b.mass, tg, *tm, *speed_range, sigma) == ease
@@ -108,10 +108,10 @@ def _blocked_tables(n: int, seed: int = 3, **kw):
 
 def _check_kick(u, golden) -> bool:
     """The env's slots and kick equal the Python's on the table now; whether there is a kick."""
-    got = envc.candidate_slots(u.state, 4)
+    got = envc.candidate_slots(u.table_state, 4)
 
     def want():
-        slots, kick = reference_players().reference_candidate_slots(u.state, 4)
+        slots, kick = reference_players().reference_candidate_slots(u.table_state, 4)
         return _slot_lists(slots), None if kick is None else _fields(kick)
 
     golden.check((_slot_lists(got.slots), None if got.kick is None else _fields(got.kick)), want,

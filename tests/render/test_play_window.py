@@ -91,7 +91,7 @@ def test_who_breaks_after_r(breaker, expected):
     for k in range(3):
         if k:
             app.handle(E(pygame.KEYDOWN, key=pygame.K_r, mod=0, unicode="r", scancode=0))
-        state = app.core.task.state
+        state = app.core.task.game_state
         # The opponent's break has been played inside reset (and logged); otherwise you break.
         breakers.append(1 if app.opponent_shots else 0)
         assert (state.break_shot and state.shooter == 0) == (breakers[-1] == 0)
