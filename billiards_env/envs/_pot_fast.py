@@ -8,7 +8,7 @@ the Python around the shot goes (parsing the outcome, building intermediate obje
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 
@@ -29,8 +29,23 @@ if TYPE_CHECKING:  # pragma: no cover
 _ACTIVE = np.ones(1, np.bool_)
 
 
+class FastStep(NamedTuple):
+    """What a compiled step returns: the env's step tuple, then the shot as the env keeps it (``last_shot``:
+    start x, y, angle, speed; ``last_tip``: side, top)."""
+
+    obs: np.ndarray
+    reward: float
+    terminated: bool
+    truncated: bool
+    info: dict[str, Any]
+    last_shot: tuple[float, float, float, float]
+    last_tip: tuple[float, float]
+
+
 class PotFastStep:
-    """The compiled step of one pot env (see the module docstring); :func:`pot_fast_step` makes it."""
+    """The compiled step of one pot env (see the module docstring); :func:`pot_fast_step` makes it from the env's
+    parts (its table state, action and observation types, simulator), and it returns what the step did rather than
+    writing to the env."""
 
     def __init__(self, env: "BilliardsEnv") -> None:
         self.cfg, self.icfg = pack_config(env.config, env.action_type, env.observation_type)
@@ -53,22 +68,23 @@ class PotFastStep:
         self.noise = np.zeros((1, 4))
         self.masks: dict[int, np.ndarray] = {}  # a pocketed bit mask -> its row mask
         self.rows = np.arange(nb)
+        self.action_type, self.observation_type = env.action_type, env.observation_type
+        self.table_state = env.table_state
+        self.env_id = env.env_id
 
-    def step(self, env: "BilliardsEnv", action: Any) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
-        """``env.step(action)`` for a pot env (the caller has checked that a step is allowed)."""
-        self.act[0] = env.action_type.parse(action)
+    def step(self, action: Any, shots: int, np_random: np.random.Generator) -> FastStep:
+        """The env's ``step(action)`` as shot number ``shots + 1`` with the env's generator (the caller has checked
+        that a step is allowed, and keeps the count and the last shot from what this returns)."""
+        self.act[0] = self.action_type.parse(action)
         if self.noisy:  # drawn as the shot path draws it
-            self.noise[0] = draw_noise(env.np_random, self.settings)
-        self.shots[0] = env.shots
+            self.noise[0] = draw_noise(np_random, self.settings)
+        self.shots[0] = shots
         fout, iout, out = self.fout, self.iout, self.out
         if not self.kernel(self.act, _ACTIVE, *self.table, self.shots, *self.consts, self.noise, out, fout, iout,
                            self.obs):
-            raise ConfigError(f"{env.env_id}: could not re-spot the cue ball: the head of the table is full")
+            raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
         f = fout[0].tolist()
         i = iout[0].tolist()
-        env.shots += 1
-        env.last_shot = (f[F_START_X], f[F_START_Y], f[F_ANGLE], f[F_SPEED])
-        env.last_tip = (f[F_SIDE], f[F_TOP])
         terminated = i[O_TERMINATED] != 0
         truncated = i[O_TRUNCATED] != 0
         mask = i[O_POCKETED]
@@ -77,10 +93,11 @@ class PotFastStep:
             pocketed = self.masks[mask] = (mask >> self.rows) & 1 != 0
         info = {"is_success": np.array(i[O_SUCCESS] != 0, np.bool_)}
         info.update(shot_info(pocketed.copy(), i[O_SCRATCH] != 0, int(out[5][0]), int(out[2][0]), float(out[1][0]),
-                              int(out[0][0]), env.shots, CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP])))
-        env.table_state.changed()
-        obs = self.obs[0].copy() if self.positions else env.observation_type.observe(env.table_state)
-        return obs, f[F_REWARD], terminated, truncated, info
+                              int(out[0][0]), shots + 1, CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP])))
+        self.table_state.changed()
+        obs = self.obs[0].copy() if self.positions else self.observation_type.observe(self.table_state)
+        return FastStep(obs, f[F_REWARD], terminated, truncated, info,
+                        (f[F_START_X], f[F_START_Y], f[F_ANGLE], f[F_SPEED]), (f[F_SIDE], f[F_TOP]))
 
 
 def compiled_action(config: EnvConfig) -> bool:
@@ -97,4 +114,4 @@ def pot_fast_step(env: "BilliardsEnv") -> PotFastStep | None:
     return PotFastStep(env)
 
 
-__all__ = ["PotFastStep", "pot_fast_step", "compiled_action"]
+__all__ = ["FastStep", "PotFastStep", "pot_fast_step", "compiled_action"]

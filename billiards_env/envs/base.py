@@ -260,7 +260,10 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
                     "reset() to start a new one (vector envs and SB3 do this for you)")
             raise gym.error.ResetNeeded("call reset() before step(): the table has no balls yet")
         if self._pot_fast is not None and self._fast and not self._record:
-            obs, reward, terminated, truncated, info = self._pot_fast.step(self, action)
+            fast = self._pot_fast.step(action, self.shots, self.np_random)
+            obs, reward, terminated, truncated, info = fast[:5]
+            self.shots += 1
+            self.last_shot, self.last_tip = fast.last_shot, fast.last_tip
             self._animations = []
             self._needs_reset = terminated or truncated
             return obs, reward, terminated, truncated, info
