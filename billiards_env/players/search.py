@@ -182,14 +182,18 @@ class Judge:
     def ids(self, keys: np.ndarray, masks: np.ndarray) -> np.ndarray:
         """The verdict index of each outcome key (judging the new ones; ``masks``: the shots' cushion bit masks,
         :func:`shot_keys`)."""
-        out = np.empty(len(keys), np.int64)
-        for k, row in enumerate(keys):
-            kb = row.tobytes()
-            v = self.verdicts.get(kb)
+        keys = np.ascontiguousarray(keys, dtype=np.int64)
+        w = keys.shape[1] * keys.itemsize if keys.ndim == 2 else 0
+        buf = keys.tobytes()  # the rows' bytes in one call: row k is buf[k * w:(k + 1) * w] (its tobytes())
+        verdicts = self.verdicts
+        out = [0] * len(keys)
+        for k in range(len(keys)):
+            kb = buf[k * w:(k + 1) * w]
+            v = verdicts.get(kb)
             if v is None:
-                v = self.verdicts[kb] = self._judge(row, int(masks[k]))
+                v = verdicts[kb] = self._judge(keys[k], int(masks[k]))
             out[k] = v
-        return out
+        return np.array(out, dtype=np.int64)
 
     def _judge(self, key: np.ndarray, mask: int) -> int:
         game = self.ctx.game
