@@ -567,35 +567,38 @@ def _base_windows(j: int, pos: np.ndarray, radius: np.ndarray, tm: Model, base_w
 
 
 @njit(cache=True)
-def tolerance_bound(ox: float, oy: float, contact: float, d_co: float, a_co: float, turn: float, px: float,
-                    py: float, pr: float, samples: int, cos_max: float) -> float:
+def tolerance_bound(ox: float, oy: float, contact: float, d_co: float, a_co: float, px: float, py: float,
+                    pr: float, samples: int, cos_max: float) -> float:
     """An upper bound, worked out without the window, of the tolerance :func:`layout_tolerance` finds for the ball
     at ``(ox, oy)`` into the capture circle ``(px, py, pr)`` (``contact``: the two radii summed); -1 when that
-    shot cannot count (its cut is beyond ``cos_max`` whatever the window). The cue ball is ``d_co`` from the ball
-    in the direction ``a_co`` (``atan2``) and ``turn = asin(contact / d_co)`` (0 when ``d_co <= contact``).
+    shot cannot count (its cut is beyond ``cos_max`` whatever the window). The cue ball is ``d_co`` from the ball,
+    seen from it in the direction ``a_co`` (``atan2`` of ball minus cue).
 
-    Why it holds (:func:`~billiards_env.physics.aim.window_of`): the window's centre lies within ``half =
-    asin(pr / dist)`` of the direction to the circle's centre and its half-width is at most ``half * samples /
-    (samples - 1)``; the cue ball's path to the ghost ball turns from the line to the ball by at most
-    ``asin(contact / D)`` (``D``: cue to ball), so the cut is at least the angle between that line and the
-    pocket's direction less both; and the path is at least ``D - contact`` long. Margins (1e-7 rad on the cut,
-    1e-9 relative on the bound) cover the round-off: a shot skipped because its bound does not beat the best so
-    far could not have beaten it, so the tolerance found is the same number."""
+    Why it holds (:func:`~billiards_env.physics.aim.window_of`): the window's centre ``u`` lies within ``half =
+    asin(pr / dist)`` of the direction to the circle's centre, and its half-width is at most ``half * samples /
+    (samples - 1)``. With ``phi`` the angle between ``u`` and the cue-to-ball line, the ghost ball is
+    ``d = sqrt(D^2 + c^2 - 2 D c cos(phi))`` from the cue ball (``D = d_co``, ``c = contact``) and the cut's cosine
+    is ``(D cos(phi) - c) / d``; both that cosine and ``1 / (d + c)`` fall as ``phi`` grows (for ``D > c``), so
+    the tolerance ``w c cos(cut) / (d + c)`` is at most its value at the least ``phi`` the window allows. Margins
+    (1e-7 rad on ``phi``, 1e-9 relative on the bound) cover the round-off: a shot skipped because its bound does
+    not beat the best so far could not have beaten it, so the tolerance found is the same number."""
     dist = math.hypot(px - ox, py - oy)
     if dist <= pr * (1.0 + 1e-9) + 1e-12:
         return math.inf  # from inside the circle (or next to it): the window is pi / 2 wide, no bound
     half = math.asin(min(1.0, pr / dist))
     w_max = half * samples / (samples - 1)
     if d_co <= contact * (1.0 + 1e-9):
-        return w_max * (1.0 + 1e-9)
+        return w_max * (1.0 + 1e-9)  # cos(cut) <= 1 and d + c >= c
     diff = abs(math.atan2(py - oy, px - ox) - a_co)
     if diff > math.pi:
         diff = 2.0 * math.pi - diff
-    cut_lo = diff - half - turn - 1e-7
-    cos_hi = math.cos(cut_lo) if cut_lo > 0.0 else 1.0
+    phi = diff - half - 1e-7
+    x = math.cos(phi) if phi > 0.0 else 1.0
+    d = math.sqrt(max(d_co * d_co + contact * contact - 2.0 * d_co * contact * x, 0.0))
+    cos_hi = (d_co * x - contact) / d if d > 0.0 else 1.0
     if cos_hi < cos_max:
         return -1.0
-    return w_max * contact * cos_hi / d_co * (1.0 + 1e-9)
+    return w_max * contact * min(cos_hi, 1.0) / (d + contact) * (1.0 + 1e-9)
 
 
 @njit(cache=True)
@@ -628,10 +631,9 @@ def layout_tolerance(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radi
         oy = pos[j, 1]
         d_co = math.hypot(ox - cx, oy - cy)
         a_co = math.atan2(oy - cy, ox - cx)
-        turn = math.asin(contact / d_co) if d_co > contact else 0.0
         for p in range(k_p):
-            b = tolerance_bound(ox, oy, contact, d_co, a_co, turn, tm.pocket_xy[p, 0], tm.pocket_xy[p, 1],
-                                tm.pocket_r[p], WINDOW_SAMPLES, cos_max)
+            b = tolerance_bound(ox, oy, contact, d_co, a_co, tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
+                                WINDOW_SAMPLES, cos_max)
             if b <= 0.0:
                 continue
             i = n  # insertion, highest bound first

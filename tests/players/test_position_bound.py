@@ -101,10 +101,9 @@ def test_the_bound_is_never_below_a_shots_tolerance(name):
             cy, oy = rng.uniform(R, table.width - R, 2)
             d_co = math.hypot(ox - cx, oy - cy)
             a_co = math.atan2(oy - cy, ox - cx)
-            turn = math.asin(2 * R / d_co) if d_co > 2 * R else 0.0
             for p in range(len(table.pocket_radius)):
                 tol = _shot_tolerance(cx, cy, ox, oy, R, R, p, m, cos_max)[0]
-                bound = tolerance_bound(ox, oy, 2 * R, d_co, a_co, turn, float(tm.pocket_xy[p, 0]),
+                bound = tolerance_bound(ox, oy, 2 * R, d_co, a_co, float(tm.pocket_xy[p, 0]),
                                         float(tm.pocket_xy[p, 1]), float(tm.pocket_r[p]), WINDOW_SAMPLES, cos_max)
                 if bound < 0.0:
                     ruled_out += 1
