@@ -26,7 +26,7 @@ from numba import njit
 
 from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between, dot2, ghost_point,
                                        lone_path_pocket, pocket_windows, segment_blocked_by,
-                                       segment_touched_by)
+                                       segment_touched_by, window_of)
 from billiards_env.physics.layout import free_discs, nearest_free, py_hypot  # noqa: F401 (re-exported)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
 
@@ -556,68 +556,137 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
 # --- the ease of the next shot (the search player's position term) ------------------------------------------------
 
 @njit(cache=True)
-def _ball_windows(j: int, pos: np.ndarray, radius: np.ndarray, tm: Model, base_pos: np.ndarray,
-                  base_win: np.ndarray, base_have: np.ndarray, fresh: np.ndarray) -> np.ndarray:
-    """Ball ``j``'s pocket windows ``(K, 4)``: those of the base table (``base_win[j]``, worked out on first use)
-    when it has not moved from ``base_pos[j]``, else worked out into ``fresh``."""
-    if pos[j, 0] == base_pos[j, 0] and pos[j, 1] == base_pos[j, 1]:
-        if not base_have[j]:
-            pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
-                           WINDOW_SAMPLES, base_win[j], tm.segs, tm.tips)
-            base_have[j] = True
-        return base_win[j]
-    pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width, WINDOW_SAMPLES,
-                   fresh, tm.segs, tm.tips)
-    return fresh
+def _base_windows(j: int, pos: np.ndarray, radius: np.ndarray, tm: Model, base_win: np.ndarray,
+                  base_have: np.ndarray) -> np.ndarray:
+    """Ball ``j``'s pocket windows ``(K, 4)`` on the base table (``base_win[j]``, worked out on first use)."""
+    if not base_have[j]:
+        pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
+                       WINDOW_SAMPLES, base_win[j], tm.segs, tm.tips)
+        base_have[j] = True
+    return base_win[j]
+
+
+@njit(cache=True)
+def tolerance_bound(ox: float, oy: float, contact: float, d_co: float, a_co: float, px: float, py: float,
+                    pr: float, samples: int, cos_max: float) -> float:
+    """An upper bound, worked out without the window, of the tolerance :func:`layout_tolerance` finds for the ball
+    at ``(ox, oy)`` into the capture circle ``(px, py, pr)`` (``contact``: the two radii summed); -1 when that
+    shot cannot count (its cut is beyond ``cos_max`` whatever the window). The cue ball is ``d_co`` from the ball,
+    seen from it in the direction ``a_co`` (``atan2`` of ball minus cue).
+
+    Why it holds (:func:`~billiards_env.physics.aim.window_of`): the window's centre ``u`` lies within ``half =
+    asin(pr / dist)`` of the direction to the circle's centre, and its half-width is at most ``half * samples /
+    (samples - 1)``. With ``phi`` the angle between ``u`` and the cue-to-ball line, the ghost ball is
+    ``d = sqrt(D^2 + c^2 - 2 D c cos(phi))`` from the cue ball (``D = d_co``, ``c = contact``) and the cut's cosine
+    is ``(D cos(phi) - c) / d``; both that cosine and ``1 / (d + c)`` fall as ``phi`` grows (for ``D > c``), so
+    the tolerance ``w c cos(cut) / (d + c)`` is at most its value at the least ``phi`` the window allows. Margins
+    (1e-7 rad on ``phi``, 1e-9 relative on the bound) cover the round-off: a shot skipped because its bound does
+    not beat the best so far could not have beaten it, so the tolerance found is the same number."""
+    dist = math.hypot(px - ox, py - oy)
+    if dist <= pr * (1.0 + 1e-9) + 1e-12:
+        return math.inf  # from inside the circle (or next to it): the window is pi / 2 wide, no bound
+    half = math.asin(min(1.0, pr / dist))
+    w_max = half * samples / (samples - 1)
+    if d_co <= contact * (1.0 + 1e-9):
+        return w_max * (1.0 + 1e-9)  # cos(cut) <= 1 and d + c >= c
+    diff = abs(math.atan2(py - oy, px - ox) - a_co)
+    if diff > math.pi:
+        diff = 2.0 * math.pi - diff
+    phi = diff - half - 1e-7
+    x = math.cos(phi) if phi > 0.0 else 1.0
+    d = math.sqrt(max(d_co * d_co + contact * contact - 2.0 * d_co * contact * x, 0.0))
+    cos_hi = (d_co * x - contact) / d if d > 0.0 else 1.0
+    if cos_hi < cos_max:
+        return -1.0
+    return w_max * contact * min(cos_hi, 1.0) / (d + contact) * (1.0 + 1e-9)
 
 
 @njit(cache=True)
 def layout_tolerance(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int,
                      targets: np.ndarray, tm: Model, cos_max: float, base_pos: np.ndarray, base_win: np.ndarray,
-                     base_have: np.ndarray, fresh: np.ndarray) -> float:
+                     base_have: np.ndarray, fresh: np.ndarray, bounds: np.ndarray, pairs: np.ndarray) -> float:
     """The easiest ghost-ball shot's cue-angle tolerance from the cue ball at ``(cx, cy)`` on the layout ``pos``,
     ``on`` at a ball of ``targets``: the pocket window seen from the ball scaled by ``(rc + ro) cos(cut) /
     (d_cue + rc + ro)``, divided by 10 when the cue ball's or the ball's path is blocked; cuts with a cosine below
     ``cos_max`` and ghost balls off the table do not count (0 if nothing counts). No speeds: the position term of
     the search player; a ball touching a path blocks it (:func:`~billiards_env.physics.aim.segment_touched_by`).
-    Windows of balls still where they were on the base table come from ``base_win``."""
+
+    Windows of balls still where they were on the base table come from ``base_win``; a ball that moved has its
+    window into a pocket worked out (into ``fresh`` (T, K, 4)) only when that shot's :func:`tolerance_bound` beats
+    the best tolerance so far. The (ball, pocket) shots are tried in the order of their bounds, highest first, and
+    the search stops at the first bound that does not beat the best: the best is a maximum, the same in any order,
+    and a shot skipped could not have raised it. ``bounds``, ``pairs``: work arrays of T * K entries."""
     rc = radius[cue]
     best = 0.0
     if not on[cue]:
         return best
+    k_p = tm.pocket_r.shape[0]
+    n = 0
     for t in range(targets.shape[0]):
         j = targets[t]
         if not on[j] or j == cue:
             continue
+        contact = rc + radius[j]
+        ox = pos[j, 0]
+        oy = pos[j, 1]
+        d_co = math.hypot(ox - cx, oy - cy)
+        a_co = math.atan2(oy - cy, ox - cx)
+        for p in range(k_p):
+            b = tolerance_bound(ox, oy, contact, d_co, a_co, tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
+                                WINDOW_SAMPLES, cos_max)
+            if b <= 0.0:
+                continue
+            i = n  # insertion, highest bound first
+            while i > 0 and bounds[i - 1] < b:
+                bounds[i] = bounds[i - 1]
+                pairs[i] = pairs[i - 1]
+                i -= 1
+            bounds[i] = b
+            pairs[i] = t * k_p + p
+            n += 1
+    for i in range(n):
+        if bounds[i] <= best:
+            break
+        t = pairs[i] // k_p
+        p = pairs[i] - t * k_p
+        j = targets[t]
         rj = radius[j]
         contact = rc + rj
         ox = pos[j, 0]
         oy = pos[j, 1]
-        wins = _ball_windows(j, pos, radius, tm, base_pos, base_win, base_have, fresh)
-        for p in range(wins.shape[0]):
-            if wins[p, WIN_FOUND] == 0.0:
-                continue
-            wa = wins[p, WIN_ANGLE]
-            gx, gy = ghost_point(ox, oy, wa, contact)
-            if not (rc <= gx <= tm.length - rc and rc <= gy <= tm.width - rc):
-                continue
-            ux = math.cos(wa)
-            uy = math.sin(wa)
-            vx = gx - cx
-            vy = gy - cy
-            d = math.hypot(vx, vy)
-            cos_cut = dot2(vx, vy, ux, uy) / max(d, 1e-12)
-            if cos_cut < cos_max:
-                continue
-            tol = wins[p, WIN_HALF] * contact * cos_cut / (d + contact)
-            if tol <= best:  # a blocked path only lowers it
-                continue
-            wd = wins[p, WIN_DIST]
-            if segment_touched_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc) or \
-                    segment_touched_by(ox, oy, ox + ux * wd, oy + uy * wd, pos, on, radius, cue, j, rj):
-                tol /= 10.0
-            if tol > best:
-                best = tol
+        if ox == base_pos[j, 0] and oy == base_pos[j, 1]:
+            w = _base_windows(j, pos, radius, tm, base_win, base_have)[p]
+        else:
+            w = fresh[t, p]
+            c, h, d_in, ok = window_of(ox, oy, rj, tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
+                                       tm.length, tm.width, WINDOW_SAMPLES, tm.segs, tm.tips)
+            w[WIN_ANGLE] = c
+            w[WIN_HALF] = h
+            w[WIN_DIST] = d_in
+            w[WIN_FOUND] = 1.0 if ok else 0.0
+        if w[WIN_FOUND] == 0.0:
+            continue
+        wa = w[WIN_ANGLE]
+        gx, gy = ghost_point(ox, oy, wa, contact)
+        if not (rc <= gx <= tm.length - rc and rc <= gy <= tm.width - rc):
+            continue
+        ux = math.cos(wa)
+        uy = math.sin(wa)
+        vx = gx - cx
+        vy = gy - cy
+        d = math.hypot(vx, vy)
+        cos_cut = dot2(vx, vy, ux, uy) / max(d, 1e-12)
+        if cos_cut < cos_max:
+            continue
+        tol = w[WIN_HALF] * contact * cos_cut / (d + contact)
+        if tol <= best:  # a blocked path only lowers it
+            continue
+        wd = w[WIN_DIST]
+        if segment_touched_by(cx, cy, gx, gy, pos, on, radius, cue, j, rc) or \
+                segment_touched_by(ox, oy, ox + ux * wd, oy + uy * wd, pos, on, radius, cue, j, rj):
+            tol /= 10.0
+        if tol > best:
+            best = tol
     return best
 
 
@@ -626,6 +695,14 @@ def pot_chance(tolerance: float, sigma: float) -> float:
     """The chance a shot with cue-angle ``tolerance`` pots when the cue angle errs by a normal spread ``sigma``:
     ``erf(tolerance / (sqrt(2) sigma))`` (:func:`billiards_env.players.shots.pot_probability`)."""
     return math.erf(max(tolerance, 0.0) / (math.sqrt(2.0) * max(sigma, 1e-12)))
+
+
+@njit(cache=True)
+def _tolerance_work(n_targets: int, n_pockets: int) -> tuple:
+    """:func:`layout_tolerance`'s work arrays for up to ``n_targets`` targets: ``fresh`` (T, K, 4), ``bounds`` and
+    ``pairs`` (T * K,)."""
+    t = max(n_targets, 1)
+    return (np.zeros((t, n_pockets, 4)), np.zeros(t * n_pockets), np.zeros(t * n_pockets, np.int64))
 
 
 @njit(cache=True)
@@ -641,14 +718,15 @@ def layouts_ease(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, cue: int, 
     nb = radius.shape[0]
     base_win = np.zeros((nb, pocket_r.shape[0], 4))
     base_have = np.zeros(nb, np.bool_)
-    fresh = np.zeros((pocket_r.shape[0], 4))
+    fresh, bounds, pairs = _tolerance_work(t_flat.shape[0], pocket_r.shape[0])
     cos_max = math.cos(max_cut)
     out = np.zeros(rows.shape[0])
     for i in range(rows.shape[0]):
         k = rows[i]
         g = group[k]
         tol = layout_tolerance(pos[k, cue, 0], pos[k, cue, 1], pos[k], on[k], radius, cue,
-                               t_flat[t_off[g]:t_off[g + 1]], tm, cos_max, base_pos, base_win, base_have, fresh)
+                               t_flat[t_off[g]:t_off[g + 1]], tm, cos_max, base_pos, base_win, base_have, fresh,
+                               bounds, pairs)
         out[i] = pot_chance(tol, sigma)
     return out
 
@@ -662,14 +740,14 @@ def places_ease(places: np.ndarray, pos: np.ndarray, on: np.ndarray, radius: np.
     nb = radius.shape[0]
     base_win = np.zeros((nb, pocket_r.shape[0], 4))
     base_have = np.zeros(nb, np.bool_)
-    fresh = np.zeros((pocket_r.shape[0], 4))
+    fresh, bounds, pairs = _tolerance_work(targets.shape[0], pocket_r.shape[0])
     on2 = on.copy()
     on2[cue] = True
     cos_max = math.cos(max_cut)
     out = np.zeros(places.shape[0])
     for i in range(places.shape[0]):
         tol = layout_tolerance(places[i, 0], places[i, 1], pos, on2, radius, cue, targets, tm, cos_max, pos,
-                               base_win, base_have, fresh)
+                               base_win, base_have, fresh, bounds, pairs)
         out[i] = pot_chance(tol, sigma)
     return out
 
@@ -763,7 +841,8 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
 __all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "windows_cached",
            "geometric_decision_cached", "target_windows", "shot_row",
            "rank_rows", "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
-           "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "pot_chance",
+           "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "tolerance_bound",
+           "pot_chance",
            "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",
            "Decision", "N_COLS", "MAX_CUT", "FALLBACK_CUT", "ARRIVE_SPEED", "SPEED_FACTORS", "DIRECT_HIT_SPEED",
            "PLACE_BACKS", "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE", "COL_CUT",

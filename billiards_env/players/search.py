@@ -30,7 +30,7 @@ from billiards_env.physics.batch import BatchResult, run_shots
 from billiards_env.rules import ShotSummary, summarize_arrays
 
 from .context import ShotContext, player_inputs, shot_context, to_action
-from .geometric import break_shot
+from .geometric import break_shot, context_model
 from .geometry import (COL_ANGLE, COL_POCKET, COL_SPEED, COL_TARGET, ARRIVE_SPEED, SPEED_FACTORS, ghost_shots,
                        layouts_ease, places_ease, search_places, table_model)
 from .shots import MAX_CUT, direct_hit
@@ -178,18 +178,33 @@ class Judge:
         self.next: list[int] = []
         self.targets: list[np.ndarray] = []
         self._after: dict[Any, np.ndarray] = {}  # call -> legal rows after it
+        self._groups: tuple[int, np.ndarray, np.ndarray] | None = None  # (verdicts, t_flat, t_off) of groups()
+
+    def groups(self) -> tuple[np.ndarray, np.ndarray]:
+        """The legal rows after every verdict so far as ``(t_flat, t_off)``: verdict ``v``'s are
+        ``t_flat[t_off[v]:t_off[v + 1]]`` (kept until a new verdict is judged)."""
+        if self._groups is None or self._groups[0] != len(self.targets):
+            lens = np.array([len(t) for t in self.targets], dtype=np.int64)
+            t_off = np.concatenate([[0], np.cumsum(lens)]).astype(np.int64)
+            t_flat = np.concatenate(self.targets).astype(np.int64) if self.targets else np.zeros(0, np.int64)
+            self._groups = (len(self.targets), t_flat, t_off)
+        return self._groups[1], self._groups[2]
 
     def ids(self, keys: np.ndarray, masks: np.ndarray) -> np.ndarray:
         """The verdict index of each outcome key (judging the new ones; ``masks``: the shots' cushion bit masks,
         :func:`shot_keys`)."""
-        out = np.empty(len(keys), np.int64)
-        for k, row in enumerate(keys):
-            kb = row.tobytes()
-            v = self.verdicts.get(kb)
+        keys = np.ascontiguousarray(keys, dtype=np.int64)
+        w = keys.shape[1] * keys.itemsize if keys.ndim == 2 else 0
+        buf = keys.tobytes()  # the rows' bytes in one call: row k is buf[k * w:(k + 1) * w] (its tobytes())
+        verdicts = self.verdicts
+        out = [0] * len(keys)
+        for k in range(len(keys)):
+            kb = buf[k * w:(k + 1) * w]
+            v = verdicts.get(kb)
             if v is None:
-                v = self.verdicts[kb] = self._judge(row, int(masks[k]))
+                v = verdicts[kb] = self._judge(keys[k], int(masks[k]))
             out[k] = v
-        return out
+        return np.array(out, dtype=np.int64)
 
     def _judge(self, key: np.ndarray, mask: int) -> int:
         game = self.ctx.game
@@ -281,9 +296,7 @@ def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = No
     ids = judge.ids(keys, masks)
     values = np.asarray(judge.values)[ids]
     nxt = np.asarray(judge.next, dtype=np.int64)[ids]
-    lens = np.array([len(t) for t in judge.targets], dtype=np.int64)
-    t_off = np.concatenate([[0], np.cumsum(lens)]).astype(np.int64)
-    t_flat = np.concatenate(judge.targets).astype(np.int64) if judge.targets else np.zeros(0, np.int64)
+    t_flat, t_off = judge.groups()
     return Judged(pots, scratch, hit, values, res, nxt, ids, t_flat, t_off)
 
 
@@ -368,7 +381,7 @@ def _candidates(ctx: ShotContext, st: SearchSettings, tm: Any = None) -> Candida
     rows = ghost_shots(np.ascontiguousarray(b.pos, dtype=np.float64), np.ascontiguousarray(b.on_table, dtype=np.bool_),
                        np.ascontiguousarray(b.radius, dtype=np.float64), np.ascontiguousarray(b.mass, dtype=np.float64),
                        int(ctx.cue), np.asarray(ctx.targets, dtype=np.int64),
-                       *(tm or table_model(ctx.table, ctx.physics)), float(lo), float(hi), math.radians(85.0),
+                       *(tm or context_model(ctx)), float(lo), float(hi), math.radians(85.0),
                        ARRIVE_SPEED, np.asarray(SPEED_FACTORS), True)[: st.n_geometric]
     offsets = np.asarray(st.angle_offsets, dtype=np.float64)
     variants = [(f, sd, tp) for f in st.speed_factors for sd, tp in spins
@@ -425,7 +438,7 @@ def search_shot(ctx: ShotContext, settings: SearchSettings | None = None,
     rng = rng or np.random.default_rng(0)
     lo, hi = ctx.speed_range
     spin = ctx.physics.has_spin
-    tm = table_model(ctx.table, ctx.physics)
+    tm = context_model(ctx)  # the table state's, made once per state
     c = _candidates(ctx, st, tm)
     if playable is not None:
         c.angle, c.speed, c.side, c.top = _play(playable, c)
@@ -503,7 +516,7 @@ def placement_candidates(ctx: ShotContext, n: int, backs: tuple[float, ...] = (0
 
     b = ctx.balls
     r = float(b.radius[ctx.cue])
-    tm = table_model(ctx.table, ctx.physics)
+    tm = context_model(ctx)  # the table state's, made once per state
     pos = np.ascontiguousarray(b.pos, dtype=np.float64)
     on = np.ascontiguousarray(b.on_table, dtype=np.bool_)
     radius = np.ascontiguousarray(b.radius, dtype=np.float64)
