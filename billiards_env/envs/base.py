@@ -142,7 +142,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._exact_type: ActionType | None = None  # see acting_type()
         if isinstance(self.task, GameTask):  # the opponent plays its shots on the table state the task gives it
             self.task.take_opponent(Opponent(self.observation_type, self.action_type, self.acting_type(),
-                                             self.task.spec.name, policy=c.opponent, handle=self))
+                                             self.task.spec.name, policy=c.opponent))
 
         #: Whether steps may take the compiled fast path (tests switch it off to compare with the Python path).
         self._fast = True
