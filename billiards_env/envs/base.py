@@ -191,6 +191,16 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         return self.state.simulator
 
     @property
+    def fast_step(self) -> bool:
+        """Whether steps may take the compiled fast path (the pot scenes' one-call step, when nothing is drawn);
+        False plays every step through the Python path (tests and benchmarks compare the two)."""
+        return self._fast
+
+    @fast_step.setter
+    def fast_step(self, on: bool) -> None:
+        self._fast = bool(on)
+
+    @property
     def n_balls(self) -> int:
         return self.state.n_balls
 
