@@ -43,9 +43,9 @@ class Opponent:
     and its shot is played as it is), a policy on the table state (``act(state, obs, codec)``), an SB3-style model
     (``predict``) or a callable ``obs -> action`` (these three act in the env's ``action_type``, as an agent does;
     their action is read back through it), a player's name (made for ``game``) or None (nobody: the agent plays
-    alone). The old form
-    ``act(env, obs)`` is refused (:func:`policy_form`): no policy is handed the env. The observation is made only
-    for a policy that reads it (``reads_observation``, True unless the policy says otherwise)."""
+    alone). The old form ``act(env, obs)`` is refused (:func:`policy_form`): no policy is handed the env. The
+    observation is made only for a policy that reads it (``reads_observation``, True unless the policy says
+    otherwise)."""
 
     def __init__(self, observation_type: Any, action_type: Any, acting_type: Any, game: str,
                  policy: Any = None) -> None:
