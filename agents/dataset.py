@@ -48,8 +48,9 @@ def _expert(name: str, seed: int) -> Any:
         def reset(self, seed: int | None = None) -> None:
             spec.reset(seed or 0)
 
-        def act(self, env: Any, obs: Any) -> np.ndarray:
-            return spec.act(env, obs)
+        def act(self, source: Any, obs: Any, codec: Any = None) -> np.ndarray:
+            """The model's action on ``obs`` (in its own env's action type; it reads no table state)."""
+            return spec.act(None, obs)
 
     return _Trained()
 

@@ -126,9 +126,10 @@ class Timed:
         if hasattr(self.policy, "reset"):
             self.policy.reset(seed)
 
-    def act(self, env: Any, obs: Any) -> Any:
+    def act(self, state: Any, obs: Any, codec: Any) -> Any:
+        """The policy's action on the table state ``state`` in the action type ``codec``, timed."""
         t = time.perf_counter()
-        a = self._act(env, obs)
+        a = self._act(state, obs, codec)
         self.seconds += time.perf_counter() - t
         self.decisions += 1
         return a
@@ -176,7 +177,8 @@ def run_outs(game: str, player: tuple[str, Any], racks: int | Sequence[int], see
             before = int(raw.game_env.balls.on_table[1:].sum())
             while raw.agent_selection == "player_0" and not (raw.terminations["player_0"]
                                                              or raw.truncations["player_0"]):
-                env.step(timed.act(raw.game_env, env.observe("player_0")))
+                g = raw.game_env
+                env.step(timed.act(g.state, env.observe("player_0"), g.action_type))
             balls += before - int(raw.game_env.balls.on_table[1:].sum())
             wins += raw.task.session.winner == 0
     finally:
@@ -240,7 +242,8 @@ def warm_up(game: str, policies: Sequence[Any], env_kwargs: dict[str, Any]) -> N
             env.reset(seed=0)
             for _ in range(WARM_DECISIONS):
                 obs = env.observe(env.unwrapped.agent_selection)
-                env.step(Timed(p).act(env.unwrapped.game_env, obs))
+                g = env.unwrapped.game_env
+                env.step(Timed(p).act(g.state, obs, g.action_type))
                 if any(env.terminations.values()) or any(env.truncations.values()):
                     break
             _WARM.add((game, id(p)))
@@ -278,7 +281,7 @@ def play_games(game: str, policies: Sequence[Any], ks: Sequence[int], seed: int,
                     env.step(None)
                     continue
                 who = seats[raw.agent_index[agent]]
-                env.step(timed[who].act(raw.game_env, obs))
+                env.step(timed[who].act(raw.game_env.state, obs, raw.game_env.action_type))
                 shots[who] += 1
                 if who != last:
                     innings[who] += 1

@@ -278,15 +278,18 @@ class Scorer:
                 return shot._replace(place=places[p])
         return action_type.shot(state, self.predict(obs_type.observe(state)))
 
-    def act(self, env: Any, obs: np.ndarray) -> np.ndarray:
-        """The action on an env in its own types (:data:`RULE_KWARGS`'): :meth:`predict`, or with the cue ball in
-        hand the :meth:`shot` from its place in the env's action (a ``candidates`` action places the cue ball
-        behind the chosen ghost ball: as near that place as it can say)."""
-        u = env.unwrapped
-        view = u.table_state.view
+    def act(self, source: Any, obs: np.ndarray, codec: Any = None) -> np.ndarray:
+        """The action on a table state (or an env's) in the action type ``codec`` (default an env's own; both in
+        :data:`RULE_KWARGS`' types, as ``obs``): :meth:`predict`, or with the cue ball in hand the :meth:`shot` from
+        its place, observed in :func:`rule_observation_type`, in ``codec`` (a ``candidates`` action places the cue
+        ball behind the chosen ghost ball: as near that place as it can say)."""
+        from billiards_env.players.context import player_inputs
+
+        state, codec = player_inputs(source, codec)
+        view = state.view
         if self.hand and view.place_area is not None and not view.break_shot:
-            s = self.shot(u.table_state, u.observation_type, u.action_type)
-            return u.action_from_shot(s.angle, s.speed, s.side, s.top, s.place, **dict(s.calls))
+            s = self.shot(state, rule_observation_type(state), codec)
+            return codec.action(state, s.angle, s.speed, s.side, s.top, s.place, **dict(s.calls))
         return self.predict(obs)
 
     def load_fallback(self) -> Any:
@@ -391,8 +394,8 @@ def scorer_player(path: str | Path, hand: bool | None = None) -> Any:
     sc.load_fallback()  # now, not in the first decision that needs it
 
     class ScorerPlayer(TrainedPlayer):
-        def shot(self, state: Any) -> Any:
-            return sc.shot(state, self._obs_type, self._action_type)
+        def policy_shot(self, state: Any) -> Any:
+            return sc.shot(state, self.observation_type, self.action_type)
 
     name = f"scorer({Path(path).name})" if sc.hand else f"scorer({Path(path).name}, fallback in hand)"
     return ScorerPlayer(name, sc.predict, RULE_KWARGS)
@@ -442,9 +445,10 @@ def position_action(obs: np.ndarray, n_slots: int = 4, n_balls: int = 10, c: flo
 
 
 class PositionRulePlayer:
-    """:func:`position_action` as a player of the 9-ball env whose observation it is given (``act(env, obs)``: the
-    env must be in :data:`RULE_KWARGS`' types); a distillation teacher (``python -m agents.distill --teacher
-    position_rule``)."""
+    """:func:`position_action` as a policy of the 9-ball env whose observation it is given (``act(state, obs,
+    codec)``: ``obs`` a ``candidates_position`` observation and ``codec`` the ``candidates`` action type, as in
+    :data:`RULE_KWARGS`; an env in those types may be given for ``state``); a distillation teacher (``python -m
+    agents.distill --teacher position_rule``)."""
 
     name = "position_rule"
 
@@ -455,13 +459,41 @@ class PositionRulePlayer:
     def reset(self, seed: int | None = None) -> None:
         """No state."""
 
-    def act(self, env: Any, obs: Any) -> np.ndarray:
-        u = env.unwrapped
-        if u.config.observation_type != "candidates_position" or u.config.action_type != "candidates":
-            raise ValueError("position_rule: plays the 'candidates' action on the 'candidates_position' observation, "
-                             f"not {u.config.action_type!r} on {u.config.observation_type!r}")
-        return position_action(obs, u.config.candidate_slots, u.n_balls, self.c, self.min_power,
-                               u.action_space.shape[0])
+    def act(self, source: Any, obs: Any, codec: Any = None) -> np.ndarray:
+        """The rule's ``candidates`` action on ``obs`` (``codec``: the action type, default an env's own)."""
+        from billiards_env.players.context import player_inputs
+
+        state, codec = player_inputs(source, codec)
+        n_slots, n_balls = int(getattr(codec, "n_slots", 0)), state.n_balls
+        n_game = 0 if state.game is None else state.game.n_features
+        size = 3 * n_balls + (SLOT_FEATURES + POSITION_FEATURES) * n_slots + n_game
+        o = np.asarray(obs)
+        if codec.name != "candidates" or o.size != size:
+            raise ValueError("position_rule: plays the 'candidates' action on the 'candidates_position' observation "
+                             f"({size} values), not {codec.name!r} on {o.size} values")
+        return position_action(o, n_slots, n_balls, self.c, self.min_power, codec.space.shape[0])
+
+
+_RULE_TYPES: dict[int, tuple[Any, Any]] = {}
+
+
+def rule_observation_type(state: Any) -> Any:
+    """The ``candidates_position`` observation type of :data:`RULE_KWARGS` on the table of ``state`` (a 9-ball
+    table state; made once per state): what the scorer observes from its ball-in-hand places."""
+    key = id(state)
+    kept = _RULE_TYPES.get(key)
+    if kept is not None and kept[0] is state:
+        return kept[1]
+    from billiards_env.envs.observations import OBSERVATION_TYPES
+
+    from .games import game_config
+
+    config = game_config("Billiards9Ball-v0", RULE_KWARGS)
+    n_game = 0 if state.game is None else state.game.n_features
+    obs_type = OBSERVATION_TYPES[config.observation_type](config, state.table, state.n_balls, n_game)
+    _RULE_TYPES.clear()  # one state at a time: no growth over a long run
+    _RULE_TYPES[key] = (state, obs_type)
+    return obs_type
 
 
 def rule_player(c: float = 0.3, min_power: int = 1) -> Any:

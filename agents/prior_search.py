@@ -26,6 +26,8 @@ from typing import Any
 
 import numpy as np
 
+from billiards_env.players import BasePlayer
+
 #: Angle offsets (rad), speed factors and tip offsets of the variants of the policy's own shot.
 PRIOR_ANGLES = (0.0, 0.0008, -0.0008, 0.002, -0.002, 0.005, -0.005)
 PRIOR_SPEEDS = (1.0, 0.8, 1.25, 0.65, 1.5)
@@ -73,9 +75,10 @@ class _PriorPlayable:
         return self.inner.action_for(angle, speed, side, top) if self.inner is not None else None
 
 
-class PriorSearchPlayer:
+class PriorSearchPlayer(BasePlayer):
     """The search player with a trained policy's proposals (see the module docstring). ``policy``: a
-    :class:`agents.games.TrainedPlayer` (it observes in its own types and names the shot it means)."""
+    :class:`agents.games.TrainedPlayer` (it observes in its own types and names the shot it means). A player
+    (:class:`~billiards_env.players.BasePlayer`: ``shot(state, obs, codec)``, ``act(state, obs, codec)``)."""
 
     def __init__(self, policy: Any, seed: int | None = 0, settings: Any = None, reallocate: bool = True,
                  min_pot_chance: float = REALLOCATE_POT_CHANCE) -> None:
@@ -106,7 +109,7 @@ class PriorSearchPlayer:
         instead of the directions the policy did not choose. Else the search's own (without noise the re-runs only
         break ties: 48.5% against the search with them, 50.3% without, over 1000 games)."""
         st = self.search.settings
-        at = self.policy._action_type
+        at = self.policy.action_type
         slots = at.slots(state) if hasattr(at, "slots") else None
         if not (self.reallocate and noisy) or slots is None or slots.count == 0 or n_proposals == 0:
             return st
@@ -133,7 +136,7 @@ class PriorSearchPlayer:
         for sd, tp in tips:
             if (sd, tp) != own:
                 rows.append((shot.angle, shot.speed, sd, tp))
-        at = self.policy._action_type
+        at = self.policy.action_type
         slots = at.slots(state) if hasattr(at, "slots") else None
         if slots is not None and not slots.in_hand:
             for s in slots.slots:  # every other (ball, pocket) at the policy's speed factor and spin
@@ -147,25 +150,24 @@ class PriorSearchPlayer:
 
     def _base_speed(self, state: Any, shot: Any) -> float:
         """The own speed of the candidate the policy chose (its shot's speed without the power factor)."""
-        at = self.policy._action_type
+        at = self.policy.action_type
         slots = at.slots(state)
         best = min((s for s in slots.slots if s.shot is not None), default=None,
                    key=lambda s: abs(math.remainder(s.shot.angle - shot.angle, 2 * math.pi)))
         return best.shot.speed if best is not None else shot.speed
 
-    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
-        from billiards_env.players.context import player_inputs, shot_context, to_action
+    def choose(self, state: Any, obs: Any, codec: Any) -> np.ndarray:
+        """The action (in ``codec``) of the best shot the search finds with the policy's proposals."""
+        from billiards_env.players.context import shot_context, to_action
         from billiards_env.players.geometric import break_shot
         from billiards_env.players.search import Judge, placement_candidates, playable_shots, search_shot
 
-        state, codec = player_inputs(source, codec)
         ctx = shot_context(state, codec)
-        env = getattr(source, "unwrapped", None)
         if ctx.game is not None and ctx.game.game_state.break_shot:
             place, angle, speed = break_shot(ctx)
             return to_action(codec, state, angle, speed, place=place)
-        self.policy._types(env)
-        mine = self.policy.shot(state)
+        self.policy.prepare(state, codec)
+        mine = self.policy.policy_shot(state)
         st = self.search.settings
         places: list[Any] = [None]
         if ctx.place_area is not None:

@@ -154,7 +154,9 @@ def _versions() -> dict[str, str]:
             "machine": f"{platform.machine()} {os.cpu_count()} cpu"}
 
 
-def _git_commit() -> str | None:
+def git_commit() -> str | None:
+    """The repository's commit (read from ``.git``, no subprocess), None outside a checkout (the RLlib runs write it
+    too)."""
     head = REPO_ROOT / ".git" / "HEAD"
     try:
         ref = head.read_text().strip()
@@ -333,7 +335,7 @@ def train(cfg: TrainConfig, run_dir: Path | None = None, resume: Path | None = N
         "n_envs": setup.n_envs, "vec_env": "native" if use_native(cfg, setup, vec_env) else "dummy",
         "n_timesteps": total, "env_kwargs": setup.env_kwargs,
         "env_wrapper": cfg.hyperparams.get("env_wrapper"), "seed": s.seed, "settings": asdict(s),
-        "versions": _versions(), "git_commit": _git_commit(), "resumed_from": resumed_from,
+        "versions": _versions(), "git_commit": git_commit(), "resumed_from": resumed_from,
         "started": time.strftime("%Y-%m-%dT%H:%M:%S"), "command": " ".join(sys.argv),
     }
     (run_dir / "run.json").write_text(json.dumps(meta, indent=2, default=str))

@@ -227,18 +227,18 @@ def run_pooltool(n_shots: int, rounds: int, python: str | None, allow_setup: boo
 
 def run_first_call(cold: int, warm: int) -> dict[str, Any]:
     """Import + first shot in fresh processes (``benchmarks/first_call.py``): numba's cache warm, and cold."""
-    from .speed import _median_rows, _probe
+    from .speed import median_rows, probe_first_call
 
     out: dict[str, Any] = {}
-    _probe({})  # the default cache holds the current kernels
+    probe_first_call({})  # the default cache holds the current kernels
     if warm:
-        out["warm"] = _median_rows([_probe({}) for _ in range(warm)])
+        out["warm"] = median_rows([probe_first_call({}) for _ in range(warm)])
     rows = []
     for _ in range(cold):
         with tempfile.TemporaryDirectory(prefix="numba-cold-") as d:
-            rows.append(_probe({"NUMBA_CACHE_DIR": d}))
+            rows.append(probe_first_call({"NUMBA_CACHE_DIR": d}))
     if rows:
-        out["cold"] = _median_rows(rows)
+        out["cold"] = median_rows(rows)
     return out
 
 

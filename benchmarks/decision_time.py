@@ -48,14 +48,14 @@ def measure(specs: Sequence[str], games: int, seed: int = 0) -> dict[str, dict[s
             u = ge.unwrapped
             acts = []
             for i, p in enumerate(players):
-                p._types(u)
+                p.prepare(u.table_state, u.action_type)
                 u.table_state.changed()
                 t0 = time.perf_counter()
-                p._obs_type.observe(u.table_state)
+                p.observation_type.observe(u.table_state)
                 t1 = time.perf_counter()
                 u.table_state.changed()
                 t2 = time.perf_counter()
-                acts.append(p.act(ge, obs))
+                acts.append(p.act(u.table_state, obs, u.action_type))
                 t3 = time.perf_counter()
                 times[i].append(t3 - t2)
                 obs_t[i].append(t1 - t0)

@@ -36,6 +36,8 @@ from typing import Any, Callable, Iterator
 
 import numpy as np
 
+from billiards_env.players import BasePlayer
+
 from .common import fmt_rate, fmt_time, load_now, log, machine_info, machine_markdown, publish, rerender, time_call
 
 
@@ -410,20 +412,16 @@ def job_env_kwargs(path: str) -> tuple[str, dict[str, Any], int]:
     return env_id, dict(hyper.get("env_kwargs") or {}), int(hyper.get("n_envs", 1))
 
 
-class _ReferenceGeometric:
-    """The geometric player of before issue 21 (``benchmarks/reference_players.py``), acting in the action type it is given."""
+class _ReferenceGeometric(BasePlayer):
+    """The geometric player of before issue 21 (``benchmarks/reference_players.py``), playing in the action type it is
+    given."""
 
     name = "geometric"
 
-    def reset(self, seed: int | None = None) -> None:
-        pass
-
-    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+    def choose(self, state: Any, obs: Any, codec: Any) -> np.ndarray:
         from benchmarks import reference_players as ref
         from billiards_env.players.context import to_action
-        from billiards_env.table_state import state_of
 
-        state = state_of(source)
         env = SimpleNamespace(unwrapped=SimpleNamespace(state=state, legal_cue_position=state.legal_cue_position,
                                                         cue_moved_to=state.cue_moved_to))
         place, angle, speed, cand = ref.reference_geometric_act(env)

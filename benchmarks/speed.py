@@ -160,9 +160,9 @@ def time_env(env_id: str, seconds: float, wrapped: bool = True, fast: bool = Tru
 
     env = gym.make(env_id, **kwargs)
     if not fast:
-        if not hasattr(env.unwrapped, "_fast"):
-            raise RuntimeError(f"{env_id} has no in-place fast path to switch off (no `_fast` attribute)")
-        env.unwrapped._fast = False
+        if not hasattr(env.unwrapped, "fast_step"):
+            raise RuntimeError(f"{env_id} has no in-place fast path to switch off (no `fast_step` property)")
+        env.unwrapped.fast_step = False
     if not wrapped:
         env = env.unwrapped
     env.action_space.seed(seed)
@@ -252,7 +252,9 @@ def format_env_table(rows: list[tuple[str, str, str, dict[str, Any]]]) -> str:
 
 # ------------------------------------------------------------------------------------------------- latency
 
-def _probe(env_vars: dict[str, str], extra: list[str] | None = None) -> dict[str, Any]:
+def probe_first_call(env_vars: dict[str, str], extra: list[str] | None = None) -> dict[str, Any]:
+    """One first-call probe in a fresh process (``FIRST_CALL`` with ``extra`` arguments, the environment updated
+    with ``env_vars``): its timings and the process's wall time (batch.py measures its own first call with it)."""
     env = dict(os.environ)
     env.update(env_vars)
     t0 = time.perf_counter()
@@ -266,7 +268,8 @@ def _probe(env_vars: dict[str, str], extra: list[str] | None = None) -> dict[str
     return out
 
 
-def _median_rows(rows: list[dict[str, Any]]) -> dict[str, Any]:
+def median_rows(rows: list[dict[str, Any]]) -> dict[str, Any]:
+    """The median of each timing over probe rows, with the rows."""
     keys = ("import_s", "first_s", "total_s", "process_wall_s")
     return {**{k: statistics.median(r[k] for r in rows) for k in keys}, "runs": rows}
 
@@ -275,14 +278,14 @@ def run_latency(quick: bool, env_id: str = "BilliardsOneBall-v0") -> dict[str, A
     n = _sizes(quick)
     out: dict[str, Any] = {"time": time.strftime("%Y-%m-%d %H:%M:%S")}
     base_env = {k: v for k, v in os.environ.items() if k == "NUMBA_CACHE_DIR"}
-    _probe(base_env)  # make sure the default cache holds the current kernels
-    out["warm"] = _median_rows([_probe(base_env) for _ in range(n["latency_warm"])])
+    probe_first_call(base_env)  # make sure the default cache holds the current kernels
+    out["warm"] = median_rows([probe_first_call(base_env) for _ in range(n["latency_warm"])])
     log(f"[latency] warm: import + first shot {fmt_time(out['warm']['total_s'])}")
     cold = []
     for _ in range(n["latency_cold"]):
         with tempfile.TemporaryDirectory(prefix="numba-cold-") as d:
-            cold.append(_probe({"NUMBA_CACHE_DIR": d}))
-    out["cold"] = _median_rows(cold)
+            cold.append(probe_first_call({"NUMBA_CACHE_DIR": d}))
+    out["cold"] = median_rows(cold)
     log(f"[latency] cold: import + first shot {fmt_time(out['cold']['total_s'])}")
     try:
         import gymnasium as gym
@@ -293,8 +296,8 @@ def run_latency(quick: bool, env_id: str = "BilliardsOneBall-v0") -> dict[str, A
         registered = False
     if registered:
         try:
-            _probe(base_env, ["--env", env_id])
-            out["env_warm"] = _median_rows([_probe(base_env, ["--env", env_id])
+            probe_first_call(base_env, ["--env", env_id])
+            out["env_warm"] = median_rows([probe_first_call(base_env, ["--env", env_id])
                                             for _ in range(n["latency_warm"])])
             out["env_warm"]["env_id"] = env_id
             log(f"[latency] warm {env_id}: import + make + reset + step {fmt_time(out['env_warm']['total_s'])}")

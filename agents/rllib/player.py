@@ -116,7 +116,8 @@ def env_of(config: dict[str, Any]) -> tuple[str | None, dict[str, Any], bool]:
 
 @dataclass
 class RLlibPolicy:
-    """An RLModule acting deterministically: ``policy(obs) -> action`` for one unbatched observation."""
+    """An RLModule acting deterministically: ``policy(obs) -> action`` for one unbatched observation (a callable
+    ``obs -> action``: game envs accept it as an opponent, acting in their own action type)."""
 
     module: Any
     action_space: Any
@@ -153,10 +154,6 @@ class RLlibPolicy:
         if self.clip_actions:
             return clip_action(a, self.action_space)
         return a
-
-    def act(self, env: Any, obs: Any) -> np.ndarray:
-        """The player interface (``act(env, obs)``): game envs accept it as an opponent too."""
-        return self(obs)
 
     @classmethod
     def from_checkpoint(cls, checkpoint: str | Path, module_id: str | None = None) -> "RLlibPolicy":
@@ -213,8 +210,8 @@ def rllib_player(path: str | Path, env_id: str | None = None, label: str | None 
     if env_id is None:
         raise ValueError(f"{path}: the checkpoint does not name a billiards env; give --env")
     name = label or (run_dir.name if run_dir is not None else ckpt.name)
-    return PlayerSpec(name, "model", env_factory(env_id, env_kwargs), policy.act, run_dir=run_dir,
-                      model_path=ckpt, env_id=env_id, env_kwargs=env_kwargs)
+    return PlayerSpec(name, "model", env_factory(env_id, env_kwargs), lambda env, obs: policy(obs),
+                      run_dir=run_dir, model_path=ckpt, env_id=env_id, env_kwargs=env_kwargs)
 
 
 __all__ = ["RLlibPolicy", "rllib_player", "is_rllib_path", "is_rllib_run", "is_checkpoint", "resolve_checkpoint",

@@ -215,8 +215,8 @@ def evaluate_policy(algo: Any, cfg: RLlibConfig, episodes: int, seed: int) -> tu
     s = cfg.settings
     policy = RLlibPolicy.from_algorithm(algo)
     kwargs = single_env_kwargs(s.env_kwargs)
-    spec = PlayerSpec("current", "model", env_factory(s.env_id, kwargs), policy.act, env_id=s.env_id,
-                      env_kwargs=kwargs)
+    spec = PlayerSpec("current", "model", env_factory(s.env_id, kwargs), lambda env, obs: policy(obs),
+                      env_id=s.env_id, env_kwargs=kwargs)
     return run_player(spec, episodes, seed)
 
 
@@ -281,7 +281,7 @@ def _train_in(cfg: RLlibConfig, run_dir: Path, resume: Path | None, ckpt: Path |
               say: Any) -> dict[str, Any]:
     import ray
 
-    from ..train import _git_commit
+    from ..train import git_commit
     from .algorithm import build_algorithm, cpus_needed
 
     s = cfg.settings
@@ -319,7 +319,7 @@ def _train_in(cfg: RLlibConfig, run_dir: Path, resume: Path | None, ckpt: Path |
                 "num_learners": c.num_learners, "cpus_reserved": cpus_needed(c), "address": s.address,
                 "cluster_resources": cluster, "nodes": len(ray.nodes())},
             "setup_seconds": setup_seconds,
-            "versions": _versions(), "git_commit": _git_commit(), "resumed_from": str(ckpt) if ckpt else None,
+            "versions": _versions(), "git_commit": git_commit(), "resumed_from": str(ckpt) if ckpt else None,
             "started": time.strftime("%Y-%m-%dT%H:%M:%S"), "command": " ".join(sys.argv),
         }
         _atomic_write(run_dir / "run.json", json.dumps(meta, indent=2, default=str))

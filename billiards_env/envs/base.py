@@ -142,7 +142,7 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
         self._exact_type: ActionType | None = None  # see acting_type()
         if isinstance(self.task, GameTask):  # the opponent plays its shots on the table state the task gives it
             self.task.take_opponent(Opponent(self.observation_type, self.action_type, self.acting_type(),
-                                             self.task.spec.name, policy=c.opponent, handle=self))
+                                             self.task.spec.name, policy=c.opponent))
 
         #: Whether steps may take the compiled fast path (tests switch it off to compare with the Python path).
         self._fast = True
@@ -194,6 +194,16 @@ class BilliardsEnv(gym.Env[np.ndarray, np.ndarray]):
     @property
     def simulator(self) -> Simulator:
         return self.table_state.simulator
+
+    @property
+    def fast_step(self) -> bool:
+        """Whether steps may take the compiled fast path (the pot scenes' one-call step, when nothing is drawn);
+        False plays every step through the Python path (tests and benchmarks compare the two)."""
+        return self._fast
+
+    @fast_step.setter
+    def fast_step(self, on: bool) -> None:
+        self._fast = bool(on)
 
     @property
     def n_balls(self) -> int:

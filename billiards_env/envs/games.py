@@ -30,7 +30,7 @@ from billiards_env.table_state import TableState
 
 from .candidates import next_shot_ease
 from .info import OPPONENT_TURNS
-from .opponent import Opponent, Seat
+from .opponent import Opponent, Seat, policy_form
 from .tasks import Driver, PotTask, Task
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -120,11 +120,12 @@ class GameTask(Task):
         return None if self.opponent_player is None else self.opponent_player.policy
 
     def set_opponent(self, policy: Any) -> None:
-        """The opponent's policy: a player (an object whose ``act(state, obs, codec)`` takes a table state and the
-        action type to act in, as the players of :mod:`billiards_env.players` do), an object with ``act(env, obs)``,
-        an SB3-style model (``predict``), a callable ``obs -> action``, or None (play alone). A name (``"geometric"``,
-        ``"search"``, ``"random"``) makes that player of this game. Anything else raises ``TypeError`` now, not at
-        the next step (:meth:`~billiards_env.envs.opponent.Opponent.set_policy`)."""
+        """The opponent's policy: a player (``shot(state, obs, codec) -> CueShot`` on a table state and the action
+        type to play in, as the players of :mod:`billiards_env.players`), a policy on the table state
+        (``act(state, obs, codec)``), an SB3-style model (``predict``), a callable ``obs -> action``, or None (play
+        alone). A name (``"geometric"``, ``"search"``, ``"random"``) makes that player of this game. Anything else,
+        and the old form ``act(env, obs)``, raises ``TypeError`` now, not at the next step
+        (:meth:`~billiards_env.envs.opponent.Opponent.set_policy`)."""
         if self.opponent_player is None:
             raise RuntimeError("set_opponent: this task has no opponent seat yet; its env gives it one when made")
         self.opponent_player.set_policy(policy)
@@ -314,16 +315,23 @@ class GameTask(Task):
         return self.session.hud(self.names())
 
 
-def as_policy(policy: Any) -> Callable[[Any, Any], np.ndarray]:
-    """``(env, obs) -> action`` from a player (``act(env, obs)``), an SB3-style model (``predict``, deterministic)
-    or a callable ``obs -> action``; ``env`` is the single-agent env (players read its table state)."""
-    if hasattr(policy, "act"):
-        return policy.act
-    if hasattr(policy, "predict"):
-        return lambda env, obs: policy.predict(obs, deterministic=True)[0]
-    if callable(policy):
-        return lambda env, obs: policy(obs)
-    raise TypeError(f"opponent: expected a player (act), a model (predict) or a callable, got {type(policy).__name__}")
+def as_policy(policy: Any) -> Callable[[TableState, Any, Any], np.ndarray]:
+    """``(state, obs, codec) -> action`` (an action of the action type ``codec``) from a player or a policy on the
+    table state (``act(state, obs, codec)``; a player with ``shot`` only: its shot in ``codec``), an SB3-style model
+    (``predict``, deterministic) or a callable ``obs -> action`` (both acting in ``codec``, the env's type). The
+    old form ``act(env, obs)`` raises ``TypeError`` (:func:`~billiards_env.envs.opponent.policy_form`)."""
+    form = policy_form(policy)
+    if form == "act" or (form == "shot" and hasattr(policy, "act")):
+        return lambda state, obs, codec: policy.act(state, obs, codec=codec)
+    if form == "shot":
+        def from_shot(state: TableState, obs: Any, codec: Any) -> np.ndarray:
+            s = policy.shot(state, obs, codec=codec)
+            return np.asarray(codec.action(state, s.angle, s.speed, s.side, s.top, s.place, **dict(s.calls)),
+                              dtype=np.float32)
+        return from_shot
+    if form == "predict":
+        return lambda state, obs, codec: policy.predict(obs, deterministic=True)[0]
+    return lambda state, obs, codec: policy(obs)
 
 
 def task_factory(config: "EnvConfig", state: TableState) -> Task:

@@ -83,5 +83,5 @@ class NineBallEnv(BilliardsEnv):
     env_id = "Billiards9Ball-v0"
 
     def set_opponent(self, policy: Any) -> None:
-        """Play against ``policy`` (a player with ``act(env, obs)``, an SB3 model, a callable, or None)."""
+        """Play against ``policy`` (a player, ``shot(state, obs, codec)``; an SB3 model, a callable, or None)."""
         self.task.set_opponent(policy)

@@ -44,8 +44,8 @@ class BilliardsGameAEC(AECEnv, EzPickle):
     respots, docs/rules.md), with both players agents. ``agent_selection`` is the player to shoot; one ``step`` is
     one shot. A player keeps the table while he pockets legally (the same agent is selected again), and the turn
     passes on a miss or a foul (after a foul the next player has the cue ball in hand). The AEC env is built on the
-    single-agent env, ``env.unwrapped.game_env``: players of :mod:`billiards_env.players` act on it
-    (``player.act(env.unwrapped.game_env, obs)``).
+    single-agent env, ``env.unwrapped.game_env``: players of :mod:`billiards_env.players` act on its table state
+    in its action type (``g = env.unwrapped.game_env; player.act(g.state, obs, g.action_type)``).
 
     ## Agents
 
@@ -133,7 +133,8 @@ class BilliardsGameAEC(AECEnv, EzPickle):
             raise ConfigError(f"task: {game.config.task!r} is not a game; the two-player env plays one of "
                               f"{', '.join(GAMES)} (leave the key out)")
         game.task.seat.auto = False  # the AEC env passes the turn; nobody plays inside step
-        #: The single-agent game env the shots are played on (players act on it: ``player.act(game_env, obs)``).
+        #: The single-agent game env the shots are played on (players act on its table state and action type:
+        #: ``player.act(game_env.state, obs, game_env.action_type)``).
         self.game_env: BilliardsEnv = game
         self.task: GameTask = game.task
         self.render_mode = render_mode

@@ -1,8 +1,9 @@
 """Self-play and matches: :func:`play_match` plays games between two policies in a two-player env.
 
-A policy is a player of :mod:`billiards_env.players` (``act(env, obs)``; it is given the single-agent game env,
-``env.unwrapped.game_env``, whose balls, table and task it reads), an SB3-style model (``predict(obs)``,
-deterministic) or a callable ``obs -> action`` (:func:`billiards_env.envs.games.as_policy`). Each agent's
+A policy is a player of :mod:`billiards_env.players` or a policy on the table state (``act(state, obs, codec)``; it
+is given the table state of the single-agent game env, ``env.unwrapped.game_env.state``, whose balls, table and game
+it reads, and that env's action type), an SB3-style model (``predict(obs)``, deterministic) or a callable
+``obs -> action`` (:func:`billiards_env.envs.games.as_policy`). Each agent's
 observation is its own point of view, so a policy trained single-agent (as player 0 of ``Billiards9Ball-v0``)
 plays either seat.
 """
@@ -89,7 +90,7 @@ def play_match(env_fn: Callable[[], AECEnv] | AECEnv, policies: Sequence[Any], n
                     env.step(None)
                     continue
                 who = seats[raw.agent_index[agent]]
-                env.step(acts[who](game_env, obs))
+                env.step(acts[who](game_env.state, obs, game_env.action_type))
                 shots[who] += 1
             over = raw.game_over
             w = raw.task.session.winner

@@ -5,15 +5,19 @@
 - ``search``: simulates candidate shots with the exact solver and plays the best (:mod:`.search`).
 
 A player reads a table state (:class:`~billiards_env.table_state.TableState`: the balls, the table, the physics,
-who is to shoot and what they may do), chooses a shot ``(angle, speed)`` in physical units and turns it into an
-action of an action type (``codec.action(state, angle, speed, ...)``), so the same player works with every action
-type: ``player.act(state, obs, codec)``. Given an env, it reads ``env.unwrapped.table_state`` and acts in the env's own
-action type. The decision functions (:func:`geometric_shot`, :func:`search_shot`) take plain physics objects (a
-:class:`ShotContext`), so they can be used without an environment::
+who is to shoot and what they may do), chooses a shot ``(angle, speed)`` in physical units as an action type
+(``codec``) expresses it, and returns it: ``player.shot(state, obs, codec)`` is the
+:class:`~billiards_env.shot_path.CueShot` it plays, ``player.act(state, obs, codec)`` the action of ``codec`` that
+plays it (one decision, :meth:`BasePlayer.choose`, in both forms), so the same player works with every action
+type. Given an env, it reads ``env.unwrapped.table_state`` and acts in the env's own action type. The decision functions
+(:func:`geometric_shot`, :func:`search_shot`) take plain physics objects (a :class:`ShotContext`), so they can be
+used without an environment::
 
     player = make_player("search", seed=0)
     obs, info = env.reset(seed=1)
-    action = player.act(env, obs)
+    u = env.unwrapped
+    shot = player.shot(u.table_state, obs, u.action_type)    # the CueShot it plays
+    action = player.act(u.table_state, obs, u.action_type)   # the action that plays it
 
 The players' geometry is compiled array code (:mod:`.geometry`, numba): every ghost-ball shot of a table, the
 ball-in-hand placement and the geometric player's whole decision are one call each on arrays (the balls, a
@@ -31,7 +35,9 @@ from typing import Any, Callable, Protocol
 
 import numpy as np
 
-from .context import ShotContext, shot_context, to_action
+from billiards_env.shot_path import CueShot
+
+from .context import BasePlayer, ShotContext, shot_context, to_action
 from .context import player_inputs as player_inputs  # importable from here (geometric, search), not in __all__
 from .geometric import GeometricPlayer, geometric_shot
 from .geometry import Decision, TableModel, geometric_decision, table_model
@@ -43,9 +49,15 @@ BASELINES = ("random", "geometric", "search")
 
 
 class Player(Protocol):
+    """What a player offers (:class:`BasePlayer` gives both forms from one decision): ``shot`` the
+    :class:`~billiards_env.shot_path.CueShot` it plays on a table state, in what the action type ``codec`` can
+    express; ``act`` the action of ``codec`` that plays it."""
+
     name: str
 
     def reset(self, seed: int | None = None) -> None: ...
+
+    def shot(self, source: Any, obs: Any = None, codec: Any = None) -> CueShot: ...
 
     def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray: ...
 
@@ -78,7 +90,7 @@ def make_player(name: str, seed: int | None = 0, game: str | None = None, **kwar
     return cls(seed=seed, **kwargs)
 
 
-__all__ = ["BASELINES", "Player", "ShotContext", "shot_context", "to_action", "geometric_shot", "search_shot",
+__all__ = ["BASELINES", "Player", "BasePlayer", "ShotContext", "shot_context", "to_action", "geometric_shot", "search_shot",
            "SearchSettings", "Outcome", "RandomPlayer", "GeometricPlayer", "SearchPlayer", "make_player", "PLAYERS",
            "ShotCandidate", "ghost_ball_shots", "direct_hit", "position_score", "MAX_CUT", "geometric_decision",
            "Decision", "TableModel", "table_model"]

@@ -1,11 +1,13 @@
 """What a player reads: a :class:`~billiards_env.table_state.TableState` (the table, the balls, who is to shoot and
-what they may do), seen as a :class:`ShotContext` of plain physics objects; and the turn of a chosen shot into an
+what they may do), seen as a :class:`ShotContext` of plain physics objects; the turn of a chosen shot into an
 action of an action type (the ``codec``: an env's action type, whose ``action`` and ``shot`` map shots to actions
-and back).
+and back); and :class:`BasePlayer`, the two forms of every player's one decision.
 
-Players take the state, never the env: ``player.act(state, obs, codec)``. Given an env instead
-(``player.act(env, obs)``, the Gymnasium habit), they read ``env.unwrapped.table_state`` and act in
-``env.unwrapped.action_type``.
+Players take the state, never the env: ``player.shot(state, obs, codec)`` is the
+:class:`~billiards_env.shot_path.CueShot` they play, ``player.act(state, obs, codec)`` the action of ``codec`` that
+plays it. The shot is the codec's reading of that very action (float32, quantized as the action type says), so a
+player plays the same shot whichever form it is asked in. Given an env instead (``player.act(env, obs)``, the
+Gymnasium habit of a user's loop), they read ``env.unwrapped.table_state`` and act in ``env.unwrapped.action_type``.
 """
 from __future__ import annotations
 
@@ -15,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from billiards_env.physics import Balls, Physics, Simulator, Table
+from billiards_env.shot_path import CueShot
 from billiards_env.table_state import TableState, state_of
 
 
@@ -66,8 +69,8 @@ def player_inputs(source: Any, codec: Any = None) -> tuple[TableState, Any]:
     if codec is None:
         codec = getattr(getattr(source, "unwrapped", source), "action_type", None)
         if codec is None:
-            raise TypeError("player.act(state, obs, codec): give the action type to act in (an env's "
-                            "action_type) with a table state")
+            raise TypeError("player.act(state, obs, codec) / player.shot(state, obs, codec): give the action type "
+                            "to act in (an env's action_type) with a table state")
     return state, codec
 
 
@@ -81,4 +84,36 @@ def to_action(codec: Any, state: TableState, angle: float, speed: float, place: 
     return np.clip(a, codec.space.low, codec.space.high)
 
 
-__all__ = ["ShotContext", "shot_context", "player_inputs", "to_action"]
+class BasePlayer:
+    """The base of the players: one decision (:meth:`choose`), asked for in two forms.
+
+    :meth:`shot` gives the :class:`~billiards_env.shot_path.CueShot` the player plays (what the env's opponent
+    plays); :meth:`act` the action of ``codec`` that plays it (SB3-style loops, teachers). Both come from one
+    :meth:`choose`, which a player writes: its decision as an action of ``codec``, so the shot is always one the
+    action type can express (its float32 quantization included; the search values exactly such shots) and never
+    differs between the two forms. ``source``: a table state (then ``codec`` is needed) or a billiards env
+    (``codec`` defaults to its action type)."""
+
+    name = "player"
+    #: Whether :meth:`choose` reads the observation (False: the env's opponent is not observed for).
+    reads_observation = False
+
+    def reset(self, seed: int | None = None) -> None:
+        """A new episode (``seed``: a fresh generator for players that draw)."""
+
+    def choose(self, state: TableState, obs: Any, codec: Any) -> np.ndarray:
+        """The player's decision on ``state``: the action of ``codec`` (an action type) that plays its shot."""
+        raise NotImplementedError(f"{type(self).__name__}.choose: a player writes its decision here")
+
+    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+        """The action (in ``codec``; default an env's own action type) of the player's shot on ``source``."""
+        state, codec = player_inputs(source, codec)
+        return self.choose(state, obs, codec)
+
+    def shot(self, source: Any, obs: Any = None, codec: Any = None) -> CueShot:
+        """The shot the player plays on ``source``: ``codec``'s reading of the action it chooses (no noise)."""
+        state, codec = player_inputs(source, codec)
+        return codec.shot(state, self.choose(state, obs, codec))
+
+
+__all__ = ["ShotContext", "shot_context", "player_inputs", "to_action", "BasePlayer"]

@@ -3,7 +3,7 @@
 Its whole decision (the break, the ball-in-hand placement, the easiest shot with the 80 then 88 degree cut limits,
 the direct hit when nothing pots) is one compiled call on arrays
 (:func:`billiards_env.players.geometry.geometric_decision`).
-The functions here take a :class:`ShotContext` (or the env, for the player) and call it.
+The functions here take a :class:`ShotContext` (the player, a table state) and call it.
 """
 from __future__ import annotations
 
@@ -11,7 +11,9 @@ from typing import Any
 
 import numpy as np
 
-from .context import ShotContext, player_inputs, shot_context, to_action
+from billiards_env.table_state import TableState
+
+from .context import BasePlayer, ShotContext, shot_context, to_action
 from .geometry import (MAX_CUT, PLACE_BACKS, Decision, TableModel, choose_place, geometric_decision, state_model,
                        table_model)
 from .shots import ShotCandidate, candidate_of
@@ -68,11 +70,11 @@ def choose_placement(ctx: ShotContext, max_cut: float = MAX_CUT,
     return float(x), float(y)
 
 
-class GeometricPlayer:
+class GeometricPlayer(BasePlayer):
     """Ghost-ball aiming at the easiest pocket (see :func:`.shots.ghost_ball_shots`)."""
 
     name = "geometric"
-    #: :meth:`act` reads the table state, not the observation (the env need not observe for it).
+    #: It reads the table state, not the observation (the env need not observe for it).
     reads_observation = False
 
     def __init__(self, seed: int | None = 0, max_cut: float = MAX_CUT):
@@ -91,10 +93,9 @@ class GeometricPlayer:
         self.last = candidate_of(d.rows[d.shot]) if d.shot >= 0 else None
         return d
 
-    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
-        """The action (in ``codec``, an action type; default the env's) of :meth:`decide` on ``source`` (a table
-        state or an env)."""
-        state, codec = player_inputs(source, codec)
+    def choose(self, state: TableState, obs: Any, codec: Any) -> np.ndarray:
+        """The action (in ``codec``, an action type) of :meth:`decide` on ``state``, with the ball and pocket of a
+        ghost-ball shot as its call."""
         d = self.decide(shot_context(state, codec))
         aimed = d.shot >= 0  # a ghost-ball shot: its ball and pocket are the call (the game keeps what it declares)
         return to_action(codec, state, d.angle, d.speed, place=d.place, pocket=d.pocket if aimed else None,

@@ -5,14 +5,16 @@ from typing import Any
 
 import numpy as np
 
-from .context import player_inputs
+from billiards_env.table_state import TableState
+
+from .context import BasePlayer
 
 
-class RandomPlayer:
+class RandomPlayer(BasePlayer):
     """Uniformly random actions (seeded)."""
 
     name = "random"
-    #: :meth:`act` does not read the observation (the env need not observe for it).
+    #: It does not read the observation (the env need not observe for it).
     reads_observation = False
 
     def __init__(self, seed: int | None = 0):
@@ -22,12 +24,10 @@ class RandomPlayer:
         if seed is not None:
             self.rng = np.random.default_rng(seed)
 
-    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
-        """A uniform action of ``codec``'s space (an action type; default the env's)."""
-        _, codec = player_inputs(source, codec)
+    def choose(self, state: TableState, obs: Any, codec: Any) -> np.ndarray:
+        """A uniform action of ``codec``'s space (an action type)."""
         space = codec.space
         return self.rng.uniform(space.low, space.high).astype(space.dtype)
-
 
 
 __all__ = ["RandomPlayer"]

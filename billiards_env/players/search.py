@@ -29,7 +29,7 @@ from numba import njit
 from billiards_env.physics.batch import BatchResult, run_shots
 from billiards_env.rules import ShotSummary, summarize_arrays
 
-from .context import ShotContext, player_inputs, shot_context, to_action
+from .context import BasePlayer, ShotContext, shot_context, to_action
 from .geometric import break_shot, context_model
 from .geometry import (COL_ANGLE, COL_POCKET, COL_SPEED, COL_TARGET, ARRIVE_SPEED, SPEED_FACTORS, ghost_shots,
                        layouts_ease, places_ease, search_places, table_model)
@@ -615,12 +615,12 @@ def playable_shots(state: Any, codec: Any, place: tuple[float, float] | None = N
     return Playable(state, codec, place)
 
 
-class SearchPlayer:
+class SearchPlayer(BasePlayer):
     """Simulates candidate shots with the env's exact solver and plays the best for the position it leaves (see
     :func:`search_shot`)."""
 
     name = "search"
-    #: :meth:`act` does not read the observation (the env need not observe for it).
+    #: It does not read the observation (the env need not observe for it).
     reads_observation = False
 
     def __init__(self, seed: int | None = 0, settings: SearchSettings | None = None):
@@ -632,12 +632,11 @@ class SearchPlayer:
         if seed is not None:
             self.rng = np.random.default_rng(seed)
 
-    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
-        """The action (in ``codec``, an action type; default the env's) of the best shot found on ``source`` (a
-        table state or an env). In a game it plays by the rules (candidates valued by the rules' call and the
+    def choose(self, state: Any, obs: Any, codec: Any) -> np.ndarray:
+        """The action (in ``codec``, an action type) of the best shot found on ``state`` among the shots ``codec``
+        can play (:func:`playable_shots`). In a game it plays by the rules (candidates valued by the rules' call and the
         position they leave), breaks at full power, and with the cue ball in hand searches from the best few places
         (:func:`placement_candidates`) and plays the best shot of all."""
-        state, codec = player_inputs(source, codec)
         ctx = shot_context(state, codec)
         if ctx.game is not None and ctx.game.game_state.break_shot:
             place, angle, speed = break_shot(ctx)

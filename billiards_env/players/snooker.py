@@ -35,6 +35,7 @@ from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.rules.snooker import (COLOUR_VALUES, VALUE_NAMES, Snooker, SnookerState, ball_on_mask,
                                          judge_batch)
 
+from .context import BasePlayer, to_action
 from .shots import MAX_CUT, ghost_ball_shots, pot_probability, speed_to_travel
 
 #: Default speed range of snooker shots (m/s).
@@ -505,11 +506,12 @@ def _first_row(b: Balls, sim: Simulator, cue: int, shot: np.ndarray) -> int:
 
 
 
-# --- as players of the env (state in, action out) --------------------------------------------------------------------
+# --- as players of the env (state in, shot out) ----------------------------------------------------------------------
 
-class _SnookerPlayer:
-    """A snooker decision function as a player: ``act(state, obs, codec)`` (or ``act(env, obs)``) reads the frame
-    from the table state's game session and returns the action of its shot in ``codec``."""
+class _SnookerPlayer(BasePlayer):
+    """A snooker decision function as a player (:class:`~billiards_env.players.context.BasePlayer`: ``shot(state,
+    obs, codec)``, ``act(state, obs, codec)``): it reads the frame from the table state's game session and plays its
+    shot as ``codec`` expresses it."""
 
     name = "snooker"
 
@@ -524,12 +526,10 @@ class _SnookerPlayer:
     def _shot(self, state: Any, session: Any, snookered_now: bool) -> SnookerShot:
         raise NotImplementedError
 
-    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
+    def choose(self, state: Any, obs: Any, codec: Any) -> np.ndarray:
+        """The action (in ``codec``) of the decision function's shot on ``state``."""
         from billiards_env.rules.snooker import snookered
 
-        from .context import player_inputs, to_action
-
-        state, codec = player_inputs(source, codec)
         session = state.game
         s = session.game_state
         b = state.balls

@@ -38,6 +38,8 @@ from billiards_env.physics.motion import launch_speed, speed_after_distance, sto
 from billiards_env.physics.spin_collide import MAX_TIP_OFFSET
 from billiards_env.rules.three_cushion import CUSHIONS_NEEDED, scan_carom_batch
 
+from .context import BasePlayer, to_action
+
 #: Tip offset (ball radii above the centre) that sets a struck ball rolling at once (``2/5 R``).
 NATURAL_ROLL = 0.4
 #: Under the spin model: how many of its scoring aims the geometric player has the engine play (one batch).
@@ -305,12 +307,12 @@ def three_cushion_geometric_shot(balls: Balls, table: Table, physics: Physics, c
     return CaromShot(float(angle), float(speed), 0.0, top, True, run / cuts, int(cushions), 0)
 
 
-# --- as players of the env (state in, action out) --------------------------------------------------------------------
+# --- as players of the env (state in, shot out) ----------------------------------------------------------------------
 
-class _CaromPlayer:
-    """A three-cushion decision function as a player: ``act(state, obs, codec)`` (or ``act(env, obs)``) plays the
-    table state's row 0 (the shooter's cue ball) against rows 1 (the opponent's) and 2 (the red) and returns the
-    action of its shot in ``codec``."""
+class _CaromPlayer(BasePlayer):
+    """A three-cushion decision function as a player (:class:`~billiards_env.players.context.BasePlayer`:
+    ``shot(state, obs, codec)``, ``act(state, obs, codec)``): it plays the table state's row 0 (the shooter's cue
+    ball) against rows 1 (the opponent's) and 2 (the red), its shot as ``codec`` expresses it."""
 
     name = "carom"
 
@@ -323,10 +325,8 @@ class _CaromPlayer:
     def _shot(self, state: Any, opening: bool) -> CaromShot:
         raise NotImplementedError
 
-    def act(self, source: Any, obs: Any = None, codec: Any = None) -> np.ndarray:
-        from .context import player_inputs, to_action
-
-        state, codec = player_inputs(source, codec)
+    def choose(self, state: Any, obs: Any, codec: Any) -> np.ndarray:
+        """The action (in ``codec``) of the decision function's shot on ``state``."""
         session = state.game
         opening = bool(session.game_state.break_shot and session.rules.options.break_red_first)
         self.last = shot = self._shot(state, opening)

@@ -56,8 +56,10 @@ def test_it_plays_a_game_env_in_its_types():
         obs, _, term, trunc, _ = env.step(a)
         if term or trunc:
             break
+    other = gym.make("Billiards9Ball-v0", action_type="candidates", observation_type="candidates")
+    other_obs, _ = other.reset(seed=0)
     with pytest.raises(ValueError, match="candidates_position"):
-        rule.act(gym.make("Billiards9Ball-v0", action_type="candidates", observation_type="candidates"), obs)
+        rule.act(other, other_obs)
 
 
 def test_the_command_line_plays_the_geometric_player_and_reports_every_game(capsys):

@@ -62,8 +62,8 @@ def test_the_prior_search_plays_at_the_search_players_budget(policy_zip, monkeyp
     assert space.contains(np.asarray(a_prior, np.float32)) and space.contains(np.asarray(a_plain, np.float32))
     # its proposals: the policy's own shot first, within the budget
     state = env.unwrapped.table_state
-    prior.policy._types(env.unwrapped)
-    mine = prior.policy._action_type.shot(state, prior.policy.predict(prior.policy._obs_type.observe(state)))
+    prior.policy.prepare(state, env.unwrapped.action_type)
+    mine = prior.policy.action_type.shot(state, prior.policy.predict(prior.policy.observation_type.observe(state)))
     rows = prior.proposals(state, mine, True)
     assert 1 <= len(rows) <= prior.budget()
     assert rows[0, 0] == pytest.approx(mine.angle) and rows[0, 1] == pytest.approx(mine.speed)
@@ -106,8 +106,8 @@ def test_under_noise_the_sweep_pays_for_more_re_runs(policy_zip):
     env, obs = _noisy_table(EASY)
     state = env.unwrapped.table_state
     assert pot_chance(state, prior.search.settings.ease_noise) > REALLOCATE_POT_CHANCE
-    prior.policy._types(env.unwrapped)
-    rows = prior.proposals(state, prior.policy.shot(state), True)
+    prior.policy.prepare(state, env.unwrapped.action_type)
+    rows = prior.proposals(state, prior.policy.policy_shot(state), True)
     st = prior.search.settings
     new = prior.settings_for(state, len(rows), noisy=True)
     sweep = lambda s: s.sweep_angles * len(s.sweep_speeds)  # noqa: E731
@@ -135,15 +135,15 @@ def test_on_a_hard_table_the_sweep_stays(policy_zip):
     state = env.unwrapped.table_state
     st = prior.search.settings
     assert pot_chance(state, st.ease_noise) < REALLOCATE_POT_CHANCE
-    prior.policy._types(env.unwrapped)
-    at = prior.policy._action_type
+    prior.policy.prepare(state, env.unwrapped.action_type)
+    at = prior.policy.action_type
     assert at.slots(state).count > 0
-    rows = prior.proposals(state, prior.policy.shot(state), True)
+    rows = prior.proposals(state, prior.policy.policy_shot(state), True)
     assert prior.settings_for(state, len(rows), noisy=True) is st
     from agents.league import load_player
 
     name, always = load_player(f"prior-always:{policy_zip}", 1, "nine_ball")  # the ablation: reallocate anyway
-    always.policy._types(env.unwrapped)
+    always.policy.prepare(state, env.unwrapped.action_type)
     assert name.endswith("reallocating on every table") and always.min_pot_chance == 0.0
     assert always.settings_for(state, len(rows), noisy=True).top_k > st.top_k
 

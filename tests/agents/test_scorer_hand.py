@@ -125,8 +125,9 @@ def test_the_league_plays_the_scorer_with_and_without_its_places(tmp_path):
     assert a != b  # one league can hold both
     env, obs = _in_hand_env(5)
     places = hand_places(env.unwrapped.table_state, env.unwrapped.action_type)
-    pa._types(env.unwrapped)
-    pb._types(env.unwrapped)
-    assert pa.shot(env.unwrapped.table_state).place in places
-    assert pb.shot(env.unwrapped.table_state).place not in places
+    u = env.unwrapped
+    pa.prepare(u.table_state, u.action_type)
+    pb.prepare(u.table_state, u.action_type)
+    assert pa.policy_shot(u.table_state).place in places
+    assert pb.policy_shot(u.table_state).place not in places
     env.close()

@@ -210,10 +210,10 @@ def test_a_player_opponent_plays_its_own_shots_against_a_candidates_agent():
         def reset(self, seed=None):
             self.inner.reset(seed)
 
-        def act(self, env, obs):
-            a = self.inner.act(env, obs)
-            self.asked.append(env.unwrapped.shot_from_action(a))
-            return a
+        def shot(self, state, obs=None, codec=None):
+            s = self.inner.shot(state, obs, codec)
+            self.asked.append(s)
+            return s
 
     env = gym.make("Billiards9Ball-v0", opponent=None, first_shooter="opponent", **CAND)
     spy = Spy()

@@ -17,9 +17,9 @@ class Spy(GeometricPlayer):
         self.reads_observation = reads
         self.seen: list = []
 
-    def act(self, source, obs=None, codec=None):
+    def choose(self, state, obs, codec):
         self.seen.append(obs)
-        return super().act(source, obs, codec)
+        return super().choose(state, obs, codec)
 
 
 def test_players_that_ignore_the_observation_are_not_observed_for():
@@ -74,3 +74,62 @@ def test_an_opponent_without_a_policy_says_so():
     assert isinstance(opp, Opponent)
     with pytest.raises(RuntimeError, match="no policy"):
         opp.shot(env.unwrapped.table_state)
+
+
+def test_the_opponent_hands_its_policy_the_table_state_never_the_env():
+    """Every policy form is asked with the table state (and an action type), and nothing the opponent holds is the
+    env: it calls no env."""
+    import inspect
+
+    from billiards_env.envs.opponent import Opponent
+    from billiards_env.table_state import TableState
+
+    assert "handle" not in inspect.signature(Opponent).parameters
+    seen = []
+
+    class Player(GeometricPlayer):
+        def shot(self, source, obs=None, codec=None):
+            seen.append(("shot", source, codec))
+            return super().shot(source, obs, codec)
+
+    class Policy:
+        def act(self, state, obs, codec):
+            seen.append(("act", state, codec))
+            return np.zeros(codec.space.shape, np.float32)
+
+    env = gym.make("Billiards9Ball-v0", first_shooter="opponent", action_type="candidates",
+                   observation_type="candidates")
+    u = env.unwrapped
+    opp = u.task.opponent_player
+    assert all(v is not u and v is not env for v in vars(opp).values())
+    for policy in (Player(), Policy()):
+        u.set_opponent(policy)
+        seen.clear()
+        env.reset(seed=2)  # the opponent breaks
+        assert seen
+        for form, source, codec in seen:
+            assert isinstance(source, TableState) and source is u.table_state
+            # a player plays in the exact type (candidates cannot express every shot); a policy in the env's own
+            assert codec is (u.acting_type() if form == "shot" else u.action_type)
+    env.close()
+
+
+def test_an_old_style_act_env_obs_policy_is_refused_with_the_new_form():
+    from billiards_env.envs.games import as_policy
+    from billiards_env.multi import nine_ball_v0, play_match
+
+    class Old:
+        def act(self, env, obs):
+            return env.unwrapped.action_space.sample()
+
+    env = gym.make("Billiards9Ball-v0")
+    with pytest.raises(TypeError, match=r"old form act\(env, obs\).*act\(state, obs, codec\).*shot\(state, obs, codec\)"):
+        env.unwrapped.set_opponent(Old())
+    assert env.unwrapped.task.opponent_player.name() == "geometric"  # the refused policy left the seat as it was
+    with pytest.raises(TypeError, match=r"act\(state, obs, codec\)"):
+        as_policy(Old())
+    with pytest.raises(TypeError, match="old form"):
+        play_match(nine_ball_v0.env, [Old(), GeometricPlayer()], n_games=1)
+    with pytest.raises(TypeError, match="expected a player"):
+        env.unwrapped.set_opponent(42)
+    env.close()
