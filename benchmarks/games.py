@@ -422,7 +422,7 @@ class _ReferenceGeometric(BasePlayer):
         from benchmarks import reference_players as ref
         from billiards_env.players.context import to_action
 
-        env = SimpleNamespace(unwrapped=SimpleNamespace(state=state, legal_cue_position=state.legal_cue_position,
+        env = SimpleNamespace(unwrapped=SimpleNamespace(table_state=state, legal_cue_position=state.legal_cue_position,
                                                         cue_moved_to=state.cue_moved_to))
         place, angle, speed, cand = ref.reference_geometric_act(env)
         return to_action(codec, state, angle, speed, place=place, pocket=cand.pocket if cand is not None else None)
