@@ -31,7 +31,7 @@ import math
 import numpy as np
 from numba import njit
 
-from billiards_env.physics.aim import ray_circle_entry
+from billiards_env.games.pool import pool_features
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import (PLACE_BATCH, PLACE_TRIES, nearest_free_xy, place_random_rows,
@@ -43,15 +43,15 @@ from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_CLEAR, 
 from billiards_env.players.slots import (HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET, in_hand_slots, next_shot_ease,
                                          shot_slots)
 from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_KITCHEN, BIH_NO, C_FOUL, C_REASON, C_RESPOT, C_SHOOTER,
-                                            C_TURN_OVER, GAME_EIGHT, GROUPS_OPEN, GROUPS_SOLIDS, N_CALL, N_STATE,
-                                            S_BIH, S_BREAK, S_FOULS0, S_FOULS1, S_GAME, S_GROUPS, S_ON, S_OVER,
+                                            C_TURN_OVER, GROUPS_OPEN, N_CALL, N_STATE,
+                                            S_BIH, S_BREAK, S_GAME, S_GROUPS, S_ON, S_OVER,
                                             S_PUSH_AVAILABLE, S_SHOOTER, S_WINNER, legal_mask, needs_called_pocket,
                                             play)
 from billiards_env.shot_path import noisy_shot
 
 from ._kernels import observation
-from .actions import (AIM_ABSOLUTE, AIM_RELATIVE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, PLACED_MAX_CUT,
-                      aim_to_angle, disc_to_square, power_to_speed, square_to_disc)
+from .actions import (AIM_ABSOLUTE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, PLACED_MAX_CUT,
+                      aim_to_angle, angle_to_aim, disc_to_square, power_to_speed, square_to_disc)
 from .candidates import _slot_features, kick_of
 
 #: The ``candidates`` action type (``J_AIM``).
@@ -131,11 +131,6 @@ def _area(st: np.ndarray, cfg: np.ndarray, area: np.ndarray) -> bool:
 # --- the action types ----------------------------------------------------------------------------------------------
 
 @njit(cache=True)
-def _wrap(angle: float) -> float:
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
-
-
-@njit(cache=True)
 def _angle(code: int, a: float, cx: float, cy: float, t: int, pos: np.ndarray, radius: np.ndarray,
            max_ghost: float) -> float:
     """``ActionType.angle`` with the cue ball at ``(cx, cy)`` and the view's target ``t`` (-1: none)."""
@@ -147,23 +142,11 @@ def _angle(code: int, a: float, cx: float, cy: float, t: int, pos: np.ndarray, r
 @njit(cache=True)
 def _aim(code: int, angle: float, cx: float, cy: float, t: int, pos: np.ndarray, radius: np.ndarray,
          max_ghost: float) -> float:
-    """``ActionType.aim`` (the aim component of a cue direction) of the absolute, relative and ghost aim."""
-    if code == AIM_ABSOLUTE:
-        return _wrap(angle) / math.pi
-    if code == AIM_RELATIVE:
-        base = 0.0 if t < 0 else math.atan2(pos[t, 1] - cy, pos[t, 0] - cx)
-        return _wrap(angle - base) / math.pi
-    if t < 0:
-        return 0.0
-    base = math.atan2(pos[t, 1] - cy, pos[t, 0] - cx)
-    ux = math.cos(angle)
-    uy = math.sin(angle)
-    tx = pos[t, 0]
-    ty = pos[t, 1]
-    d = ray_circle_entry(cx, cy, ux, uy, tx, ty, radius[0] + radius[t])
-    if not math.isfinite(d):
-        return -1.0 if _wrap(angle - base) > 0 else 1.0
-    return _wrap(math.atan2(ty - (cy + uy * d), tx - (cx + ux * d)) - base) / max_ghost
+    """``ActionType.aim`` (the aim component of a cue direction) with the cue ball at ``(cx, cy)`` and the view's
+    target ``t`` (-1: none)."""
+    if code == AIM_ABSOLUTE or t < 0:
+        return angle_to_aim(code, angle, cx, cy, 0.0, 0.0, False, 0.0, max_ghost)
+    return angle_to_aim(code, angle, cx, cy, pos[t, 0], pos[t, 1], True, radius[0] + radius[t], max_ghost)
 
 
 @njit(cache=True)
@@ -788,38 +771,6 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
 # --- the observation -----------------------------------------------------------------------------------------------
 
 @njit(cache=True)
-def features(st: np.ndarray, out: np.ndarray) -> None:
-    """``PoolSession.features`` seen by the shooter into ``out`` (eleven float32 values)."""
-    over = st[S_OVER] != 0
-    me = st[S_SHOOTER]
-    mine = not over
-    bih = st[S_BIH]
-    out[0] = 1.0 if (mine and bih != BIH_NO) else 0.0
-    out[1] = 1.0 if (mine and bih == BIH_KITCHEN) else 0.0
-    out[2] = 1.0 if st[S_BREAK] else 0.0
-    targets = 0 if over else legal_mask(st)
-    low = -1
-    for j in range(64):
-        if (targets >> j) & 1:
-            low = j
-            break
-    out[3] = low / 15.0 if low >= 0 else 0.0
-    out[4] = 0.0
-    out[5] = 0.0
-    if st[S_GROUPS] != GROUPS_OPEN:
-        solids = (st[S_GROUPS] == GROUPS_SOLIDS) == (me == 0)
-        out[4] = 1.0 if solids else 0.0
-        out[5] = 0.0 if solids else 1.0
-    out[6] = 1.0 if (st[S_GAME] == GAME_EIGHT and targets == 1 << 8) else 0.0
-    mine_f = st[S_FOULS0] if me == 0 else st[S_FOULS1]
-    theirs_f = st[S_FOULS1] if me == 0 else st[S_FOULS0]
-    out[7] = min(mine_f / 2.0, 1.0)
-    out[8] = min(theirs_f / 2.0, 1.0)
-    out[9] = 1.0 if st[S_PUSH_AVAILABLE] else 0.0
-    out[10] = 1.0 if mine else 0.0
-
-
-@njit(cache=True)
 def _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params, kc, obs):
     """Table ``k``'s observation into ``obs[k]`` when its type is compiled: the positions, the ``candidates`` slot
     values for that type, the game features."""
@@ -834,7 +785,7 @@ def _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, p
         _candidates_features(k, gst[k], pos[k], on[k], radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy,
                              pocket_r, params, np.zeros(4), kc, obs[k, n:n + m])
         n += m
-    features(gst[k], obs[k, n:])
+    pool_features(gst[k], gst[k, S_SHOOTER], obs[k, n:])
 
 
 @njit(cache=True)
@@ -885,5 +836,5 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
                         obs, wc)
 
 
-__all__ = ["play_tables", "observe_tables", "legal_masks", "features", "AIM_CANDIDATES", "N_K", "N_J", "N_R", "N_T",
+__all__ = ["play_tables", "observe_tables", "legal_masks", "AIM_CANDIDATES", "N_K", "N_J", "N_R", "N_T",
            "N_KC"]

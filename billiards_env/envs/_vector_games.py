@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from billiards_env.games.infos import conform, unstack
-from billiards_env.games.pool import EightBallSession, NineBallSession
+from billiards_env.games.pool import EightBallSession, NineBallSession, pool_features
 from billiards_env.physics.batch import use_parallel
 from billiards_env.physics.errors import SceneError
 from billiards_env.physics.layout import DIAMOND_ORDER, RACK_ORDER, foot_spot, head_spot, head_string_x
@@ -523,7 +523,8 @@ class _TableGame:
         if player is not None:
             raise ValueError("the native vector env observes each table as its shooter sees it (player=None)")
         out = np.zeros(self.tables.n_game, np.float32)
-        gk.features(self.tables.gst[self.k], out)
+        st = self.tables.gst[self.k]
+        pool_features(st, st[pj.S_SHOOTER], out)
         return out
 
 

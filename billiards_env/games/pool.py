@@ -7,19 +7,21 @@ opening (run-out practice: a break played for nobody, then the cue ball in hand 
 """
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import Any, ClassVar
 
 import numpy as np
+from numba import njit
 
 from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, head_string_x, spot_cue_ball,
                                           spot_object_ball)
 from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.physics.table import Table
-from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions,
+from billiards_env.rules import (ANYWHERE, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions,
                                  GameState, NineBall, NineBallOptions, RulesError, ShotInfo, ShotSummary,
                                  summarize_outcome)
-from billiards_env.rules.pool_judge import REASONS
+from billiards_env.rules.pool_judge import (BIH_KITCHEN, BIH_NO, GAME_EIGHT, GROUPS_OPEN, GROUPS_SOLIDS, REASONS,
+                                            S_BIH, S_BREAK, S_FOULS0, S_FOULS1, S_GAME, S_GROUPS, S_OVER,
+                                            S_PUSH_AVAILABLE, S_SHOOTER, legal_mask_for, state_row)
 from billiards_env.rules.state import Call
 from billiards_env.table_state import Area, RectArea, ShotView, TableState
 
@@ -48,6 +50,40 @@ def pool_place_area(state: GameState, table: Table, radius: float) -> Area | Non
     return RectArea(radius, x1, radius, table.width - radius)
 
 
+@njit(cache=True)
+def pool_features(st: np.ndarray, me: int, out: np.ndarray) -> None:
+    """:meth:`PoolSession.features` of the game state row ``st`` (:mod:`billiards_env.rules.pool_judge`) seen by
+    player ``me``, into ``out`` (eleven float32 values). The one implementation: the session calls it, and so does
+    the native vector env's compiled observation (:mod:`billiards_env.envs._game_kernels`)."""
+    over = st[S_OVER] != 0
+    mine = st[S_SHOOTER] == me and not over
+    bih = st[S_BIH]
+    out[0] = 1.0 if (mine and bih != BIH_NO) else 0.0
+    out[1] = 1.0 if (mine and bih == BIH_KITCHEN) else 0.0
+    out[2] = 1.0 if st[S_BREAK] else 0.0
+    # The viewer's own targets (8-ball: its group) also when it is not its turn (the two-player env).
+    targets = 0 if over else legal_mask_for(st, me)
+    low = -1
+    for j in range(64):
+        if (targets >> j) & 1:
+            low = j
+            break
+    out[3] = low / 15.0 if low >= 0 else 0.0
+    out[4] = 0.0
+    out[5] = 0.0
+    if st[S_GROUPS] != GROUPS_OPEN:
+        solids = (st[S_GROUPS] == GROUPS_SOLIDS) == (me == 0)
+        out[4] = 1.0 if solids else 0.0
+        out[5] = 0.0 if solids else 1.0
+    out[6] = 1.0 if (st[S_GAME] == GAME_EIGHT and targets == 1 << 8) else 0.0
+    mine_f = st[S_FOULS0] if me == 0 else st[S_FOULS1]
+    theirs_f = st[S_FOULS1] if me == 0 else st[S_FOULS0]
+    out[7] = min(mine_f / 2.0, 1.0)
+    out[8] = min(theirs_f / 2.0, 1.0)
+    out[9] = 1.0 if st[S_PUSH_AVAILABLE] else 0.0
+    out[10] = 1.0 if mine else 0.0
+
+
 def _order(fixed: dict[int, int], free: list[int], n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
     free = [free[k] for k in rng.permutation(len(free))]
     it = iter(free)
@@ -71,6 +107,8 @@ class PoolSession(GameSession):
         self.numbers = np.asarray(table.numbers, dtype=np.int64)
         self.row_of = {int(n): i for i, n in enumerate(self.numbers.tolist())}
         self._rack_slots: np.ndarray | None = None
+        self._row_state: GameState | None = None  # the state whose row (pool_judge's) _row holds
+        self._row = np.zeros(0, np.int64)
         super().__init__(spec, rules, table)
 
     # --- the state ---------------------------------------------------------------------------------------------------
@@ -164,26 +202,13 @@ class PoolSession(GameSession):
     def features(self, player: int | None = None) -> np.ndarray:
         """The game seen by the player: ball in hand (anywhere / kitchen), break shot, its lowest legal target / 15,
         its group (solids, stripes), on the 8, its own and its opponent's fouls in a row / 2, push-out available,
-        and whether it is its turn (eleven values in [0, 1])."""
+        and whether it is its turn (eleven values in [0, 1]): :func:`pool_features` of the state's row."""
         s = self.state
-        me = self.viewer(player)
+        if self._row_state is not s:  # the state's row, made once per state
+            self._row = state_row(s)
+            self._row_state = s
         out = np.zeros(N_POOL_FEATURES, np.float32)
-        mine = s.shooter == me and not s.game_over
-        out[0] = 1.0 if (mine and s.ball_in_hand) else 0.0
-        out[1] = 1.0 if (mine and s.ball_in_hand == KITCHEN) else 0.0
-        out[2] = 1.0 if s.break_shot else 0.0
-        # The viewer's own targets (8-ball: its group) also when it is not its turn (the two-player env).
-        targets = self.rules.legal_targets(s if me == s.shooter else replace(s, shooter=me)) \
-            if not s.game_over else ()
-        out[3] = targets[0] / 15.0 if targets else 0.0
-        if s.groups is not None:
-            out[4] = 1.0 if s.groups[me] == SOLIDS else 0.0
-            out[5] = 1.0 if s.groups[me] == STRIPES else 0.0
-        out[6] = 1.0 if (s.game == EIGHT_BALL and targets == (8,)) else 0.0
-        out[7] = min(s.fouls_in_a_row[me] / 2.0, 1.0)
-        out[8] = min(s.fouls_in_a_row[1 - me] / 2.0, 1.0)
-        out[9] = 1.0 if s.push_out_available else 0.0
-        out[10] = 1.0 if mine else 0.0
+        pool_features(self._row, self.viewer(player), out)
         return out
 
     # --- shots -------------------------------------------------------------------------------------------------------
@@ -300,5 +325,5 @@ class EightBallSession(PoolSession):
         return targets if targets == (8,) else ()
 
 
-__all__ = ["PoolSession", "NineBallSession", "EightBallSession", "N_POOL_FEATURES", "pool_place_area",
+__all__ = ["PoolSession", "NineBallSession", "EightBallSession", "N_POOL_FEATURES", "pool_place_area", "pool_features",
            "BALL_IN_HAND_NAMES", "GROUPS_NAMES"]
