@@ -193,7 +193,8 @@ class ActionType:
     max_angle = 0.0
 
     def angle(self, state: "TableState", a: float) -> float:
-        """Cue direction (rad) of aim component ``a`` (in [-1, 1]): :func:`aim_to_angle`."""
+        """Cue direction (rad) of aim component ``a`` (in [-1, 1]): :func:`aim_to_angle` (so does its compiled twin,
+        :func:`._action_kernels.angle_of_action`)."""
         b = state.balls
         t = state.view.target if self.code != AIM_ABSOLUTE else None
         if t is None:
@@ -203,7 +204,8 @@ class ActionType:
                             float(b.pos[t, 1]), True, float(b.radius[0] + b.radius[t]), self.max_angle)
 
     def aim(self, state: "TableState", angle: float) -> float:
-        """Aim component of cue direction ``angle`` (inverse of :meth:`angle`): :func:`angle_to_aim`."""
+        """Aim component of cue direction ``angle`` (inverse of :meth:`angle`): :func:`angle_to_aim` (so does its
+        compiled twin, :func:`._action_kernels.aim_of_angle`)."""
         b = state.balls
         t = state.view.target if self.code != AIM_ABSOLUTE else None
         if t is None:
@@ -235,7 +237,8 @@ class ActionType:
         return ", ".join(names)
 
     def shot(self, state: "TableState", action: Any) -> CueShot:
-        """The shot an action means now (no noise). Placement is read only when the shooter has ball in hand."""
+        """The shot an action means now (no noise). Placement is read only when the shooter has ball in hand.
+        Compiled twin (the native vector env's pool tables): :func:`._action_kernels.shot_of_action`."""
         a = self.parse(action)
         speed = power_to_speed(a[1], self.speed_lo, self.speed_span)
         side = top = 0.0
@@ -258,7 +261,8 @@ class ActionType:
         """The action of a shot (inverse of :meth:`shot`); ``calls``: the declarations by name (those the type does
         not declare are ignored: a player states its whole call). Speeds outside the range clip, extra dims not
         given take neutral values (no spin; the placement dims the middle of the area; a choice its first value,
-        e.g. pocket 0; a flag False)."""
+        e.g. pocket 0; a flag False). Compiled twin (of a shot without tip offsets nor push-out, the geometric
+        opponent's in the native vector env): :func:`._action_kernels.action_of_shot`."""
         for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
             if not math.isfinite(float(v)):
                 raise ValueError(f"action_from_shot: {name} must be finite, got {v!r}")
@@ -424,6 +428,8 @@ class CandidateShots(ActionType):
         return self._pot(cands, a[0])
 
     def _speed(self, base: float, a: float) -> float:
+        """``base`` times the speed factor to the power ``a``, within the range (compiled twin:
+        :func:`._action_kernels.candidate_speed`)."""
         lo, hi = self.speed_range
         return min(max(base * math.exp(a * self.log_factor), lo), hi)
 
@@ -458,6 +464,7 @@ class CandidateShots(ActionType):
         return direct_hit(state.balls, 0, list(targets))[0]
 
     def shot(self, state: "TableState", action: Any) -> CueShot:
+        """The chosen candidate's shot (see the class). Compiled twin: :func:`._action_kernels.candidates_shot`."""
         base = super().shot(state, action)  # side, top, declarations and the plain placement
         a = self.parse(action)
         cands = self.slots(state)
