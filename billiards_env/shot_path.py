@@ -101,7 +101,8 @@ class PlayedShot(NamedTuple):
 def play_shot(state: TableState, shot: CueShot, rng: np.random.Generator, record: bool = False) -> PlayedShot:
     """Play ``shot`` on ``state`` (its balls change in place): the cue ball placed (``shot.place``), the noise of
     ``state.settings`` drawn from ``rng``, the strike, the simulation until rest (or a cap), the balls stopped.
-    Returns a :class:`PlayedShot`."""
+    Returns a :class:`PlayedShot`. Compiled twin (the native vector env's pool tables, on the exact solver):
+    ``billiards_env.envs._game_kernels._play``."""
     s = state.settings
     b = state.balls
     if shot.place is not None:

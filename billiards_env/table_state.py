@@ -216,7 +216,8 @@ class TableState:
     def legal_cue_position(self, x: float, y: float) -> tuple[float, float]:
         """Where a ball-in-hand cue ball asked for at ``(x, y)`` goes: the nearest point of the view's placement
         area (the table without ball in hand) not overlapping another ball nor inside a pocket's capture circle,
-        where it would drop at once (:func:`~billiards_env.physics.layout.nearest_free_point`)."""
+        where it would drop at once (:func:`~billiards_env.physics.layout.nearest_free_point`). Compiled twin (the
+        native vector env's pool tables): ``billiards_env.envs._action_kernels.legal_place``."""
         area = self.view.place_area
         if area is None:
             area = self.table_area()

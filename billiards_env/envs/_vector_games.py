@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from billiards_env.games.infos import conform, unstack
-from billiards_env.games.pool import EightBallSession, NineBallSession
+from billiards_env.games.pool import RACK_EIGHT, RACK_NINE, EightBallSession, NineBallSession, pool_features
 from billiards_env.physics.batch import use_parallel
 from billiards_env.physics.errors import SceneError
 from billiards_env.physics.layout import DIAMOND_ORDER, RACK_ORDER, foot_spot, head_spot, head_string_x
@@ -29,6 +29,7 @@ from billiards_env.players.geometry import MAX_CUT, state_model
 from billiards_env.rules import pool_judge as pj
 from billiards_env.table_state import RectArea, ShotView, TableState
 
+from . import _game_config as gc
 from . import _game_kernels as gk
 from .actions import AIM_ABSOLUTE, AIM_GHOST, AIM_RELATIVE, AbsoluteAim, CandidateShots, GhostAim, RelativeAim
 from .candidates import EASE_SPREAD
@@ -42,7 +43,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from .vector import BilliardsVectorEnv
 
 _AIM_CODES = {AbsoluteAim: AIM_ABSOLUTE, RelativeAim: AIM_RELATIVE, GhostAim: AIM_GHOST}
-_SESSIONS = {NineBallSession: (gk.RACK_NINE, "diamond", DIAMOND_ORDER), EightBallSession: (gk.RACK_EIGHT, "rack",
+_SESSIONS = {NineBallSession: (RACK_NINE, "diamond", DIAMOND_ORDER), EightBallSession: (RACK_EIGHT, "rack",
                                                                                             RACK_ORDER)}
 
 
@@ -117,74 +118,74 @@ class GameTables:
         r = float(t.balls.radius[0])
         hx, hy = head_spot(table)
         fx, fy = foot_spot(table)
-        cfg = np.zeros(gk.N_K)
-        cfg[gk.K_SPEED_LO] = at.speed_lo
-        cfg[gk.K_SPEED_SPAN] = at.speed_span
-        cfg[gk.K_MAX_TIP] = at.max_tip
-        cfg[gk.K_ANGLE_NOISE] = c.angle_noise
-        cfg[gk.K_SPEED_NOISE] = c.speed_noise
-        cfg[gk.K_TIP_NOISE] = c.tip_noise
-        cfg[gk.K_GHOST] = at.max_angle
-        cfg[gk.K_ACT_GHOST] = acting.max_angle
-        cfg[gk.K_RADIUS] = r
-        cfg[gk.K_LENGTH] = table.length
-        cfg[gk.K_WIDTH] = table.width
-        cfg[gk.K_KITCHEN_X] = head_string_x(table)
-        cfg[gk.K_HEAD_X], cfg[gk.K_HEAD_Y] = hx, hy
-        cfg[gk.K_FOOT_X], cfg[gk.K_FOOT_Y] = fx, fy
-        cfg[gk.K_SPEED_MIN], cfg[gk.K_SPEED_MAX] = t.table_state.settings.speed_range
-        cfg[gk.K_WIN] = c.win_reward
-        cfg[gk.K_LOSS] = c.loss_penalty
-        cfg[gk.K_FOUL_PENALTY] = c.foul_penalty
-        cfg[gk.K_POT_REWARD] = c.pot_reward
-        cfg[gk.K_POSITION_REWARD] = c.position_reward
-        cfg[gk.K_EASE_SIGMA] = max(t.table_state.settings.angle_noise, EASE_SPREAD)
-        cfg[gk.K_SX] = 1.0 / table.length
-        cfg[gk.K_SY] = 1.0 / table.width
-        cfg[gk.K_POCKET_MARGIN] = c.pocket_margin
-        cfg[gk.K_MIN_DIST] = 2.0 * c.ball_radius + c.ball_gap
-        cfg[gk.K_BREAK_SPEED] = float(c.speed_max)
-        cfg[gk.K_MAX_CUT] = MAX_CUT
-        cfg[gk.K_SQUIRT] = c.physics.squirt
-        cfg[gk.K_CUE_END_MASS] = c.physics.cue_end_mass
+        cfg = np.zeros(gc.N_K)
+        cfg[gc.K_SPEED_LO] = at.speed_lo
+        cfg[gc.K_SPEED_SPAN] = at.speed_span
+        cfg[gc.K_MAX_TIP] = at.max_tip
+        cfg[gc.K_ANGLE_NOISE] = c.angle_noise
+        cfg[gc.K_SPEED_NOISE] = c.speed_noise
+        cfg[gc.K_TIP_NOISE] = c.tip_noise
+        cfg[gc.K_GHOST] = at.max_angle
+        cfg[gc.K_ACT_GHOST] = acting.max_angle
+        cfg[gc.K_RADIUS] = r
+        cfg[gc.K_LENGTH] = table.length
+        cfg[gc.K_WIDTH] = table.width
+        cfg[gc.K_KITCHEN_X] = head_string_x(table)
+        cfg[gc.K_HEAD_X], cfg[gc.K_HEAD_Y] = hx, hy
+        cfg[gc.K_FOOT_X], cfg[gc.K_FOOT_Y] = fx, fy
+        cfg[gc.K_SPEED_MIN], cfg[gc.K_SPEED_MAX] = t.table_state.settings.speed_range
+        cfg[gc.K_WIN] = c.win_reward
+        cfg[gc.K_LOSS] = c.loss_penalty
+        cfg[gc.K_FOUL_PENALTY] = c.foul_penalty
+        cfg[gc.K_POT_REWARD] = c.pot_reward
+        cfg[gc.K_POSITION_REWARD] = c.position_reward
+        cfg[gc.K_EASE_SIGMA] = max(t.table_state.settings.angle_noise, EASE_SPREAD)
+        cfg[gc.K_SX] = 1.0 / table.length
+        cfg[gc.K_SY] = 1.0 / table.width
+        cfg[gc.K_POCKET_MARGIN] = c.pocket_margin
+        cfg[gc.K_MIN_DIST] = 2.0 * c.ball_radius + c.ball_gap
+        cfg[gc.K_BREAK_SPEED] = float(c.speed_max)
+        cfg[gc.K_MAX_CUT] = MAX_CUT
+        cfg[gc.K_SQUIRT] = c.physics.squirt
+        cfg[gc.K_CUE_END_MASS] = c.physics.cue_end_mass
         if type(at) is CandidateShots:
-            cfg[gk.K_CAND_LO], cfg[gk.K_CAND_HI] = at.speed_range
-            cfg[gk.K_LOG_FACTOR] = at.log_factor
+            cfg[gc.K_CAND_LO], cfg[gc.K_CAND_HI] = at.speed_range
+            cfg[gc.K_LOG_FACTOR] = at.log_factor
         ot = t.observation_type
         if type(ot) is CandidateFeatures:
-            cfg[gk.K_OBS_LO], cfg[gk.K_OBS_HI] = ot.speed_range
+            cfg[gc.K_OBS_LO], cfg[gc.K_OBS_HI] = ot.speed_range
         self.cfg = cfg
-        icfg = np.zeros(gk.N_J, np.int64)
-        icfg[gk.J_AIM] = gk.AIM_CANDIDATES if type(at) is CandidateShots else _AIM_CODES[type(at)]
-        icfg[gk.J_ACT_AIM] = _AIM_CODES[type(acting)]
-        icfg[gk.J_SPIN_DIMS] = at.spin
-        icfg[gk.J_SPIN_MODEL] = t.physics.has_spin
-        icfg[gk.J_N_ACT] = at.n
-        icfg[gk.J_PLACE_AT] = at.place_at
-        icfg[gk.J_POCKET_AT] = at.declare_at.get("pocket", -1)
-        icfg[gk.J_PUSH_AT] = at.declare_at.get("push", -1)
-        icfg[gk.J_N_POCKETS] = at.n_pockets
-        icfg[gk.J_OPPONENT] = gk.OPP_NONE if task.opponent is None else gk.OPP_GEOMETRIC
-        icfg[gk.J_FIRST] = {"agent": gk.FIRST_AGENT, "opponent": gk.FIRST_OPPONENT}.get(c.first_shooter,
+        icfg = np.zeros(gc.N_J, np.int64)
+        icfg[gc.J_AIM] = gc.AIM_CANDIDATES if type(at) is CandidateShots else _AIM_CODES[type(at)]
+        icfg[gc.J_ACT_AIM] = _AIM_CODES[type(acting)]
+        icfg[gc.J_SPIN_DIMS] = at.spin
+        icfg[gc.J_SPIN_MODEL] = t.physics.has_spin
+        icfg[gc.J_N_ACT] = at.n
+        icfg[gc.J_PLACE_AT] = at.place_at
+        icfg[gc.J_POCKET_AT] = at.declare_at.get("pocket", -1)
+        icfg[gc.J_PUSH_AT] = at.declare_at.get("push", -1)
+        icfg[gc.J_N_POCKETS] = at.n_pockets
+        icfg[gc.J_OPPONENT] = gk.OPP_NONE if task.opponent is None else gk.OPP_GEOMETRIC
+        icfg[gc.J_FIRST] = {"agent": gk.FIRST_AGENT, "opponent": gk.FIRST_OPPONENT}.get(c.first_shooter,
                                                                                        gk.FIRST_RANDOM)
-        icfg[gk.J_OPENING] = {"break": gk.OPEN_BREAK, "ball_in_hand": gk.OPEN_BALL_IN_HAND}.get(c.opening,
+        icfg[gc.J_OPENING] = {"break": gk.OPEN_BREAK, "ball_in_hand": gk.OPEN_BALL_IN_HAND}.get(c.opening,
                                                                                               gk.OPEN_EITHER)
-        icfg[gk.J_MAX_SHOTS] = c.max_shots
-        icfg[gk.J_TURN_CAP] = max(MAX_TURN_SHOTS, c.max_shots)
-        icfg[gk.J_RACK] = rack if c.placement == placement else gk.RACK_NONE
+        icfg[gc.J_MAX_SHOTS] = c.max_shots
+        icfg[gc.J_TURN_CAP] = max(MAX_TURN_SHOTS, c.max_shots)
+        icfg[gc.J_RACK] = rack if c.placement == placement else gk.RACK_NONE
         self.positions_obs = type(ot) is Positions and ot.n_extra == 0 and ot.n_game == session.n_features
         cand_obs = type(ot) is CandidateFeatures and ot.n_game == session.n_features and \
             ot.n_slots == c.candidate_slots
         #: Whether the kernels make the observation (the positions and the candidates types).
         self.compiled_obs = self.positions_obs or cand_obs
-        icfg[gk.J_POSITIONS_OBS] = self.positions_obs
-        icfg[gk.J_CANDIDATES_OBS] = cand_obs
-        icfg[gk.J_SPEED_NOISE_ABS] = c.speed_noise_mode == "absolute"
-        icfg[gk.J_SLOTS] = c.candidate_slots
-        icfg[gk.J_MAX_EVENTS] = t.simulator.max_events
-        icfg[gk.J_OPENING_RESPOT] = session.opening_respot
-        icfg[gk.J_MAX_RERACKS] = MAX_RERACKS
-        icfg[gk.J_GAME] = pj.GAME_NINE if type(session) is NineBallSession else pj.GAME_EIGHT
+        icfg[gc.J_POSITIONS_OBS] = self.positions_obs
+        icfg[gc.J_CANDIDATES_OBS] = cand_obs
+        icfg[gc.J_SPEED_NOISE_ABS] = c.speed_noise_mode == "absolute"
+        icfg[gc.J_SLOTS] = c.candidate_slots
+        icfg[gc.J_MAX_EVENTS] = t.simulator.max_events
+        icfg[gc.J_OPENING_RESPOT] = session.opening_respot
+        icfg[gc.J_MAX_RERACKS] = MAX_RERACKS
+        icfg[gc.J_GAME] = pj.GAME_NINE if type(session) is NineBallSession else pj.GAME_EIGHT
         self.icfg = icfg
         sim = t.simulator
         tm = state_model(t.table_state)
@@ -196,16 +197,16 @@ class GameTables:
         # The rack's slots as order_rack takes them (the positions of the numbers of the rack order in the layout).
         fixed = {int(row): xy for row, xy in zip(t.start_layout.fixed_rows, t.start_layout.fixed_xy)}
         self.rack_slots = np.array([fixed[n] for n in order], dtype=np.float64).reshape(-1, 2) \
-            if icfg[gk.J_RACK] != gk.RACK_NONE else np.zeros((0, 2))
+            if icfg[gc.J_RACK] != gk.RACK_NONE else np.zeros((0, 2))
         self.layout = venv.layout_arrays
         self._no_act = np.zeros((n, at.n))
         self.gst = np.zeros((n, pj.N_STATE), np.int64)
-        self.cap = int(icfg[gk.J_TURN_CAP])
+        self.cap = int(icfg[gc.J_TURN_CAP])
         self.rec_agent = np.zeros((n, gk.N_R))
         self.rec_opp = np.zeros((n, self.cap, gk.N_R))
         self.reward = np.zeros(n)
         self.tout = np.zeros((n, gk.N_T), np.int64)
-        self.kc = np.zeros((n, gk.N_KC))  # each table's kick cache (the candidates types)
+        self.kc = np.zeros((n, gc.N_KC))  # each table's kick cache (the candidates types)
         # Each table's cache of its balls' pocket windows (the geometric opponent's decisions; by position).
         self.windows = (np.zeros((n, nb, 2)), np.zeros((n, nb, tm.pocket_r.shape[0], 4)), np.zeros((n, nb), np.bool_))
         self.n_game = session.n_features
@@ -232,8 +233,8 @@ class GameTables:
         area = None
         if st[pj.S_BIH] != pj.BIH_NO and not over:
             r = self._radius
-            x1 = self.cfg[gk.K_KITCHEN_X] if st[pj.S_BIH] == pj.BIH_KITCHEN else self.cfg[gk.K_LENGTH] - r
-            area = RectArea(r, x1, r, self.cfg[gk.K_WIDTH] - r)
+            x1 = self.cfg[gc.K_KITCHEN_X] if st[pj.S_BIH] == pj.BIH_KITCHEN else self.cfg[gc.K_LENGTH] - r
+            area = RectArea(r, x1, r, self.cfg[gc.K_WIDTH] - r)
         return ShotView(tuple(int(i) for i in legal if on[i] and i != 0), min(legal) if legal else None, area,
                         bool(st[pj.S_BREAK] and not over), bool(pj.needs_called_pocket(st, self.opts)),
                         bool(st[pj.S_PUSH_AVAILABLE]), int(st[pj.S_SHOOTER]))
@@ -283,7 +284,7 @@ class GameTables:
         v.ang[k] = b.ang
         v.on_table[k] = b.on_table
         self.gst[k] = pj.state_row(t.task.session.game_state)
-        self.kc[k, gk.KC_VALID] = 0.0
+        self.kc[k, gc.KC_VALID] = 0.0
         self.states[k].changed()
         self._reset_infos[k] = info
         self._observe_compiled(np.array([k], np.int64))
@@ -523,7 +524,8 @@ class _TableGame:
         if player is not None:
             raise ValueError("the native vector env observes each table as its shooter sees it (player=None)")
         out = np.zeros(self.tables.n_game, np.float32)
-        gk.features(self.tables.gst[self.k], out)
+        st = self.tables.gst[self.k]
+        pool_features(st, st[pj.S_SHOOTER], out)
         return out
 
 

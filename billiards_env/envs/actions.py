@@ -83,6 +83,35 @@ def aim_to_angle(code: int, a: float, cx: float, cy: float, tx: float, ty: float
 
 
 @njit(cache=True)
+def _wrap(angle: float) -> float:
+    """:func:`billiards_env.physics.aim.wrap_angle` of one angle, compiled."""
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+@njit(cache=True)
+def angle_to_aim(code: int, angle: float, cx: float, cy: float, tx: float, ty: float, has_target: bool,
+                 contact: float, max_ghost: float) -> float:
+    """Inverse of :func:`aim_to_angle`: the aim component of cue direction ``angle``. Absolute: ``angle / pi``
+    (wrapped); relative: the angle from the direction to the target / pi; ghost: the direction the target leaves in
+    (the line of centres at first contact) from the cue -> target line / ``max_ghost``, a cue line that misses the
+    target mapping to the nearer end (+-1). Without a target: relative counts from 0, ghost gives 0."""
+    if code == AIM_ABSOLUTE:
+        return _wrap(angle) / math.pi
+    if code == AIM_RELATIVE:
+        base = math.atan2(ty - cy, tx - cx) if has_target else 0.0
+        return _wrap(angle - base) / math.pi
+    if not has_target:
+        return 0.0
+    base = math.atan2(ty - cy, tx - cx)
+    ux = math.cos(angle)
+    uy = math.sin(angle)
+    d = ray_circle_entry(cx, cy, ux, uy, tx, ty, contact)
+    if not math.isfinite(d):
+        return -1.0 if _wrap(angle - base) > 0 else 1.0
+    return _wrap(math.atan2(ty - (cy + uy * d), tx - (cx + ux * d)) - base) / max_ghost
+
+
+@njit(cache=True)
 def power_to_speed(a: float, speed_lo: float, speed_span: float) -> float:
     """The cue speed of power component ``a`` (in [-1, 1]): linear over ``[speed_lo, speed_lo + speed_span]``."""
     return speed_lo + 0.5 * (a + 1.0) * speed_span
@@ -164,7 +193,8 @@ class ActionType:
     max_angle = 0.0
 
     def angle(self, state: "TableState", a: float) -> float:
-        """Cue direction (rad) of aim component ``a`` (in [-1, 1]): :func:`aim_to_angle`."""
+        """Cue direction (rad) of aim component ``a`` (in [-1, 1]): :func:`aim_to_angle` (so does its compiled twin,
+        :func:`._action_kernels.angle_of_action`)."""
         b = state.balls
         t = state.view.target if self.code != AIM_ABSOLUTE else None
         if t is None:
@@ -174,8 +204,15 @@ class ActionType:
                             float(b.pos[t, 1]), True, float(b.radius[0] + b.radius[t]), self.max_angle)
 
     def aim(self, state: "TableState", angle: float) -> float:
-        """Aim component of cue direction ``angle`` (inverse of :meth:`angle`)."""
-        return wrap_angle(float(angle)) / math.pi
+        """Aim component of cue direction ``angle`` (inverse of :meth:`angle`): :func:`angle_to_aim` (so does its
+        compiled twin, :func:`._action_kernels.aim_of_angle`)."""
+        b = state.balls
+        t = state.view.target if self.code != AIM_ABSOLUTE else None
+        if t is None:
+            return angle_to_aim(self.code, float(angle), float(b.pos[0, 0]), float(b.pos[0, 1]), 0.0, 0.0, False,
+                                0.0, self.max_angle)
+        return angle_to_aim(self.code, float(angle), float(b.pos[0, 0]), float(b.pos[0, 1]), float(b.pos[t, 0]),
+                            float(b.pos[t, 1]), True, float(b.radius[0] + b.radius[t]), self.max_angle)
 
     # --- the whole vector ------------------------------------------------------------------------------------
     def parse(self, action: Any) -> list[float]:
@@ -200,7 +237,8 @@ class ActionType:
         return ", ".join(names)
 
     def shot(self, state: "TableState", action: Any) -> CueShot:
-        """The shot an action means now (no noise). Placement is read only when the shooter has ball in hand."""
+        """The shot an action means now (no noise). Placement is read only when the shooter has ball in hand.
+        Compiled twin (the native vector env's pool tables): :func:`._action_kernels.shot_of_action`."""
         a = self.parse(action)
         speed = power_to_speed(a[1], self.speed_lo, self.speed_span)
         side = top = 0.0
@@ -223,7 +261,8 @@ class ActionType:
         """The action of a shot (inverse of :meth:`shot`); ``calls``: the declarations by name (those the type does
         not declare are ignored: a player states its whole call). Speeds outside the range clip, extra dims not
         given take neutral values (no spin; the placement dims the middle of the area; a choice its first value,
-        e.g. pocket 0; a flag False)."""
+        e.g. pocket 0; a flag False). Compiled twin (of a shot without tip offsets nor push-out, the geometric
+        opponent's in the native vector env): :func:`._action_kernels.action_of_shot`."""
         for name, v in (("angle", angle), ("speed", speed), ("side", side), ("top", top)):
             if not math.isfinite(float(v)):
                 raise ValueError(f"action_from_shot: {name} must be finite, got {v!r}")
@@ -294,18 +333,7 @@ class RelativeAim(ActionType):
     """``angle = direction(cue -> target) + pi * a[0]``: ``a[0] = 0`` hits the target ball full."""
 
     name = "relative"
-
-    def _base(self, state: "TableState") -> float:
-        t = state.view.target
-        if t is None:
-            return 0.0
-        p = state.balls.pos
-        return aim_angle(p[0], p[t])
-
     code = AIM_RELATIVE
-
-    def aim(self, state: "TableState", angle: float) -> float:
-        return wrap_angle(float(angle) - self._base(state)) / math.pi
 
 
 class GhostAim(ActionType):
@@ -322,23 +350,6 @@ class GhostAim(ActionType):
         super().__init__(config, placement, declarations, n_pockets)
         self.max_angle = math.radians(config.ghost_max_angle)
 
-    def aim(self, state: "TableState", angle: float) -> float:
-        """The object-ball direction a cue direction sends the target in (the line of centres at first contact),
-        relative to the cue -> target line; a cue line that misses the target maps to the nearer end (+-1)."""
-        t = state.view.target
-        if t is None:
-            return 0.0
-        b = state.balls
-        cue, obj = b.pos[0], b.pos[t]
-        reach = float(b.radius[0] + b.radius[t])
-        base = aim_angle(cue, obj)
-        ux, uy = math.cos(angle), math.sin(angle)
-        d = ray_circle_entry(float(cue[0]), float(cue[1]), ux, uy, float(obj[0]), float(obj[1]), reach)
-        if not math.isfinite(d):
-            side = wrap_angle(angle - base)
-            return -1.0 if side > 0 else 1.0
-        contact = (cue[0] + ux * d, cue[1] + uy * d)
-        return wrap_angle(aim_angle(contact, obj) - base) / self.max_angle
 
 
 #: ``candidates`` with the cue ball in hand: its distance (m) behind the ghost ball for ``place_x`` = -1 and +1, and
@@ -417,6 +428,8 @@ class CandidateShots(ActionType):
         return self._pot(cands, a[0])
 
     def _speed(self, base: float, a: float) -> float:
+        """``base`` times the speed factor to the power ``a``, within the range (compiled twin:
+        :func:`._action_kernels.candidate_speed`)."""
         lo, hi = self.speed_range
         return min(max(base * math.exp(a * self.log_factor), lo), hi)
 
@@ -451,6 +464,7 @@ class CandidateShots(ActionType):
         return direct_hit(state.balls, 0, list(targets))[0]
 
     def shot(self, state: "TableState", action: Any) -> CueShot:
+        """The chosen candidate's shot (see the class). Compiled twin: :func:`._action_kernels.candidates_shot`."""
         base = super().shot(state, action)  # side, top, declarations and the plain placement
         a = self.parse(action)
         cands = self.slots(state)
@@ -604,5 +618,5 @@ def action_factory(config: "EnvConfig", placement: bool = False, declarations: t
 
 __all__ = ["CueShot", "ActionType", "AbsoluteAim", "RelativeAim", "GhostAim", "CandidateShots", "CandidateAim", "ACTION_TYPES",
            "action_factory", "PLACE_BACK", "PLACE_MAX_CUT", "PLACED_MAX_CUT", "FALLBACK_SPEED",
-           "square_to_disc", "disc_to_square", "aim_to_angle", "power_to_speed", "noisy_shot", "AIM_ABSOLUTE",
+           "square_to_disc", "disc_to_square", "aim_to_angle", "angle_to_aim", "power_to_speed", "noisy_shot", "AIM_ABSOLUTE",
            "AIM_RELATIVE", "AIM_GHOST"]

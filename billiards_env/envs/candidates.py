@@ -33,6 +33,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numba import njit
 
+from billiards_env.games.pool import pool_place_area_row, pool_targets_row
 from billiards_env.physics.aim import ghost_ball_position
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
@@ -44,6 +45,10 @@ from billiards_env.players.shots import ShotCandidate, candidate_of
 from billiards_env.players.slots import (HAND_CLEAR, HAND_D_OBJ, HAND_HALF, HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET,
                                          in_hand_slots, kick_candidates, shot_slots)
 from billiards_env.players.slots import next_shot_ease as _next_shot_ease
+from billiards_env.rules.pool_judge import S_BREAK, S_OVER
+
+from ._game_config import (J_MAX_EVENTS, J_SLOTS, J_SPIN_MODEL, K_KITCHEN_X, K_LENGTH, K_OBS_HI, K_OBS_LO, K_RADIUS,
+                            K_WIDTH, KC_ANGLE, KC_FOUND, KC_HI, KC_LENGTH, KC_LO, KC_SPEED, KC_TARGET, KC_VALID)
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.table_state import TableState
@@ -261,7 +266,8 @@ EASY_TOLERANCE = 0.02
 def slot_features(state: "TableState", cands: Slots, n_slots: int, speed_max: float) -> np.ndarray:
     """The ``candidates`` observation's slot values of ``cands`` (``n_slots`` slots of :data:`SLOT_FEATURES` values,
     float32, in [-1, 1]; see :class:`billiards_env.envs.observations.CandidateFeatures`), in one compiled call on the
-    slots' rows."""
+    slots' rows. Compiled twin of it on :func:`candidate_slots` (the native vector env's pool tables):
+    :func:`candidates_features_row`."""
     rows = cands.rows if cands.rows is not None else _NO_ROWS
     k = cands.kick
     kick = (k.target, k.shot.d_cue, k.shot.speed) if k is not None else (-1, 0.0, 0.0)
@@ -332,6 +338,64 @@ def _slot_features(rows: np.ndarray, in_hand: bool, kick_target: int, kick_lengt
     for i in range(flat.shape[0]):
         flat[i] = min(max(flat[i], np.float32(-1.0)), np.float32(1.0))
     return flat
+
+
+# --- the compiled twins of the native vector env's games (a pool state row, a packed config) ------------------------
+
+@njit(cache=True)
+def kick_cached(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r,
+                params, kc):
+    """The kick of the candidate list (:func:`kick_of`, as :func:`candidate_slots` finds it) for table ``k`` with
+    speeds in ``[lo, hi]``, from the table's kick cache ``kc[k]`` when it holds it. Returns ``(found, target, angle,
+    speed, length)``."""
+    c = kc[k]
+    if c[KC_VALID] != 0.0 and c[KC_LO] == lo and c[KC_HI] == hi:
+        return c[KC_FOUND] != 0.0, int(c[KC_TARGET]), c[KC_ANGLE], c[KC_SPEED], c[KC_LENGTH]
+    found, j, angle, speed, length = kick_of(pos, on, radius, mass, targets, tm_xy, tm_r, tm_params, lo, hi, pocket_xy,
+                                             pocket_r, params, icfg[J_SPIN_MODEL] != 0, icfg[J_MAX_EVENTS])
+    c[KC_VALID] = 1.0
+    c[KC_FOUND] = found
+    c[KC_TARGET] = j
+    c[KC_ANGLE] = angle
+    c[KC_SPEED] = speed
+    c[KC_LENGTH] = length
+    c[KC_LO] = lo
+    c[KC_HI] = hi
+    return found, j, angle, speed, length
+
+
+@njit(cache=True)
+def candidates_features_row(k, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r,
+                         params, area, kc, out):
+    """Compiled twin of :func:`slot_features` of :func:`candidate_slots` (the ``candidates`` observation's slot
+    values, at the observation's speed range) for table ``k`` on its pool state row ``st``, into ``out``."""
+    n_slots = icfg[J_SLOTS]
+    lo = cfg[K_OBS_LO]
+    hi = cfg[K_OBS_HI]
+    keep = max(n_slots - 1, 1)
+    targets = pool_targets_row(st, on)
+    in_hand = pool_place_area_row(st, cfg[K_RADIUS], cfg[K_KITCHEN_X], cfg[K_LENGTH], cfg[K_WIDTH], area)
+    kick_target, kick_length, kick_speed = -1, 0.0, 0.0
+    if st[S_BREAK] and not st[S_OVER]:
+        rows = np.zeros((0, 16))
+    elif in_hand:
+        rows = in_hand_slots(pos, on, radius, targets, tm_xy, tm_r, tm_params)[:keep]
+    else:
+        rows = shot_slots(pos, on, radius, mass, targets, tm_xy, tm_r, tm_params, lo, hi)[:keep]
+        clear = False
+        for i in range(rows.shape[0]):
+            if rows[i, COL_CLEAR] != 0.0:
+                clear = True
+        if n_slots > 1 and not clear:
+            got, j, _, sp, d = kick_cached(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_r, tm_params,
+                                     pocket_xy, pocket_r, params, kc)
+            if got:
+                kick_target, kick_length, kick_speed = j, d, sp
+    numbers = np.arange(pos.shape[0])
+    f = _slot_features(rows, in_hand, kick_target, kick_length, kick_speed, numbers, tm_xy, tm_params[0],
+                       tm_params[1], hi, n_slots)
+    for i in range(f.shape[0]):
+        out[i] = f[i]
 
 
 __all__ = ["Slot", "Slots", "candidate_slots", "next_shot_ease", "slot_features", "SLOT_FEATURES", "EASY_TOLERANCE",

@@ -188,7 +188,8 @@ class GameTask(Task):
         self.session.begin_shot(shot)
 
     def _judge(self, state: TableState, played: PlayedShot) -> Verdict:
-        """Call a shot just played and apply the call (the session); note the next shot's ease for shaping."""
+        """Call a shot just played and apply the call (the session); note the next shot's ease for shaping.
+        Compiled twin (with :meth:`_shaping`, the native vector env's pool tables): ``_game_kernels._step_table``."""
         v = self.session.judge(played.outcome)
         self._ease = 0.0
         if self.config.position_reward and not v.game_over and not v.turn_over and \
@@ -241,7 +242,8 @@ class GameTask(Task):
         return r
 
     def _opponent_turn(self, driver: Driver) -> list[dict[str, Any]]:
-        """Let the opponent shoot until the agent's turn or the end of the game; one dict per shot."""
+        """Let the opponent shoot until the agent's turn or the end of the game; one dict per shot. Compiled twin
+        (the geometric opponent on the native vector env's pool tables): ``_game_kernels._opponent_turn``."""
         s = self.session
         turns: list[dict[str, Any]] = []
         cap = max(MAX_TURN_SHOTS, self.config.max_shots)

@@ -7,19 +7,21 @@ opening (run-out practice: a break played for nobody, then the cue ball in hand 
 """
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import Any, ClassVar
 
 import numpy as np
+from numba import njit
 
 from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, head_string_x, spot_cue_ball,
                                           spot_object_ball)
 from billiards_env.physics.outcome import ShotOutcome
 from billiards_env.physics.table import Table
-from billiards_env.rules import (ANYWHERE, EIGHT_BALL, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions,
+from billiards_env.rules import (ANYWHERE, KITCHEN, SOLIDS, STRIPES, EightBall, EightBallOptions,
                                  GameState, NineBall, NineBallOptions, RulesError, ShotInfo, ShotSummary,
                                  summarize_outcome)
-from billiards_env.rules.pool_judge import REASONS
+from billiards_env.rules.pool_judge import (BIH_KITCHEN, BIH_NO, GAME_EIGHT, GROUPS_OPEN, GROUPS_SOLIDS, REASONS,
+                                            S_BIH, S_BREAK, S_FOULS0, S_FOULS1, S_GAME, S_GROUPS, S_OVER,
+                                            S_PUSH_AVAILABLE, S_SHOOTER, legal_mask, legal_mask_for, state_row)
 from billiards_env.rules.state import Call
 from billiards_env.table_state import Area, RectArea, ShotView, TableState
 
@@ -40,12 +42,126 @@ _GROUPS_CODE = {None: 0, (SOLIDS, STRIPES): 1, (STRIPES, SOLIDS): 2}
 
 
 def pool_place_area(state: GameState, table: Table, radius: float) -> Area | None:
-    """Where the shooter may place the cue ball: behind the head string (kitchen) or anywhere on the table."""
+    """Where the shooter may place the cue ball: behind the head string (kitchen) or anywhere on the table (compiled
+    twin: :func:`pool_place_area_row`)."""
     bih = state.ball_in_hand
     if not bih or state.game_over:
         return None
     x1 = head_string_x(table) if bih == KITCHEN else table.length - radius
     return RectArea(radius, x1, radius, table.width - radius)
+
+
+@njit(cache=True)
+def pool_features(st: np.ndarray, me: int, out: np.ndarray) -> None:
+    """:meth:`PoolSession.features` of the game state row ``st`` (:mod:`billiards_env.rules.pool_judge`) seen by
+    player ``me``, into ``out`` (eleven float32 values). The one implementation: the session calls it, and so does
+    the native vector env's compiled observation (:mod:`billiards_env.envs._game_kernels`)."""
+    over = st[S_OVER] != 0
+    mine = st[S_SHOOTER] == me and not over
+    bih = st[S_BIH]
+    out[0] = 1.0 if (mine and bih != BIH_NO) else 0.0
+    out[1] = 1.0 if (mine and bih == BIH_KITCHEN) else 0.0
+    out[2] = 1.0 if st[S_BREAK] else 0.0
+    # The viewer's own targets (8-ball: its group) also when it is not its turn (the two-player env).
+    targets = 0 if over else legal_mask_for(st, me)
+    low = -1
+    for j in range(64):
+        if (targets >> j) & 1:
+            low = j
+            break
+    out[3] = low / 15.0 if low >= 0 else 0.0
+    out[4] = 0.0
+    out[5] = 0.0
+    if st[S_GROUPS] != GROUPS_OPEN:
+        solids = (st[S_GROUPS] == GROUPS_SOLIDS) == (me == 0)
+        out[4] = 1.0 if solids else 0.0
+        out[5] = 0.0 if solids else 1.0
+    out[6] = 1.0 if (st[S_GAME] == GAME_EIGHT and targets == 1 << 8) else 0.0
+    mine_f = st[S_FOULS0] if me == 0 else st[S_FOULS1]
+    theirs_f = st[S_FOULS1] if me == 0 else st[S_FOULS0]
+    out[7] = min(mine_f / 2.0, 1.0)
+    out[8] = min(theirs_f / 2.0, 1.0)
+    out[9] = 1.0 if st[S_PUSH_AVAILABLE] else 0.0
+    out[10] = 1.0 if mine else 0.0
+
+
+@njit(cache=True)
+def pool_targets_row(st: np.ndarray, on: np.ndarray) -> np.ndarray:
+    """Compiled twin of :meth:`PoolSession.view`'s ``targets`` on the state row ``st``
+    (:mod:`billiards_env.rules.pool_judge`): the legal balls on the table (rows; a pool ball's row is its number),
+    ascending. The native vector env's kernels use it (``tests/envs/test_vector_env.py`` holds them equal)."""
+    legal = legal_mask(st)
+    n = 0
+    out = np.empty(on.shape[0], np.int64)
+    for j in range(1, on.shape[0]):
+        if (legal >> j) & 1 and on[j]:
+            out[n] = j
+            n += 1
+    return out[:n]
+
+
+@njit(cache=True)
+def pool_target_row(st: np.ndarray) -> int:
+    """Compiled twin of :meth:`PoolSession.view`'s ``target`` on the state row ``st``: the lowest legal ball
+    (-1: none)."""
+    legal = legal_mask(st)
+    for j in range(64):
+        if (legal >> j) & 1:
+            return j
+    return -1
+
+
+@njit(cache=True)
+def pool_place_area_row(st: np.ndarray, radius: float, kitchen_x: float, length: float, width: float,
+                        area: np.ndarray) -> bool:
+    """Compiled twin of :func:`pool_place_area` on the state row ``st`` (``kitchen_x``: the head string's x), into
+    ``area`` ``(x0, x1, y0, y1)``; False: no ball in hand."""
+    if st[S_BIH] == BIH_NO or st[S_OVER]:
+        return False
+    area[0] = radius
+    area[1] = kitchen_x if st[S_BIH] == BIH_KITCHEN else length - radius
+    area[2] = radius
+    area[3] = width - radius
+    return True
+
+
+#: :func:`rack_rows`' codes: 9-ball's diamond, 8-ball's triangle (0: no ordering, the vector env's ``RACK_NONE``).
+RACK_NINE, RACK_EIGHT = 1, 2
+
+
+@njit(cache=True)
+def rack_rows(k: int, g: np.random.Generator, pos: np.ndarray, rack_slots: np.ndarray, mode: int) -> None:
+    """Compiled twin of :meth:`PoolSession.order_rack` (with :meth:`NineBallSession.rack_order` for
+    :data:`RACK_NINE`, :meth:`EightBallSession.rack_order` for :data:`RACK_EIGHT`) on table ``k`` of ``pos``: the
+    rack's numbers slot by slot, drawn from ``g`` as the rules say (9-ball: the 1 at the apex, the 9 in the middle;
+    8-ball: the 8 in the middle, a solid and a stripe in the back corners), the same draws in the same order."""
+    n_slots = rack_slots.shape[0]
+    number = np.zeros(n_slots, np.int64)
+    if mode == RACK_NINE:
+        free = np.arange(2, 9)
+        number[0] = 1
+        number[4] = 9
+    else:
+        corner_solid = g.integers(0, 2)
+        solid = 1 + g.integers(0, 7)
+        stripe = 9 + g.integers(0, 7)
+        number[4] = 8
+        number[10] = solid if corner_solid else stripe
+        number[14] = stripe if corner_solid else solid
+        free = np.empty(12, np.int64)
+        m = 0
+        for n in range(1, 16):
+            if n != 8 and n != solid and n != stripe:
+                free[m] = n
+                m += 1
+    perm = g.permutation(free.shape[0])
+    m = 0
+    for slot in range(n_slots):
+        if number[slot] == 0:
+            number[slot] = free[perm[m]]
+            m += 1
+        pos[k, number[slot], 0] = rack_slots[slot, 0]
+        pos[k, number[slot], 1] = rack_slots[slot, 1]
 
 
 def _order(fixed: dict[int, int], free: list[int], n_slots: int, rng: np.random.Generator) -> tuple[int, ...]:
@@ -71,6 +187,8 @@ class PoolSession(GameSession):
         self.numbers = np.asarray(table.numbers, dtype=np.int64)
         self.row_of = {int(n): i for i, n in enumerate(self.numbers.tolist())}
         self._rack_slots: np.ndarray | None = None
+        self._row_state: GameState | None = None  # the state whose row (pool_judge's) _row holds
+        self._row = np.zeros(0, np.int64)
         super().__init__(spec, rules, table)
 
     # --- the state ---------------------------------------------------------------------------------------------------
@@ -135,7 +253,8 @@ class PoolSession(GameSession):
                                  break_shot=False))
 
     def order_rack(self, rng: np.random.Generator, placement: str) -> None:
-        """Order a racked layout (``placement`` ``"rack"`` or ``"diamond"``) as the rules say, drawing from ``rng``."""
+        """Order a racked layout (``placement`` ``"rack"`` or ``"diamond"``) as the rules say, drawing from ``rng``
+        (compiled twin: :func:`rack_rows`)."""
         if placement not in ("rack", "diamond"):
             return
         pos = self.table.balls.pos
@@ -153,6 +272,9 @@ class PoolSession(GameSession):
 
     # --- the view ----------------------------------------------------------------------------------------------------
     def view(self, table: TableState) -> ShotView:
+        """Who shoots and what they may do (the rules' targets on the table, ball in hand, the break, the call).
+        Compiled twins on a state row: :func:`pool_targets_row`, :func:`pool_target_row`,
+        :func:`pool_place_area_row`."""
         s = self.game_state
         rows = self.legal_rows()
         on = table.balls.on_table
@@ -164,30 +286,19 @@ class PoolSession(GameSession):
     def features(self, player: int | None = None) -> np.ndarray:
         """The game seen by the player: ball in hand (anywhere / kitchen), break shot, its lowest legal target / 15,
         its group (solids, stripes), on the 8, its own and its opponent's fouls in a row / 2, push-out available,
-        and whether it is its turn (eleven values in [0, 1])."""
+        and whether it is its turn (eleven values in [0, 1]): :func:`pool_features` of the state's row."""
         s = self.game_state
-        me = self.viewer(player)
+        if self._row_state is not s:  # the state's row, made once per state
+            self._row = state_row(s)
+            self._row_state = s
         out = np.zeros(N_POOL_FEATURES, np.float32)
-        mine = s.shooter == me and not s.game_over
-        out[0] = 1.0 if (mine and s.ball_in_hand) else 0.0
-        out[1] = 1.0 if (mine and s.ball_in_hand == KITCHEN) else 0.0
-        out[2] = 1.0 if s.break_shot else 0.0
-        # The viewer's own targets (8-ball: its group) also when it is not its turn (the two-player env).
-        targets = self.rules.legal_targets(s if me == s.shooter else replace(s, shooter=me)) \
-            if not s.game_over else ()
-        out[3] = targets[0] / 15.0 if targets else 0.0
-        if s.groups is not None:
-            out[4] = 1.0 if s.groups[me] == SOLIDS else 0.0
-            out[5] = 1.0 if s.groups[me] == STRIPES else 0.0
-        out[6] = 1.0 if (s.game == EIGHT_BALL and targets == (8,)) else 0.0
-        out[7] = min(s.fouls_in_a_row[me] / 2.0, 1.0)
-        out[8] = min(s.fouls_in_a_row[1 - me] / 2.0, 1.0)
-        out[9] = 1.0 if s.push_out_available else 0.0
-        out[10] = 1.0 if mine else 0.0
+        pool_features(self._row, self.viewer(player), out)
         return out
 
     # --- shots -------------------------------------------------------------------------------------------------------
     def _call(self, outcome: ShotOutcome, shot: Any) -> tuple[Call, GameState]:
+        """The rules' call on the shot (compiled twin, with :meth:`_apply`: ``billiards_env.envs._game_kernels._judge``
+        on :func:`~billiards_env.rules.pool_judge.play`)."""
         s = self.game_state
         summary = summarize_outcome(outcome, self.numbers)
         push = bool(shot is not None and shot.call("push", False) and s.push_out_available)
@@ -195,6 +306,8 @@ class PoolSession(GameSession):
         return self.rules.play(s, summary, ShotInfo(push_out=push, called_pocket=pocket))
 
     def _apply(self, call: Call, outcome: ShotOutcome) -> None:
+        """The respots and the cue ball in hand (compiled twin, with :meth:`_call`:
+        ``billiards_env.envs._game_kernels._judge``)."""
         t = self.table
         b = t.balls
         r = float(b.radius[0])
@@ -300,5 +413,6 @@ class EightBallSession(PoolSession):
         return targets if targets == (8,) else ()
 
 
-__all__ = ["PoolSession", "NineBallSession", "EightBallSession", "N_POOL_FEATURES", "pool_place_area",
+__all__ = ["PoolSession", "NineBallSession", "EightBallSession", "N_POOL_FEATURES", "pool_place_area", "pool_features",
+           "pool_targets_row", "pool_target_row", "pool_place_area_row", "rack_rows", "RACK_NINE", "RACK_EIGHT",
            "BALL_IN_HAND_NAMES", "GROUPS_NAMES"]

@@ -108,7 +108,8 @@ def candidate_of(row: np.ndarray) -> ShotCandidate:
 
 
 def direct_hit(balls: Balls, cue: int = 0, targets: list[int] | None = None) -> tuple[float, int]:
-    """Angle of a full-ball hit on the nearest target (the fallback when no pocket shot exists)."""
+    """Angle of a full-ball hit on the nearest target (the fallback when no pocket shot exists). Compiled twin (the
+    native vector env's ``candidates`` type): ``billiards_env.envs._action_kernels.direct_hit_xy``."""
     on = balls.on_table
     if targets is None:
         targets = [i for i in range(len(balls)) if i != cue and on[i]]

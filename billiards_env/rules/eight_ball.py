@@ -76,7 +76,8 @@ def eight_ball_targets(state: GameState) -> tuple[int, ...]:
 
 
 class EightBall(Ruleset):
-    """WPA 8-ball. ``EightBall(EightBallOptions(...))``; see :class:`~.ruleset.Ruleset` for the methods."""
+    """WPA 8-ball. ``EightBall(EightBallOptions(...))``; see :class:`~.ruleset.Ruleset` for the methods. Compiled
+    twin (:meth:`call` and :meth:`~.ruleset.Ruleset.next_state` on integers): :func:`~.pool_judge.play`."""
 
     game = EIGHT_BALL
     targets = staticmethod(eight_ball_targets)

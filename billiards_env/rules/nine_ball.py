@@ -43,7 +43,8 @@ def nine_ball_targets(state: GameState) -> tuple[int, ...]:
 
 
 class NineBall(Ruleset):
-    """WPA 9-ball. ``NineBall(NineBallOptions(...))``; see :class:`~.ruleset.Ruleset` for the methods."""
+    """WPA 9-ball. ``NineBall(NineBallOptions(...))``; see :class:`~.ruleset.Ruleset` for the methods. Compiled twin
+    (:meth:`call` and :meth:`~.ruleset.Ruleset.next_state` on integers): :func:`~.pool_judge.play`."""
 
     game = NINE_BALL
     targets = staticmethod(nine_ball_targets)

@@ -93,10 +93,10 @@ def _group_mask(groups: int, player: int) -> int:
 
 
 @njit(cache=True)
-def legal_mask(state: np.ndarray) -> int:
-    """The balls the shooter may hit first (a mask of their numbers): 9-ball the lowest on the table; 8-ball any on
-    the break, any but the 8 on an open table, the shooter's group while it has balls on the table, then the 8
-    (:func:`~billiards_env.rules.legal_targets`)."""
+def legal_mask_for(state: np.ndarray, player: int) -> int:
+    """The balls ``player`` may hit first if it were to shoot (a mask of their numbers): 9-ball the lowest on the
+    table; 8-ball any on the break, any but the 8 on an open table, the player's group while it has balls on the
+    table, then the 8 (:func:`~billiards_env.rules.legal_targets` of the state with ``shooter=player``)."""
     on = state[S_ON]
     if state[S_GAME] == GAME_NINE:
         low = _lowest(on)
@@ -106,8 +106,14 @@ def legal_mask(state: np.ndarray) -> int:
     if state[S_GROUPS] == GROUPS_OPEN:
         others = on & ~EIGHT_BIT
     else:
-        others = on & _group_mask(state[S_GROUPS], state[S_SHOOTER])
+        others = on & _group_mask(state[S_GROUPS], player)
     return others if others != 0 else on & EIGHT_BIT
+
+
+@njit(cache=True)
+def legal_mask(state: np.ndarray) -> int:
+    """The balls the shooter may hit first (a mask of their numbers; :func:`legal_mask_for` the shooter)."""
+    return legal_mask_for(state, state[S_SHOOTER])
 
 
 @njit(cache=True)
@@ -339,6 +345,20 @@ def play(state: np.ndarray, options: np.ndarray, first: int, rails: int, pockete
     next_state(state, options, call, pocketed, n_pocketed, after)
 
 
+@njit(cache=True)
+def initial_row(st: np.ndarray, game: int, full: int, first: int) -> None:
+    """Compiled twin of :meth:`~billiards_env.rules.Ruleset.initial_state` ``(first_shooter=first)`` into the state
+    row ``st``: the balls of ``full`` (a mask) on, ball in hand in the kitchen, the break."""
+    st[:] = 0
+    st[S_GAME] = game
+    st[S_ON] = full
+    st[S_SHOOTER] = first
+    st[S_BIH] = BIH_KITCHEN
+    st[S_GROUPS] = GROUPS_OPEN
+    st[S_BREAK] = 1
+    st[S_WINNER] = -1
+
+
 # --- the Python rules' values --------------------------------------------------------------------------------------
 
 def options_row(rules: Any) -> np.ndarray:
@@ -428,7 +448,8 @@ def groups_value(code: int) -> tuple[str, str] | None:
     return _GROUPS_VALUE[int(code)]
 
 
-__all__ = ["play", "next_state", "legal_mask", "needs_called_pocket", "options_row", "state_row", "game_state",
-           "call_of", "mask_of", "numbers_of", "ball_in_hand_value", "groups_value", "REASONS", "N_STATE",
-           "N_CALL", "N_OPTIONS", "GAME_NINE", "GAME_EIGHT", "BIH_NO", "BIH_ANYWHERE", "BIH_KITCHEN", "GROUPS_OPEN",
-           "GROUPS_SOLIDS", "GROUPS_STRIPES", "SOLIDS_MASK", "STRIPES_MASK", "EIGHT_BIT"]
+__all__ = ["play", "next_state", "initial_row", "legal_mask", "legal_mask_for", "needs_called_pocket",
+           "options_row", "state_row", "game_state", "call_of", "mask_of", "numbers_of", "ball_in_hand_value",
+           "groups_value", "REASONS", "N_STATE", "N_CALL", "N_OPTIONS", "GAME_NINE", "GAME_EIGHT", "BIH_NO",
+           "BIH_ANYWHERE", "BIH_KITCHEN", "GROUPS_OPEN", "GROUPS_SOLIDS", "GROUPS_STRIPES", "SOLIDS_MASK",
+           "STRIPES_MASK", "EIGHT_BIT"]
