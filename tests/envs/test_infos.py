@@ -74,7 +74,7 @@ def test_other_configs_and_the_python_path_follow_the_schema(env_id):
     if env_id == "Billiards9Ball-v0":
         kw["opening"] = "either"
     env = gym.make(env_id, **kw)
-    env.unwrapped._fast = False
+    env.unwrapped.fast_step = False
     for k, info in enumerate(rollout_infos(env, seeds=(3,), steps=6)):
         check_info(info, env.unwrapped.info_schema, f"{env_id} info {k}")
     pot = gym.make("BilliardsRack-v0", n_object_balls=6, **{k: v for k, v in kw.items() if k != "opening"})

@@ -51,10 +51,10 @@ def _follows_schema(info: dict, schema: dict, n: int) -> None:
 
 
 def python_path_env(env_id: str, **kwargs) -> gym.Env:
-    """``gym.make(env_id)`` on its Python step path (``_fast`` off: no compiled fast step, shots through
+    """``gym.make(env_id)`` on its Python step path (``fast_step`` off: no compiled fast step, shots through
     ``Simulator.run``): the reference the compiled paths must equal."""
     env = gym.make(env_id, **kwargs)
-    env.unwrapped._fast = False
+    env.unwrapped.fast_step = False
     return env
 
 
