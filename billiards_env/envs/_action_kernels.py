@@ -22,9 +22,6 @@ from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_CLEAR, 
 from billiards_env.players.slots import HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET, in_hand_slots, shot_slots
 from billiards_env.rules.pool_judge import S_BREAK, S_OVER
 
-from ._game_config import (J_N_POCKETS, J_PLACE_AT, J_POCKET_AT, J_PUSH_AT, J_SLOTS, J_SPIN_DIMS, K_CAND_HI,
-                            K_CAND_LO, K_KITCHEN_X, K_LENGTH, K_LOG_FACTOR, K_MAX_TIP, K_RADIUS, K_SPEED_LO,
-                            K_SPEED_SPAN, K_WIDTH)
 from .actions import (AIM_ABSOLUTE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, PLACED_MAX_CUT, aim_to_angle,
                       angle_to_aim, disc_to_square, power_to_speed, square_to_disc)
 from .candidates import kick_cached, pool_targets_row
@@ -68,23 +65,23 @@ def shot_of_action(a: np.ndarray, code: int, max_ghost: float, st: np.ndarray, p
     """Compiled twin of :meth:`ActionType.shot <billiards_env.envs.actions.ActionType.shot>` on a pool state row: the
     shot an action (float64, clipped) means now. Returns ``(found, angle, speed, side, top, placed, x, y, pocket,
     push)`` (``pocket`` -1: none; found False: no legal point for a ball in hand)."""
-    speed = power_to_speed(a[1], cfg[K_SPEED_LO], cfg[K_SPEED_SPAN])
+    speed = power_to_speed(a[1], cfg["speed_lo"], cfg["speed_span"])
     side = 0.0
     top = 0.0
-    if icfg[J_SPIN_DIMS]:
+    if icfg["spin_dims"]:
         u, v = square_to_disc(a[2], a[3])
-        side = cfg[K_MAX_TIP] * u
-        top = cfg[K_MAX_TIP] * v
+        side = cfg["max_tip"] * u
+        top = cfg["max_tip"] * v
     pocket = -1
-    if icfg[J_POCKET_AT] >= 0:
-        n = icfg[J_N_POCKETS]
-        pocket = min(int(0.5 * (a[icfg[J_POCKET_AT]] + 1.0) * n), n - 1)
-    push = icfg[J_PUSH_AT] >= 0 and a[icfg[J_PUSH_AT]] > 0.0
+    if icfg["pocket_at"] >= 0:
+        n = icfg["n_pockets"]
+        pocket = min(int(0.5 * (a[icfg["pocket_at"]] + 1.0) * n), n - 1)
+    push = icfg["push_at"] >= 0 and a[icfg["push_at"]] > 0.0
     t = pool_target_row(st)
-    if not pool_place_area_row(st, cfg[K_RADIUS], cfg[K_KITCHEN_X], cfg[K_LENGTH], cfg[K_WIDTH], area):
+    if not pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], area):
         angle = angle_of_action(code, a[0], pos[0, 0], pos[0, 1], t, pos, radius, max_ghost)
         return True, angle, speed, side, top, False, 0.0, 0.0, pocket, push
-    k = icfg[J_PLACE_AT]
+    k = icfg["place_at"]
     x = area[0] + 0.5 * (a[k] + 1.0) * (area[1] - area[0])
     y = area[2] + 0.5 * (a[k + 1] + 1.0) * (area[3] - area[2])
     px, py, found = legal_place(x, y, pos, on, radius, area, holes)
@@ -102,23 +99,23 @@ def action_of_shot(code: int, max_ghost: float, angle: float, speed: float, plac
     out[:] = 0.0
     t = pool_target_row(st)
     found = True
-    if placed and pool_place_area_row(st, cfg[K_RADIUS], cfg[K_KITCHEN_X], cfg[K_LENGTH], cfg[K_WIDTH], area):
-        k = icfg[J_PLACE_AT]
+    if placed and pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], area):
+        k = icfg["place_at"]
         out[k] = 2.0 * (px - area[0]) / max(area[1] - area[0], 1e-12) - 1.0
         out[k + 1] = 2.0 * (py - area[2]) / max(area[3] - area[2], 1e-12) - 1.0
         lx, ly, found = legal_place(px, py, pos, on, radius, area, holes)
         out[0] = aim_of_angle(code, angle, lx, ly, t, pos, radius, max_ghost)
     else:
         out[0] = aim_of_angle(code, angle, pos[0, 0], pos[0, 1], t, pos, radius, max_ghost)
-    out[1] = 2.0 * (speed - cfg[K_SPEED_LO]) / cfg[K_SPEED_SPAN] - 1.0
-    if icfg[J_SPIN_DIMS]:
-        out[2], out[3] = disc_to_square(0.0 / cfg[K_MAX_TIP], 0.0 / cfg[K_MAX_TIP])
-    if icfg[J_POCKET_AT] >= 0:
-        n = icfg[J_N_POCKETS]
+    out[1] = 2.0 * (speed - cfg["speed_lo"]) / cfg["speed_span"] - 1.0
+    if icfg["spin_dims"]:
+        out[2], out[3] = disc_to_square(0.0 / cfg["max_tip"], 0.0 / cfg["max_tip"])
+    if icfg["pocket_at"] >= 0:
+        n = icfg["n_pockets"]
         k = 0 if pocket < 0 else min(max(pocket, 0), n - 1)
-        out[icfg[J_POCKET_AT]] = (2.0 * k + 1.0) / n - 1.0
-    if icfg[J_PUSH_AT] >= 0:
-        out[icfg[J_PUSH_AT]] = -1.0
+        out[icfg["pocket_at"]] = (2.0 * k + 1.0) / n - 1.0
+    if icfg["push_at"] >= 0:
+        out[icfg["push_at"]] = -1.0
     for i in range(out.shape[0]):
         out[i] = np.float64(np.float32(min(max(out[i], -1.0), 1.0)))
     return found
@@ -146,7 +143,7 @@ def direct_hit_xy(targets: np.ndarray, pos: np.ndarray, on: np.ndarray, cx: floa
 def candidate_speed(base: float, a: float, cfg: np.ndarray) -> float:
     """Compiled twin of ``CandidateShots._speed``: ``base`` times the speed factor to the power ``a``, within the
     type's range."""
-    return min(max(base * math.exp(a * cfg[K_LOG_FACTOR]), cfg[K_CAND_LO]), cfg[K_CAND_HI])
+    return min(max(base * math.exp(a * cfg["log_factor"]), cfg["cand_lo"]), cfg["cand_hi"])
 
 
 @njit(cache=True)
@@ -159,16 +156,16 @@ def candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_
         a, AIM_ABSOLUTE, 0.0, st, pos, on, radius, cfg, icfg, holes, area)  # side, top, declarations, placement
     if not found:
         return found, angle, speed, side, top, placed, px, py, pocket, push
-    n_slots = icfg[J_SLOTS]
-    lo = cfg[K_CAND_LO]
-    hi = cfg[K_CAND_HI]
+    n_slots = icfg["slots"]
+    lo = cfg["cand_lo"]
+    hi = cfg["cand_hi"]
     keep = max(n_slots - 1, 1)
     targets = pool_targets_row(st, on)
-    in_hand = pool_place_area_row(st, cfg[K_RADIUS], cfg[K_KITCHEN_X], cfg[K_LENGTH], cfg[K_WIDTH], area)
+    in_hand = pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], area)
     if st[S_BREAK] and not st[S_OVER]:
         cx, cy = (px, py) if placed else (pos[0, 0], pos[0, 1])
         if in_hand:
-            kp = icfg[J_PLACE_AT]
+            kp = icfg["place_at"]
             cx, cy, ok = legal_place(area[1] - abs(a[kp]) * (area[1] - area[0]),
                                       area[2] + 0.5 * (a[kp + 1] + 1.0) * (area[3] - area[2]), pos, on, radius, area,
                                       holes)
@@ -176,7 +173,7 @@ def candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_
                 return False, angle, speed, side, top, placed, px, py, pocket, push
             placed, px, py = True, cx, cy
         angle = direct_hit_xy(targets, pos, on, cx, cy)
-        sp = hi * math.exp(min(a[1], 0.0) * cfg[K_LOG_FACTOR])
+        sp = hi * math.exp(min(a[1], 0.0) * cfg["log_factor"])
         return True, angle, max(sp, lo), side, top, placed, px, py, pocket, push
     kicks = n_slots > 1 and int(abs(a[0]) * n_slots) >= n_slots - 1
     cx, cy = (px, py) if placed else (pos[0, 0], pos[0, 1])
@@ -197,7 +194,7 @@ def candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_
             return True, direct_hit_xy(targets, pos, on, cx, cy), candidate_speed(FALLBACK_SPEED, a[1], cfg), side, \
                 top, placed, px, py, pocket, push
         row = rows[0 if kicks else min(int(abs(a[0]) * n_slots), n_slots - 1, n - 1)]
-        if icfg[J_POCKET_AT] >= 0:
+        if icfg["pocket_at"] >= 0:
             pocket = int(row[COL_POCKET])
         return True, row[COL_ANGLE], candidate_speed(row[COL_SPEED], a[1], cfg), side, top, placed, px, py, pocket, push
     rows = in_hand_slots(pos, on, radius, targets, tm_xy, tm_r, tm_params)[:keep]
@@ -209,10 +206,10 @@ def candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_
     j = int(row[HAND_TARGET])
     p = int(row[HAND_POCKET])
     oa = row[HAND_OBJ_ANGLE]
-    if icfg[J_POCKET_AT] >= 0:
+    if icfg["pocket_at"] >= 0:
         pocket = p
     # CandidateShots._place_for: behind the ghost ball, at the cut of place_y.
-    kp = icfg[J_PLACE_AT]
+    kp = icfg["place_at"]
     contact = radius[0] + radius[j]
     gx = pos[j, 0] - contact * math.cos(oa)
     gy = pos[j, 1] - contact * math.sin(oa)

@@ -28,10 +28,10 @@ bit for bit (``tests/envs/test_vector_env.py``):
   :func:`billiards_env.players.geometry.geometric_decision_cached`, its action in the acting type read back), the
   reward and its shaping (:func:`_step_table`: ``GameTask._judge``/``_shaping``).
 
-The packed configuration (``cfg``, ``icfg``) has its columns in :mod:`._game_config`. Random numbers come from each
+The packed configuration (``cfg``, ``icfg``) is two records declared in :mod:`._game_config`, read by field name. Random numbers come from each
 table's ``numpy.random.Generator`` in the single env's order. What is not compiled (the ``features`` observation type
 and reset options per table, the infos as arrays) is done in Python by :mod:`._vector_games`, from the records these
-functions write (``R_*`` columns per shot).
+functions write (:data:`SHOT_RECORD` per shot, :data:`STEP_OUTCOME` per table).
 """
 from __future__ import annotations
 
@@ -55,31 +55,25 @@ from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_NO, C_FOUL, C_REAS
 from billiards_env.shot_path import noisy_shot
 
 from ._action_kernels import action_of_shot, candidates_shot, shot_of_action
-from ._game_config import (AIM_CANDIDATES, J_ACT_AIM, J_AIM, J_CANDIDATES_OBS, J_FIRST, J_GAME, J_MAX_EVENTS,
-                            J_MAX_RERACKS, J_MAX_SHOTS, J_N_ACT, J_OPENING, J_OPENING_RESPOT, J_OPPONENT,
-                            J_POSITIONS_OBS, J_RACK, J_SLOTS, J_SPEED_NOISE_ABS, J_SPIN_MODEL, J_TURN_CAP, KC_VALID,
-                            K_ACT_GHOST, K_ANGLE_NOISE, K_BREAK_SPEED, K_CUE_END_MASS, K_EASE_SIGMA, K_FOOT_X, K_FOOT_Y,
-                            K_FOUL_PENALTY, K_GHOST, K_HEAD_X, K_HEAD_Y, K_KITCHEN_X, K_LENGTH, K_LOSS, K_MAX_CUT,
-                            K_MIN_DIST, K_POCKET_MARGIN, K_POSITION_REWARD, K_POT_REWARD, K_RADIUS, K_SPEED_MAX,
-                            K_SPEED_MIN, K_SPEED_NOISE, K_SQUIRT, K_SX, K_SY, K_TIP_NOISE, K_WIDTH, K_WIN)
+from ._game_config import AIM_CANDIDATES
 from ._kernels import observation
 from .candidates import candidates_features_row
 
-#: ``J_OPPONENT``: none (play alone) or the geometric player.
+#: ``icfg["opponent"]``: none (play alone) or the geometric player.
 OPP_NONE, OPP_GEOMETRIC = 0, 1
-#: ``J_FIRST``, ``J_OPENING``, ``J_RACK`` codes.
+#: ``icfg["first"]``, ``icfg["opening"]``, ``icfg["rack"]`` codes.
 FIRST_AGENT, FIRST_OPPONENT, FIRST_RANDOM = 0, 1, 2
 OPEN_BREAK, OPEN_BALL_IN_HAND, OPEN_EITHER = 0, 1, 2
-#: ``J_RACK``: no ordering (``RACK_NINE``, ``RACK_EIGHT``: :func:`billiards_env.games.pool.rack_rows`).
+#: ``icfg["rack"]``: no ordering (``RACK_NINE``, ``RACK_EIGHT``: :func:`billiards_env.games.pool.rack_rows`).
 RACK_NONE = 0
-# Columns of a shot's record: who shot, the call, what the shot did, the shot as played, the state after it.
-R_SHOOTER, R_FOUL, R_REASON, R_TURN_OVER, R_POCKETED, R_SCRATCH, R_FIRST, R_ANGLE, R_SPEED, R_SIDE, R_TOP, R_BIH, \
-    R_GROUPS, R_OVER, R_N_EVENTS, R_TIME, R_STATUS, R_START_X, R_START_Y, R_SCORED = range(20)
-N_R = 20
-# Per-table step outputs (``out`` int columns): terminated, truncated, error, error detail, opponent shots.
-T_TERMINATED, T_TRUNCATED, T_ERROR, T_DETAIL, T_N_OPP, T_LAST = range(6)
-N_T = 6
-#: Errors (``T_ERROR``): none, a ball in hand with no legal point, a ball that could not be respotted, the cue
+#: A shot's record: who shot, the call, what the shot did, the shot as played, the state after it.
+SHOT_RECORD = np.dtype([(name, np.float64) for name in (
+    "shooter", "foul", "reason", "turn_over", "pocketed", "scratch", "first", "angle", "speed", "side", "top", "bih",
+    "groups", "over", "n_events", "time", "status", "start_x", "start_y", "scored")])
+#: A table's step outcome: terminated, truncated, error, error detail, the opponent's shots, the last shot's index.
+STEP_OUTCOME = np.dtype([(name, np.int64) for name in (
+    "terminated", "truncated", "error", "detail", "n_opp", "last")])
+#: Errors (``STEP_OUTCOME["error"]``): none, a ball in hand with no legal point, a ball that could not be respotted, the cue
 #: ball that could not be respotted, the random placement failed, the opponent took too many shots, the opponent won
 #: every rack at the reset.
 E_NONE, E_NO_PLACE, E_RESPOT, E_CUE_RESPOT, E_PLACEMENT, E_TURN_CAP, E_RERACKS = range(7)
@@ -97,9 +91,9 @@ def _play(k, angle, speed, side, top, placed, px, py, pos, vel, ang, on, radius,
     if placed:
         p[0, 0] = px
         p[0, 1] = py
-    an = cfg[K_ANGLE_NOISE]
-    sn = cfg[K_SPEED_NOISE]
-    tn = cfg[K_TIP_NOISE]
+    an = cfg["angle_noise"]
+    sn = cfg["speed_noise"]
+    tn = cfg["tip_noise"]
     n_a = 0.0
     n_s = 0.0
     n_sd = 0.0
@@ -114,33 +108,33 @@ def _play(k, angle, speed, side, top, placed, px, py, pos, vel, ang, on, radius,
             n_sd = g.normal(0.0, tn)
             n_tp = g.normal(0.0, tn)
     angle, speed, side, top = noisy_shot(angle, speed, side, top, n_a, n_s, n_sd, n_tp, an > 0.0, sn > 0.0,
-                                         tn > 0.0, icfg[J_SPEED_NOISE_ABS] != 0)
-    rec[R_START_X] = p[0, 0]
-    rec[R_START_Y] = p[0, 1]
-    rec[R_ANGLE] = angle
-    rec[R_SPEED] = speed
-    rec[R_SIDE] = side
-    rec[R_TOP] = top
-    if icfg[J_SPIN_MODEL]:  # the tip offsets' spin, and the squirt of the physics (as the shot path strikes)
-        vx, vy, wx, wy, wz = strike_ball(angle, speed, side, top, radius[0], mass[0], cfg[K_SQUIRT],
-                                         cfg[K_CUE_END_MASS])
+                                         tn > 0.0, icfg["speed_noise_abs"] != 0)
+    rec["start_x"] = p[0, 0]
+    rec["start_y"] = p[0, 1]
+    rec["angle"] = angle
+    rec["speed"] = speed
+    rec["side"] = side
+    rec["top"] = top
+    if icfg["spin_model"]:  # the tip offsets' spin, and the squirt of the physics (as the shot path strikes)
+        vx, vy, wx, wy, wz = strike_ball(angle, speed, side, top, radius[0], mass[0], cfg["squirt"],
+                                         cfg["cue_end_mass"])
         vel[k, 0, 0] = vx
         vel[k, 0, 1] = vy
         ang[k, 0, 0] = wx
         ang[k, 0, 1] = wy
         ang[k, 0, 2] = wz
         res = simulate_exact_spin(p, vel[k], ang[k], radius, mass, on[k], pocket_xy, pocket_r, params,
-                                  icfg[J_MAX_EVENTS], False)
+                                  icfg["max_events"], False)
         ang[k] = 0.0
     else:
         vel[k, 0, 0] = speed * math.cos(angle)
         vel[k, 0, 1] = speed * math.sin(angle)
         res = simulate_exact(p, vel[k], ang[k], radius, mass, on[k], pocket_xy, pocket_r, params,
-                             icfg[J_MAX_EVENTS], False)
+                             icfg["max_events"], False)
     vel[k] = 0.0
-    rec[R_N_EVENTS] = res.n_events
-    rec[R_TIME] = res.time
-    rec[R_STATUS] = res.status
+    rec["n_events"] = res.n_events
+    rec["time"] = res.time
+    rec["status"] = res.status
     return res.pocket, res.ev_int
 
 
@@ -172,24 +166,24 @@ def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, ca
     for i in range(n_order):
         n = pocketed[i]
         if (call[C_RESPOT] >> n) & 1:
-            if not spot_object_row(pos[k], on[k], cfg[K_RADIUS], n, cfg[K_FOOT_X], cfg[K_FOOT_Y], cfg[K_LENGTH]):
+            if not spot_object_row(pos[k], on[k], cfg["radius"], n, cfg["foot_x"], cfg["foot_y"], cfg["length"]):
                 err = E_RESPOT
         else:
             kept += 1
     if not on[k, 0]:
-        if not spot_cue_row(pos[k], on[k], cfg[K_RADIUS], 0, cfg[K_HEAD_X], cfg[K_HEAD_Y], cfg[K_WIDTH]):
+        if not spot_cue_row(pos[k], on[k], cfg["radius"], 0, cfg["head_x"], cfg["head_y"], cfg["width"]):
             err = E_CUE_RESPOT
-    rec[R_SHOOTER] = call[C_SHOOTER]
-    rec[R_FOUL] = call[C_FOUL]
-    rec[R_REASON] = call[C_REASON]
-    rec[R_TURN_OVER] = call[C_TURN_OVER]
-    rec[R_POCKETED] = pocketed_rows
-    rec[R_SCRATCH] = pocket[0] >= 0
-    rec[R_FIRST] = first
-    rec[R_BIH] = BIH_NO if st[S_OVER] else st[S_BIH]
-    rec[R_GROUPS] = st[S_GROUPS]
-    rec[R_OVER] = st[S_OVER]
-    rec[R_SCORED] = kept
+    rec["shooter"] = call[C_SHOOTER]
+    rec["foul"] = call[C_FOUL]
+    rec["reason"] = call[C_REASON]
+    rec["turn_over"] = call[C_TURN_OVER]
+    rec["pocketed"] = pocketed_rows
+    rec["scratch"] = pocket[0] >= 0
+    rec["first"] = first
+    rec["bih"] = BIH_NO if st[S_OVER] else st[S_BIH]
+    rec["groups"] = st[S_GROUPS]
+    rec["over"] = st[S_OVER]
+    rec["scored"] = kept
     return err
 
 
@@ -201,24 +195,24 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
     agent's turn or the end of the game. Returns ``(shots, error)``."""
     st = gst[k]
     n = 0
-    cap = icfg[J_TURN_CAP]
+    cap = icfg["turn_cap"]
     while not st[S_OVER] and st[S_SHOOTER] != 0 and n < cap:
         targets = pool_targets_row(st, on[k])
-        in_hand = pool_place_area_row(st, cfg[K_RADIUS], cfg[K_KITCHEN_X], cfg[K_LENGTH], cfg[K_WIDTH], dec_area)
+        in_hand = pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], dec_area)
         if not in_hand:
             dec_area[:] = 0.0
         px, py, placed, angle, speed, kr, rows, status = geometric_decision_cached(
-            pos[k], on[k], radius, mass, 0, targets, tm_xy, tm_r, tm_params, cfg[K_SPEED_MIN], cfg[K_SPEED_MAX],
-            dec_area, in_hand, st[S_BREAK] != 0, cfg[K_MAX_CUT], wc[0][k], wc[1][k], wc[2][k])
+            pos[k], on[k], radius, mass, 0, targets, tm_xy, tm_r, tm_params, cfg["speed_min"], cfg["speed_max"],
+            dec_area, in_hand, st[S_BREAK] != 0, cfg["max_cut"], wc[0][k], wc[1][k], wc[2][k])
         if status == 1:
             return n, E_NO_PLACE
         pocket = int(rows[kr, COL_POCKET]) if kr >= 0 else -1
-        code = icfg[J_ACT_AIM]
-        if not action_of_shot(code, cfg[K_ACT_GHOST], angle, speed, placed, px, py, pocket, st, pos[k], on[k],
+        code = icfg["act_aim"]
+        if not action_of_shot(code, cfg["act_ghost"], angle, speed, placed, px, py, pocket, st, pos[k], on[k],
                                radius, cfg, icfg, holes, area, act):
             return n, E_NO_PLACE
         found, angle, speed, side, top, placed, px, py, pocket, push = shot_of_action(
-            act, code, cfg[K_ACT_GHOST], st, pos[k], on[k], radius, cfg, icfg, holes, area)
+            act, code, cfg["act_ghost"], st, pos[k], on[k], radius, cfg, icfg, holes, area)
         if not found:
             return n, E_NO_PLACE
         rec = recs[n]
@@ -244,23 +238,23 @@ def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, o
     buf = np.zeros((2, pos.shape[1]), np.int64)
     area = np.zeros(4)
     dec_area = np.zeros(4)
-    a = np.empty(icfg[J_N_ACT])
+    a = np.empty(icfg["n_act"])
     st = gst[k]
-    tout[k, T_ERROR] = E_NONE
-    tout[k, T_N_OPP] = 0
+    tout[k]["error"] = E_NONE
+    tout[k]["n_opp"] = 0
     # The agent's shot: its action read by the env's type.
     for i in range(a.shape[0]):
         a[i] = act[k, i]
-    if icfg[J_AIM] == AIM_CANDIDATES:
+    if icfg["aim"] == AIM_CANDIDATES:
         found, angle, speed, side, top, placed, px, py, pocket, push = candidates_shot(
             k, a, st, pos[k], on[k], radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params,
             holes, area, kc)
     else:
         found, angle, speed, side, top, placed, px, py, pocket, push = shot_of_action(
-            a, icfg[J_AIM], cfg[K_GHOST], st, pos[k], on[k], radius, cfg, icfg, holes, area)
-    kc[k, KC_VALID] = 0.0  # the table moves on
+            a, icfg["aim"], cfg["ghost"], st, pos[k], on[k], radius, cfg, icfg, holes, area)
+    kc[k]["valid"] = 0.0  # the table moves on
     if not found:
-        tout[k, T_ERROR] = E_NO_PLACE
+        tout[k]["error"] = E_NO_PLACE
         return
     rec = rec_agent[k]
     pk, ev = _play(k, angle, speed, side, top, placed, px, py, pos, vel, ang, on, radius, mass, gens, cfg, icfg,
@@ -268,42 +262,42 @@ def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, o
     shots[k] += 1
     err = _judge(k, pk, ev, pocket, push, st, opts, pos, on, cfg, call, after, buf, rec)
     if err != E_NONE:
-        tout[k, T_ERROR] = err
+        tout[k]["error"] = err
         return
     # GameTask._judge's ease and _shaping (the agent's own shot).
     ease = 0.0
-    if cfg[K_POSITION_REWARD] != 0.0 and not st[S_OVER] and not rec[R_TURN_OVER] and rec[R_SHOOTER] == 0:
+    if cfg["position_reward"] != 0.0 and not st[S_OVER] and not rec["turn_over"] and rec["shooter"] == 0:
         targets = pool_targets_row(st, on[k])
-        if st[S_BREAK] == 0 and (st[S_BIH] == BIH_NO or st[S_OVER]) and icfg[J_SLOTS] >= 1:
-            ease = next_shot_ease(pos[k], on[k], radius, mass, targets, tm_xy, tm_r, tm_params, cfg[K_SPEED_MIN],
-                                  cfg[K_SPEED_MAX], cfg[K_EASE_SIGMA])
+        if st[S_BREAK] == 0 and (st[S_BIH] == BIH_NO or st[S_OVER]) and icfg["slots"] >= 1:
+            ease = next_shot_ease(pos[k], on[k], radius, mass, targets, tm_xy, tm_r, tm_params, cfg["speed_min"],
+                                  cfg["speed_max"], cfg["ease_sigma"])
     r = 0.0
-    if rec[R_SHOOTER] == 0:
-        if rec[R_FOUL]:
-            r -= cfg[K_FOUL_PENALTY]
-        elif cfg[K_POT_REWARD] != 0.0:
-            r += cfg[K_POT_REWARD] * rec[R_SCORED]
-        if cfg[K_POSITION_REWARD] != 0.0:
-            r += cfg[K_POSITION_REWARD] * ease
+    if rec["shooter"] == 0:
+        if rec["foul"]:
+            r -= cfg["foul_penalty"]
+        elif cfg["pot_reward"] != 0.0:
+            r += cfg["pot_reward"] * rec["scored"]
+        if cfg["position_reward"] != 0.0:
+            r += cfg["position_reward"] * ease
     practice_over = False
     if not st[S_OVER] and st[S_SHOOTER] != 0:
-        if icfg[J_OPPONENT] == OPP_NONE:
+        if icfg["opponent"] == OPP_NONE:
             practice_over = True
         else:
             n_opp, err = _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                                         pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_opp[k], call, after, buf,
                                         a, area, dec_area, wc)
-            tout[k, T_N_OPP] = n_opp
+            tout[k]["n_opp"] = n_opp
             if err != E_NONE:
-                tout[k, T_ERROR] = err
+                tout[k]["error"] = err
                 return
     if st[S_OVER]:
-        r += cfg[K_WIN] if st[S_WINNER] == 0 else -cfg[K_LOSS]
+        r += cfg["win"] if st[S_WINNER] == 0 else -cfg["loss"]
     terminated = st[S_OVER] != 0 or practice_over
     reward[k] = r
-    tout[k, T_TERMINATED] = terminated
-    tout[k, T_TRUNCATED] = not terminated and shots[k] >= icfg[J_MAX_SHOTS]
-    tout[k, T_LAST] = tout[k, T_N_OPP]  # the last shot: the agent's (0) or the opponent's n-th
+    tout[k]["terminated"] = terminated
+    tout[k]["truncated"] = not terminated and shots[k] >= icfg["max_shots"]
+    tout[k]["last"] = tout[k]["n_opp"]  # the last shot: the agent's (0) or the opponent's n-th
     _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params, kc, obs)
 
 
@@ -319,13 +313,13 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
     buf = np.zeros((2, pos.shape[1]), np.int64)
     area = np.zeros(4)
     dec_area = np.zeros(4)
-    a = np.empty(icfg[J_N_ACT])
+    a = np.empty(icfg["n_act"])
     g = gens[k]
     st = gst[k]
-    tout[k, T_ERROR] = E_NONE
-    tout[k, T_N_OPP] = 0
-    tout[k, T_LAST] = -1
-    kc[k, KC_VALID] = 0.0
+    tout[k]["error"] = E_NONE
+    tout[k]["n_opp"] = 0
+    tout[k]["last"] = -1
+    kc[k]["valid"] = 0.0
     vel[k] = 0.0
     ang[k] = 0.0
     on[k] = True
@@ -336,26 +330,26 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
         pos[k, fixed_rows[f], 1] = fixed_xy[f, 1]
         placed[f, 0] = fixed_xy[f, 0]
         placed[f, 1] = fixed_xy[f, 1]
-    if place_random_rows(g, pos[k], rand_rows, regions, placed, nf, pockets, cfg[K_POCKET_MARGIN], cfg[K_MIN_DIST],
+    if place_random_rows(g, pos[k], rand_rows, regions, placed, nf, pockets, cfg["pocket_margin"], cfg["min_dist"],
                          PLACE_BATCH, PLACE_TRIES) >= 0:
-        tout[k, T_ERROR] = E_PLACEMENT
+        tout[k]["error"] = E_PLACEMENT
         return
     shots[k] = 0
-    if icfg[J_OPPONENT] != OPP_NONE:
+    if icfg["opponent"] != OPP_NONE:
         g.integers(0, 2 ** 31)  # the opponent's reset(seed) draw (the geometric player ignores the seed)
-    game = icfg[J_GAME]
-    for attempt in range(icfg[J_MAX_RERACKS]):
-        tout[k, T_N_OPP] = 0  # the turns of this attempt only
-        tout[k, T_LAST] = -1
-        if icfg[J_RACK] != RACK_NONE:
-            rack_rows(k, g, pos, rack_slots, icfg[J_RACK])
-        first = icfg[J_FIRST]
+    game = icfg["game"]
+    for attempt in range(icfg["max_reracks"]):
+        tout[k]["n_opp"] = 0  # the turns of this attempt only
+        tout[k]["last"] = -1
+        if icfg["rack"] != RACK_NONE:
+            rack_rows(k, g, pos, rack_slots, icfg["rack"])
+        first = icfg["first"]
         if first == FIRST_RANDOM:
             first = g.integers(0, 2)
-        if first != 0 and icfg[J_OPPONENT] == OPP_NONE:
+        if first != 0 and icfg["opponent"] == OPP_NONE:
             first = 0
         initial_row(st, game, full, first)
-        opening = icfg[J_OPENING]
+        opening = icfg["opening"]
         if opening == OPEN_EITHER:
             opening = OPEN_BALL_IN_HAND if g.integers(0, 2) else OPEN_BREAK
         if opening == OPEN_BALL_IN_HAND:
@@ -372,17 +366,17 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
                         best = d
                         target = j
             rec = rec_agent[k]
-            _play(k, math.atan2(pos[k, target, 1] - cy, pos[k, target, 0] - cx), cfg[K_BREAK_SPEED], 0.0, 0.0, False,
+            _play(k, math.atan2(pos[k, target, 1] - cy, pos[k, target, 0] - cx), cfg["break_speed"], 0.0, 0.0, False,
                   0.0, 0.0, pos, vel, ang, on, radius, mass, gens, cfg, icfg, pocket_xy, pocket_r, params, rec)
-            last = icfg[J_OPENING_RESPOT]
+            last = icfg["opening_respot"]
             if not on[k, last]:
-                if not spot_object_row(pos[k], on[k], cfg[K_RADIUS], last, cfg[K_FOOT_X], cfg[K_FOOT_Y],
-                                       cfg[K_LENGTH]):
-                    tout[k, T_ERROR] = E_RESPOT
+                if not spot_object_row(pos[k], on[k], cfg["radius"], last, cfg["foot_x"], cfg["foot_y"],
+                                       cfg["length"]):
+                    tout[k]["error"] = E_RESPOT
                     return
             if not on[k, 0]:
-                if not spot_cue_row(pos[k], on[k], cfg[K_RADIUS], 0, cfg[K_HEAD_X], cfg[K_HEAD_Y], cfg[K_WIDTH]):
-                    tout[k, T_ERROR] = E_CUE_RESPOT
+                if not spot_cue_row(pos[k], on[k], cfg["radius"], 0, cfg["head_x"], cfg["head_y"], cfg["width"]):
+                    tout[k]["error"] = E_CUE_RESPOT
                     return
             on_mask = 0
             for j in range(1, pos.shape[1]):
@@ -395,22 +389,22 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
             st[S_BIH] = BIH_ANYWHERE
             st[S_GROUPS] = GROUPS_OPEN
             st[S_WINNER] = -1
-        if first == 0 or icfg[J_OPPONENT] == OPP_NONE:
+        if first == 0 or icfg["opponent"] == OPP_NONE:
             break
         n_opp, err = _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
                                     pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_opp[k], call, after, buf, a,
                                     area, dec_area, wc)
-        tout[k, T_N_OPP] = n_opp
-        tout[k, T_LAST] = n_opp if n_opp > 0 else -1
+        tout[k]["n_opp"] = n_opp
+        tout[k]["last"] = n_opp if n_opp > 0 else -1
         if err != E_NONE:
-            tout[k, T_ERROR] = err
+            tout[k]["error"] = err
             return
         if not st[S_OVER]:
             break
         on[k] = True  # the opponent won from the break: rack again
         vel[k] = 0.0
-        if attempt == icfg[J_MAX_RERACKS] - 1:
-            tout[k, T_ERROR] = E_RERACKS
+        if attempt == icfg["max_reracks"] - 1:
+            tout[k]["error"] = E_RERACKS
             return
     _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params, kc, obs)
 
@@ -421,14 +415,14 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
 def _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r, params, kc, obs):
     """Table ``k``'s observation into ``obs[k]`` when its type is compiled: the positions, the ``candidates`` slot
     values for that type, the game features."""
-    if not (icfg[J_POSITIONS_OBS] or icfg[J_CANDIDATES_OBS]):
+    if not (icfg["positions_obs"] or icfg["candidates_obs"]):
         return
-    p = observation(pos[k], on[k], cfg[K_SX], cfg[K_SY])
+    p = observation(pos[k], on[k], cfg["sx"], cfg["sy"])
     n = p.shape[0]
     for i in range(n):
         obs[k, i] = p[i]
-    if icfg[J_CANDIDATES_OBS]:
-        m = 12 * icfg[J_SLOTS]
+    if icfg["candidates_obs"]:
+        m = 12 * icfg["slots"]
         candidates_features_row(k, gst[k], pos[k], on[k], radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy,
                              pocket_r, params, np.zeros(4), kc, obs[k, n:n + m])
         n += m
@@ -462,8 +456,9 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
     on the slice it is in). Threads instead of numba's ``prange``: the parallel pipeline took about 20 s more to
     compile this function, on every cold cache.
 
-    A step: the agent's shot (``act``: the actions, float64 clipped; ``kc``: the tables' kick caches, ``KC_*``, for
-    the ``candidates`` types), its call and reward, the opponent's turn, the termination and truncation (``tout``).
+    A step: the agent's shot (``act``: the actions, float64 clipped; ``kc``: the tables' kick caches,
+    ``KICK_CACHE`` records, for the ``candidates`` types), its call and reward, the opponent's turn, the termination
+    and truncation (``tout``).
     A reset: the layout (``layout``: the fixed rows and their points, the random rows and their regions, the pocket
     centres; ``rack_slots``, ``full``: the rack's slots and balls), the game's reset, the opponent's break when it
     breaks. Both record every shot (``rec_agent``, ``rec_opp``) and, for the positions and candidates observation
@@ -483,4 +478,4 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
                         obs, wc)
 
 
-__all__ = ["play_tables", "observe_tables", "legal_masks", "N_R", "N_T"]
+__all__ = ["play_tables", "observe_tables", "legal_masks", "SHOT_RECORD", "STEP_OUTCOME"]

@@ -118,74 +118,74 @@ class GameTables:
         r = float(t.balls.radius[0])
         hx, hy = head_spot(table)
         fx, fy = foot_spot(table)
-        cfg = np.zeros(gc.N_K)
-        cfg[gc.K_SPEED_LO] = at.speed_lo
-        cfg[gc.K_SPEED_SPAN] = at.speed_span
-        cfg[gc.K_MAX_TIP] = at.max_tip
-        cfg[gc.K_ANGLE_NOISE] = c.angle_noise
-        cfg[gc.K_SPEED_NOISE] = c.speed_noise
-        cfg[gc.K_TIP_NOISE] = c.tip_noise
-        cfg[gc.K_GHOST] = at.max_angle
-        cfg[gc.K_ACT_GHOST] = acting.max_angle
-        cfg[gc.K_RADIUS] = r
-        cfg[gc.K_LENGTH] = table.length
-        cfg[gc.K_WIDTH] = table.width
-        cfg[gc.K_KITCHEN_X] = head_string_x(table)
-        cfg[gc.K_HEAD_X], cfg[gc.K_HEAD_Y] = hx, hy
-        cfg[gc.K_FOOT_X], cfg[gc.K_FOOT_Y] = fx, fy
-        cfg[gc.K_SPEED_MIN], cfg[gc.K_SPEED_MAX] = t.table_state.settings.speed_range
-        cfg[gc.K_WIN] = c.win_reward
-        cfg[gc.K_LOSS] = c.loss_penalty
-        cfg[gc.K_FOUL_PENALTY] = c.foul_penalty
-        cfg[gc.K_POT_REWARD] = c.pot_reward
-        cfg[gc.K_POSITION_REWARD] = c.position_reward
-        cfg[gc.K_EASE_SIGMA] = max(t.table_state.settings.angle_noise, EASE_SPREAD)
-        cfg[gc.K_SX] = 1.0 / table.length
-        cfg[gc.K_SY] = 1.0 / table.width
-        cfg[gc.K_POCKET_MARGIN] = c.pocket_margin
-        cfg[gc.K_MIN_DIST] = 2.0 * c.ball_radius + c.ball_gap
-        cfg[gc.K_BREAK_SPEED] = float(c.speed_max)
-        cfg[gc.K_MAX_CUT] = MAX_CUT
-        cfg[gc.K_SQUIRT] = c.physics.squirt
-        cfg[gc.K_CUE_END_MASS] = c.physics.cue_end_mass
+        cfg = np.zeros((), gc.GAME_FLOATS)[()]  # a record: the floats by name
+        cfg["speed_lo"] = at.speed_lo
+        cfg["speed_span"] = at.speed_span
+        cfg["max_tip"] = at.max_tip
+        cfg["angle_noise"] = c.angle_noise
+        cfg["speed_noise"] = c.speed_noise
+        cfg["tip_noise"] = c.tip_noise
+        cfg["ghost"] = at.max_angle
+        cfg["act_ghost"] = acting.max_angle
+        cfg["radius"] = r
+        cfg["length"] = table.length
+        cfg["width"] = table.width
+        cfg["kitchen_x"] = head_string_x(table)
+        cfg["head_x"], cfg["head_y"] = hx, hy
+        cfg["foot_x"], cfg["foot_y"] = fx, fy
+        cfg["speed_min"], cfg["speed_max"] = t.table_state.settings.speed_range
+        cfg["win"] = c.win_reward
+        cfg["loss"] = c.loss_penalty
+        cfg["foul_penalty"] = c.foul_penalty
+        cfg["pot_reward"] = c.pot_reward
+        cfg["position_reward"] = c.position_reward
+        cfg["ease_sigma"] = max(t.table_state.settings.angle_noise, EASE_SPREAD)
+        cfg["sx"] = 1.0 / table.length
+        cfg["sy"] = 1.0 / table.width
+        cfg["pocket_margin"] = c.pocket_margin
+        cfg["min_dist"] = 2.0 * c.ball_radius + c.ball_gap
+        cfg["break_speed"] = float(c.speed_max)
+        cfg["max_cut"] = MAX_CUT
+        cfg["squirt"] = c.physics.squirt
+        cfg["cue_end_mass"] = c.physics.cue_end_mass
         if type(at) is CandidateShots:
-            cfg[gc.K_CAND_LO], cfg[gc.K_CAND_HI] = at.speed_range
-            cfg[gc.K_LOG_FACTOR] = at.log_factor
+            cfg["cand_lo"], cfg["cand_hi"] = at.speed_range
+            cfg["log_factor"] = at.log_factor
         ot = t.observation_type
         if type(ot) is CandidateFeatures:
-            cfg[gc.K_OBS_LO], cfg[gc.K_OBS_HI] = ot.speed_range
+            cfg["obs_lo"], cfg["obs_hi"] = ot.speed_range
         self.cfg = cfg
-        icfg = np.zeros(gc.N_J, np.int64)
-        icfg[gc.J_AIM] = gc.AIM_CANDIDATES if type(at) is CandidateShots else _AIM_CODES[type(at)]
-        icfg[gc.J_ACT_AIM] = _AIM_CODES[type(acting)]
-        icfg[gc.J_SPIN_DIMS] = at.spin
-        icfg[gc.J_SPIN_MODEL] = t.physics.has_spin
-        icfg[gc.J_N_ACT] = at.n
-        icfg[gc.J_PLACE_AT] = at.place_at
-        icfg[gc.J_POCKET_AT] = at.declare_at.get("pocket", -1)
-        icfg[gc.J_PUSH_AT] = at.declare_at.get("push", -1)
-        icfg[gc.J_N_POCKETS] = at.n_pockets
-        icfg[gc.J_OPPONENT] = gk.OPP_NONE if task.opponent is None else gk.OPP_GEOMETRIC
-        icfg[gc.J_FIRST] = {"agent": gk.FIRST_AGENT, "opponent": gk.FIRST_OPPONENT}.get(c.first_shooter,
+        icfg = np.zeros((), gc.GAME_INTS)[()]
+        icfg["aim"] = gc.AIM_CANDIDATES if type(at) is CandidateShots else _AIM_CODES[type(at)]
+        icfg["act_aim"] = _AIM_CODES[type(acting)]
+        icfg["spin_dims"] = at.spin
+        icfg["spin_model"] = t.physics.has_spin
+        icfg["n_act"] = at.n
+        icfg["place_at"] = at.place_at
+        icfg["pocket_at"] = at.declare_at.get("pocket", -1)
+        icfg["push_at"] = at.declare_at.get("push", -1)
+        icfg["n_pockets"] = at.n_pockets
+        icfg["opponent"] = gk.OPP_NONE if task.opponent is None else gk.OPP_GEOMETRIC
+        icfg["first"] = {"agent": gk.FIRST_AGENT, "opponent": gk.FIRST_OPPONENT}.get(c.first_shooter,
                                                                                        gk.FIRST_RANDOM)
-        icfg[gc.J_OPENING] = {"break": gk.OPEN_BREAK, "ball_in_hand": gk.OPEN_BALL_IN_HAND}.get(c.opening,
+        icfg["opening"] = {"break": gk.OPEN_BREAK, "ball_in_hand": gk.OPEN_BALL_IN_HAND}.get(c.opening,
                                                                                               gk.OPEN_EITHER)
-        icfg[gc.J_MAX_SHOTS] = c.max_shots
-        icfg[gc.J_TURN_CAP] = max(MAX_TURN_SHOTS, c.max_shots)
-        icfg[gc.J_RACK] = rack if c.placement == placement else gk.RACK_NONE
+        icfg["max_shots"] = c.max_shots
+        icfg["turn_cap"] = max(MAX_TURN_SHOTS, c.max_shots)
+        icfg["rack"] = rack if c.placement == placement else gk.RACK_NONE
         self.positions_obs = type(ot) is Positions and ot.n_extra == 0 and ot.n_game == session.n_features
         cand_obs = type(ot) is CandidateFeatures and ot.n_game == session.n_features and \
             ot.n_slots == c.candidate_slots
         #: Whether the kernels make the observation (the positions and the candidates types).
         self.compiled_obs = self.positions_obs or cand_obs
-        icfg[gc.J_POSITIONS_OBS] = self.positions_obs
-        icfg[gc.J_CANDIDATES_OBS] = cand_obs
-        icfg[gc.J_SPEED_NOISE_ABS] = c.speed_noise_mode == "absolute"
-        icfg[gc.J_SLOTS] = c.candidate_slots
-        icfg[gc.J_MAX_EVENTS] = t.simulator.max_events
-        icfg[gc.J_OPENING_RESPOT] = session.opening_respot
-        icfg[gc.J_MAX_RERACKS] = MAX_RERACKS
-        icfg[gc.J_GAME] = pj.GAME_NINE if type(session) is NineBallSession else pj.GAME_EIGHT
+        icfg["positions_obs"] = self.positions_obs
+        icfg["candidates_obs"] = cand_obs
+        icfg["speed_noise_abs"] = c.speed_noise_mode == "absolute"
+        icfg["slots"] = c.candidate_slots
+        icfg["max_events"] = t.simulator.max_events
+        icfg["opening_respot"] = session.opening_respot
+        icfg["max_reracks"] = MAX_RERACKS
+        icfg["game"] = pj.GAME_NINE if type(session) is NineBallSession else pj.GAME_EIGHT
         self.icfg = icfg
         sim = t.simulator
         tm = state_model(t.table_state)
@@ -197,16 +197,16 @@ class GameTables:
         # The rack's slots as order_rack takes them (the positions of the numbers of the rack order in the layout).
         fixed = {int(row): xy for row, xy in zip(t.start_layout.fixed_rows, t.start_layout.fixed_xy)}
         self.rack_slots = np.array([fixed[n] for n in order], dtype=np.float64).reshape(-1, 2) \
-            if icfg[gc.J_RACK] != gk.RACK_NONE else np.zeros((0, 2))
+            if icfg["rack"] != gk.RACK_NONE else np.zeros((0, 2))
         self.layout = venv.layout_arrays
         self._no_act = np.zeros((n, at.n))
         self.gst = np.zeros((n, pj.N_STATE), np.int64)
-        self.cap = int(icfg[gc.J_TURN_CAP])
-        self.rec_agent = np.zeros((n, gk.N_R))
-        self.rec_opp = np.zeros((n, self.cap, gk.N_R))
+        self.cap = int(icfg["turn_cap"])
+        self.rec_agent = np.zeros(n, gk.SHOT_RECORD)
+        self.rec_opp = np.zeros((n, self.cap), gk.SHOT_RECORD)
         self.reward = np.zeros(n)
-        self.tout = np.zeros((n, gk.N_T), np.int64)
-        self.kc = np.zeros((n, gc.N_KC))  # each table's kick cache (the candidates types)
+        self.tout = np.zeros(n, gk.STEP_OUTCOME)
+        self.kc = np.zeros(n, gc.KICK_CACHE)  # each table's kick cache (the candidates types)
         # Each table's cache of its balls' pocket windows (the geometric opponent's decisions; by position).
         self.windows = (np.zeros((n, nb, 2)), np.zeros((n, nb, tm.pocket_r.shape[0], 4)), np.zeros((n, nb), np.bool_))
         self.n_game = session.n_features
@@ -233,8 +233,8 @@ class GameTables:
         area = None
         if st[pj.S_BIH] != pj.BIH_NO and not over:
             r = self._radius
-            x1 = self.cfg[gc.K_KITCHEN_X] if st[pj.S_BIH] == pj.BIH_KITCHEN else self.cfg[gc.K_LENGTH] - r
-            area = RectArea(r, x1, r, self.cfg[gc.K_WIDTH] - r)
+            x1 = self.cfg["kitchen_x"] if st[pj.S_BIH] == pj.BIH_KITCHEN else self.cfg["length"] - r
+            area = RectArea(r, x1, r, self.cfg["width"] - r)
         return ShotView(tuple(int(i) for i in legal if on[i] and i != 0), min(legal) if legal else None, area,
                         bool(st[pj.S_BREAK] and not over), bool(pj.needs_called_pocket(st, self.opts)),
                         bool(st[pj.S_PUSH_AVAILABLE]), int(st[pj.S_SHOOTER]))
@@ -284,7 +284,7 @@ class GameTables:
         v.ang[k] = b.ang
         v.on_table[k] = b.on_table
         self.gst[k] = pj.state_row(t.task.session.game_state)
-        self.kc[k, gc.KC_VALID] = 0.0
+        self.kc[k]["valid"] = 0.0
         self.states[k].changed()
         self._reset_infos[k] = info
         self._observe_compiled(np.array([k], np.int64))
@@ -309,11 +309,11 @@ class GameTables:
             v.observations[k] = ot.observe(self.states[k])
 
     def _check(self, rows: np.ndarray) -> None:
-        err = self.tout[rows, gk.T_ERROR]
+        err = self.tout["error"][rows]
         if not err.any():
             return
         k = int(rows[np.flatnonzero(err)[0]])
-        code = int(self.tout[k, gk.T_ERROR])
+        code = int(self.tout[k]["error"])
         if code == gk.E_NO_PLACE:
             raise SceneError(f"sub-env {k}: no legal point for ball row 0 in the area: it is covered by other balls")
         if code == gk.E_RESPOT:
@@ -346,20 +346,20 @@ class GameTables:
     def _turn_lists(self, rows: np.ndarray) -> list[list[dict[str, Any]]]:
         """``info["opponent_turns"]`` (with ``opponent_infos``) of tables ``rows`` (``GameTask._turn_info`` per
         opponent shot), built from the shot records of all the tables at once."""
-        counts = self.tout[rows, gk.T_N_OPP]
+        counts = self.tout["n_opp"][rows]
         total = int(counts.sum())
         if total == 0:
             return [[] for _ in range(len(rows))]
         starts = np.cumsum(counts) - counts
         rec = self.rec_opp[np.repeat(rows, counts), np.arange(total) - np.repeat(starts, counts)]
-        ints = rec[:, [gk.R_SHOOTER, gk.R_REASON, gk.R_FIRST, gk.R_BIH, gk.R_GROUPS]].astype(np.int64).T.tolist()
-        flags = (rec[:, [gk.R_FOUL, gk.R_SCRATCH, gk.R_TURN_OVER]] != 0).T.tolist()
-        pocketed = list(self._row_masks(rec[:, gk.R_POCKETED]))
+        ints = [rec[f].astype(np.int64).tolist() for f in ("shooter", "reason", "first", "bih", "groups")]
+        flags = [(rec[f] != 0).tolist() for f in ("foul", "scratch", "turn_over")]
+        pocketed = list(self._row_masks(rec["pocketed"]))
         turns = [{"shooter": s, "pocketed": p, "scratch": sc, "first_contact": f, "foul": fo,
                   "foul_reason": r if fo else -1, "call": r, "turn_over": to, "angle": a, "speed": sp,
                   "ball_in_hand": b, "groups": g}
-                 for s, r, f, b, g, fo, sc, to, p, a, sp in zip(*ints, *flags, pocketed, rec[:, gk.R_ANGLE].tolist(),
-                                                                rec[:, gk.R_SPEED].tolist())]
+                 for s, r, f, b, g, fo, sc, to, p, a, sp in zip(*ints, *flags, pocketed, rec["angle"].tolist(),
+                                                                rec["speed"].tolist())]
         schema = self.venv.info_schema
         for turn in turns:  # the single env's forms (numpy scalars, 0-d flags)
             conform(turn, schema)
@@ -379,7 +379,7 @@ class GameTables:
         def put(key: str, values: Any) -> None:
             cols[key][rows] = values
 
-        counts = self.tout[rows, gk.T_N_OPP]
+        counts = self.tout["n_opp"][rows]
         turn = np.arange(self.cap) < counts[:, None]  # the opponent's shots of each table's reply
         opp = self.rec_opp[rows]
         put("is_success", over & (winner == 0))
@@ -388,27 +388,27 @@ class GameTables:
         put("legal_targets", (np.where(over, 0, self.legal[rows])[:, None] >> self._numbers) & 1 != 0)
         put("opponent_shots", counts)
         put("opponent_pocketed", self._row_masks(np.bitwise_or.reduce(
-            np.where(turn, opp[:, :, gk.R_POCKETED], 0).astype(np.int64), axis=1)))
-        put("opponent_fouls", (turn & (opp[:, :, gk.R_FOUL] != 0)).sum(axis=1))
+            np.where(turn, opp["pocketed"], 0).astype(np.int64), axis=1)))
+        put("opponent_fouls", (turn & (opp["foul"] != 0)).sum(axis=1))
         put("ball_in_hand", np.where(over, pj.BIH_NO, st[:, pj.S_BIH]))
         put("groups", st[:, pj.S_GROUPS])
         if step:
             rec = self.rec_agent[rows]
-            foul = rec[:, gk.R_FOUL] != 0
-            reason = rec[:, gk.R_REASON].astype(np.int64)
+            foul = rec["foul"] != 0
+            reason = rec["reason"].astype(np.int64)
             put("foul", foul)
             put("foul_reason", np.where(foul, reason, -1))
             put("call", reason)
-            put("turn_over", rec[:, gk.R_TURN_OVER] != 0)
-            put("pocketed", self._row_masks(rec[:, gk.R_POCKETED]))
-            put("scratch", rec[:, gk.R_SCRATCH] != 0)
-            put("first_contact", rec[:, gk.R_FIRST])
-            put("n_events", rec[:, gk.R_N_EVENTS])
-            put("sim_time", rec[:, gk.R_TIME])
-            put("status", rec[:, gk.R_STATUS])
+            put("turn_over", rec["turn_over"] != 0)
+            put("pocketed", self._row_masks(rec["pocketed"]))
+            put("scratch", rec["scratch"] != 0)
+            put("first_contact", rec["first"])
+            put("n_events", rec["n_events"])
+            put("sim_time", rec["time"])
+            put("status", rec["status"])
             put("shots", self.venv.shots[rows])
-            for key, col in (("angle", gk.R_ANGLE), ("speed", gk.R_SPEED), ("side", gk.R_SIDE), ("top", gk.R_TOP)):
-                put(key, rec[:, col])
+            for key in ("angle", "speed", "side", "top"):
+                put(key, rec[key])
         else:
             for key in ("foul_reason", "call", "first_contact", "status"):
                 put(key, schema[key].blank)
@@ -421,7 +421,7 @@ class GameTables:
 
     def outcome(self, k: int) -> tuple[float, bool, bool]:
         """Table ``k``'s reward, termination and truncation of its last step."""
-        return float(self.reward[k]), bool(self.tout[k, gk.T_TERMINATED]), bool(self.tout[k, gk.T_TRUNCATED])
+        return float(self.reward[k]), bool(self.tout[k]["terminated"]), bool(self.tout[k]["truncated"])
 
 
 class InfoColumns:

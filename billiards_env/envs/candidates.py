@@ -47,8 +47,6 @@ from billiards_env.players.slots import (HAND_CLEAR, HAND_D_OBJ, HAND_HALF, HAND
 from billiards_env.players.slots import next_shot_ease as _next_shot_ease
 from billiards_env.rules.pool_judge import S_BREAK, S_OVER
 
-from ._game_config import (J_MAX_EVENTS, J_SLOTS, J_SPIN_MODEL, K_KITCHEN_X, K_LENGTH, K_OBS_HI, K_OBS_LO, K_RADIUS,
-                            K_WIDTH, KC_ANGLE, KC_FOUND, KC_HI, KC_LENGTH, KC_LO, KC_SPEED, KC_TARGET, KC_VALID)
 
 if TYPE_CHECKING:  # pragma: no cover
     from billiards_env.table_state import TableState
@@ -349,18 +347,18 @@ def kick_cached(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_
     speeds in ``[lo, hi]``, from the table's kick cache ``kc[k]`` when it holds it. Returns ``(found, target, angle,
     speed, length)``."""
     c = kc[k]
-    if c[KC_VALID] != 0.0 and c[KC_LO] == lo and c[KC_HI] == hi:
-        return c[KC_FOUND] != 0.0, int(c[KC_TARGET]), c[KC_ANGLE], c[KC_SPEED], c[KC_LENGTH]
+    if c["valid"] != 0.0 and c["lo"] == lo and c["hi"] == hi:
+        return c["found"] != 0.0, int(c["target"]), c["angle"], c["speed"], c["length"]
     found, j, angle, speed, length = kick_of(pos, on, radius, mass, targets, tm_xy, tm_r, tm_params, lo, hi, pocket_xy,
-                                             pocket_r, params, icfg[J_SPIN_MODEL] != 0, icfg[J_MAX_EVENTS])
-    c[KC_VALID] = 1.0
-    c[KC_FOUND] = found
-    c[KC_TARGET] = j
-    c[KC_ANGLE] = angle
-    c[KC_SPEED] = speed
-    c[KC_LENGTH] = length
-    c[KC_LO] = lo
-    c[KC_HI] = hi
+                                             pocket_r, params, icfg["spin_model"] != 0, icfg["max_events"])
+    c["valid"] = 1.0
+    c["found"] = found
+    c["target"] = j
+    c["angle"] = angle
+    c["speed"] = speed
+    c["length"] = length
+    c["lo"] = lo
+    c["hi"] = hi
     return found, j, angle, speed, length
 
 
@@ -369,12 +367,12 @@ def candidates_features_row(k, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r
                          params, area, kc, out):
     """Compiled twin of :func:`slot_features` of :func:`candidate_slots` (the ``candidates`` observation's slot
     values, at the observation's speed range) for table ``k`` on its pool state row ``st``, into ``out``."""
-    n_slots = icfg[J_SLOTS]
-    lo = cfg[K_OBS_LO]
-    hi = cfg[K_OBS_HI]
+    n_slots = icfg["slots"]
+    lo = cfg["obs_lo"]
+    hi = cfg["obs_hi"]
     keep = max(n_slots - 1, 1)
     targets = pool_targets_row(st, on)
-    in_hand = pool_place_area_row(st, cfg[K_RADIUS], cfg[K_KITCHEN_X], cfg[K_LENGTH], cfg[K_WIDTH], area)
+    in_hand = pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], area)
     kick_target, kick_length, kick_speed = -1, 0.0, 0.0
     if st[S_BREAK] and not st[S_OVER]:
         rows = np.zeros((0, 16))

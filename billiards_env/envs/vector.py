@@ -49,7 +49,6 @@ from billiards_env.table_state import TableState
 from ._pot_fast import compiled_action
 from ._seeding import np_random
 from ._vector_games import GameTables, InfoColumns, default_threads, native_games, stack_columns, stack_infos
-from ._game_kernels import T_TERMINATED, T_TRUNCATED
 from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP,
                               I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
                               draw_noise, finish_shots, observe_positions, pack_config, place_tables, pot_step,
@@ -481,9 +480,9 @@ class BilliardsVectorEnv(VectorEnv):
         reward = np.zeros(n)
         reward[stepped] = g.reward[stepped]
         term = np.zeros(n, np.bool_)
-        term[stepped] = g.tout[stepped, T_TERMINATED] != 0
+        term[stepped] = g.tout["terminated"][stepped] != 0
         trunc = np.zeros(n, np.bool_)
-        trunc[stepped] = g.tout[stepped, T_TRUNCATED] != 0
+        trunc[stepped] = g.tout["truncated"][stepped] != 0
         done = term | trunc
         if mode == AutoresetMode.SAME_STEP:
             g.prepare_infos()
