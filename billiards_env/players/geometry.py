@@ -25,8 +25,9 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between, dot2, ghost_point,
-                                       lone_path_pocket, pocket_windows, segment_blocked_by,
+                                       lone_path_pocket_grouped, pocket_windows, segment_blocked_by,
                                        segment_touched_by, window_of)
+from billiards_env.physics.kernel_io import wall_groups
 from billiards_env.physics.layout import free_discs, nearest_free, py_hypot  # noqa: F401 (re-exported)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
 
@@ -67,10 +68,11 @@ class Model(NamedTuple):
     ball_e: float  #: ball-ball restitution
     segs: np.ndarray  #: (S, 6) a jaw table's rails and jaw faces (:mod:`billiards_env.physics.walls`); (0, 6) if none
     tips: np.ndarray  #: (C, 3) its jaw tips; (0, 3) if none
+    groups: np.ndarray  #: (G, 3) circles holding each pocket's jaw faces and tips (kernel_io.wall_groups); (0, 3)
 
 
 #: Where a jaw table's walls start in a :class:`TableModel`'s ``params``: ``n_segs, n_tips``, then the segment rows
-#: and the tip rows, flattened.
+#: and the tip rows, flattened, then ``n_groups`` and the rows of the walls' groups (:func:`.kernel_io.wall_groups`).
 WALLS_AT = 8
 
 
@@ -78,7 +80,8 @@ class TableModel(NamedTuple):
     """The table and the motion law as plain arrays, what the compiled functions take (:func:`table_model`):
     ``pocket_xy`` (K, 2), ``pocket_r`` (K,) and ``params`` = ``(length, width, cushion restitution, law, a, k,
     min speed, ball restitution)`` (``law, a, k``: :attr:`billiards_env.physics.Physics.path_args`), then a jaw
-    table's walls (``n_segs, n_tips`` and their rows; ``0, 0`` on a capture table). Three arrays, so that a call
+    table's walls (``n_segs, n_tips``, their rows, ``n_groups`` and the groups' circles; ``0, 0, 0`` on a capture
+    table). Three arrays, so that a call
     costs no more than passing three arrays."""
 
     pocket_xy: np.ndarray
@@ -91,9 +94,11 @@ def table_model(table, physics) -> TableModel:
     :class:`~billiards_env.physics.Physics`."""
     law, a, k = physics.path_args
     segs, tips = table.walls()
+    groups = wall_groups(segs, tips)
     params = np.concatenate([np.array([table.length, table.width, table.cushion_restitution, law, a, k,
                                        physics.min_speed, physics.ball_restitution, len(segs), len(tips)],
-                                      dtype=np.float64), segs.ravel(), tips.ravel()])
+                                      dtype=np.float64), segs.ravel(), tips.ravel(),
+                             np.array([len(groups)], dtype=np.float64), groups.ravel()])
     # Copies: writeable arrays (the table's are read-only), so every caller hits the same compiled signature.
     return TableModel(np.array(table.pocket_xy, dtype=np.float64), np.array(table.pocket_radius, dtype=np.float64),
                       params)
@@ -118,9 +123,13 @@ def model(pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray) -> Mo
     n_tips = int(params[WALLS_AT + 1]) if params.shape[0] > WALLS_AT else 0
     at = WALLS_AT + 2
     segs = params[at:at + 6 * n_segs].reshape((n_segs, 6))
-    tips = params[at + 6 * n_segs:at + 6 * n_segs + 3 * n_tips].reshape((n_tips, 3))
+    at += 6 * n_segs
+    tips = params[at:at + 3 * n_tips].reshape((n_tips, 3))
+    at += 3 * n_tips
+    n_groups = int(params[at]) if params.shape[0] > at else 0
+    groups = params[at + 1:at + 1 + 3 * n_groups].reshape((n_groups, 3))
     return Model(params[0], params[1], params[2], pocket_xy, pocket_r, int(params[3]), params[4], params[5],
-                 params[6], params[7], segs, tips)
+                 params[6], params[7], segs, tips, groups)
 
 
 # --- windows ----------------------------------------------------------------------------------------------------
@@ -258,9 +267,9 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
         r_try = False
         if check_scratch:
             collide_into(scratch, v_imp * cdx, v_imp * cdy, 0.0, 0.0, -ux, -uy, mc, mo, e)
-            r_try = lone_path_pocket(gx, gy, scratch[0, 0], scratch[0, 1], rc, tm.length, tm.width, tm.cushion_e,
-                                     tm.pocket_xy, tm.pocket_r, tm.law, tm.decel, tm.k, tm.v_min,
-                                     SCRATCH_BOUNCES, tm.segs, tm.tips) >= 0
+            r_try = lone_path_pocket_grouped(gx, gy, scratch[0, 0], scratch[0, 1], rc, tm.length, tm.width,
+                                             tm.cushion_e, tm.pocket_xy, tm.pocket_r, tm.law, tm.decel, tm.k,
+                                             tm.v_min, SCRATCH_BOUNCES, tm.segs, tm.tips, tm.groups) >= 0
         if not reachable or (risk and not r_try):
             speed = s_try
             v0 = v_need
