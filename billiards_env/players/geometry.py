@@ -355,9 +355,43 @@ def ghost_shots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.nd
     (:func:`ghost_shots_from`), easiest first, windows included: :func:`billiards_env.players.shots.ghost_ball_shots`
     as rows."""
     tm = model(pocket_xy, pocket_r, params)
-    windows = windows_of(pos, radius, targets, tm)
-    return ghost_shots_from(pos[cue, 0], pos[cue, 1], pos, on, radius, mass, cue, targets, windows, tm, lo, hi,
-                            max_cut, arrive, factors, check_scratch)
+    return ghost_shots_windowed(pos[cue, 0], pos[cue, 1], pos, on, radius, mass, cue, targets, tm, lo, hi, max_cut,
+                                arrive, factors, check_scratch)
+
+
+@njit(cache=True)
+def ghost_shots_windowed(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray,
+                         mass: np.ndarray, cue: int, targets: np.ndarray, tm: Model, lo: float, hi: float,
+                         max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool) -> np.ndarray:
+    """:func:`ghost_shots_from` working out the windows it needs itself: a (ball, pocket) window only when
+    :func:`tolerance_bound` allows that shot a cut within ``max_cut`` for some window (else :func:`shot_row` would
+    refuse it whatever the window: its cut is beyond ``max_cut``, by the bound's margins far above round-off). The
+    same rows, without the windows of the pockets behind a ball (on a jaw table, most of a decision's time)."""
+    k_p = tm.pocket_r.shape[0]
+    out = np.empty((targets.shape[0] * k_p, N_COLS))
+    scratch = np.empty((2, 2))
+    cos_max = math.cos(max_cut)
+    rc = radius[cue]
+    n = 0
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if not on[j] or j == cue:
+            continue
+        ox = pos[j, 0]
+        oy = pos[j, 1]
+        contact = rc + radius[j]
+        d_co = math.hypot(ox - cx, oy - cy)
+        a_co = math.atan2(oy - cy, ox - cx)
+        for p in range(k_p):
+            if tolerance_bound(ox, oy, contact, d_co, a_co, tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
+                               WINDOW_SAMPLES, cos_max) < 0.0:
+                continue
+            c, h, d_in, ok = window_of(ox, oy, radius[j], tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
+                                       tm.length, tm.width, WINDOW_SAMPLES, tm.segs, tm.tips)
+            if ok and shot_row(out[n], cx, cy, j, p, c, h, d_in, pos, on, radius, mass, cue, tm, lo, hi, max_cut,
+                               arrive, factors, check_scratch, scratch):
+                n += 1
+    return rank_rows(out[:n])
 
 
 @njit(cache=True)
@@ -534,6 +568,11 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
         if j < 0:
             j = cue
         return px, py, in_hand, math.atan2(pos[j, 1] - cy, pos[j, 0] - cx), hi, -1, empty, 0
+    if not in_hand and cache_have.shape[0] == 0:  # only the windows its shots need
+        cx, cy = pos[cue, 0], pos[cue, 1]
+        rows = ghost_shots_windowed(cx, cy, pos, on, radius, mass, cue, targets, tm, lo, hi,
+                                    max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+        return _played(rows, px, py, in_hand, cx, cy, pos, on, cue, targets, lo, hi, max_cut)
     if cache_have.shape[0] == 0:
         windows = windows_of(pos, radius, targets, tm)
     else:
@@ -552,11 +591,19 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
         on2 = on
     rows = ghost_shots_from(cx, cy, pos, on2, radius, mass, cue, targets, windows, tm, lo, hi,
                             max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+    return _played(rows, px, py, in_hand, cx, cy, pos, on2, cue, targets, lo, hi, max_cut)
+
+
+@njit(cache=True)
+def _played(rows: np.ndarray, px: float, py: float, in_hand: bool, cx: float, cy: float, pos: np.ndarray,
+            on: np.ndarray, cue: int, targets: np.ndarray, lo: float, hi: float, max_cut: float) -> tuple:
+    """:func:`_decision`'s answer from the ranked shots ``rows`` from ``(cx, cy)``: the easiest within ``max_cut``
+    (else within 88 deg), else a firm full-ball hit on the nearest target."""
     k = best_shot_row(rows, max_cut, FALLBACK_CUT)
     if k >= 0:
         return px, py, in_hand, rows[k, COL_ANGLE], rows[k, COL_SPEED], k, rows, 0
     angle = 0.0
-    j = nearest_target(cx, cy, pos, on2, cue, targets)
+    j = nearest_target(cx, cy, pos, on, cue, targets)
     if j >= 0:
         angle = math.atan2(pos[j, 1] - cy, pos[j, 0] - cx)
     return px, py, in_hand, angle, min(max(DIRECT_HIT_SPEED, lo), hi), -1, rows, 0
@@ -849,7 +896,7 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
 
 __all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "windows_cached",
            "geometric_decision_cached", "target_windows", "shot_row",
-           "rank_rows", "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
+           "rank_rows", "ghost_shots_from", "ghost_shots", "ghost_shots_windowed", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "tolerance_bound",
            "pot_chance",
            "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",
