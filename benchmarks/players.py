@@ -7,7 +7,8 @@ The tables: every decision of seeded 9-ball and 8-ball games (``Billiards9Ball-v
 built-in geometric opponent; the agent plays the geometric player's shot or, one time in four, a seeded random
 action), breaks and ball in hand included. On each table, interleaved:
 
-- the geometric decision: ``geometric_decision`` on arrays (what a caller holding the table state calls),
+- the geometric decision: ``geometric_decision`` on arrays (what a caller holding the table state calls), the same
+  on the capture circles of a table of that size when the game's table has jaws (what the jaws cost the player),
   ``GeometricPlayer.decide`` on the env's table (with ``shot_context``), and today's Python
   (``benchmarks/reference_players.py``: ``GeometricPlayer.act`` before issue 21 without the action); median of repeats per
   table, then the median and the worst over the tables;
@@ -104,7 +105,10 @@ def run_game(env_id: str, sizes: dict[str, int]) -> dict[str, Any]:
     from billiards_env.players.geometry import geometric_decision, table_model
     from billiards_env.players.search import SearchPlayer
 
-    geo: dict[str, list[float]] = {"arrays": [], "arrays_in_hand": [], "player": [], "reference": []}
+    from billiards_env.physics import Table
+
+    geo: dict[str, list[float]] = {"arrays": [], "arrays_in_hand": [], "arrays_capture": [], "player": [],
+                                   "reference": []}
     geo_same = geo_n = 0
     search: dict[str, list[float]] = {k + hand: [] for k in ("new", "cpu", "reference", "sim", "own", "shots")
                                       for hand in ("", "_in_hand")}
@@ -120,11 +124,18 @@ def run_game(env_id: str, sizes: dict[str, int]) -> dict[str, Any]:
             args = (b.pos.copy(), b.on_table.copy(), b.radius.copy(), b.mass.copy(),
                     np.asarray(ctx.targets, dtype=np.int64), table_model(ctx.table, ctx.physics), ctx.speed_range,
                     ctx.place_area, brk)
+            # The capture circles of a table that size (the default pockets), on a jaw table: what the jaws cost.
+            cap = args[:5] + (table_model(Table(ctx.table.length, ctx.table.width, ctx.table.cushion_restitution),
+                                          ctx.physics),) + args[6:] if ctx.table.has_jaws else None
             if not warm:  # load the compiled code outside the timings
                 geometric_decision(*args)
+                if cap is not None:
+                    geometric_decision(*cap)
                 player.decide(ctx)
                 warm = True
             t_arr, d = time_call(lambda: geometric_decision(*args))
+            if cap is not None:
+                geo["arrays_capture"].append(time_call(lambda: geometric_decision(*cap))[0])
             t_player, _ = time_call(lambda: player.decide(ctx))
             t_ref, ref = time_call(lambda: reference.reference_geometric_act(env))
             geo["arrays"].append(t_arr)
@@ -219,14 +230,19 @@ def render_markdown(doc: dict[str, Any]) -> str:
         lines.append(f"| {r['name']} | {r['value']} | {r['target']} | {'pass' if r['ok'] else '**miss**'} |")
     lines += ["", "## Geometric decision", "",
               "Per table the median of repeated calls; then the median and the worst over the tables.", "",
+              "On capture circles: the same decisions on a table of that size with the capture pocket model "
+              "(the default pockets), when the game's table has jaws: what the jaws cost the player.", "",
               "| game | tables | arrays (`geometric_decision`) median / worst | ball in hand median / worst | "
+              "on capture circles median / worst | "
               "`GeometricPlayer.decide` median | today's Python median / worst | speed-up (median) | same choice |",
-              "|---|---|---|---|---|---|---|---|"]
+              "|---|---|---|---|---|---|---|---|---|"]
     for env_id, g in doc["games"].items():
         s = g["geometric"]
+        cap = s.get("arrays_capture", {"median_s": None, "worst_s": None})
         lines.append(f"| {env_id} | {s['arrays']['n']} | {fmt_time(s['arrays']['median_s'])} / "
                      f"{fmt_time(s['arrays']['worst_s'])} | {fmt_time(s['arrays_in_hand']['median_s'])} / "
-                     f"{fmt_time(s['arrays_in_hand']['worst_s'])} | {fmt_time(s['player']['median_s'])} | "
+                     f"{fmt_time(s['arrays_in_hand']['worst_s'])} | {fmt_time(cap['median_s'])} / "
+                     f"{fmt_time(cap['worst_s'])} | {fmt_time(s['player']['median_s'])} | "
                      f"{fmt_time(s['reference']['median_s'])} / {fmt_time(s['reference']['worst_s'])} | "
                      f"{_ratio(s['arrays']['median_s'], s['reference']['median_s'])} | "
                      f"{g['geometric_same']}/{g['geometric_tables']} |")

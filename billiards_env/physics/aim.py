@@ -36,7 +36,7 @@ from numba.extending import intrinsic
 from .collide import resolve_ball_ball
 from .motion import speed_after_distance, stop_distance
 from .roots import ray_circle_below
-from .walls import normal_at, ray_walls_hit
+from .walls import normal_at, on_seg, ray_line_hit, ray_tip_below, ray_walls_hit
 
 if TYPE_CHECKING:
     from .model import Physics
@@ -277,16 +277,114 @@ def _window_sample(k: int, div: int, theta_c: float, half: float, step: float) -
 
 @njit(cache=True)
 def _window_sample_ok(ox: float, oy: float, a: float, cx: float, cy: float, pr: float, length: float,
-                      width: float, radius: float, segs: np.ndarray, tips: np.ndarray) -> bool:
-    """Whether a ball of ``radius`` at ``(ox, oy)`` rolling along direction ``a`` enters the pocket's circle
-    ``(cx, cy, pr)`` before it touches a cushion (on a jaw table: a rail, jaw face or tip; the engine's ray tests,
-    1e-9 m of slack)."""
+                      width: float, radius: float) -> bool:
+    """Whether a ball of ``radius`` at ``(ox, oy)`` rolling along direction ``a`` enters the capture circle
+    ``(cx, cy, pr)`` before it touches a cushion of a capture table (the engine's ray tests, 1e-9 m of slack)."""
     ux = math.cos(a)
     uy = math.sin(a)
     t_in = ray_circle_entry(ox, oy, ux, uy, cx, cy, pr)
     if not math.isfinite(t_in):
         return False
-    return t_in <= cushion_ahead(ox, oy, ux, uy, length, width, radius, segs, tips)[0] + 1e-9
+    return t_in <= ray_cushion_hit(ox, oy, ux, uy, length, width, radius)[0] + 1e-9
+
+
+#: How far (m) beyond a window's reach, on top of the ball's radius, a wall still counts as in its way
+#: (:func:`_window_walls`): far above the round-off of the ray tests (and of a segment's end slack, 1e-12 m).
+WALL_PAD = 1e-6
+
+
+@njit(cache=True)
+def _point_segment_distance(px: float, py: float, ax: float, ay: float, bx: float, by: float) -> float:
+    """The distance from ``(px, py)`` to the segment from ``(ax, ay)`` to ``(bx, by)``."""
+    dx = bx - ax
+    dy = by - ay
+    ll = dx * dx + dy * dy
+    s = 0.0 if ll == 0.0 else min(max(((px - ax) * dx + (py - ay) * dy) / ll, 0.0), 1.0)
+    return math.hypot(px - (ax + s * dx), py - (ay + s * dy))
+
+
+@njit(cache=True)
+def _segments_distance(ax: float, ay: float, bx: float, by: float, cx: float, cy: float, dx: float,
+                       dy: float) -> float:
+    """The distance between the segments ``a b`` and ``c d``: 0 when they cross or touch (as the signs of the
+    orientations tell: a crossing that round-off hides lies at an end, which the ends' distances catch), else the
+    least distance from an end to the other segment."""
+    o1 = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    o2 = (bx - ax) * (dy - ay) - (by - ay) * (dx - ax)
+    o3 = (dx - cx) * (ay - cy) - (dy - cy) * (ax - cx)
+    o4 = (dx - cx) * (by - cy) - (dy - cy) * (bx - cx)
+    if (o1 <= 0.0 <= o2 or o2 <= 0.0 <= o1) and (o3 <= 0.0 <= o4 or o4 <= 0.0 <= o3):
+        return 0.0
+    return min(_point_segment_distance(ax, ay, cx, cy, dx, dy), _point_segment_distance(bx, by, cx, cy, dx, dy),
+               _point_segment_distance(cx, cy, ax, ay, bx, by), _point_segment_distance(dx, dy, ax, ay, bx, by))
+
+
+@njit(cache=True)
+def _window_walls(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, segs: np.ndarray,
+                  tips: np.ndarray) -> int:
+    """The walls of a jaw table a ball of ``radius`` rolling from ``(ox, oy)`` into the circle ``(cx, cy, pr)`` may
+    touch on the way, as bits (segment ``k``: bit ``k``; tip ``k``: bit ``n_segs + k``); -1 (all) beyond 63 walls.
+
+    Until it enters the circle the ball's centre stays within the convex hull of ``(ox, oy)`` and the circle, whose
+    every point is within ``pr`` of the segment from ``(ox, oy)`` to ``(cx, cy)``; a wall it touches lies within
+    ``radius`` of that hull. So a wall farther than ``pr + radius`` (and :data:`WALL_PAD`) from that segment (first
+    by bounding boxes, then exactly) cannot be met, and its ray tests cannot change a sample's answer."""
+    n_s = segs.shape[0]
+    n_t = tips.shape[0]
+    if n_s + n_t > 63:
+        return -1
+    pad = radius + WALL_PAD
+    reach = pr + pad
+    x0 = min(ox, cx - pr) - pad
+    x1 = max(ox, cx + pr) + pad
+    y0 = min(oy, cy - pr) - pad
+    y1 = max(oy, cy + pr) + pad
+    walls = 0
+    for k in range(n_s):
+        if max(segs[k, 0], segs[k, 2]) < x0 or min(segs[k, 0], segs[k, 2]) > x1 or \
+                max(segs[k, 1], segs[k, 3]) < y0 or min(segs[k, 1], segs[k, 3]) > y1:
+            continue
+        if _segments_distance(segs[k, 0], segs[k, 1], segs[k, 2], segs[k, 3], ox, oy, cx, cy) > reach:
+            continue
+        walls |= 1 << k
+    for k in range(n_t):
+        tx = tips[k, 0]
+        ty = tips[k, 1]
+        tr = tips[k, 2]
+        if tx + tr < x0 or tx - tr > x1 or ty + tr < y0 or ty - tr > y1:
+            continue
+        if _point_segment_distance(tx, ty, ox, oy, cx, cy) > reach + tr:
+            continue
+        walls |= 1 << (n_s + k)
+    return walls
+
+
+@njit(cache=True)
+def _window_sample_clear(ox: float, oy: float, a: float, cx: float, cy: float, pr: float, radius: float,
+                         segs: np.ndarray, tips: np.ndarray, walls: int) -> bool:
+    """:func:`_window_sample_ok` on a jaw table: whether the ball enters the pocket's circle before it touches a rail,
+    jaw face or tip of ``walls`` (:func:`_window_walls`' bits). The same answer as testing the first wall ahead
+    (:func:`.walls.ray_walls_hit`, ``t_in <= distance + 1e-9``): a wall fails the sample exactly when its own
+    distance does (the test is monotone in the distance), so the first such wall decides, and a tip is solved
+    only when it may be nearer than the circle (:func:`.walls.ray_tip_below`)."""
+    ux = math.cos(a)
+    uy = math.sin(a)
+    t_in = ray_circle_entry(ox, oy, ux, uy, cx, cy, pr)
+    if not math.isfinite(t_in):
+        return False
+    n_s = segs.shape[0]
+    for k in range(n_s):
+        if walls != -1 and not (walls >> k) & 1:
+            continue
+        d = ray_line_hit(ox, oy, ux, uy, radius, segs[k])
+        if d + 1e-9 < t_in and on_seg(ox + d * ux, oy + d * uy, segs[k]):
+            return False
+    for k in range(tips.shape[0]):
+        if walls != -1 and not (walls >> (n_s + k)) & 1:
+            continue
+        if ray_tip_below(ox, oy, ux, uy, radius, tips[k], t_in) + 1e-9 < t_in:
+            return False
+    return True
 
 
 #: Samples of a window that :func:`window_of` tracks in one 64-bit mask (more: every sample is ray-tested).
@@ -327,8 +425,19 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
     each such direction, and the first, second and last samples (the tangent directions, decided by round-off), are
     ray-tested (:func:`_window_sample_ok`); every other sample has the test of the one before. The result is
     bit-identical to ray-testing every sample. On a jaw table (``segs``, ``tips``: its walls) every sample is
-    ray-tested against the rails, jaw faces and tips: the window is the run of directions that pass the mouth.
+    ray-tested against the rails, jaw faces and tips (:func:`_window_jaws`): the window is the run of directions
+    that pass the mouth. The table model is chosen once per window, so a capture table's loops carry no walls.
     """
+    if segs.shape[0] > 0 or tips.shape[0] > 0:
+        return _window_jaws(ox, oy, radius, cx, cy, pr, samples, segs, tips)
+    return _window_capture(ox, oy, radius, cx, cy, pr, length, width, samples)
+
+
+@njit(cache=True)
+def _window_capture(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, length: float,
+                    width: float, samples: int) -> tuple:
+    """:func:`window_of` on a capture table (the four cushion lines): the closed-form choice of the samples to
+    ray-test. No wall arrays reach its loops."""
     vx = cx - ox
     vy = cy - oy
     dist = math.hypot(vx, vy)
@@ -339,7 +448,7 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
     div = samples - 1
     step = (half - (-half)) / div
     # The samples to ray-test, as bits.
-    if samples > _MASK_SAMPLES or not step > 0.0 or segs.shape[0] > 0 or tips.shape[0] > 0:
+    if samples > _MASK_SAMPLES or not step > 0.0:
         mask = -1
     else:
         mask = 1 | 2 | (1 << div)
@@ -374,7 +483,7 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
             flag = False
         elif mask == -1 or (mask >> k) & 1:
             flag = _window_sample_ok(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr, length,
-                                     width, radius, segs, tips)
+                                     width, radius)
         if flag and run_start < 0:
             run_start = k
         elif not flag and run_start >= 0:
@@ -382,6 +491,44 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
                 best_len = k - run_start
                 best_start = run_start
             run_start = -1
+    return _window_result(best_start, best_len, div, theta_c, half, step, ox, oy, cx, cy, pr, dist)
+
+
+@njit(cache=True)
+def _window_jaws(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, samples: int,
+                 segs: np.ndarray, tips: np.ndarray) -> tuple:
+    """:func:`window_of` on a jaw table: every sample ray-tested (:func:`_window_sample_clear`) against the walls
+    that may lie in the window's way (:func:`_window_walls`, worked out once for all the samples)."""
+    vx = cx - ox
+    vy = cy - oy
+    dist = math.hypot(vx, vy)
+    theta_c = math.atan2(cy - oy, cx - ox)
+    if dist <= pr:
+        return theta_c, math.pi / 2, 0.0, True
+    half = math.asin(min(1.0, pr / dist))
+    div = samples - 1
+    step = (half - (-half)) / div
+    walls = _window_walls(ox, oy, radius, cx, cy, pr, segs, tips)
+    best_len = 0
+    best_start = 0
+    run_start = -1
+    for k in range(div + 2):
+        flag = k <= div and _window_sample_clear(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr,
+                                                 radius, segs, tips, walls)
+        if flag and run_start < 0:
+            run_start = k
+        elif not flag and run_start >= 0:
+            if k - run_start > best_len:
+                best_len = k - run_start
+                best_start = run_start
+            run_start = -1
+    return _window_result(best_start, best_len, div, theta_c, half, step, ox, oy, cx, cy, pr, dist)
+
+
+@njit(cache=True)
+def _window_result(best_start: int, best_len: int, div: int, theta_c: float, half: float, step: float, ox: float,
+                   oy: float, cx: float, cy: float, pr: float, dist: float) -> tuple:
+    """A window's ``(centre, half-width, distance, found)`` from its widest run of feasible samples."""
     if best_len == 0:
         return 0.0, 0.0, 0.0, False
     lo = best_start
@@ -582,7 +729,24 @@ def object_ball_speed(impact_speed: float, cut_cos: float, e: float, m_cue: floa
 def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
                      max_bounces, segs, tips):
     """:func:`path_pocket` on plain values (compiled): the pocket index, or -1. ``segs``, ``tips``: a jaw table's
-    walls (empty on a capture table)."""
+    walls (empty on a capture table). Callers that keep the walls' groups pass them to
+    :func:`lone_path_pocket_grouped` (the same pocket, fewer ray tests)."""
+    if segs.shape[0] == 0 and tips.shape[0] == 0:
+        return _lone_path_capture(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k,
+                                  v_min, max_bounces)
+    return lone_path_pocket_grouped(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k,
+                                    v_min, max_bounces, segs, tips, np.zeros((0, 3)))
+
+
+@njit(cache=True)
+def lone_path_pocket_grouped(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
+                             max_bounces, segs, tips, groups):
+    """:func:`lone_path_pocket` with a jaw table's wall groups (``groups``: :func:`.kernel_io.wall_groups`, or
+    (0, 3) for none): the first wall ahead by :func:`walls_ahead`. On a capture table its own loop, which carries
+    no walls."""
+    if segs.shape[0] == 0 and tips.shape[0] == 0:
+        return _lone_path_capture(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k,
+                                  v_min, max_bounces)
     for _ in range(max_bounces + 1):
         s = math.hypot(vx, vy)
         if s < 1e-6:
@@ -590,7 +754,33 @@ def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, 
         ux = vx / s
         uy = vy / s
         reach = stop_distance(s, law, a, k, v_min)
-        t_wall, wall = cushion_ahead(x, y, ux, uy, length, width, radius, segs, tips)
+        t_wall, wall = walls_ahead(x, y, ux, uy, radius, segs, tips, groups)
+        pocket = first_pocket_on_ray(x, y, ux, uy, min(reach, t_wall + 1e-9), pocket_xy, pocket_r)[0]
+        if pocket >= 0:
+            return pocket
+        if reach <= t_wall:
+            return -1
+        # Roll to the wall, then reflect.
+        x = x + ux * t_wall
+        y = y + uy * t_wall
+        s_wall = speed_after_distance(s, t_wall, law, a, k)
+        vx, vy = bounce_off(ux * s_wall, uy * s_wall, x, y, wall, length, width, radius, e_cushion, segs, tips)
+    return -1
+
+
+@njit(cache=True)
+def _lone_path_capture(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
+                       max_bounces):
+    """:func:`lone_path_pocket` on a capture table: the four cushion lines (:func:`ray_cushion_hit`), each bounce
+    reversing the velocity's part across the cushion met (:func:`bounce_off`'s capture law)."""
+    for _ in range(max_bounces + 1):
+        s = math.hypot(vx, vy)
+        if s < 1e-6:
+            return -1
+        ux = vx / s
+        uy = vy / s
+        reach = stop_distance(s, law, a, k, v_min)
+        t_wall = ray_cushion_hit(x, y, ux, uy, length, width, radius)[0]
         pocket = first_pocket_on_ray(x, y, ux, uy, min(reach, t_wall + 1e-9), pocket_xy, pocket_r)[0]
         if pocket >= 0:
             return pocket
@@ -600,8 +790,52 @@ def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, 
         x = x + ux * t_wall
         y = y + uy * t_wall
         s_wall = speed_after_distance(s, t_wall, law, a, k)
-        vx, vy = bounce_off(ux * s_wall, uy * s_wall, x, y, wall, length, width, radius, e_cushion, segs, tips)
+        vx = ux * s_wall
+        vy = uy * s_wall
+        if x <= radius + 1e-9 or x >= length - radius - 1e-9:
+            vx = -e_cushion * vx
+        if y <= radius + 1e-9 or y >= width - radius - 1e-9:
+            vy = -e_cushion * vy
     return -1
+
+
+@njit(cache=True)
+def walls_ahead(px: float, py: float, ux: float, uy: float, r: float, segs: np.ndarray, tips: np.ndarray,
+                groups: np.ndarray) -> tuple:
+    """The first wall of a jaw table a ball of radius ``r`` rolling along the ray meets: :func:`.walls.ray_walls_hit`'s
+    ``(distance, wall index)``, the same answer, with a pocket's jaw faces and tips passed over when the ray does not
+    reach their group's circle (``groups``: :func:`.kernel_io.wall_groups`, widened by ``r``) nearer than the best
+    hit so far (as the exact solvers' :func:`.walls.ray_wall_hit`). The rails, faces and tips are visited in their
+    index order, so a tie goes to the lower index as there. Without groups: :func:`.walls.ray_walls_hit`."""
+    if groups.shape[0] == 0:
+        return ray_walls_hit(px, py, ux, uy, r, segs, tips)
+    n_s = segs.shape[0]
+    n_rails = n_s - tips.shape[0]
+    best = math.inf
+    wall = -1
+    for q in range(n_rails):
+        d = ray_line_hit(px, py, ux, uy, r, segs[q])
+        if d < best and on_seg(px + d * ux, py + d * uy, segs[q]):
+            best = d
+            wall = q
+    pad = r * (1.0 + 1e-9) + 1e-9
+    for g in range(groups.shape[0]):
+        if not ray_circle_below(px, py, ux, uy, groups[g, 0], groups[g, 1], groups[g, 2] + pad, best) < best:
+            continue
+        for q in range(n_rails + 2 * g, n_rails + 2 * g + 2):
+            d = ray_line_hit(px, py, ux, uy, r, segs[q])
+            if d < best and on_seg(px + d * ux, py + d * uy, segs[q]):
+                best = d
+                wall = q
+    for g in range(groups.shape[0]):
+        if not ray_circle_below(px, py, ux, uy, groups[g, 0], groups[g, 1], groups[g, 2] + pad, best) < best:
+            continue
+        for q in range(2 * g, 2 * g + 2):
+            d = ray_tip_below(px, py, ux, uy, r, tips[q], best)
+            if d < best:
+                best = d
+                wall = n_s + q
+    return best, wall
 
 
 def path_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table, physics: Physics,
@@ -624,7 +858,8 @@ def path_enters_pocket(start: Vec2, velocity: Vec2, radius: float, table: Table,
 
 __all__ = [
     "WINDOW_SAMPLES", "window_of", "pocket_windows", "dot2", "cos_between", "segment_distance",
-    "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "ray_circle_entry",
+    "segment_blocked_by", "segment_touched_by", "collide_into", "lone_path_pocket", "lone_path_pocket_grouped",
+    "walls_ahead", "ray_circle_entry",
     "ray_cushion_hit", "cushion_ahead", "bounce_off", "ray_cushion_distance", "ray_circle_entries", "ray_cushion_distances", "aim_angle",
     "direction_vector", "wrap_angle", "angular_radius", "ghost_ball_position", "cut_cosine", "cut_angle",
     "offset_aim_angle", "aim_offset", "pocket_window", "pocket_mouth_axes", "pocket_bearings", "segment_blocked",

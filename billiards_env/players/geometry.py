@@ -25,8 +25,9 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between, dot2, ghost_point,
-                                       lone_path_pocket, pocket_windows, segment_blocked_by,
+                                       lone_path_pocket_grouped, pocket_windows, segment_blocked_by,
                                        segment_touched_by, window_of)
+from billiards_env.physics.kernel_io import wall_groups
 from billiards_env.physics.layout import free_discs, nearest_free, py_hypot  # noqa: F401 (re-exported)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
 
@@ -67,10 +68,11 @@ class Model(NamedTuple):
     ball_e: float  #: ball-ball restitution
     segs: np.ndarray  #: (S, 6) a jaw table's rails and jaw faces (:mod:`billiards_env.physics.walls`); (0, 6) if none
     tips: np.ndarray  #: (C, 3) its jaw tips; (0, 3) if none
+    groups: np.ndarray  #: (G, 3) circles holding each pocket's jaw faces and tips (kernel_io.wall_groups); (0, 3)
 
 
 #: Where a jaw table's walls start in a :class:`TableModel`'s ``params``: ``n_segs, n_tips``, then the segment rows
-#: and the tip rows, flattened.
+#: and the tip rows, flattened, then ``n_groups`` and the rows of the walls' groups (:func:`.kernel_io.wall_groups`).
 WALLS_AT = 8
 
 
@@ -78,7 +80,8 @@ class TableModel(NamedTuple):
     """The table and the motion law as plain arrays, what the compiled functions take (:func:`table_model`):
     ``pocket_xy`` (K, 2), ``pocket_r`` (K,) and ``params`` = ``(length, width, cushion restitution, law, a, k,
     min speed, ball restitution)`` (``law, a, k``: :attr:`billiards_env.physics.Physics.path_args`), then a jaw
-    table's walls (``n_segs, n_tips`` and their rows; ``0, 0`` on a capture table). Three arrays, so that a call
+    table's walls (``n_segs, n_tips``, their rows, ``n_groups`` and the groups' circles; ``0, 0, 0`` on a capture
+    table). Three arrays, so that a call
     costs no more than passing three arrays."""
 
     pocket_xy: np.ndarray
@@ -91,9 +94,11 @@ def table_model(table, physics) -> TableModel:
     :class:`~billiards_env.physics.Physics`."""
     law, a, k = physics.path_args
     segs, tips = table.walls()
+    groups = wall_groups(segs, tips)
     params = np.concatenate([np.array([table.length, table.width, table.cushion_restitution, law, a, k,
                                        physics.min_speed, physics.ball_restitution, len(segs), len(tips)],
-                                      dtype=np.float64), segs.ravel(), tips.ravel()])
+                                      dtype=np.float64), segs.ravel(), tips.ravel(),
+                             np.array([len(groups)], dtype=np.float64), groups.ravel()])
     # Copies: writeable arrays (the table's are read-only), so every caller hits the same compiled signature.
     return TableModel(np.array(table.pocket_xy, dtype=np.float64), np.array(table.pocket_radius, dtype=np.float64),
                       params)
@@ -118,9 +123,13 @@ def model(pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray) -> Mo
     n_tips = int(params[WALLS_AT + 1]) if params.shape[0] > WALLS_AT else 0
     at = WALLS_AT + 2
     segs = params[at:at + 6 * n_segs].reshape((n_segs, 6))
-    tips = params[at + 6 * n_segs:at + 6 * n_segs + 3 * n_tips].reshape((n_tips, 3))
+    at += 6 * n_segs
+    tips = params[at:at + 3 * n_tips].reshape((n_tips, 3))
+    at += 3 * n_tips
+    n_groups = int(params[at]) if params.shape[0] > at else 0
+    groups = params[at + 1:at + 1 + 3 * n_groups].reshape((n_groups, 3))
     return Model(params[0], params[1], params[2], pocket_xy, pocket_r, int(params[3]), params[4], params[5],
-                 params[6], params[7], segs, tips)
+                 params[6], params[7], segs, tips, groups)
 
 
 # --- windows ----------------------------------------------------------------------------------------------------
@@ -258,9 +267,9 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
         r_try = False
         if check_scratch:
             collide_into(scratch, v_imp * cdx, v_imp * cdy, 0.0, 0.0, -ux, -uy, mc, mo, e)
-            r_try = lone_path_pocket(gx, gy, scratch[0, 0], scratch[0, 1], rc, tm.length, tm.width, tm.cushion_e,
-                                     tm.pocket_xy, tm.pocket_r, tm.law, tm.decel, tm.k, tm.v_min,
-                                     SCRATCH_BOUNCES, tm.segs, tm.tips) >= 0
+            r_try = lone_path_pocket_grouped(gx, gy, scratch[0, 0], scratch[0, 1], rc, tm.length, tm.width,
+                                             tm.cushion_e, tm.pocket_xy, tm.pocket_r, tm.law, tm.decel, tm.k,
+                                             tm.v_min, SCRATCH_BOUNCES, tm.segs, tm.tips, tm.groups) >= 0
         if not reachable or (risk and not r_try):
             speed = s_try
             v0 = v_need
@@ -346,9 +355,43 @@ def ghost_shots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.nd
     (:func:`ghost_shots_from`), easiest first, windows included: :func:`billiards_env.players.shots.ghost_ball_shots`
     as rows."""
     tm = model(pocket_xy, pocket_r, params)
-    windows = windows_of(pos, radius, targets, tm)
-    return ghost_shots_from(pos[cue, 0], pos[cue, 1], pos, on, radius, mass, cue, targets, windows, tm, lo, hi,
-                            max_cut, arrive, factors, check_scratch)
+    return ghost_shots_windowed(pos[cue, 0], pos[cue, 1], pos, on, radius, mass, cue, targets, tm, lo, hi, max_cut,
+                                arrive, factors, check_scratch)
+
+
+@njit(cache=True)
+def ghost_shots_windowed(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray,
+                         mass: np.ndarray, cue: int, targets: np.ndarray, tm: Model, lo: float, hi: float,
+                         max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool) -> np.ndarray:
+    """:func:`ghost_shots_from` working out the windows it needs itself: a (ball, pocket) window only when
+    :func:`tolerance_bound` allows that shot a cut within ``max_cut`` for some window (else :func:`shot_row` would
+    refuse it whatever the window: its cut is beyond ``max_cut``, by the bound's margins far above round-off). The
+    same rows, without the windows of the pockets behind a ball (on a jaw table, most of a decision's time)."""
+    k_p = tm.pocket_r.shape[0]
+    out = np.empty((targets.shape[0] * k_p, N_COLS))
+    scratch = np.empty((2, 2))
+    cos_max = math.cos(max_cut)
+    rc = radius[cue]
+    n = 0
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if not on[j] or j == cue:
+            continue
+        ox = pos[j, 0]
+        oy = pos[j, 1]
+        contact = rc + radius[j]
+        d_co = math.hypot(ox - cx, oy - cy)
+        a_co = math.atan2(oy - cy, ox - cx)
+        for p in range(k_p):
+            if tolerance_bound(ox, oy, contact, d_co, a_co, tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
+                               WINDOW_SAMPLES, cos_max) < 0.0:
+                continue
+            c, h, d_in, ok = window_of(ox, oy, radius[j], tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
+                                       tm.length, tm.width, WINDOW_SAMPLES, tm.segs, tm.tips)
+            if ok and shot_row(out[n], cx, cy, j, p, c, h, d_in, pos, on, radius, mass, cue, tm, lo, hi, max_cut,
+                               arrive, factors, check_scratch, scratch):
+                n += 1
+    return rank_rows(out[:n])
 
 
 @njit(cache=True)
@@ -525,6 +568,11 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
         if j < 0:
             j = cue
         return px, py, in_hand, math.atan2(pos[j, 1] - cy, pos[j, 0] - cx), hi, -1, empty, 0
+    if not in_hand and cache_have.shape[0] == 0:  # only the windows its shots need
+        cx, cy = pos[cue, 0], pos[cue, 1]
+        rows = ghost_shots_windowed(cx, cy, pos, on, radius, mass, cue, targets, tm, lo, hi,
+                                    max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+        return _played(rows, px, py, in_hand, cx, cy, pos, on, cue, targets, lo, hi, max_cut)
     if cache_have.shape[0] == 0:
         windows = windows_of(pos, radius, targets, tm)
     else:
@@ -543,11 +591,19 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
         on2 = on
     rows = ghost_shots_from(cx, cy, pos, on2, radius, mass, cue, targets, windows, tm, lo, hi,
                             max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+    return _played(rows, px, py, in_hand, cx, cy, pos, on2, cue, targets, lo, hi, max_cut)
+
+
+@njit(cache=True)
+def _played(rows: np.ndarray, px: float, py: float, in_hand: bool, cx: float, cy: float, pos: np.ndarray,
+            on: np.ndarray, cue: int, targets: np.ndarray, lo: float, hi: float, max_cut: float) -> tuple:
+    """:func:`_decision`'s answer from the ranked shots ``rows`` from ``(cx, cy)``: the easiest within ``max_cut``
+    (else within 88 deg), else a firm full-ball hit on the nearest target."""
     k = best_shot_row(rows, max_cut, FALLBACK_CUT)
     if k >= 0:
         return px, py, in_hand, rows[k, COL_ANGLE], rows[k, COL_SPEED], k, rows, 0
     angle = 0.0
-    j = nearest_target(cx, cy, pos, on2, cue, targets)
+    j = nearest_target(cx, cy, pos, on, cue, targets)
     if j >= 0:
         angle = math.atan2(pos[j, 1] - cy, pos[j, 0] - cx)
     return px, py, in_hand, angle, min(max(DIRECT_HIT_SPEED, lo), hi), -1, rows, 0
@@ -840,7 +896,7 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
 
 __all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "windows_cached",
            "geometric_decision_cached", "target_windows", "shot_row",
-           "rank_rows", "ghost_shots_from", "ghost_shots", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
+           "rank_rows", "ghost_shots_from", "ghost_shots", "ghost_shots_windowed", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "tolerance_bound",
            "pot_chance",
            "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",

@@ -312,3 +312,114 @@ def test_ghost_ball_shot_pots_in_the_solver():
     (p0, _), (p1, _) = res.trajectory.sample([t]), res.trajectory.sample([t + 1e-3])
     d_obj = p1[0, 1] - p0[0, 1]
     assert abs(aim.wrap_angle(math.atan2(d_obj[1], d_obj[0]) - centre)) < 1e-6
+
+
+def _jaw_window_every_wall(obj, radius, table, pocket, samples=aim.WINDOW_SAMPLES):
+    """A jaw table's window as it was computed before the walls were culled: every sample ray-tested against the
+    first wall ahead of all the table's rails, jaw faces and tips (:func:`aim.cushion_ahead`)."""
+    segs, tips = table.walls()
+    c = table.pocket_xy[pocket]
+    pr = float(table.pocket_radius[pocket])
+    dist = math.hypot(c[0] - obj[0], c[1] - obj[1])
+    theta_c = math.atan2(c[1] - obj[1], c[0] - obj[0])
+    if dist <= pr:
+        return float(theta_c), math.pi / 2, 0.0
+    half = math.asin(min(1.0, pr / dist))
+    ok = []
+    for a in theta_c + np.linspace(-half, half, samples):
+        ux, uy = math.cos(a), math.sin(a)
+        t_in = aim.ray_circle_entry(obj[0], obj[1], ux, uy, c[0], c[1], pr)
+        t_wall = aim.cushion_ahead(obj[0], obj[1], ux, uy, table.length, table.width, radius, segs, tips)[0]
+        ok.append(math.isfinite(t_in) and t_in <= t_wall + 1e-9)
+    ok.append(False)
+    best_len, best_start, run_start = 0, 0, None
+    for k, flag in enumerate(ok):
+        if flag and run_start is None:
+            run_start = k
+        elif not flag and run_start is not None:
+            if k - run_start > best_len:
+                best_len, best_start = k - run_start, run_start
+            run_start = None
+    if best_len == 0:
+        return None
+    return best_start, best_len
+
+
+@pytest.mark.parametrize("preset", ["wpa", "snooker_match", "pooltool"])
+def test_jaw_window_with_culled_walls_is_the_window_of_every_wall(preset):
+    # window_of on a jaw table tests each sample only against the walls near the window's reach and stops at the
+    # first wall that fails it: the same run of samples as the first wall ahead of all walls, on random balls (some
+    # in or next to a mouth, some beyond a cushion line). A run one sample longer or shifted moves the centre or
+    # the width by half a sample step (~1e-3 rad), far beyond the tolerance (the reference's hypot rounds as
+    # CPython's, not the compiled one's).
+    from billiards_env.physics.scene import parse_table
+
+    table = parse_table({"preset": preset})
+    segs, tips = table.walls()
+    assert len(segs) and len(tips)
+    rng = np.random.default_rng(5)
+    checked = found = 0
+    for n in range(250):
+        if n % 3 == 0:
+            k = int(rng.integers(table.n_pockets))
+            p = table.pocket_xy[k] + rng.normal(0.0, 0.07, 2)
+        else:
+            p = rng.uniform([-0.01, -0.01], [table.length + 0.01, table.width + 0.01])
+        for k in range(table.n_pockets):
+            expected = _jaw_window_every_wall(p, R, table, k)
+            got = aim.window_of(p[0], p[1], R, table.pocket_xy[k, 0], table.pocket_xy[k, 1],
+                                table.pocket_radius[k], table.length, table.width, aim.WINDOW_SAMPLES, segs, tips)
+            checked += 1
+            if expected is None:
+                assert not got[3]
+                continue
+            found += 1
+            assert got[3]
+            if len(expected) == 3:  # from inside the circle
+                assert got[:3] == expected
+                continue
+            start, length = expected
+            c = table.pocket_xy[k]
+            half = math.asin(min(1.0, table.pocket_radius[k] / math.hypot(c[0] - p[0], c[1] - p[1])))
+            step = 2.0 * half / (aim.WINDOW_SAMPLES - 1)
+            centre = math.atan2(c[1] - p[1], c[0] - p[0]) + (start + (length - 1) / 2) * step - half
+            assert got[0] == pytest.approx(centre, abs=1e-12)
+            assert got[1] == pytest.approx(0.5 * length * step, abs=1e-12)
+    assert 0.3 * checked < found < checked
+
+
+@pytest.mark.parametrize("preset", ["wpa", "snooker_match"])
+def test_walls_ahead_with_groups_is_the_first_wall_of_all(preset):
+    # walls_ahead passes over a pocket's jaw faces and tips when the ray misses their group's circle: the same
+    # distance and wall index as ray-testing every wall; a lone ball's path the same pocket either way.
+    from billiards_env.physics.kernel_io import wall_groups
+    from billiards_env.physics.scene import parse_table
+
+    table = parse_table({"preset": preset})
+    segs, tips = table.walls()
+    groups = wall_groups(segs, tips)
+    assert len(groups) == table.n_pockets
+    none = np.zeros((0, 3))
+    rng = np.random.default_rng(9)
+    passed_over = 0
+    pots = 0
+    for n in range(3000):
+        if n % 3 == 0:
+            k = int(rng.integers(table.n_pockets))
+            p = table.pocket_xy[k] + rng.normal(0.0, 0.08, 2)
+        else:
+            p = rng.uniform([0.0, 0.0], [table.length, table.width])
+        a = rng.uniform(-math.pi, math.pi)
+        ux, uy = math.cos(a), math.sin(a)
+        got = aim.walls_ahead(p[0], p[1], ux, uy, R, segs, tips, groups)
+        assert got == aim.walls_ahead(p[0], p[1], ux, uy, R, segs, tips, none)
+        assert got == aim.cushion_ahead(p[0], p[1], ux, uy, table.length, table.width, R, segs, tips)
+        if got[1] >= 0 and got[1] < len(segs) - len(tips):
+            passed_over += 1
+        s = rng.uniform(0.1, 5.0)
+        args = (p[0], p[1], s * ux, s * uy, R, table.length, table.width, 0.85, table.pocket_xy, table.pocket_radius,
+                0, 0.0981, 0.0, 0.0, 4, segs, tips)
+        pocket = aim.lone_path_pocket_grouped(*args, groups)
+        assert pocket == aim.lone_path_pocket(*args)
+        pots += pocket >= 0
+    assert passed_over > 1000 and pots > 100

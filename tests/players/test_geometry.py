@@ -207,3 +207,40 @@ def test_decision_with_a_windows_cache_is_the_same_decision():
         for a, b in zip(want, got):
             assert np.array_equal(np.asarray(a), np.asarray(b))
     assert hits > 0 and cache[2][1:].all()
+
+
+@pytest.mark.parametrize("pockets", ["jaws", "capture"])
+def test_shots_with_only_the_windows_they_need_are_all_the_shots(pockets):
+    """``ghost_shots_windowed`` (the decision from where the cue ball lies) works out a (ball, pocket) window only
+    when ``tolerance_bound`` allows that shot a cut within the limit: the same rows as ``ghost_shots_from`` on every
+    window, bit for bit, on a jaw table and its capture circles; the bound passes over pockets behind the balls."""
+    from billiards_env.physics.scene import parse_table
+    from billiards_env.players.geometry import (FALLBACK_CUT, WINDOW_SAMPLES, ghost_shots_from, ghost_shots_windowed,
+                                                 model, tolerance_bound, windows_of)
+
+    rng = np.random.default_rng(8)
+    table = parse_table({"preset": "wpa", "pockets": pockets})
+    tm = table_model(table, Physics())
+    m = model(*tm)
+    factors = np.array([1.0, 0.6, 0.3, 1.8, 3.0])
+    skipped = rows_seen = 0
+    for k in range(60):
+        n = int(rng.integers(2, 12))
+        pos = _random_layout(rng, n, table)
+        on = np.ones(n, np.bool_)
+        radius, mass = np.full(n, BALL_RADIUS), np.full(n, 0.17)
+        targets = np.arange(1, n, dtype=np.int64)
+        cx, cy = pos[0]
+        want = ghost_shots_from(cx, cy, pos, on, radius, mass, 0, targets, windows_of(pos, radius, targets, m), m,
+                                0.5, 5.0, FALLBACK_CUT, 0.35, factors, True)
+        got = ghost_shots_windowed(cx, cy, pos, on, radius, mass, 0, targets, m, 0.5, 5.0, FALLBACK_CUT, 0.35,
+                                   factors, True)
+        assert np.array_equal(want, got)
+        rows_seen += len(want)
+        for j in targets:
+            for p in range(table.n_pockets):
+                a_co = math.atan2(pos[j, 1] - cy, pos[j, 0] - cx)
+                skipped += tolerance_bound(pos[j, 0], pos[j, 1], 2 * R, math.hypot(pos[j, 0] - cx, pos[j, 1] - cy),
+                                           a_co, table.pocket_xy[p, 0], table.pocket_xy[p, 1],
+                                           table.pocket_radius[p], WINDOW_SAMPLES, math.cos(FALLBACK_CUT)) < 0.0
+    assert rows_seen > 300 and skipped > 300
