@@ -45,6 +45,7 @@ from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES, place_random_rows, spot_cue_row, spot_object_row
 from billiards_env.physics.outcome import scan_shot
+from billiards_env.physics.plain import plain
 from billiards_env.physics.spin_collide import strike_ball
 from billiards_env.players.geometry import COL_POCKET, geometric_decision_cached
 from billiards_env.players.slots import next_shot_ease
@@ -130,13 +131,13 @@ def _play(k, angle, speed, side, top, placed, px, py, pos, vel, ang, on, radius,
         ang[k, 0, 1] = wy
         ang[k, 0, 2] = wz
         res = simulate_exact_spin(p, vel[k], ang[k], radius, mass, on[k], pocket_xy, pocket_r, params,
-                                  icfg[J_MAX_EVENTS], False)
+                                  icfg[J_MAX_EVENTS], plain(False))
         ang[k] = 0.0
     else:
         vel[k, 0, 0] = speed * math.cos(angle)
         vel[k, 0, 1] = speed * math.sin(angle)
         res = simulate_exact(p, vel[k], ang[k], radius, mass, on[k], pocket_xy, pocket_r, params,
-                             icfg[J_MAX_EVENTS], False)
+                             icfg[J_MAX_EVENTS], plain(False))
     vel[k] = 0.0
     rec[R_N_EVENTS] = res.n_events
     rec[R_TIME] = res.time
@@ -149,9 +150,9 @@ def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, ca
     """Compiled twin of ``GameSession.judge`` (``PoolSession._call`` and ``_apply``) of table ``k``'s shot
     (``pocket``, ``ev_int``: the kernel's): the summary, the rules' call and the next state (``st`` updated), the
     respots; records the call. Returns an error code."""
-    first, rail, order, n_order = scan_shot(ev_int, pocket, 0)
+    first, rail, order, n_order = scan_shot(ev_int, pocket, plain(0))
     nb = pocket.shape[0]
-    rails = 0
+    rails = plain(0)  # (plain: the rules compiled for an int64 rails mask only)
     pocketed_rows = 0
     for r in range(nb):
         if rail[r]:
@@ -177,7 +178,7 @@ def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, ca
         else:
             kept += 1
     if not on[k, 0]:
-        if not spot_cue_row(pos[k], on[k], cfg[K_RADIUS], 0, cfg[K_HEAD_X], cfg[K_HEAD_Y], cfg[K_WIDTH]):
+        if not spot_cue_row(pos[k], on[k], cfg[K_RADIUS], plain(0), cfg[K_HEAD_X], cfg[K_HEAD_Y], cfg[K_WIDTH]):
             err = E_CUE_RESPOT
     rec[R_SHOOTER] = call[C_SHOOTER]
     rec[R_FOUL] = call[C_FOUL]
@@ -208,7 +209,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
         if not in_hand:
             dec_area[:] = 0.0
         px, py, placed, angle, speed, kr, rows, status = geometric_decision_cached(
-            pos[k], on[k], radius, mass, 0, targets, tm_xy, tm_r, tm_params, cfg[K_SPEED_MIN], cfg[K_SPEED_MAX],
+            pos[k], on[k], radius, mass, plain(0), targets, tm_xy, tm_r, tm_params, cfg[K_SPEED_MIN], cfg[K_SPEED_MAX],
             dec_area, in_hand, st[S_BREAK] != 0, cfg[K_MAX_CUT], wc[0][k], wc[1][k], wc[2][k])
         if status == 1:
             return n, E_NO_PLACE
@@ -337,7 +338,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
         placed[f, 0] = fixed_xy[f, 0]
         placed[f, 1] = fixed_xy[f, 1]
     if place_random_rows(g, pos[k], rand_rows, regions, placed, nf, pockets, cfg[K_POCKET_MARGIN], cfg[K_MIN_DIST],
-                         PLACE_BATCH, PLACE_TRIES) >= 0:
+                         plain(PLACE_BATCH), plain(PLACE_TRIES)) >= 0:
         tout[k, T_ERROR] = E_PLACEMENT
         return
     shots[k] = 0
@@ -372,8 +373,9 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
                         best = d
                         target = j
             rec = rec_agent[k]
-            _play(k, math.atan2(pos[k, target, 1] - cy, pos[k, target, 0] - cx), cfg[K_BREAK_SPEED], 0.0, 0.0, False,
-                  0.0, 0.0, pos, vel, ang, on, radius, mass, gens, cfg, icfg, pocket_xy, pocket_r, params, rec)
+            _play(k, math.atan2(pos[k, target, 1] - cy, pos[k, target, 0] - cx), cfg[K_BREAK_SPEED], 0.0, 0.0,
+                  plain(False), 0.0, 0.0, pos, vel, ang, on, radius, mass, gens, cfg, icfg, pocket_xy, pocket_r, params,
+                  rec)
             last = icfg[J_OPENING_RESPOT]
             if not on[k, last]:
                 if not spot_object_row(pos[k], on[k], cfg[K_RADIUS], last, cfg[K_FOOT_X], cfg[K_FOOT_Y],
@@ -381,7 +383,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
                     tout[k, T_ERROR] = E_RESPOT
                     return
             if not on[k, 0]:
-                if not spot_cue_row(pos[k], on[k], cfg[K_RADIUS], 0, cfg[K_HEAD_X], cfg[K_HEAD_Y], cfg[K_WIDTH]):
+                if not spot_cue_row(pos[k], on[k], cfg[K_RADIUS], plain(0), cfg[K_HEAD_X], cfg[K_HEAD_Y], cfg[K_WIDTH]):
                     tout[k, T_ERROR] = E_CUE_RESPOT
                     return
             on_mask = 0
