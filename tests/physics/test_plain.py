@@ -59,9 +59,9 @@ def test_plain_holds_in_a_prange_loop():
 
 
 #: Kernels that Python and compiled callers (or call sites passing different constants) share: one signature each.
+#: (Not ``simulate_exact``/``simulate_exact_spin``: the batch drivers keep a literal ``record=False`` on purpose, see
+#: :mod:`billiards_env.physics.batch_rows`.)
 ONE_SIGNATURE = (
-    "billiards_env.physics.exact.simulate_exact",
-    "billiards_env.physics.exact_spin.simulate_exact_spin",
     "billiards_env.physics.collide.resolve_ball_ball",
     "billiards_env.physics.kernel_logs.put_event",
     "billiards_env.physics.kernel_logs.snapshot",
@@ -83,6 +83,7 @@ ONE_SIGNATURE = (
     "billiards_env.rules.pool_judge._end",
     "billiards_env.rules.pool_judge._foul",
     "billiards_env.rules.pool_judge._clean",
+    "billiards_env.rules.three_cushion._scan",
 )
 
 _SCRIPT = """
