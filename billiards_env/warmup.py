@@ -149,7 +149,9 @@ TASKS: dict[str, Callable[[], None]] = {
 }
 #: The order of the tasks: each phase's tasks run in parallel after the previous phase, longest first. The physics
 #: kernels come first (everything calls them), then the players (the games' opponents call them), then the envs.
-_EARLY_ENVS = ("env:BilliardsOneBall-v0", "env:BilliardsThreeCushion-v0", "env:BilliardsSnooker-v0")
+#: The pot-task envs come after ``vector_pots``: their step is the native vector env's kernel on one table
+#: (``envs/_pot_fast.py``), which two tasks of one phase would each compile in their own process.
+_EARLY_ENVS = ("env:BilliardsThreeCushion-v0", "env:BilliardsSnooker-v0")
 PHASES: tuple[tuple[str, ...], ...] = (
     ("exact", "exact_spin", "step", "step_spin"),
     ("players", "vector_pots", *_EARLY_ENVS),

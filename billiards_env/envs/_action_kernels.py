@@ -17,6 +17,7 @@ from numba import njit
 
 from billiards_env.games.pool import pool_place_area_row, pool_target_row
 from billiards_env.physics.layout import nearest_free_xy
+from billiards_env.physics.plain import plain
 from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_CLEAR, COL_POCKET, COL_SPEED, SPEED_FACTORS,
                                             ghost_shots)
 from billiards_env.players.slots import HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET, in_hand_slots, shot_slots
@@ -35,8 +36,8 @@ def angle_of_action(code: int, a: float, cx: float, cy: float, t: int, pos: np.n
     """Compiled twin of :meth:`ActionType.angle <billiards_env.envs.actions.ActionType.angle>` with the cue ball at
     ``(cx, cy)`` and the view's target ``t`` (-1: none): :func:`~.actions.aim_to_angle`, as there."""
     if code == AIM_ABSOLUTE or t < 0:
-        return aim_to_angle(code, a, cx, cy, 0.0, 0.0, False, 0.0, max_ghost)
-    return aim_to_angle(code, a, cx, cy, pos[t, 0], pos[t, 1], True, radius[0] + radius[t], max_ghost)
+        return aim_to_angle(code, a, cx, cy, 0.0, 0.0, plain(False), 0.0, max_ghost)
+    return aim_to_angle(code, a, cx, cy, pos[t, 0], pos[t, 1], plain(True), radius[0] + radius[t], max_ghost)
 
 
 @njit(cache=True)
@@ -46,8 +47,8 @@ def aim_of_angle(code: int, angle: float, cx: float, cy: float, t: int, pos: np.
     cue direction) with the cue ball at ``(cx, cy)`` and the view's target ``t`` (-1: none):
     :func:`~.actions.angle_to_aim`, as there."""
     if code == AIM_ABSOLUTE or t < 0:
-        return angle_to_aim(code, angle, cx, cy, 0.0, 0.0, False, 0.0, max_ghost)
-    return angle_to_aim(code, angle, cx, cy, pos[t, 0], pos[t, 1], True, radius[0] + radius[t], max_ghost)
+        return angle_to_aim(code, angle, cx, cy, 0.0, 0.0, plain(False), 0.0, max_ghost)
+    return angle_to_aim(code, angle, cx, cy, pos[t, 0], pos[t, 1], plain(True), radius[0] + radius[t], max_ghost)
 
 
 @njit(cache=True)
@@ -55,7 +56,7 @@ def legal_place(x: float, y: float, pos: np.ndarray, on: np.ndarray, radius: np.
                 holes: np.ndarray) -> tuple:
     """Compiled twin of :meth:`TableState.legal_cue_position <billiards_env.table_state.TableState.legal_cue_position>`
     in the view's area: ``(x, y, found)``."""
-    return nearest_free_xy(x, y, pos, on, radius, 0, area[0], area[1], area[2], area[3], 1e-6, holes)
+    return nearest_free_xy(x, y, pos, on, radius, plain(0), area[0], area[1], area[2], area[3], 1e-6, holes)
 
 
 @njit(cache=True)
@@ -153,7 +154,7 @@ def candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_
     ``k``'s action ``a``: the chosen slot (a pot, the kick, the break, or the direct hit when there is no pot), its
     speed scaled, the cue ball placed for it with ball in hand. Returns :func:`shot_of_action`'s tuple."""
     found, angle, speed, side, top, placed, px, py, pocket, push = shot_of_action(
-        a, AIM_ABSOLUTE, 0.0, st, pos, on, radius, cfg, icfg, holes, area)  # side, top, declarations, placement
+        a, plain(AIM_ABSOLUTE), 0.0, st, pos, on, radius, cfg, icfg, holes, area)  # side, top, declarations, placement
     if not found:
         return found, angle, speed, side, top, placed, px, py, pocket, push
     n_slots = icfg["slots"]
@@ -227,8 +228,9 @@ def candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_
     p2[0, 0] = qx
     p2[0, 1] = qy
     o2[0] = True
-    shots = ghost_shots(p2, o2, radius, mass, 0, np.array([j]), tm_xy, tm_r, tm_params, lo, hi, PLACED_MAX_CUT,
-                        ARRIVE_SPEED, _SPEED_FACTORS, True)
+    shots = ghost_shots(p2, o2, radius, mass, plain(0), np.array([j]), tm_xy, tm_r, tm_params, lo, hi, PLACED_MAX_CUT,
+                        ARRIVE_SPEED, _SPEED_FACTORS.copy(), plain(True))  # (a writable copy, plain values: the
+    # players' signature of ghost_shots, not one more compile of it)
     base_angle = math.atan2(gy - qy, gx - qx)
     base_speed = FALLBACK_SPEED
     for i in range(shots.shape[0]):

@@ -45,6 +45,7 @@ from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES, place_random_rows, spot_cue_row, spot_object_row
 from billiards_env.physics.outcome import scan_shot
+from billiards_env.physics.plain import plain
 from billiards_env.physics.spin_collide import strike_ball
 from billiards_env.players.geometry import COL_POCKET, geometric_decision_cached
 from billiards_env.players.slots import next_shot_ease
@@ -124,13 +125,13 @@ def _play(k, angle, speed, side, top, placed, px, py, pos, vel, ang, on, radius,
         ang[k, 0, 1] = wy
         ang[k, 0, 2] = wz
         res = simulate_exact_spin(p, vel[k], ang[k], radius, mass, on[k], pocket_xy, pocket_r, params,
-                                  icfg["max_events"], False)
+                                  icfg["max_events"], plain(False))
         ang[k] = 0.0
     else:
         vel[k, 0, 0] = speed * math.cos(angle)
         vel[k, 0, 1] = speed * math.sin(angle)
         res = simulate_exact(p, vel[k], ang[k], radius, mass, on[k], pocket_xy, pocket_r, params,
-                             icfg["max_events"], False)
+                             icfg["max_events"], plain(False))
     vel[k] = 0.0
     rec["n_events"] = res.n_events
     rec["time"] = res.time
@@ -143,9 +144,9 @@ def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, ca
     """Compiled twin of ``GameSession.judge`` (``PoolSession._call`` and ``_apply``) of table ``k``'s shot
     (``pocket``, ``ev_int``: the kernel's): the summary, the rules' call and the next state (``st`` updated), the
     respots; records the call. Returns an error code."""
-    first, rail, order, n_order = scan_shot(ev_int, pocket, 0)
+    first, rail, order, n_order = scan_shot(ev_int, pocket, plain(0))
     nb = pocket.shape[0]
-    rails = 0
+    rails = plain(0)  # (plain: the rules compiled for an int64 rails mask only)
     pocketed_rows = 0
     for r in range(nb):
         if rail[r]:
@@ -171,7 +172,7 @@ def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, ca
         else:
             kept += 1
     if not on[k, 0]:
-        if not spot_cue_row(pos[k], on[k], cfg["radius"], 0, cfg["head_x"], cfg["head_y"], cfg["width"]):
+        if not spot_cue_row(pos[k], on[k], cfg["radius"], plain(0), cfg["head_x"], cfg["head_y"], cfg["width"]):
             err = E_CUE_RESPOT
     rec["shooter"] = call[C_SHOOTER]
     rec["foul"] = call[C_FOUL]
@@ -202,7 +203,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
         if not in_hand:
             dec_area[:] = 0.0
         px, py, placed, angle, speed, kr, rows, status = geometric_decision_cached(
-            pos[k], on[k], radius, mass, 0, targets, tm_xy, tm_r, tm_params, cfg["speed_min"], cfg["speed_max"],
+            pos[k], on[k], radius, mass, plain(0), targets, tm_xy, tm_r, tm_params, cfg["speed_min"], cfg["speed_max"],
             dec_area, in_hand, st[S_BREAK] != 0, cfg["max_cut"], wc[0][k], wc[1][k], wc[2][k])
         if status == 1:
             return n, E_NO_PLACE
@@ -331,7 +332,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
         placed[f, 0] = fixed_xy[f, 0]
         placed[f, 1] = fixed_xy[f, 1]
     if place_random_rows(g, pos[k], rand_rows, regions, placed, nf, pockets, cfg["pocket_margin"], cfg["min_dist"],
-                         PLACE_BATCH, PLACE_TRIES) >= 0:
+                         plain(PLACE_BATCH), plain(PLACE_TRIES)) >= 0:
         tout[k]["error"] = E_PLACEMENT
         return
     shots[k] = 0
@@ -366,8 +367,9 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
                         best = d
                         target = j
             rec = rec_agent[k]
-            _play(k, math.atan2(pos[k, target, 1] - cy, pos[k, target, 0] - cx), cfg["break_speed"], 0.0, 0.0, False,
-                  0.0, 0.0, pos, vel, ang, on, radius, mass, gens, cfg, icfg, pocket_xy, pocket_r, params, rec)
+            _play(k, math.atan2(pos[k, target, 1] - cy, pos[k, target, 0] - cx), cfg["break_speed"], 0.0, 0.0,
+                  plain(False), 0.0, 0.0, pos, vel, ang, on, radius, mass, gens, cfg, icfg, pocket_xy, pocket_r, params,
+                  rec)
             last = icfg["opening_respot"]
             if not on[k, last]:
                 if not spot_object_row(pos[k], on[k], cfg["radius"], last, cfg["foot_x"], cfg["foot_y"],
@@ -375,7 +377,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
                     tout[k]["error"] = E_RESPOT
                     return
             if not on[k, 0]:
-                if not spot_cue_row(pos[k], on[k], cfg["radius"], 0, cfg["head_x"], cfg["head_y"], cfg["width"]):
+                if not spot_cue_row(pos[k], on[k], cfg["radius"], plain(0), cfg["head_x"], cfg["head_y"], cfg["width"]):
                     tout[k]["error"] = E_CUE_RESPOT
                     return
             on_mask = 0

@@ -31,6 +31,7 @@ from billiards_env.physics.batch import store_row
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import place_random_rows, spot_cue_row
+from billiards_env.physics.plain import plain
 from billiards_env.physics.spin_collide import strike_ball
 
 from ._kernels import write_observation
@@ -163,10 +164,10 @@ def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
     aim = icfg[I_AIM]
     t = _target(on[k]) if aim != AIM_ABSOLUTE else -1
     if t >= 0:
-        angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], p[t, 0], p[t, 1], True, radius[0] + radius[t],
+        angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], p[t, 0], p[t, 1], plain(True), radius[0] + radius[t],
                              cfg[C_MAX_GHOST])
     else:
-        angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], 0.0, 0.0, False, 0.0, cfg[C_MAX_GHOST])
+        angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], 0.0, 0.0, plain(False), 0.0, cfg[C_MAX_GHOST])
     angle, speed, side, top = noisy_shot(angle, speed, side, top, noise[k, 0], noise[k, 1], noise[k, 2],
                                          noise[k, 3], cfg[C_ANGLE_NOISE] > 0.0, cfg[C_SPEED_NOISE] > 0.0,
                                          cfg[C_TIP_NOISE] > 0.0, icfg[I_SPEED_NOISE_ABS] != 0)
@@ -213,7 +214,7 @@ def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iou
     sc = pocket[k, 0] >= 0
     ok = True
     if sc:
-        ok = spot_cue_row(pos[k], on[k], cfg[C_BALL_RADIUS], 0, cfg[C_HEAD_X], cfg[C_HEAD_Y], cfg[C_WIDTH])
+        ok = spot_cue_row(pos[k], on[k], cfg[C_BALL_RADIUS], plain(0), cfg[C_HEAD_X], cfg[C_HEAD_Y], cfg[C_WIDTH])
     n_potted = n_pocketed - (1 if sc else 0)
     cleared = True
     for i in range(1, pos.shape[1]):
@@ -254,7 +255,7 @@ def observe_positions(rows, pos, on, sx, sy, out):
 def _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs):
     """Table ``k`` after its shot: the kernel result into ``out`` (as the batch stores it), the score
     (:func:`_finish_row`) and the positions observation (when that is the observation type)."""
-    store_row(k, res, 0, out)
+    store_row(k, res, plain(0), out)
     ok = _finish_row(k, out[3], out[5], pos, on, vel, ang, shots, cfg, icfg, fout, iout)
     if icfg[I_POSITIONS_OBS]:
         write_observation(pos[k], on[k], cfg[C_SX], cfg[C_SY], obs[k])
@@ -273,7 +274,7 @@ def pot_step(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, poc
         if active[k]:
             _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
             res = simulate_exact(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
-                                 max_events, False)
+                                 max_events, plain(False))
             ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
     return ok
 
@@ -287,7 +288,7 @@ def pot_step_spin(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy
         if active[k]:
             _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
             res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
-                                      max_events, False)
+                                      max_events, plain(False))
             ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
     return ok
 
@@ -303,7 +304,7 @@ def pot_step_rows(rows, act, active, pos, vel, ang, on, shots, radius, mass, poc
         if active[k]:
             _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
             res = simulate_exact(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
-                                 max_events, False)
+                                 max_events, plain(False))
             ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
     return ok
 
@@ -318,7 +319,7 @@ def pot_step_rows_spin(rows, act, active, pos, vel, ang, on, shots, radius, mass
         if active[k]:
             _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
             res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
-                                      max_events, False)
+                                      max_events, plain(False))
             ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
     return ok
 

@@ -38,6 +38,7 @@ from billiards_env.physics.aim import ghost_ball_position
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.outcome import first_contact_row
+from billiards_env.physics.plain import plain
 from billiards_env.players.geometry import (COL_ANGLE, COL_CLEAR, COL_CLEAR_OBJ, COL_D_CUE, COL_D_OBJ, COL_OBJ_ANGLE,
                                             COL_POCKET, COL_REACH, COL_RISK, COL_SPEED, COL_TARGET, COL_TOL, N_COLS,
                                             state_model)
@@ -219,9 +220,10 @@ def kick_of(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarra
             a2[:] = 0.0
             if spin:
                 res = simulate_exact_spin(p2, v2, a2, radius, mass, o2, pocket_xy, pocket_r, params, max_events,
-                                          False)
+                                          plain(False))
             else:
-                res = simulate_exact(p2, v2, a2, radius, mass, o2, pocket_xy, pocket_r, params, max_events, False)
+                res = simulate_exact(p2, v2, a2, radius, mass, o2, pocket_xy, pocket_r, params, max_events,
+                                     plain(False))
             hits[f] = first_contact_row(res.ev_int, 0) == target and res.pocket[0] < 0
         n_ok = 0
         for f in range(nf):

@@ -36,6 +36,7 @@ from numba.extending import intrinsic
 from .collide import resolve_ball_ball
 from .motion import speed_after_distance, stop_distance
 from .roots import ray_circle_below
+from .plain import plain
 from .walls import normal_at, on_seg, ray_line_hit, ray_tip_below, ray_walls_hit
 
 if TYPE_CHECKING:
@@ -475,7 +476,7 @@ def _window_capture(ox: float, oy: float, radius: float, cx: float, cy: float, p
                 mask = _mark_crossing(mask, 0.5 * math.pi * m, theta_c, half, step, div)
     # One pass over the samples: the widest run of feasible ones (the first of equals).
     best_len = 0
-    best_start = 0
+    best_start = plain(0)  # (plain: _window_sample compiled for int64 only)
     run_start = -1
     flag = False
     for k in range(div + 2):
@@ -688,7 +689,7 @@ def collide_into(vel: np.ndarray, v1x: float, v1y: float, v2x: float, v2y: float
     vel[0, 1] = v1y
     vel[1, 0] = v2x
     vel[1, 1] = v2y
-    resolve_ball_ball(vel, 0, 1, nx, ny, 1.0, m1, m2, e, 0.0, 0.0, False)
+    resolve_ball_ball(vel, plain(0), plain(1), nx, ny, 1.0, m1, m2, e, 0.0, 0.0, plain(False))
 
 
 @njit(cache=True)

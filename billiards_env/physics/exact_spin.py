@@ -33,6 +33,7 @@ from .walls import (MAX_WALL_PASSES, has_walls, path_box_clear, path_clear_of, p
                     touch_wall, wall_gap,
                     wall_normal_at, wall_time)
 from .spin_motion import advance, classify, piece_of, reach, reach_of, roll_on, slide_end, spin_decay_rate, transition
+from .plain import plain
 
 #: Typed (non-literal) rows of the two-row scratch arrays: a literal 0 or 1 passed to a compiled law would make
 #: numba compile a second specialisation of it.
@@ -508,7 +509,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 pair_t[i, j] = _predict_pair(i, j, 0.0, bs, ball_t, radius, max_time)
         rescan_row(pair_t, row_t, row_j, i)
 
-    n_sc = 0
+    n_sc = plain(0)  # (plain: reserve_states compiled for int64 only, as simulate_exact calls it)
     if record:
         for i in range(n):
             _log_state(n_sc, sc_t, sc_ball, sc_state, 0.0, i, bs, st, on_table)

@@ -21,6 +21,7 @@ from numba import njit
 from .balls import BALL_RADIUS, Balls
 from .errors import SceneError
 from .table import Table
+from .plain import plain
 
 #: Ball numbers of the 15-ball rack, row by row from the apex (8-ball in the middle of the third row).
 RACK_ORDER = (1, 9, 2, 10, 8, 3, 11, 4, 12, 5, 13, 6, 14, 7, 15)
@@ -169,7 +170,7 @@ def place_random_rows(g, pos, rand_rows, regions, placed, n_placed, pockets, poc
     if nr == 0:
         return -1
     first = g.random(2 * batch * nr)
-    m = 0
+    m = plain(0)  # (plain: place_rows compiled for int64, as Python calls it)
     while True:
         m, n_placed = place_rows(first, m, pos, rand_rows, regions, placed, n_placed, pockets, pocket_margin,
                                  min_dist, batch)

@@ -33,6 +33,7 @@ from .kernel_io import N_STATE_COLS, KernelResult
 from .kernel_logs import (cushion_overshoot, keep_on_table, pocket_holding, put_event, reserve_events, rewind_time,
                           snapshot, tunnelled)
 from .walls import MAX_WALL_PASSES, back_onto_wall, deepest_overlap, has_walls, keep_on_jaw_table, reflect_off
+from .plain import plain
 
 CONTACT_MODES = ("lecture", "rewind")
 LECTURE, REWIND = 0, 1
@@ -70,16 +71,16 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
     ev_t = np.empty(64)
     ev_int = np.empty((64, 3), np.int64)
     ev_speed = np.empty(64)
-    n_ev = 0
+    n_ev = plain(0)  # (plain: the helpers below are compiled for int64, not once per literal)
     record = record_dt > 0.0
     sc_t = np.empty(4 * n + 16)
     sc_ball = np.empty(4 * n + 16, np.int64)
     sc_state = np.empty((4 * n + 16, N_STATE_COLS))
-    n_sc = 0
+    n_sc = plain(0)
     no_code = np.empty(0, np.int64)  # (motion-state codes: the spin model's; not logged here)
     if record:
         n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, 0.0, pos, vel, ang, on_table, no_code,
-                                                 -1)
+                                                 plain(-1))
     next_record = record_dt
 
     for i in range(n):
@@ -124,7 +125,7 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
             if s_new <= v_min or s_new == 0.0:
                 vel[i, 0] = 0.0
                 vel[i, 1] = 0.0
-                put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_STOP, i, -1, 0.0)
+                put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_STOP), i, plain(-1), 0.0)
                 n_ev += 1
                 continue
             vel[i, 0] *= f
@@ -148,7 +149,7 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
                         pos[i, 0] += vel[i, 0] * back
                         pos[i, 1] += vel[i, 1] * back
                     if speed > 0.0:
-                        put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, wall, speed)
+                        put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_CUSHION), i, wall, speed)
                         n_ev += 1
                 continue
             for cush in range(4):
@@ -160,7 +161,7 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
                     else:
                         pos[i, axis] = lim
                     if speed > 0.0:
-                        put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, cush, speed)
+                        put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_CUSHION), i, cush, speed)
                         n_ev += 1
 
         # 4. ball pairs in (i, j) order.
@@ -197,7 +198,7 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
                     dist = math.hypot(dx, dy)
                     nx = dx / dist
                     ny = dy / dist
-                    speed = resolve_ball_ball(vel, i, j, nx, ny, dist, mass[i], mass[j], e_b, 0.0, floor, False)
+                    speed = resolve_ball_ball(vel, i, j, nx, ny, dist, mass[i], mass[j], e_b, 0.0, floor, plain(False))
                     pos[i, 0] += vel[i, 0] * back
                     pos[i, 1] += vel[i, 1] * back
                     pos[j, 0] += vel[j, 0] * back
@@ -208,11 +209,11 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
                     pos[i, 1] += ny * half
                     pos[j, 0] -= nx * half
                     pos[j, 1] -= ny * half
-                    speed = resolve_ball_ball(vel, i, j, nx, ny, dist, mass[i], mass[j], e_b, 0.0, floor, False)
+                    speed = resolve_ball_ball(vel, i, j, nx, ny, dist, mass[i], mass[j], e_b, 0.0, floor, plain(False))
                 if speed > 0.0:
                     moving[i] = True
                     moving[j] = True
-                    put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_COLLISION, i, j, speed)
+                    put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_COLLISION), i, j, speed)
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
@@ -233,7 +234,7 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
                 vel[i, 1] = 0.0
                 pocket_of[i] = p
                 pocket_time[i] = t
-                put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, p, speed)
+                put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_POCKET), i, p, speed)
                 n_ev += 1
                 if record:
                     n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table,
@@ -241,10 +242,11 @@ def simulate_step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, pa
 
         if record and t >= next_record - 1e-12:
             n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table, no_code,
-                                                     -1)
+                                                     plain(-1))
             next_record += record_dt
 
     if record:
-        n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table, no_code, -1)
+        n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table, no_code,
+                                                 plain(-1))
     return KernelResult(status, t, n_ev, pocket_of, pocket_time, ev_t[:n_ev], ev_int[:n_ev], ev_speed[:n_ev],
                         sc_t[:n_sc], sc_ball[:n_sc], sc_state[:n_sc], step, n_tunnelled)

@@ -37,6 +37,7 @@ from .spin_collide import (acceleration, ball_hit, is_pressed_pair, merge_pair, 
                            wall_normal)
 from .walls import MAX_WALL_PASSES, back_onto_wall, deepest_overlap, has_walls, keep_on_jaw_table, wall_reach
 from .spin_motion import classify, roll_on, slip, spin_decay_rate, wz_after
+from .plain import plain
 
 
 
@@ -128,15 +129,15 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
     ev_t = np.empty(64)
     ev_int = np.empty((64, 3), np.int64)
     ev_speed = np.empty(64)
-    n_ev = 0
+    n_ev = plain(0)  # (plain: the helpers below are compiled for int64, not once per literal)
     record = record_dt > 0.0
     sc_t = np.empty(4 * n + 16)
     sc_ball = np.empty(4 * n + 16, np.int64)
     sc_state = np.empty((4 * n + 16, N_STATE_COLS_SPIN))
-    n_sc = 0
+    n_sc = plain(0)
     if record:
         n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, 0.0, pos, vel, ang, on_table,
-                                                  code, -1)
+                                                  code, plain(-1))
     next_record = record_dt
 
     t = 0.0
@@ -170,7 +171,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
             code[i] = after
             if after != before and (after == MS_ROLLING or after == MS_SPINNING or after == MS_STATIONARY):
                 kind = EV_ROLL if after == MS_ROLLING else (EV_SPIN if after == MS_SPINNING else EV_STOP)
-                put_event(ev_t, ev_int, ev_speed, n_ev, t, kind, i, -1, 0.0)
+                put_event(ev_t, ev_int, ev_speed, n_ev, t, kind, i, plain(-1), 0.0)
                 n_ev += 1
             pos[i, 0] += vel[i, 0] * dt
             pos[i, 1] += vel[i, 1] * dt
@@ -197,7 +198,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                         pos[i, 0] += vel[i, 0] * back
                         pos[i, 1] += vel[i, 1] * back
                     if speed > 0.0:
-                        put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, wall, speed)
+                        put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_CUSHION), i, wall, speed)
                         n_ev += 1
                 continue
             for cush in range(4):
@@ -216,7 +217,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                             settle_on_cushion(vel, ang, i, cush)
                     code[i] = classify(vel[i, 0], vel[i, 1], ang[i, 0], ang[i, 1], ang[i, 2], r)
                     if speed > 0.0:
-                        put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_CUSHION, i, cush, speed)
+                        put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_CUSHION), i, cush, speed)
                         n_ev += 1
 
         # 4. ball pairs in (i, j) order.
@@ -257,7 +258,8 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                 dist = math.hypot(dx, dy)
                 nx = dx / dist if dist > 0.0 else 1.0
                 ny = dy / dist if dist > 0.0 else 0.0
-                speed = ball_hit(vel, ang, i, j, nx, ny, mass[i], mass[j], radius[i], radius[j], prm, floor, False)
+                speed = ball_hit(vel, ang, i, j, nx, ny, mass[i], mass[j], radius[i], radius[j], prm, floor,
+                               plain(False))
                 merged = is_pressed_pair(vel, ang, i, j, dx, dy, radius[i], radius[j], f_slide, f_roll, f_spin,
                                          floor)
                 if merged:
@@ -271,7 +273,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                         moving[m] = True
                         code[m] = classify(vel[m, 0], vel[m, 1], ang[m, 0], ang[m, 1], ang[m, 2], radius[m])
                 if speed > 0.0:
-                    put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_COLLISION, i, j, speed)
+                    put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_COLLISION), i, j, speed)
                     n_ev += 1
 
         # Pushes can leave a ball past a cushion: put it back on the table.
@@ -296,7 +298,7 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
                 code[i] = MS_POCKETED
                 pocket_of[i] = q
                 pocket_time[i] = t
-                put_event(ev_t, ev_int, ev_speed, n_ev, t, EV_POCKET, i, q, speed)
+                put_event(ev_t, ev_int, ev_speed, n_ev, t, plain(EV_POCKET), i, q, speed)
                 n_ev += 1
                 if record:
                     n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang,
@@ -304,11 +306,11 @@ def simulate_step_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_
 
         if record and t >= next_record - 1e-12:
             n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table,
-                                                      code, -1)
+                                                      code, plain(-1))
             next_record += record_dt
 
     if record:
         n_sc, sc_t, sc_ball, sc_state = snapshot(n_sc, sc_t, sc_ball, sc_state, t, pos, vel, ang, on_table, code,
-                                                  -1)
+                                                  plain(-1))
     return KernelResult(status, t, n_ev, pocket_of, pocket_time, ev_t[:n_ev], ev_int[:n_ev], ev_speed[:n_ev],
                         sc_t[:n_sc], sc_ball[:n_sc], sc_state[:n_sc], step, n_tunnelled)

@@ -28,6 +28,7 @@ from __future__ import annotations
 import math
 
 from .kernel_logs import internal
+from .plain import plain
 
 #: Tangential to normal inverse inertia of a sphere on a half-space: ``beta_t / beta_n = 1 + 5/2``.
 BETA = 3.5
@@ -122,7 +123,7 @@ def compliant_impact(v_t0, v_n0, mu, e, omega):
         return v_t0 - mu * beta * (1.0 + e) * v_n0, v_n
     t_c = 0.5 * math.pi
     if r < mu * eta2:  # stick, then slip
-        t_slip = _first_root(0, r, mu, e, eta2, omega, 0.0, 0.0, 0.0, v_n0)
+        t_slip = _first_root(plain(0), r, mu, e, eta2, omega, 0.0, 0.0, 0.0, v_n0)
         return v_t0 * math.cos(omega * t_slip) \
             + mu * v_n0 * beta * e * (1.0 + math.cos(_phase_restitution(t_slip, e))), v_n
     # slip, stick (at a closed-form time), slip
@@ -139,7 +140,7 @@ def compliant_impact(v_t0, v_n0, mu, e, omega):
         ph = _phase_restitution(t_stick, e)
         u_s = -mu * v_n0 * eta2 * math.sin(ph)
         v_s = v_t0 - mu * beta * v_n0 * (1.0 - e * math.cos(ph))
-    t_slip = _first_root(1, r, mu, e, eta2, omega, u_s, v_s, t_stick, v_n0)
+    t_slip = _first_root(plain(1), r, mu, e, eta2, omega, u_s, v_s, t_stick, v_n0)
     d = t_slip - t_stick
     v_stick = omega * u_s * math.sin(omega * d) + v_s * math.cos(omega * d)
     return v_stick + beta * mu * v_n0 * e * (1.0 + math.cos(_phase_restitution(t_slip, e))), v_n

@@ -23,6 +23,8 @@ from typing import Any
 import numpy as np
 from numba import njit
 
+from billiards_env.physics.plain import plain
+
 from .eight_ball import EightBall, EightBallOptions
 from .nine_ball import NineBall, NineBallOptions
 from .state import (ANYWHERE, EIGHT_BALL, EIGHT_EARLY, EIGHT_NOT_CALLED, EIGHT_ON_BREAK, EIGHT_ON_FOUL,
@@ -186,26 +188,29 @@ def _call(out: np.ndarray, legal: bool, foul: bool, reason: int, fouls: int, sho
     out[C_PUSH] = push
 
 
+# The helpers below are called with constants wrapped in ``plain`` (:mod:`billiards_env.physics.plain`): each is
+# compiled once, for int64 and bool, instead of once per combination of literal constants.
 @njit(cache=True)
 def _end(out: np.ndarray, state: np.ndarray, reason: int, winner: int, fouls: int, legal: bool, groups: int,
          cue_pocketed: bool) -> None:
     s = state[S_SHOOTER]
-    _call(out, legal, fouls != 0, reason, fouls, s, True, 1 - s, BIH_NO, 0, cue_pocketed, True, winner, groups, False)
+    _call(out, legal, fouls != 0, reason, fouls, s, plain(True), 1 - s, plain(BIH_NO), plain(0), cue_pocketed,
+          plain(True), winner, groups, plain(False))
 
 
 @njit(cache=True)
 def _foul(out: np.ndarray, state: np.ndarray, fouls: int, respot: int, bih: int, groups: int,
           cue_pocketed: bool) -> None:
     s = state[S_SHOOTER]
-    _call(out, False, True, _first_foul(fouls), fouls, s, True, 1 - s, bih, respot, cue_pocketed, False, -1, groups,
-          False)
+    _call(out, plain(False), plain(True), _first_foul(fouls), fouls, s, plain(True), 1 - s, bih, respot, cue_pocketed,
+          plain(False), plain(-1), groups, plain(False))
 
 
 @njit(cache=True)
 def _clean(out: np.ndarray, state: np.ndarray, reason: int, keep: bool, respot: int, groups: int, push: bool) -> None:
     s = state[S_SHOOTER]
-    _call(out, True, False, reason, 0, s, not keep, s if keep else 1 - s, BIH_NO, respot, False, False, -1, groups,
-          push)
+    _call(out, plain(True), plain(False), reason, plain(0), s, not keep, s if keep else 1 - s, plain(BIH_NO), respot,
+          plain(False), plain(False), plain(-1), groups, push)
 
 
 @njit(cache=True)
@@ -213,14 +218,14 @@ def _call_nine(out: np.ndarray, state: np.ndarray, options: np.ndarray, first: i
                n_pocketed: int, cue_pocketed: bool, push: bool) -> None:
     targets = legal_mask(state)
     if state[S_BREAK]:
-        fouls = _break_fouls(first, rails, n_pocketed, cue_pocketed, targets, True, options[O_BREAK_RAILS])
+        fouls = _break_fouls(first, rails, n_pocketed, cue_pocketed, targets, plain(True), options[O_BREAK_RAILS])
     elif push:
         fouls = F_SCRATCH if cue_pocketed else 0
     else:
         fouls = _contact_fouls(first, rails, n_pocketed, cue_pocketed, targets)
     me = state[S_SHOOTER]
     if fouls and options[O_THREE_FOULS] and state[S_FOULS0 + me] >= 2:
-        _end(out, state, R_THREE_FOULS, 1 - me, fouls, False, GROUPS_OPEN, cue_pocketed)
+        _end(out, state, plain(R_THREE_FOULS), 1 - me, fouls, plain(False), plain(GROUPS_OPEN), cue_pocketed)
         return
     money = _highest(state[S_ON])
     money_down = False
@@ -228,15 +233,15 @@ def _call_nine(out: np.ndarray, state: np.ndarray, options: np.ndarray, first: i
         if pocketed[i] == money:
             money_down = True
     if money_down and not fouls and not push:
-        _end(out, state, R_NINE_POCKETED, me, 0, True, GROUPS_OPEN, cue_pocketed)
+        _end(out, state, plain(R_NINE_POCKETED), me, plain(0), plain(True), plain(GROUPS_OPEN), cue_pocketed)
         return
     respot = (1 << money) if money_down else 0
     if fouls:
-        _foul(out, state, fouls, respot, BIH_ANYWHERE, GROUPS_OPEN, cue_pocketed)
+        _foul(out, state, fouls, respot, plain(BIH_ANYWHERE), plain(GROUPS_OPEN), cue_pocketed)
     elif push:
-        _clean(out, state, R_PUSH_OUT, False, respot, GROUPS_OPEN, True)
+        _clean(out, state, plain(R_PUSH_OUT), plain(False), respot, plain(GROUPS_OPEN), plain(True))
     else:
-        _clean(out, state, R_LEGAL, n_pocketed > 0, respot, GROUPS_OPEN, False)
+        _clean(out, state, plain(R_LEGAL), n_pocketed > 0, respot, plain(GROUPS_OPEN), plain(False))
 
 
 @njit(cache=True)
@@ -248,51 +253,52 @@ def _call_eight(out: np.ndarray, state: np.ndarray, options: np.ndarray, first: 
         if pocketed[i] == 8:
             eight_at = i
     if state[S_BREAK]:
-        fouls = _break_fouls(first, rails, n_pocketed, cue_pocketed, 0, False, options[O_BREAK_RAILS])
+        fouls = _break_fouls(first, rails, n_pocketed, cue_pocketed, plain(0), plain(False), options[O_BREAK_RAILS])
         if eight_at >= 0 and not fouls and options[O_EIGHT_BREAK_WINS]:
-            _end(out, state, R_EIGHT_ON_BREAK, me, 0, True, GROUPS_OPEN, cue_pocketed)
+            _end(out, state, plain(R_EIGHT_ON_BREAK), me, plain(0), plain(True), plain(GROUPS_OPEN), cue_pocketed)
             return
         respot = EIGHT_BIT if eight_at >= 0 else 0
         if fouls:
             bih = options[O_BREAK_SCRATCH_BIH] if _first_foul(fouls) == R_SCRATCH else options[O_ILLEGAL_BREAK_BIH]
-            _foul(out, state, fouls, respot, bih, GROUPS_OPEN, cue_pocketed)
+            _foul(out, state, fouls, respot, bih, plain(GROUPS_OPEN), cue_pocketed)
         else:
-            _clean(out, state, R_LEGAL, n_pocketed > 0, respot, GROUPS_OPEN, False)
+            _clean(out, state, plain(R_LEGAL), n_pocketed > 0, respot, plain(GROUPS_OPEN), plain(False))
         return
     targets = legal_mask(state)
     fouls = _contact_fouls(first, rails, n_pocketed, cue_pocketed, targets)
     groups = state[S_GROUPS]
     if eight_at >= 0:  # the game ends: won only on a clean, called shot at the 8
         if targets != EIGHT_BIT:
-            _end(out, state, R_EIGHT_EARLY, 1 - me, fouls, False, groups, cue_pocketed)
+            _end(out, state, plain(R_EIGHT_EARLY), 1 - me, fouls, plain(False), groups, cue_pocketed)
         elif fouls:
-            _end(out, state, R_EIGHT_ON_FOUL, 1 - me, fouls, False, groups, cue_pocketed)
+            _end(out, state, plain(R_EIGHT_ON_FOUL), 1 - me, fouls, plain(False), groups, cue_pocketed)
         elif options[O_CALL_EIGHT] and called < 0:
-            _end(out, state, R_EIGHT_NOT_CALLED, 1 - me, 0, False, groups, cue_pocketed)
+            _end(out, state, plain(R_EIGHT_NOT_CALLED), 1 - me, plain(0), plain(False), groups, cue_pocketed)
         elif options[O_CALL_EIGHT] and pockets[eight_at] != called:
-            _end(out, state, R_EIGHT_WRONG_POCKET, 1 - me, 0, False, groups, cue_pocketed)
+            _end(out, state, plain(R_EIGHT_WRONG_POCKET), 1 - me, plain(0), plain(False), groups, cue_pocketed)
         else:
-            _end(out, state, R_EIGHT_POCKETED, me, 0, True, groups, cue_pocketed)
+            _end(out, state, plain(R_EIGHT_POCKETED), me, plain(0), plain(True), groups, cue_pocketed)
         return
     if fouls:
         if options[O_THREE_FOULS] and state[S_FOULS0 + me] >= 2:
-            _end(out, state, R_THREE_FOULS, 1 - me, fouls, False, groups, cue_pocketed)
+            _end(out, state, plain(R_THREE_FOULS), 1 - me, fouls, plain(False), groups, cue_pocketed)
         else:
-            _foul(out, state, fouls, 0, BIH_ANYWHERE, groups, cue_pocketed)
+            _foul(out, state, fouls, plain(0), plain(BIH_ANYWHERE), groups, cue_pocketed)
         return
     if groups == GROUPS_OPEN:
         if n_pocketed == 0:
-            _clean(out, state, R_LEGAL, False, 0, GROUPS_OPEN, False)
+            _clean(out, state, plain(R_LEGAL), plain(False), plain(0), plain(GROUPS_OPEN), plain(False))
             return
         solids = pocketed[0] < 8
-        _clean(out, state, R_LEGAL, True, 0, GROUPS_SOLIDS if solids == (me == 0) else GROUPS_STRIPES, False)
+        chosen = GROUPS_SOLIDS if solids == (me == 0) else GROUPS_STRIPES
+        _clean(out, state, plain(R_LEGAL), plain(True), plain(0), chosen, plain(False))
         return
     mine = _group_mask(groups, me)
-    scored = False
+    scored = plain(False)
     for i in range(n_pocketed):
         if (mine >> pocketed[i]) & 1:
             scored = True
-    _clean(out, state, R_LEGAL, scored, 0, groups, False)
+    _clean(out, state, plain(R_LEGAL), scored, plain(0), groups, plain(False))
 
 
 @njit(cache=True)

@@ -35,6 +35,7 @@ import numpy as np
 from numba import njit
 
 from ..physics.codes import EV_COLLISION, EV_CUSHION
+from ..physics.plain import plain
 from .errors import RulesError, checked_keywords
 
 THREE_CUSHION = "three_cushion"
@@ -95,8 +96,10 @@ def _scan(kind, ball, other, lo, hi, cue, opp, red):
 
 @njit(cache=True)
 def scan_carom(events, cue, opp, red):
-    """:func:`_scan` over an ``(M, 3)`` event array (kind, ball, other) of one shot."""
-    return _scan(events[:, 0], events[:, 1], events[:, 2], 0, events.shape[0], cue, opp, red)
+    """:func:`_scan` over an ``(M, 3)`` event array (kind, ball, other) of one shot (its columns copied contiguous,
+    and the start a plain int: :func:`scan_carom_batch`'s signature of ``_scan``, compiled once)."""
+    return _scan(events[:, 0].copy(), events[:, 1].copy(), events[:, 2].copy(), plain(0), events.shape[0], cue, opp,
+                 red)
 
 
 @njit(cache=True)
