@@ -174,6 +174,17 @@ def _log_likelihood(model: Any, obs: Any, actions: Any) -> Any:
     return policy.get_distribution(obs).log_prob(actions)  # PPO / A2C (summed over the action dims)
 
 
+def _deterministic_action(model: Any, obs: Any) -> Any:
+    """The policy's deterministic action for a batch of observation tensors, through its public modules (what SB3's
+    ``policy.predict`` computes, without its numpy round trip, so that the gradient flows)."""
+    policy = model.policy
+    if hasattr(policy, "actor") and hasattr(policy.actor, "get_action_dist_params"):  # SAC
+        return policy.actor(obs, deterministic=True)
+    if hasattr(policy, "actor"):  # TD3 / DDPG
+        return policy.actor(obs)
+    return policy.get_distribution(obs).get_actions(deterministic=True)  # PPO / A2C
+
+
 def _bc_parameters(model: Any) -> list[Any]:
     policy = model.policy
     if hasattr(policy, "actor"):
@@ -209,7 +220,7 @@ def behaviour_clone(model: Any, obs: np.ndarray, actions: np.ndarray, epochs: in
             idx = torch.as_tensor(perm[start:start + batch_size], device=dev)
             loss = -_log_likelihood(model, o[idx], a[idx]).mean()
             if mse_weight:
-                det = model.policy._predict(o[idx], deterministic=True)
+                det = _deterministic_action(model, o[idx])
                 loss = loss + mse_weight * ((det - a[idx]) ** 2).sum(dim=1).mean()
             opt.zero_grad()
             loss.backward()
@@ -220,7 +231,7 @@ def behaviour_clone(model: Any, obs: np.ndarray, actions: np.ndarray, epochs: in
             with torch.no_grad():
                 vi = torch.as_tensor(val, device=dev)
                 entry["holdout_nll"] = float(-_log_likelihood(model, o[vi], a[vi]).mean())
-                pred = torch.as_tensor(model.policy._predict(o[vi], deterministic=True))
+                pred = _deterministic_action(model, o[vi])
                 entry["holdout_mae"] = float((pred - a[vi]).abs().mean())
         history.append(entry)
     model.policy.set_training_mode(False)

@@ -21,7 +21,6 @@ import statistics
 import tempfile
 import time
 from pathlib import Path
-from types import SimpleNamespace
 from typing import Any, Callable
 
 import numpy as np
@@ -123,18 +122,19 @@ def run_candidates(reps: int) -> dict[str, Any]:
     return out
 
 
-def _one_by_one(ctx: Any, angles: Any, speeds: Any) -> tuple:
-    """The search player's candidate evaluation with one ``Simulator.run`` per candidate (the reference)."""
-    from billiards_env.players.search import _value
+def _one_row_at_a_time(sim: Any, balls: Any, angles: Any, speeds: Any, **kw: Any) -> Any:
+    """``run_shots`` called once per shot (batches of one row), the rows stacked: the reference the batched search
+    must match (a row does not depend on the batch it runs in; each row equals its own ``Simulator.run``, which
+    ``tests/players/test_search_batch.py`` checks)."""
+    from billiards_env.physics.batch import BatchResult, run_shots
 
-    runs = [ctx.simulator.run(ctx.balls.strike(ctx.cue, float(a), float(v)), validate=False)
-            for a, v in zip(angles, speeds)]
-    pots = np.array([sum(1 for j in ctx.targets if r.pocket[j] >= 0) for r in runs])
-    scratch = np.array([r.pocket[ctx.cue] >= 0 for r in runs])
-    hit = np.array([r.first_contact(ctx.cue) >= 0 for r in runs])
-    res = SimpleNamespace(pos=np.stack([r.balls.pos for r in runs]), vel=np.stack([r.balls.vel for r in runs]),
-                          on_table=np.stack([r.balls.on_table for r in runs]))
-    return pots, scratch, hit, _value(pots, scratch, hit), res
+    def row(v: Any, k: int) -> Any:
+        return v[k:k + 1] if isinstance(v, np.ndarray) and v.ndim else v
+
+    rows = [run_shots(sim, balls, np.asarray(angles)[k:k + 1], np.asarray(speeds)[k:k + 1],
+                      **{key: row(v, k) for key, v in kw.items()}) for k in range(len(angles))]
+    return BatchResult(*[None if getattr(rows[0], f) is None else np.concatenate([getattr(r, f) for r in rows])
+                         for f in BatchResult._fields])
 
 
 def run_search(n_tables: int, n_check: int) -> dict[str, Any]:
@@ -159,17 +159,17 @@ def run_search(n_tables: int, n_check: int) -> dict[str, Any]:
                 times.append(time.perf_counter() - t0)
         out[env_id] = {"median_s": statistics.median(times), "min_s": min(times), "n": len(times)}
     same = checked = 0
-    batched = search._simulate
+    batched = search.run_shots
     for k in range(n_check):
         env = gym.make("BilliardsThreeBalls-v0" if k % 2 else "BilliardsOneBall-v0")
         env.reset(seed=1000 + k)
         ctx = shot_context(env)
         a = search.search_shot(ctx, None, np.random.default_rng(k))
-        search._simulate = _one_by_one
+        search.run_shots = _one_row_at_a_time  # the search's batch simulation, one row per call
         try:
             b = search.search_shot(ctx, None, np.random.default_rng(k))
         finally:
-            search._simulate = batched
+            search.run_shots = batched
         checked += 1
         same += (a[0], a[1], a[2].value, a[2].robust, a[2].position) == (b[0], b[1], b[2].value, b[2].robust,
                                                                          b[2].position)

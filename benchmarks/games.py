@@ -155,14 +155,14 @@ def decisions(env_id: str, sizes: dict[str, Any], search: bool) -> dict[str, Any
     from billiards_env.players.geometric import context_model
     from billiards_env.players.geometry import geometric_decision
 
-    from .players import _SimClock, game_decisions
+    from .players import SimClock, game_decisions
 
     geo: list[float] = []
     geo_hand: list[float] = []
     found: dict[str, list[float]] = {"wall": [], "cpu": [], "sim": [], "own": [], "shots": []}
     k = 0
     warm = False
-    with _SimClock() as clock:
+    with SimClock() as clock:
         for env, obs in game_decisions(env_id, sizes["games"], sizes["steps"]):
             ctx = shot_context(env)
             b = ctx.balls

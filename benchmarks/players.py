@@ -68,7 +68,7 @@ def _stats(times: list[float]) -> dict[str, Any]:
             "mean_s": statistics.fmean(times)}
 
 
-class _SimClock:
+class SimClock:
     """Wraps the search module's ``run_shots``: time spent in the batch simulation and shots simulated."""
 
     def __init__(self) -> None:
@@ -79,7 +79,7 @@ class _SimClock:
         self.seconds = 0.0
         self.shots = 0
 
-    def __enter__(self) -> "_SimClock":
+    def __enter__(self) -> "SimClock":
         def timed(*args: Any, **kw: Any) -> Any:
             t = time.perf_counter()
             out = self.inner(*args, **kw)
@@ -116,7 +116,7 @@ def run_game(env_id: str, sizes: dict[str, int]) -> dict[str, Any]:
     player = GeometricPlayer()
     warm = search_warm = False
     k = 0
-    with _SimClock() as clock:
+    with SimClock() as clock:
         for env, obs in game_decisions(env_id, sizes["games"], sizes["steps"]):
             ctx = shot_context(env)
             b = ctx.balls

@@ -145,32 +145,32 @@ def _record_calls(sim: Any, states: tuple[np.ndarray, ...]) -> dict[str, Any]:
             bt, rad, mt = rest[16], rest[17], rest[18]
             return (t, *s, bt[i], bt[j], rad[i], rad[j], mt)
 
-        undo.append(wrap(exact_spin, "_pair_from_states", "pair", pair_conv))
+        undo.append(wrap(exact_spin, "pair_from_states", "pair", pair_conv))
 
         def ball_conv(i, bs, st, radius, *rest):
             return (*bs[i].tolist(), float(st[i]), radius[i])
 
-        undo.append(wrap(exact_spin, "_predict_ball", "ball", ball_conv))
+        undo.append(wrap(exact_spin, "predict_ball", "ball", ball_conv))
 
         def state_conv(bs, i, t):
             return (t, *bs[i].tolist())
 
-        undo.append(wrap(exact_spin, "_state_at", "state", state_conv))
+        undo.append(wrap(exact_spin, "state_at", "state", state_conv))
     else:
         def pair_conv(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, radius, prm):
             return (t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t[i], ball_t[j], radius[i], radius[j])
 
-        undo.append(wrap(exact, "_pair_time_s", "pair", pair_conv))
+        undo.append(wrap(exact, "pair_time_s", "pair", pair_conv))
 
         def ball_conv(i, t0, p0, v0, sp0, tstop, radius, *rest):
             return (t0[i], p0[i, 0], p0[i, 1], v0[i, 0], v0[i, 1], tstop[i], radius[i], sp0[i])
 
-        undo.append(wrap(exact, "_predict_ball", "ball", ball_conv))
+        undo.append(wrap(exact, "predict_ball", "ball", ball_conv))
 
         def state_conv(i, t, t0, p0, v0, sp0, tstop, *rest):
             return (t, t0[i], p0[i, 0], p0[i, 1], v0[i, 0], v0[i, 1], tstop[i], sp0[i])
 
-        undo.append(wrap(exact, "_state_at", "state", state_conv))
+        undo.append(wrap(exact, "state_at", "state", state_conv))
 
     def select_conv(*arrays):
         return tuple(a.copy() for a in arrays)
@@ -245,12 +245,12 @@ def _replays() -> dict[str, Any]:
     from billiards_env.physics.roots import first_entry
     from billiards_env.physics.walls import wall_time
 
-    pair_l = exact._pair_time_s
-    ball_l = exact._predict_ball
-    state_l = exact._state_at
-    pair_s = exact_spin._pair_from_states
-    ball_s = exact_spin._predict_ball
-    state_s = exact_spin._state_at
+    pair_l = exact.pair_time_s
+    ball_l = exact.predict_ball
+    state_l = exact.state_at
+    pair_s = exact_spin.pair_from_states
+    ball_s = exact_spin.predict_ball
+    state_s = exact_spin.state_at
 
     @njit
     def roots(c):

@@ -9,6 +9,9 @@ balls cost nothing until something hits them.
 Simultaneous events are taken in a fixed order: the earliest time first; among equal times, ball events
 (in ball order) before pair events (in ``(i, j)`` order, ``i < j``). A chain of contacts at one instant (a
 touching rack, Newton's cradle) therefore unfolds as a deterministic sequence of pairwise collisions.
+
+The event loop's stages (:func:`state_at`, :func:`predict_ball`, :func:`pair_time_s`) are public: the solver
+profile (``benchmarks/solver_profile.py``) times them one by one.
 """
 from __future__ import annotations
 
@@ -36,7 +39,7 @@ _ZERO = np.int64(0)
 
 
 @inlined
-def _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k):
+def state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k):
     """Position and velocity of ball ``i`` at time ``t >= t0[i]`` from its last event state (``sp0[i]``: its speed
     then, ``hypot`` of ``v0[i]``, kept with it so that it is not worked out again at every call)."""
     vx = v0[i, 0]
@@ -67,7 +70,7 @@ def _advance(i, t, t0, p0, v0, sp0, tstop, law, a, k):
 def _advance_only(i, t, t0, p0, v0, sp0, tstop, law, a, k):
     """:func:`_advance` leaving ``sp0[i]`` stale: for an event that sets the velocity (and with it the speed) anew
     before anything reads the speed (a collision, a cushion, a stop; a jam sets it first)."""
-    x, y, vx, vy = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
+    x, y, vx, vy = state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
     p0[i, 0] = x
     p0[i, 1] = y
     v0[i, 0] = vx
@@ -90,7 +93,7 @@ def _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min):
 
 
 @internal
-def _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy, pocket_r, prm):
+def predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy, pocket_r, prm):
     """Next stop, cushion or pocket event of ball ``i``: ``(time, kind, other)``."""
     vx = v0[i, 0]
     vy = v0[i, 1]
@@ -147,8 +150,8 @@ def _predict_pair(i, j, t, t0, p0, v0, sp0, tstop, ball_t, radius, prm):
     law = prm.law
     a = prm.decel
     k = prm.drag_k
-    xi, yi, vxi, vyi = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
-    xj, yj, vxj, vyj = _state_at(j, t, t0, p0, v0, sp0, tstop, law, a, k)
+    xi, yi, vxi, vyi = state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
+    xj, yj, vxj, vyj = state_at(j, t, t0, p0, v0, sp0, tstop, law, a, k)
     return _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
 
 
@@ -156,12 +159,12 @@ def _predict_pair(i, j, t, t0, p0, v0, sp0, tstop, ball_t, radius, prm):
 def _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm):
     """:func:`_predict_pair` from both balls' states at ``t`` (``i < j``), so that a ball's state is computed once
     for all its pairs."""
-    return _pair_time_s(i, j, t, xi, yi, vxi, vyi, math.hypot(vxi, vyi), xj, yj, vxj, vyj, math.hypot(vxj, vyj),
+    return pair_time_s(i, j, t, xi, yi, vxi, vyi, math.hypot(vxi, vyi), xj, yj, vxj, vyj, math.hypot(vxj, vyj),
                         ball_t, radius, prm)
 
 
 @internal
-def _pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, radius, prm):
+def pair_time_s(i, j, t, xi, yi, vxi, vyi, si, xj, yj, vxj, vyj, sj, ball_t, radius, prm):
     """:func:`_pair_time` with both balls' speeds (``hypot`` of their velocities) given."""
     law = prm.law
     a = prm.decel
@@ -251,7 +254,7 @@ def _jam_cluster(seed, t, t0, p0, v0, sp0, tstop, radius, mass, on_table, burst,
     py = pxy[1]
     for m in range(n):
         if on_table[m]:
-            px[m], py[m], _, _ = _state_at(m, t, t0, p0, v0, sp0, tstop, law, a, k)
+            px[m], py[m], _, _ = state_at(m, t, t0, p0, v0, sp0, tstop, law, a, k)
     count = contact_cluster(seed, px, py, radius, on_table, involved)
     total = 0.0
     mom_x = 0.0
@@ -365,7 +368,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             pair_t[i, j] = math.inf
     for i in range(n):
         if on_table[i]:
-            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy,
+            ball_t[i], ball_kind[i], ball_other[i] = predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy,
                                                                    pocket_r, prm)
     for i in range(n):
         rest_i = v0[i, 0] == 0.0 and v0[i, 1] == 0.0
@@ -500,20 +503,20 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 row_t[i] = math.inf
                 row_j[i] = -1
                 continue
-            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy,
+            ball_t[i], ball_kind[i], ball_other[i] = predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy,
                                                                    pocket_r, prm)
             if not have_states:  # every ball's state at t, once for all the involved balls' pairs
                 for m in range(n):
                     if not on_table[m]:
                         continue
-                    if v0[m, 0] == 0.0 and v0[m, 1] == 0.0:  # at rest (what _state_at says, without its hypot)
+                    if v0[m, 0] == 0.0 and v0[m, 1] == 0.0:  # at rest (what state_at says, without its hypot)
                         st[m, 0] = p0[m, 0]
                         st[m, 1] = p0[m, 1]
                         st[m, 2] = 0.0
                         st[m, 3] = 0.0
                         st[m, 4] = 0.0
                     else:
-                        st[m, 0], st[m, 1], st[m, 2], st[m, 3] = _state_at(m, t, t0, p0, v0, sp0, tstop, law, a,
+                        st[m, 0], st[m, 1], st[m, 2], st[m, 3] = state_at(m, t, t0, p0, v0, sp0, tstop, law, a,
                                                                            k)
                         st[m, 4] = math.hypot(st[m, 2], st[m, 3])
                 have_states = True
@@ -539,10 +542,10 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                     if rest_i and vxm == 0.0 and vym == 0.0:  # two balls at rest never meet
                         tm = math.inf
                     elif i < m:
-                        tm = _pair_time_s(i, m, t, xi, yi, vxi, vyi, st[i, 4], xm, ym, vxm, vym, st[m, 4], ball_t,
+                        tm = pair_time_s(i, m, t, xi, yi, vxi, vyi, st[i, 4], xm, ym, vxm, vym, st[m, 4], ball_t,
                                           radius, prm)
                     else:
-                        tm = _pair_time_s(m, i, t, xm, ym, vxm, vym, st[m, 4], xi, yi, vxi, vyi, st[i, 4], ball_t,
+                        tm = pair_time_s(m, i, t, xm, ym, vxm, vym, st[m, 4], xi, yi, vxi, vyi, st[i, 4], ball_t,
                                           radius, prm)
                 if i < m:  # row i is scanned again below, once written
                     pair_t[i, m] = tm
@@ -552,7 +555,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
 
     for i in range(n):
         if on_table[i]:
-            x, y, vx, vy = _state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
+            x, y, vx, vy = state_at(i, t, t0, p0, v0, sp0, tstop, law, a, k)
             pos[i, 0] = x
             pos[i, 1] = y
             vel[i, 0] = vx

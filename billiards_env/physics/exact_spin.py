@@ -11,6 +11,8 @@ capture (a quartic), and the motion transitions at their closed-form times: a sl
 ball comes to rest (``stop``). Simultaneous events are taken as in :mod:`.exact`: ball events (by row) before
 pair events (by ``(i, j)``). The inelastic-collapse guards of :mod:`.collide` (same-instant floor, jam) apply
 as they are; the pressed-contact rules of :mod:`.spin_collide` replace the rolling law's sticky contact.
+The event loop's stages (:func:`state_at`, :func:`predict_ball`, :func:`pair_from_states`) are public, as in
+:mod:`.exact`.
 """
 from __future__ import annotations
 
@@ -75,7 +77,7 @@ def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
 
 
 @inlined
-def _state_at(bs, i, t):
+def state_at(bs, i, t):
     """``(x, y, vx, vy, wx, wy, wz)`` of ball ``i`` at time ``t`` (not past its piece's end)."""
     tau = min(t, bs[i, TEND]) - bs[i, T0]
     if not tau > 0.0:
@@ -87,7 +89,7 @@ def _state_at(bs, i, t):
 @inlined
 def _move_to(bs, i, t):
     """Move ball ``i``'s reference state to time ``t`` (on the same piece)."""
-    x, y, vx, vy, wx, wy, wz = _state_at(bs, i, t)
+    x, y, vx, vy, wx, wy, wz = state_at(bs, i, t)
     bs[i, X] = x
     bs[i, Y] = y
     bs[i, VX] = vx
@@ -99,7 +101,7 @@ def _move_to(bs, i, t):
 
 
 @internal
-def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time, prm):
+def predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time, prm):
     """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
     t0 = bs[i, T0]
     t_end = bs[i, TEND]
@@ -184,15 +186,15 @@ def _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_tim
 def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (which recomputes the pair anyway)."""
-    xi, yi, vxi, vyi, _, _, _ = _state_at(bs, i, t)
-    xj, yj, vxj, vyj, _, _, _ = _state_at(bs, j, t)
-    return _pair_from_states(i, j, t, xi, yi, vxi, vyi, bs[i, AX], bs[i, AY], math.hypot(vxi, vyi),
+    xi, yi, vxi, vyi, _, _, _ = state_at(bs, i, t)
+    xj, yj, vxj, vyj, _, _, _ = state_at(bs, j, t)
+    return pair_from_states(i, j, t, xi, yi, vxi, vyi, bs[i, AX], bs[i, AY], math.hypot(vxi, vyi),
                              math.hypot(bs[i, AX], bs[i, AY]), xj, yj, vxj, vyj, bs[j, AX], bs[j, AY],
                              math.hypot(vxj, vyj), math.hypot(bs[j, AX], bs[j, AY]), ball_t, radius, max_time)
 
 
 @internal
-def _pair_from_states(i, j, t, xi, yi, vxi, vyi, axi, ayi, hvi, hai, xj, yj, vxj, vyj, axj, ayj, hvj, haj, ball_t,
+def pair_from_states(i, j, t, xi, yi, vxi, vyi, axi, ayi, hvi, hai, xj, yj, vxj, vyj, axj, ayj, hvj, haj, ball_t,
                       radius, max_time):
     """:func:`_predict_pair` from both balls' states at ``t`` (``i < j``: position, velocity, the piece's
     acceleration, and the ``hypot`` of the velocity and of the acceleration), worked out once per ball for all its
@@ -335,7 +337,7 @@ def _jam_cluster(seed, t, bs, st, radius, mass, on_table, burst, prm, f_slide, f
     py = pxy[1]
     for m in range(n):
         if on_table[m]:
-            px[m], py[m], _, _, _, _, _ = _state_at(bs, m, t)
+            px[m], py[m], _, _, _, _, _ = state_at(bs, m, t)
     count = contact_cluster(seed, px, py, radius, on_table, involved)
     total = 0.0
     mom_x = 0.0
@@ -501,7 +503,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
 
     for i in range(n):
         if on_table[i]:
-            ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length,
+            ball_t[i], ball_kind[i], ball_other[i] = predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length,
                                                                    width, max_time, prm)
     for i in range(n):
         for j in range(i + 1, n):
@@ -684,7 +686,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                 _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, bs, st, on_table)
                 n_sc += 1
             if on_table[i]:
-                ball_t[i], ball_kind[i], ball_other[i] = _predict_ball(i, bs, st, radius, pocket_xy, pocket_r,
+                ball_t[i], ball_kind[i], ball_other[i] = predict_ball(i, bs, st, radius, pocket_xy, pocket_r,
                                                                        length, width, max_time, prm)
             else:
                 ball_t[i] = math.inf
@@ -694,7 +696,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
             if on_table[i] and not have_states:  # every ball's state at t, once for all the involved balls' pairs
                 for m in range(n):
                     if on_table[m]:
-                        x, y, vx, vy, _, _, _ = _state_at(bs, m, t)
+                        x, y, vx, vy, _, _, _ = state_at(bs, m, t)
                         ps[m, 0] = x
                         ps[m, 1] = y
                         ps[m, 2] = vx
@@ -718,7 +720,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
                             again = True
                     if again:
                         continue
-                    tm = _pair_from_states(lo, hi, t, ps[lo, 0], ps[lo, 1], ps[lo, 2], ps[lo, 3], bs[lo, AX],
+                    tm = pair_from_states(lo, hi, t, ps[lo, 0], ps[lo, 1], ps[lo, 2], ps[lo, 3], bs[lo, AX],
                                            bs[lo, AY], ps[lo, 4], ps[lo, 5], ps[hi, 0], ps[hi, 1], ps[hi, 2],
                                            ps[hi, 3], bs[hi, AX], bs[hi, AY], ps[hi, 4], ps[hi, 5], ball_t, radius,
                                            max_time)
@@ -729,7 +731,7 @@ def simulate_exact_spin(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket
             rescan_row(pair_t, row_t, row_j, i)
 
     for i in range(n):
-        x, y, vx, vy, wx, wy, wz = _state_at(bs, i, t)
+        x, y, vx, vy, wx, wy, wz = state_at(bs, i, t)
         pos[i, 0] = x
         pos[i, 1] = y
         vel[i, 0] = vx

@@ -254,18 +254,18 @@ class Judged:
     t_off: np.ndarray
 
 
-def _simulate(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = None, tops: Any = None
+def simulate_candidates(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = None, tops: Any = None
               ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, BatchResult]:
     """Play candidate shots, all in one batch (:func:`~billiards_env.physics.batch.run_shots`; each row is the
     single ``Simulator.run`` of its shot): ``(pots, scratch, hit, value, batch result)`` per candidate. Without a
-    game the value is :func:`_value`; in a game it is the rules' verdict (:class:`Judge`)."""
+    game the value is :func:`candidate_value`; in a game it is the rules' verdict (:class:`Judge`)."""
     j = _simulate_judged(ctx, angles, speeds, sides, tops)
     return j.pots, j.scratch, j.hit, j.values, j.res
 
 
 def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = None, tops: Any = None,
                      judge: Judge | None = None) -> Judged:
-    """:func:`_simulate`, with who shoots next and his legal balls (see :class:`Judged`)."""
+    """:func:`simulate_candidates`, with who shoots next and his legal balls (see :class:`Judged`)."""
     game = ctx.game is not None
     spin = ctx.physics.has_spin
     res = run_shots(ctx.simulator, ctx.balls, angles, speeds, ball=ctx.cue, validate=False,
@@ -280,8 +280,8 @@ def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = No
         # must never outrank a pot), and a cleared table has no next shot.
         left = res.on_table[:, targets].any(axis=1)
         nxt = np.where((pots > 0) & ~scratch & left, 1, -1)
-        return Judged(pots, scratch, hit, _value(pots, scratch, hit), res, nxt, np.zeros(n, np.int64), targets,
-                      np.array([0, len(targets)], np.int64))
+        return Judged(pots, scratch, hit, candidate_value(pots, scratch, hit), res, nxt, np.zeros(n, np.int64),
+                      targets, np.array([0, len(targets)], np.int64))
     judge = judge or Judge(ctx)
     keys, masks, ties = shot_keys(res.first_contact, res.rail_after_contact, res.pocket, res.pocketed_at,
                                   judge.numbers, int(ctx.cue), judge.rail_detail)
@@ -300,7 +300,7 @@ def _simulate_judged(ctx: ShotContext, angles: Any, speeds: Any, sides: Any = No
     return Judged(pots, scratch, hit, values, res, nxt, ids, t_flat, t_off)
 
 
-def _value(pots: Any, scratch: Any, hit: Any) -> Any:
+def candidate_value(pots: Any, scratch: Any, hit: Any) -> Any:
     """``pots - 3 scratch - 0.5 (no ball hit)``, for one candidate or arrays of them."""
     return pots - 3.0 * scratch - np.where(hit, 0.0, 0.5)
 
@@ -693,5 +693,5 @@ class SearchPlayer(BasePlayer):
         return ctx.game.calls_for(np.asarray(res.pocket, dtype=np.int64))
 
 
-__all__ = ["Outcome", "SearchSettings", "search_shot", "SearchPlayer", "playable_shots", "Playable", "next_shot_ease",
-           "placement_candidates", "shot_keys", "Judge", "SPIN_VARIANTS"]
+__all__ = ["Outcome", "SearchSettings", "search_shot", "simulate_candidates", "candidate_value", "SearchPlayer",
+           "playable_shots", "Playable", "next_shot_ease", "placement_candidates", "shot_keys", "Judge", "SPIN_VARIANTS"]

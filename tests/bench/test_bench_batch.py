@@ -3,6 +3,8 @@ finds the batched player's choices equal to one-by-one simulation, the pooltool 
 report lists every target with its figure."""
 from __future__ import annotations
 
+import numpy as np
+
 from benchmarks import batch
 
 
@@ -10,6 +12,48 @@ def test_search_choices_match_one_by_one():
     out = batch.run_search(n_tables=1, n_check=4)
     assert out["checked"] == 4 and out["same_choices"] == 4
     assert out["BilliardsThreeBalls-v0"]["median_s"] > 0
+
+
+def test_the_choice_check_runs_its_reference_and_can_fail(monkeypatch):
+    """The second search really simulates through the one-row reference, and a wrong reference shows up as
+    different choices (a reference that pockets nothing)."""
+    real = batch._one_row_at_a_time
+    calls = []
+
+    def counting(*args, **kw):
+        calls.append(len(args[2]))
+        return real(*args, **kw)
+
+    monkeypatch.setattr(batch, "_one_row_at_a_time", counting)
+    assert batch.run_search(n_tables=1, n_check=2)["same_choices"] == 2 and sum(calls) > 0
+
+    def blind(*args, **kw):
+        res = real(*args, **kw)
+        return res._replace(pocket=np.full_like(res.pocket, -1))
+
+    monkeypatch.setattr(batch, "_one_row_at_a_time", blind)
+    out = batch.run_search(n_tables=1, n_check=2)
+    assert out["same_choices"] < out["checked"] == 2
+
+
+def test_one_row_reference_equals_the_batch():
+    import gymnasium as gym
+
+    import billiards_env  # noqa: F401
+    from billiards_env.physics.batch import run_shots
+
+    env = gym.make("BilliardsThreeBalls-v0")
+    env.reset(seed=4)
+    u = env.unwrapped
+    sim, balls = u.table_state.simulator, u.table_state.balls
+    rng = np.random.default_rng(4)
+    angles, speeds = rng.uniform(-np.pi, np.pi, 12), rng.uniform(0.5, 3.0, 12)
+    whole = run_shots(sim, balls, angles, speeds, validate=False)
+    rows = batch._one_row_at_a_time(sim, balls, angles, speeds, validate=False)
+    for name in whole._fields:
+        a, b = getattr(whole, name), getattr(rows, name)
+        assert (a is None and b is None) or np.array_equal(a, b, equal_nan=a.dtype.kind == "f"), name
+    assert (whole.first_contact >= 0).any()
 
 
 def test_pooltool_absent_is_reported():

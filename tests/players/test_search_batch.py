@@ -10,7 +10,7 @@ import pytest
 
 import billiards_env  # noqa: F401
 from billiards_env.players.context import shot_context
-from billiards_env.players.search import _simulate, _value, search_shot
+from billiards_env.players.search import simulate_candidates, candidate_value, search_shot
 
 
 @pytest.mark.parametrize("env_id,seed", [("BilliardsThreeBalls-v0", 3), ("BilliardsOneBall-v0", 8),
@@ -22,7 +22,7 @@ def test_batch_values_equal_single_runs(env_id, seed):
     rng = np.random.default_rng(seed)
     angles = rng.uniform(-math.pi, math.pi, 40)
     speeds = rng.uniform(*ctx.speed_range, 40)
-    pots, scratch, hit, values, res = _simulate(ctx, angles, speeds)
+    pots, scratch, hit, values, res = simulate_candidates(ctx, angles, speeds)
     for k in range(40):
         single = ctx.simulator.run(ctx.balls.strike(ctx.cue, angles[k], speeds[k]), validate=False)
         assert pots[k] == sum(1 for j in ctx.targets if single.pocket[j] >= 0)
@@ -30,7 +30,7 @@ def test_batch_values_equal_single_runs(env_id, seed):
         assert hit[k] == (single.first_contact(ctx.cue) >= 0)
         assert np.array_equal(res.pos[k], single.balls.pos)
         if ctx.game is None:
-            assert values[k] == _value(pots[k], scratch[k], hit[k])
+            assert values[k] == candidate_value(pots[k], scratch[k], hit[k])
     assert len(set(values.tolist())) > 1 or ctx.game is not None  # the candidates differ (a break may all foul)
     assert (res.first_contact >= 0).any()
 
