@@ -1,6 +1,6 @@
 """The action types compiled: twins of :meth:`ActionType.shot <billiards_env.envs.actions.ActionType.shot>` and
 :meth:`~billiards_env.envs.actions.ActionType.action` (the absolute, relative and ghost aims) and of
-:meth:`CandidateShots.shot <billiards_env.envs.actions.CandidateShots.shot>`, on a pool game's state row
+:meth:`CandidateShots.shot <billiards_env.envs.actions.CandidateShots.shot>`, on a pool game's state record
 (:mod:`billiards_env.rules.pool_judge`) and a packed config (:mod:`._game_config`), for the native vector env's
 games (:mod:`._game_kernels`). The arithmetic of an action is one implementation: :func:`~.actions.aim_to_angle`,
 :func:`~.actions.angle_to_aim`, :func:`~.actions.power_to_speed`, :func:`~.actions.square_to_disc` and
@@ -21,7 +21,6 @@ from billiards_env.physics.plain import plain
 from billiards_env.players.geometry import (ARRIVE_SPEED, COL_ANGLE, COL_CLEAR, COL_POCKET, COL_SPEED, SPEED_FACTORS,
                                             ghost_shots)
 from billiards_env.players.slots import HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET, in_hand_slots, shot_slots
-from billiards_env.rules.pool_judge import S_BREAK, S_OVER
 
 from .actions import (AIM_ABSOLUTE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, PLACED_MAX_CUT, aim_to_angle,
                       angle_to_aim, disc_to_square, power_to_speed, square_to_disc)
@@ -60,12 +59,12 @@ def legal_place(x: float, y: float, pos: np.ndarray, on: np.ndarray, radius: np.
 
 
 @njit(cache=True)
-def shot_of_action(a: np.ndarray, code: int, max_ghost: float, st: np.ndarray, pos: np.ndarray, on: np.ndarray,
+def shot_of_action(a: np.ndarray, code: int, max_ghost: float, st: np.void, pos: np.ndarray, on: np.ndarray,
                    radius: np.ndarray, cfg: np.ndarray, icfg: np.ndarray, holes: np.ndarray,
                    area: np.ndarray) -> tuple:
-    """Compiled twin of :meth:`ActionType.shot <billiards_env.envs.actions.ActionType.shot>` on a pool state row: the
-    shot an action (float64, clipped) means now. Returns ``(found, angle, speed, side, top, placed, x, y, pocket,
-    push)`` (``pocket`` -1: none; found False: no legal point for a ball in hand)."""
+    """Compiled twin of :meth:`ActionType.shot <billiards_env.envs.actions.ActionType.shot>` on a pool state record:
+    the shot an action (float64, clipped) means now. Returns ``(found, angle, speed, side, top, placed, x, y,
+    pocket, push)`` (``pocket`` -1: none; found False: no legal point for a ball in hand)."""
     speed = power_to_speed(a[1], cfg["speed_lo"], cfg["speed_span"])
     side = 0.0
     top = 0.0
@@ -92,11 +91,11 @@ def shot_of_action(a: np.ndarray, code: int, max_ghost: float, st: np.ndarray, p
 
 @njit(cache=True)
 def action_of_shot(code: int, max_ghost: float, angle: float, speed: float, placed: bool, px: float, py: float,
-                   pocket: int, st: np.ndarray, pos: np.ndarray, on: np.ndarray, radius: np.ndarray,
+                   pocket: int, st: np.void, pos: np.ndarray, on: np.ndarray, radius: np.ndarray,
                    cfg: np.ndarray, icfg: np.ndarray, holes: np.ndarray, area: np.ndarray, out: np.ndarray) -> bool:
-    """Compiled twin of :meth:`ActionType.action <billiards_env.envs.actions.ActionType.action>` on a pool state row,
-    for a shot without tip offsets nor push-out (the geometric player's), as the float32 action read back as float64
-    into ``out``. False: no legal point for a ball in hand."""
+    """Compiled twin of :meth:`ActionType.action <billiards_env.envs.actions.ActionType.action>` on a pool state
+    record, for a shot without tip offsets nor push-out (the geometric player's), as the float32 action read back as
+    float64 into ``out``. False: no legal point for a ball in hand."""
     out[:] = 0.0
     t = pool_target_row(st)
     found = True
@@ -163,7 +162,7 @@ def candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_
     keep = max(n_slots - 1, 1)
     targets = pool_targets_row(st, on)
     in_hand = pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], area)
-    if st[S_BREAK] and not st[S_OVER]:
+    if st["break_shot"] and not st["over"]:
         cx, cy = (px, py) if placed else (pos[0, 0], pos[0, 1])
         if in_hand:
             kp = icfg["place_at"]

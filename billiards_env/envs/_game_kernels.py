@@ -49,10 +49,8 @@ from billiards_env.physics.plain import plain
 from billiards_env.physics.spin_collide import strike_ball
 from billiards_env.players.geometry import COL_POCKET, geometric_decision_cached
 from billiards_env.players.slots import next_shot_ease
-from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_NO, C_FOUL, C_REASON, C_RESPOT, C_SHOOTER, C_TURN_OVER,
-                                            GROUPS_OPEN, N_CALL, N_STATE, S_BIH, S_BREAK, S_GAME, S_GROUPS, S_ON,
-                                            S_OVER, S_PUSH_AVAILABLE, S_SHOOTER, S_WINNER, initial_row, legal_mask,
-                                            needs_called_pocket, play)
+from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_NO, CALL_ROW, GAME_STATE_ROW, copy_state, initial_row,
+                                            legal_mask, needs_called_pocket, play)
 from billiards_env.shot_path import noisy_shot
 
 from ._action_kernels import action_of_shot, candidates_shot, shot_of_action
@@ -142,8 +140,9 @@ def _play(k, angle, speed, side, top, placed, px, py, pos, vel, ang, on, radius,
 @njit(cache=True)
 def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, call, after, buf, rec):
     """Compiled twin of ``GameSession.judge`` (``PoolSession._call`` and ``_apply``) of table ``k``'s shot
-    (``pocket``, ``ev_int``: the kernel's): the summary, the rules' call and the next state (``st`` updated), the
-    respots; records the call. Returns an error code."""
+    (``pocket``, ``ev_int``: the kernel's): the summary, the rules' call and the next state (``st``, the table's
+    game state record, updated), the respots; records the call. ``call`` and ``after``: one-record scratch arrays
+    (``CALL_ROW``, ``GAME_STATE_ROW``) the rules write into. Returns an error code."""
     first, rail, order, n_order = scan_shot(ev_int, pocket, plain(0))
     nb = pocket.shape[0]
     rails = plain(0)  # (plain: the rules compiled for an int64 rails mask only)
@@ -158,15 +157,17 @@ def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, ca
     for i in range(n_order):
         pocketed[i] = order[i]
         pockets[i] = pocket[order[i]]
-    push = shot_push and st[S_PUSH_AVAILABLE] != 0
+    push = shot_push and st["push_available"] != 0
     called = shot_pocket if needs_called_pocket(st, opts) else -1
-    play(st, opts, first, rails, pocketed, pockets, n_order, pocket[0] >= 0, push, called, call, after)
-    st[:] = after
+    c = call[0]
+    nxt = after[0]
+    play(st, opts, first, rails, pocketed, pockets, n_order, pocket[0] >= 0, push, called, c, nxt)
+    copy_state(st, nxt)
     err = E_NONE
     kept = 0
     for i in range(n_order):
         n = pocketed[i]
-        if (call[C_RESPOT] >> n) & 1:
+        if (c["respot"] >> n) & 1:
             if not spot_object_row(pos[k], on[k], cfg["radius"], n, cfg["foot_x"], cfg["foot_y"], cfg["length"]):
                 err = E_RESPOT
         else:
@@ -174,16 +175,16 @@ def _judge(k, pocket, ev_int, shot_pocket, shot_push, st, opts, pos, on, cfg, ca
     if not on[k, 0]:
         if not spot_cue_row(pos[k], on[k], cfg["radius"], plain(0), cfg["head_x"], cfg["head_y"], cfg["width"]):
             err = E_CUE_RESPOT
-    rec["shooter"] = call[C_SHOOTER]
-    rec["foul"] = call[C_FOUL]
-    rec["reason"] = call[C_REASON]
-    rec["turn_over"] = call[C_TURN_OVER]
+    rec["shooter"] = c["shooter"]
+    rec["foul"] = c["foul"]
+    rec["reason"] = c["reason"]
+    rec["turn_over"] = c["turn_over"]
     rec["pocketed"] = pocketed_rows
     rec["scratch"] = pocket[0] >= 0
     rec["first"] = first
-    rec["bih"] = BIH_NO if st[S_OVER] else st[S_BIH]
-    rec["groups"] = st[S_GROUPS]
-    rec["over"] = st[S_OVER]
+    rec["bih"] = BIH_NO if st["over"] else st["bih"]
+    rec["groups"] = st["groups"]
+    rec["over"] = st["over"]
     rec["scored"] = kept
     return err
 
@@ -197,14 +198,14 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
     st = gst[k]
     n = 0
     cap = icfg["turn_cap"]
-    while not st[S_OVER] and st[S_SHOOTER] != 0 and n < cap:
+    while not st["over"] and st["shooter"] != 0 and n < cap:
         targets = pool_targets_row(st, on[k])
         in_hand = pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], dec_area)
         if not in_hand:
             dec_area[:] = 0.0
         px, py, placed, angle, speed, kr, rows, status = geometric_decision_cached(
             pos[k], on[k], radius, mass, plain(0), targets, tm_xy, tm_r, tm_params, cfg["speed_min"], cfg["speed_max"],
-            dec_area, in_hand, st[S_BREAK] != 0, cfg["max_cut"], wc[0][k], wc[1][k], wc[2][k])
+            dec_area, in_hand, st["break_shot"] != 0, cfg["max_cut"], wc[0][k], wc[1][k], wc[2][k])
         if status == 1:
             return n, E_NO_PLACE
         pocket = int(rows[kr, COL_POCKET]) if kr >= 0 else -1
@@ -223,7 +224,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
         n += 1
         if err != E_NONE:
             return n, err
-    if not st[S_OVER] and st[S_SHOOTER] != 0:
+    if not st["over"] and st["shooter"] != 0:
         return n, E_TURN_CAP
     return n, E_NONE
 
@@ -234,8 +235,8 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
 def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
                 params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs, wc):
     """One ``env.step`` of table ``k`` (see :func:`play_tables`)."""
-    call = np.zeros(N_CALL, np.int64)
-    after = np.zeros(N_STATE, np.int64)
+    call = np.zeros(1, CALL_ROW)
+    after = np.zeros(1, GAME_STATE_ROW)
     buf = np.zeros((2, pos.shape[1]), np.int64)
     area = np.zeros(4)
     dec_area = np.zeros(4)
@@ -267,9 +268,9 @@ def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, o
         return
     # GameTask._judge's ease and _shaping (the agent's own shot).
     ease = 0.0
-    if cfg["position_reward"] != 0.0 and not st[S_OVER] and not rec["turn_over"] and rec["shooter"] == 0:
+    if cfg["position_reward"] != 0.0 and not st["over"] and not rec["turn_over"] and rec["shooter"] == 0:
         targets = pool_targets_row(st, on[k])
-        if st[S_BREAK] == 0 and (st[S_BIH] == BIH_NO or st[S_OVER]) and icfg["slots"] >= 1:
+        if st["break_shot"] == 0 and (st["bih"] == BIH_NO or st["over"]) and icfg["slots"] >= 1:
             ease = next_shot_ease(pos[k], on[k], radius, mass, targets, tm_xy, tm_r, tm_params, cfg["speed_min"],
                                   cfg["speed_max"], cfg["ease_sigma"])
     r = 0.0
@@ -281,7 +282,7 @@ def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, o
         if cfg["position_reward"] != 0.0:
             r += cfg["position_reward"] * ease
     practice_over = False
-    if not st[S_OVER] and st[S_SHOOTER] != 0:
+    if not st["over"] and st["shooter"] != 0:
         if icfg["opponent"] == OPP_NONE:
             practice_over = True
         else:
@@ -292,9 +293,9 @@ def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, o
             if err != E_NONE:
                 tout[k]["error"] = err
                 return
-    if st[S_OVER]:
-        r += cfg["win"] if st[S_WINNER] == 0 else -cfg["loss"]
-    terminated = st[S_OVER] != 0 or practice_over
+    if st["over"]:
+        r += cfg["win"] if st["winner"] == 0 else -cfg["loss"]
+    terminated = st["over"] != 0 or practice_over
     reward[k] = r
     tout[k]["terminated"] = terminated
     tout[k]["truncated"] = not terminated and shots[k] >= icfg["max_shots"]
@@ -309,8 +310,8 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
                  tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets, rack_slots, full,
                  rec_agent, rec_opp, tout, kc, obs, wc):
     """One ``env.reset()`` of table ``k`` (no options; see :func:`reset_tables`)."""
-    call = np.zeros(N_CALL, np.int64)
-    after = np.zeros(N_STATE, np.int64)
+    call = np.zeros(1, CALL_ROW)
+    after = np.zeros(1, GAME_STATE_ROW)
     buf = np.zeros((2, pos.shape[1]), np.int64)
     area = np.zeros(4)
     dec_area = np.zeros(4)
@@ -384,13 +385,9 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
             for j in range(1, pos.shape[1]):
                 if on[k, j]:
                     on_mask |= 1 << j
-            st[:] = 0
-            st[S_GAME] = game
-            st[S_ON] = on_mask
-            st[S_SHOOTER] = first
-            st[S_BIH] = BIH_ANYWHERE
-            st[S_GROUPS] = GROUPS_OPEN
-            st[S_WINNER] = -1
+            initial_row(st, game, on_mask, first)  # then ball in hand anywhere, the break played
+            st["bih"] = BIH_ANYWHERE
+            st["break_shot"] = 0
         if first == 0 or icfg["opponent"] == OPP_NONE:
             break
         n_opp, err = _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
@@ -401,7 +398,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
         if err != E_NONE:
             tout[k]["error"] = err
             return
-        if not st[S_OVER]:
+        if not st["over"]:
             break
         on[k] = True  # the opponent won from the break: rack again
         vel[k] = 0.0
@@ -428,7 +425,8 @@ def _observe(k, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_params, p
         candidates_features_row(k, gst[k], pos[k], on[k], radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy,
                              pocket_r, params, np.zeros(4), kc, obs[k, n:n + m])
         n += m
-    pool_features(gst[k], gst[k, S_SHOOTER], obs[k, n:])
+    st = gst[k]
+    pool_features(st, st["shooter"], obs[k, n:])
 
 
 @njit(cache=True)
@@ -442,7 +440,8 @@ def observe_tables(rows, pos, on, radius, mass, gst, cfg, icfg, tm_xy, tm_r, tm_
 
 @njit(cache=True)
 def legal_masks(gst: np.ndarray, out: np.ndarray) -> None:
-    """The legal balls (a mask of their numbers) of every table's game state into ``out``."""
+    """The legal balls (a mask of their numbers) of every table's game state (``gst``: ``GAME_STATE_ROW`` records)
+    into ``out``."""
     for k in range(gst.shape[0]):
         out[k] = legal_mask(gst[k])
 
@@ -459,8 +458,9 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
     compile this function, on every cold cache.
 
     A step: the agent's shot (``act``: the actions, float64 clipped; ``kc``: the tables' kick caches,
-    ``KICK_CACHE`` records, for the ``candidates`` types), its call and reward, the opponent's turn, the termination
-    and truncation (``tout``).
+    ``KICK_CACHE`` records, for the ``candidates`` types), its call and reward (``gst``: the tables' game states,
+    :data:`~billiards_env.rules.pool_judge.GAME_STATE_ROW` records; ``opts``: the rules' options, a ``RULE_OPTIONS``
+    record), the opponent's turn, the termination and truncation (``tout``).
     A reset: the layout (``layout``: the fixed rows and their points, the random rows and their regions, the pocket
     centres; ``rack_slots``, ``full``: the rack's slots and balls), the game's reset, the opponent's break when it
     breaks. Both record every shot (``rec_agent``, ``rec_opp``) and, for the positions and candidates observation

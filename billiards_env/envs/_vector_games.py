@@ -200,7 +200,7 @@ class GameTables:
             if icfg["rack"] != gk.RACK_NONE else np.zeros((0, 2))
         self.layout = venv.layout_arrays
         self._no_act = np.zeros((n, at.n))
-        self.gst = np.zeros((n, pj.N_STATE), np.int64)
+        self.gst = np.zeros(n, pj.GAME_STATE_ROW)  # each table's game state, a record
         self.cap = int(icfg["turn_cap"])
         self.rec_agent = np.zeros(n, gk.SHOT_RECORD)
         self.rec_opp = np.zeros((n, self.cap), gk.SHOT_RECORD)
@@ -229,15 +229,15 @@ class GameTables:
         st = self.gst[k]
         legal = pj.numbers_of(pj.legal_mask(st))
         on = self.venv.on_table[k]
-        over = bool(st[pj.S_OVER])
+        over = bool(st["over"])
         area = None
-        if st[pj.S_BIH] != pj.BIH_NO and not over:
+        if st["bih"] != pj.BIH_NO and not over:
             r = self._radius
-            x1 = self.cfg["kitchen_x"] if st[pj.S_BIH] == pj.BIH_KITCHEN else self.cfg["length"] - r
+            x1 = self.cfg["kitchen_x"] if st["bih"] == pj.BIH_KITCHEN else self.cfg["length"] - r
             area = RectArea(r, x1, r, self.cfg["width"] - r)
         return ShotView(tuple(int(i) for i in legal if on[i] and i != 0), min(legal) if legal else None, area,
-                        bool(st[pj.S_BREAK] and not over), bool(pj.needs_called_pocket(st, self.opts)),
-                        bool(st[pj.S_PUSH_AVAILABLE]), int(st[pj.S_SHOOTER]))
+                        bool(st["break_shot"] and not over), bool(pj.needs_called_pocket(st, self.opts)),
+                        bool(st["push_available"]), int(st["shooter"]))
 
     def game_state(self, k: int) -> Any:
         """Table ``k``'s game as a :class:`~billiards_env.rules.GameState`."""
@@ -372,8 +372,8 @@ class GameTables:
         n = self.venv.num_envs
         schema = self.venv.info_schema
         st = self.gst[rows]
-        over = st[:, pj.S_OVER] != 0
-        winner = st[:, pj.S_WINNER]
+        over = st["over"] != 0
+        winner = st["winner"]
         cols = {k: np.zeros((n, *spec.shape), spec.dtype) for k, spec in schema.items()}
 
         def put(key: str, values: Any) -> None:
@@ -384,14 +384,14 @@ class GameTables:
         opp = self.rec_opp[rows]
         put("is_success", over & (winner == 0))
         put("winner", np.where(winner < 0, -1, winner))
-        put("shooter", st[:, pj.S_SHOOTER])
+        put("shooter", st["shooter"])
         put("legal_targets", (np.where(over, 0, self.legal[rows])[:, None] >> self._numbers) & 1 != 0)
         put("opponent_shots", counts)
         put("opponent_pocketed", self._row_masks(np.bitwise_or.reduce(
             np.where(turn, opp["pocketed"], 0).astype(np.int64), axis=1)))
         put("opponent_fouls", (turn & (opp["foul"] != 0)).sum(axis=1))
-        put("ball_in_hand", np.where(over, pj.BIH_NO, st[:, pj.S_BIH]))
-        put("groups", st[:, pj.S_GROUPS])
+        put("ball_in_hand", np.where(over, pj.BIH_NO, st["bih"]))
+        put("groups", st["groups"])
         if step:
             rec = self.rec_agent[rows]
             foul = rec["foul"] != 0
@@ -525,7 +525,7 @@ class _TableGame:
             raise ValueError("the native vector env observes each table as its shooter sees it (player=None)")
         out = np.zeros(self.tables.n_game, np.float32)
         st = self.tables.gst[self.k]
-        pool_features(st, st[pj.S_SHOOTER], out)
+        pool_features(st, st["shooter"], out)
         return out
 
 

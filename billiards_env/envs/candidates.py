@@ -46,7 +46,6 @@ from billiards_env.players.shots import ShotCandidate, candidate_of
 from billiards_env.players.slots import (HAND_CLEAR, HAND_D_OBJ, HAND_HALF, HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET,
                                          in_hand_slots, kick_candidates, shot_slots)
 from billiards_env.players.slots import next_shot_ease as _next_shot_ease
-from billiards_env.rules.pool_judge import S_BREAK, S_OVER
 
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -340,7 +339,7 @@ def _slot_features(rows: np.ndarray, in_hand: bool, kick_target: int, kick_lengt
     return flat
 
 
-# --- the compiled twins of the native vector env's games (a pool state row, a packed config) ------------------------
+# --- the compiled twins of the native vector env's games (a pool state record, a packed config) ---------------------
 
 @njit(cache=True)
 def kick_cached(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r,
@@ -368,7 +367,7 @@ def kick_cached(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_
 def candidates_features_row(k, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r,
                          params, area, kc, out):
     """Compiled twin of :func:`slot_features` of :func:`candidate_slots` (the ``candidates`` observation's slot
-    values, at the observation's speed range) for table ``k`` on its pool state row ``st``, into ``out``."""
+    values, at the observation's speed range) for table ``k`` on its pool state record ``st``, into ``out``."""
     n_slots = icfg["slots"]
     lo = cfg["obs_lo"]
     hi = cfg["obs_hi"]
@@ -376,7 +375,7 @@ def candidates_features_row(k, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r
     targets = pool_targets_row(st, on)
     in_hand = pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], area)
     kick_target, kick_length, kick_speed = -1, 0.0, 0.0
-    if st[S_BREAK] and not st[S_OVER]:
+    if st["break_shot"] and not st["over"]:
         rows = np.zeros((0, 16))
     elif in_hand:
         rows = in_hand_slots(pos, on, radius, targets, tm_xy, tm_r, tm_params)[:keep]

@@ -20,8 +20,7 @@ from billiards_env.rules import (ANYWHERE, KITCHEN, SOLIDS, STRIPES, EightBall, 
                                  GameState, NineBall, NineBallOptions, RulesError, ShotInfo, ShotSummary,
                                  summarize_outcome)
 from billiards_env.rules.pool_judge import (BIH_KITCHEN, BIH_NO, GAME_EIGHT, GROUPS_OPEN, GROUPS_SOLIDS, REASONS,
-                                            S_BIH, S_BREAK, S_FOULS0, S_FOULS1, S_GAME, S_GROUPS, S_OVER,
-                                            S_PUSH_AVAILABLE, S_SHOOTER, legal_mask, legal_mask_for, state_row)
+                                            legal_mask, legal_mask_for, state_row)
 from billiards_env.rules.state import Call
 from billiards_env.table_state import Area, RectArea, ShotView, TableState
 
@@ -52,16 +51,17 @@ def pool_place_area(state: GameState, table: Table, radius: float) -> Area | Non
 
 
 @njit(cache=True)
-def pool_features(st: np.ndarray, me: int, out: np.ndarray) -> None:
-    """:meth:`PoolSession.features` of the game state row ``st`` (:mod:`billiards_env.rules.pool_judge`) seen by
+def pool_features(st: np.void, me: int, out: np.ndarray) -> None:
+    """:meth:`PoolSession.features` of the game state ``st`` (a ``GAME_STATE_ROW`` record of
+    :mod:`billiards_env.rules.pool_judge`) seen by
     player ``me``, into ``out`` (eleven float32 values). The one implementation: the session calls it, and so does
     the native vector env's compiled observation (:mod:`billiards_env.envs._game_kernels`)."""
-    over = st[S_OVER] != 0
-    mine = st[S_SHOOTER] == me and not over
-    bih = st[S_BIH]
+    over = st["over"] != 0
+    mine = st["shooter"] == me and not over
+    bih = st["bih"]
     out[0] = 1.0 if (mine and bih != BIH_NO) else 0.0
     out[1] = 1.0 if (mine and bih == BIH_KITCHEN) else 0.0
-    out[2] = 1.0 if st[S_BREAK] else 0.0
+    out[2] = 1.0 if st["break_shot"] else 0.0
     # The viewer's own targets (8-ball: its group) also when it is not its turn (the two-player env).
     targets = 0 if over else legal_mask_for(st, me)
     low = -1
@@ -72,22 +72,22 @@ def pool_features(st: np.ndarray, me: int, out: np.ndarray) -> None:
     out[3] = low / 15.0 if low >= 0 else 0.0
     out[4] = 0.0
     out[5] = 0.0
-    if st[S_GROUPS] != GROUPS_OPEN:
-        solids = (st[S_GROUPS] == GROUPS_SOLIDS) == (me == 0)
+    if st["groups"] != GROUPS_OPEN:
+        solids = (st["groups"] == GROUPS_SOLIDS) == (me == 0)
         out[4] = 1.0 if solids else 0.0
         out[5] = 0.0 if solids else 1.0
-    out[6] = 1.0 if (st[S_GAME] == GAME_EIGHT and targets == 1 << 8) else 0.0
-    mine_f = st[S_FOULS0] if me == 0 else st[S_FOULS1]
-    theirs_f = st[S_FOULS1] if me == 0 else st[S_FOULS0]
+    out[6] = 1.0 if (st["game"] == GAME_EIGHT and targets == 1 << 8) else 0.0
+    mine_f = st["fouls0"] if me == 0 else st["fouls1"]
+    theirs_f = st["fouls1"] if me == 0 else st["fouls0"]
     out[7] = min(mine_f / 2.0, 1.0)
     out[8] = min(theirs_f / 2.0, 1.0)
-    out[9] = 1.0 if st[S_PUSH_AVAILABLE] else 0.0
+    out[9] = 1.0 if st["push_available"] else 0.0
     out[10] = 1.0 if mine else 0.0
 
 
 @njit(cache=True)
-def pool_targets_row(st: np.ndarray, on: np.ndarray) -> np.ndarray:
-    """Compiled twin of :meth:`PoolSession.view`'s ``targets`` on the state row ``st``
+def pool_targets_row(st: np.void, on: np.ndarray) -> np.ndarray:
+    """Compiled twin of :meth:`PoolSession.view`'s ``targets`` on the game state record ``st``
     (:mod:`billiards_env.rules.pool_judge`): the legal balls on the table (rows; a pool ball's row is its number),
     ascending. The native vector env's kernels use it (``tests/envs/test_vector_env.py`` holds them equal)."""
     legal = legal_mask(st)
@@ -101,8 +101,8 @@ def pool_targets_row(st: np.ndarray, on: np.ndarray) -> np.ndarray:
 
 
 @njit(cache=True)
-def pool_target_row(st: np.ndarray) -> int:
-    """Compiled twin of :meth:`PoolSession.view`'s ``target`` on the state row ``st``: the lowest legal ball
+def pool_target_row(st: np.void) -> int:
+    """Compiled twin of :meth:`PoolSession.view`'s ``target`` on the game state record ``st``: the lowest legal ball
     (-1: none)."""
     legal = legal_mask(st)
     for j in range(64):
@@ -112,14 +112,14 @@ def pool_target_row(st: np.ndarray) -> int:
 
 
 @njit(cache=True)
-def pool_place_area_row(st: np.ndarray, radius: float, kitchen_x: float, length: float, width: float,
+def pool_place_area_row(st: np.void, radius: float, kitchen_x: float, length: float, width: float,
                         area: np.ndarray) -> bool:
-    """Compiled twin of :func:`pool_place_area` on the state row ``st`` (``kitchen_x``: the head string's x), into
-    ``area`` ``(x0, x1, y0, y1)``; False: no ball in hand."""
-    if st[S_BIH] == BIH_NO or st[S_OVER]:
+    """Compiled twin of :func:`pool_place_area` on the game state record ``st`` (``kitchen_x``: the head string's x),
+    into ``area`` ``(x0, x1, y0, y1)``; False: no ball in hand."""
+    if st["bih"] == BIH_NO or st["over"]:
         return False
     area[0] = radius
-    area[1] = kitchen_x if st[S_BIH] == BIH_KITCHEN else length - radius
+    area[1] = kitchen_x if st["bih"] == BIH_KITCHEN else length - radius
     area[2] = radius
     area[3] = width - radius
     return True
@@ -187,8 +187,8 @@ class PoolSession(GameSession):
         self.numbers = np.asarray(table.numbers, dtype=np.int64)
         self.row_of = {int(n): i for i, n in enumerate(self.numbers.tolist())}
         self._rack_slots: np.ndarray | None = None
-        self._row_state: GameState | None = None  # the state whose row (pool_judge's) _row holds
-        self._row = np.zeros(0, np.int64)
+        self._row_state: GameState | None = None  # the state whose record (pool_judge's) _row holds
+        self._row: np.void | None = None
         super().__init__(spec, rules, table)
 
     # --- the state ---------------------------------------------------------------------------------------------------
@@ -273,7 +273,7 @@ class PoolSession(GameSession):
     # --- the view ----------------------------------------------------------------------------------------------------
     def view(self, table: TableState) -> ShotView:
         """Who shoots and what they may do (the rules' targets on the table, ball in hand, the break, the call).
-        Compiled twins on a state row: :func:`pool_targets_row`, :func:`pool_target_row`,
+        Compiled twins on a game state record: :func:`pool_targets_row`, :func:`pool_target_row`,
         :func:`pool_place_area_row`."""
         s = self.game_state
         rows = self.legal_rows()
@@ -286,9 +286,9 @@ class PoolSession(GameSession):
     def features(self, player: int | None = None) -> np.ndarray:
         """The game seen by the player: ball in hand (anywhere / kitchen), break shot, its lowest legal target / 15,
         its group (solids, stripes), on the 8, its own and its opponent's fouls in a row / 2, push-out available,
-        and whether it is its turn (eleven values in [0, 1]): :func:`pool_features` of the state's row."""
+        and whether it is its turn (eleven values in [0, 1]): :func:`pool_features` of the state's record."""
         s = self.game_state
-        if self._row_state is not s:  # the state's row, made once per state
+        if self._row_state is not s:  # the state's record, made once per state
             self._row = state_row(s)
             self._row_state = s
         out = np.zeros(N_POOL_FEATURES, np.float32)

@@ -2,16 +2,18 @@
 :class:`~billiards_env.rules.NineBall` and :class:`~billiards_env.rules.EightBall` on integers, for code that
 judges many shots in compiled loops (the native vector env plays whole games per table in one call).
 
-The game state is an int64 row (columns ``S_*``): the balls on the table as a bit mask of their numbers, the shooter,
-ball in hand (:data:`BIH_NO`, :data:`BIH_ANYWHERE`, :data:`BIH_KITCHEN`), the 8-ball groups (:data:`GROUPS_OPEN`, or
-which group player 0 has), the fouls in a row, the break, the push-out flags, game over, the winner (-1: none) and
-the shot number. The options are an int64 row too (columns ``O_*``; :func:`options_row`). A call is an int64 row
-(columns ``C_*``): the reason is an index into :data:`REASONS`, the fouls a bit mask in the order of
-:data:`~billiards_env.rules.state.FOULS`, the respotted balls a bit mask. A shot's facts are the
-:class:`~billiards_env.rules.ShotSummary`'s: the first ball hit (its number, -1: none), the balls (cue included, as
-0) that reached a cushion after it as a bit mask, the object balls pocketed in the order they dropped with their
-pockets, the scratch; and the declarations (a push-out, the called pocket, -1: none).
+The game state is a record (:data:`GAME_STATE_ROW`, int64 fields read by name: ``state["shooter"]``): the balls on
+the table as a bit mask of their numbers, the shooter, ball in hand (:data:`BIH_NO`, :data:`BIH_ANYWHERE`,
+:data:`BIH_KITCHEN`), the 8-ball groups (:data:`GROUPS_OPEN`, or which group player 0 has), each player's fouls in a
+row, the break, the push-out flags, game over, the winner (-1: none) and the shot number. The options are a record
+too (:data:`RULE_OPTIONS`; :func:`options_row`). A call is a record (:data:`CALL_ROW`): the reason is an index into
+:data:`REASONS`, the fouls a bit mask in the order of :data:`~billiards_env.rules.state.FOULS`, the respotted balls a
+bit mask. A shot's facts are the :class:`~billiards_env.rules.ShotSummary`'s: the first ball hit (its number, -1:
+none), the balls (cue included, as 0) that reached a cushion after it as a bit mask, the object balls pocketed in the
+order they dropped with their pockets, the scratch; and the declarations (a push-out, the called pocket, -1: none).
 
+The native vector env keeps its tables' states as one array of :data:`GAME_STATE_ROW` records; numba compiles a
+record's field to a load at its offset, as it does the packed game config (:mod:`billiards_env.envs._game_config`).
 The Python rules stay the definition: :func:`state_row`, :func:`game_state` and :func:`call_of` convert, and
 ``tests/rules/test_pool_judge.py`` holds the two equal, call for call and state for state, on many random shots
 from random states. No input checks here (the Python rules raise on impossible input; the callers give none).
@@ -32,22 +34,25 @@ from .state import (ANYWHERE, EIGHT_BALL, EIGHT_EARLY, EIGHT_NOT_CALLED, EIGHT_O
                     NO_CONTACT, NO_RAIL, PUSH_OUT, SCRATCH, SOLIDS, STRIPES, THREE_FOULS, WRONG_BALL_FIRST, Call,
                     BallInHand, GameState)
 
-#: Columns of a game state row.
-S_GAME, S_ON, S_SHOOTER, S_BIH, S_GROUPS, S_FOULS0, S_FOULS1, S_BREAK, S_PUSH_AVAILABLE, S_PUSH_PENDING, S_OVER, \
-    S_WINNER, S_SHOT = range(13)
-N_STATE = 13
+#: A game state: the game, the balls on the table (a mask of their numbers), the shooter, ball in hand, the groups,
+#: each player's fouls in a row, the break, a push-out available, a push-out pending, game over, the winner, the shot.
+GAME_STATE_ROW = np.dtype([(name, np.int64) for name in (
+    "game", "on", "shooter", "bih", "groups", "fouls0", "fouls1", "break_shot", "push_available", "push_pending",
+    "over", "winner", "shot")])
+#: A ruleset's options: the game, 9-ball's push-out, the three-foul rule, the balls that must reach a cushion on the
+#: break, 8-ball's called 8, the 8 on the break wins, ball in hand after a break scratch and after an illegal break.
+RULE_OPTIONS = np.dtype([(name, np.int64) for name in (
+    "game", "push_out", "three_fouls", "break_rails", "call_eight", "eight_break_wins", "break_scratch_bih",
+    "illegal_break_bih")])
+#: A call: legal, a foul, the reason, the fouls, the shooter, the turn over, the next shooter, ball in hand, the
+#: respotted balls, the cue ball pocketed, game over, the winner, the groups after the shot, a push-out.
+CALL_ROW = np.dtype([(name, np.int64) for name in (
+    "legal", "foul", "reason", "fouls", "shooter", "turn_over", "next", "bih", "respot", "cue_pocketed", "over",
+    "winner", "groups", "push")])
 #: Games, ball in hand, groups (the group of player 0; player 1 has the other).
 GAME_NINE, GAME_EIGHT = 0, 1
 BIH_NO, BIH_ANYWHERE, BIH_KITCHEN = 0, 1, 2
 GROUPS_OPEN, GROUPS_SOLIDS, GROUPS_STRIPES = 0, 1, 2
-#: Columns of an options row.
-O_GAME, O_PUSH_OUT, O_THREE_FOULS, O_BREAK_RAILS, O_CALL_EIGHT, O_EIGHT_BREAK_WINS, O_BREAK_SCRATCH_BIH, \
-    O_ILLEGAL_BREAK_BIH = range(8)
-N_OPTIONS = 8
-#: Columns of a call row.
-C_LEGAL, C_FOUL, C_REASON, C_FOULS, C_SHOOTER, C_TURN_OVER, C_NEXT, C_BIH, C_RESPOT, C_CUE_POCKETED, C_OVER, \
-    C_WINNER, C_GROUPS, C_PUSH = range(14)
-N_CALL = 14
 #: The calls' reasons (``Call.reason``), by index.
 REASONS = (LEGAL, PUSH_OUT, SCRATCH, NO_CONTACT, WRONG_BALL_FIRST, NO_RAIL, ILLEGAL_BREAK, NINE_POCKETED,
            EIGHT_POCKETED, EIGHT_ON_BREAK, EIGHT_EARLY, EIGHT_ON_FOUL, EIGHT_WRONG_POCKET, EIGHT_NOT_CALLED,
@@ -95,34 +100,40 @@ def _group_mask(groups: int, player: int) -> int:
 
 
 @njit(cache=True)
-def legal_mask_for(state: np.ndarray, player: int) -> int:
+def legal_mask_for(state: np.void, player: int) -> int:
     """The balls ``player`` may hit first if it were to shoot (a mask of their numbers): 9-ball the lowest on the
     table; 8-ball any on the break, any but the 8 on an open table, the player's group while it has balls on the
     table, then the 8 (:func:`~billiards_env.rules.legal_targets` of the state with ``shooter=player``)."""
-    on = state[S_ON]
-    if state[S_GAME] == GAME_NINE:
+    on = state["on"]
+    if state["game"] == GAME_NINE:
         low = _lowest(on)
         return 0 if low < 0 else 1 << low
-    if state[S_BREAK]:
+    if state["break_shot"]:
         return on
-    if state[S_GROUPS] == GROUPS_OPEN:
+    if state["groups"] == GROUPS_OPEN:
         others = on & ~EIGHT_BIT
     else:
-        others = on & _group_mask(state[S_GROUPS], player)
+        others = on & _group_mask(state["groups"], player)
     return others if others != 0 else on & EIGHT_BIT
 
 
 @njit(cache=True)
-def legal_mask(state: np.ndarray) -> int:
+def legal_mask(state: np.void) -> int:
     """The balls the shooter may hit first (a mask of their numbers; :func:`legal_mask_for` the shooter)."""
-    return legal_mask_for(state, state[S_SHOOTER])
+    return legal_mask_for(state, state["shooter"])
 
 
 @njit(cache=True)
-def needs_called_pocket(state: np.ndarray, options: np.ndarray) -> bool:
+def needs_called_pocket(state: np.void, options: np.void) -> bool:
     """8-ball with called 8s: the shooter is on the 8 (``EightBall.needs_called_pocket``); 9-ball: never."""
-    return state[S_GAME] == GAME_EIGHT and options[O_CALL_EIGHT] != 0 and not state[S_BREAK] and \
+    return state["game"] == GAME_EIGHT and options["call_eight"] != 0 and not state["break_shot"] and \
         legal_mask(state) == EIGHT_BIT
+
+
+@njit(cache=True)
+def _fouls_in_a_row(state: np.void, player: int) -> int:
+    """``player``'s fouls in a row."""
+    return state["fouls0"] if player == 0 else state["fouls1"]
 
 
 @njit(cache=True)
@@ -169,65 +180,65 @@ def _first_foul(fouls: int) -> int:
 
 
 @njit(cache=True)
-def _call(out: np.ndarray, legal: bool, foul: bool, reason: int, fouls: int, shooter: int, turn_over: bool,
+def _call(out: np.void, legal: bool, foul: bool, reason: int, fouls: int, shooter: int, turn_over: bool,
           nxt: int, bih: int, respot: int, cue_pocketed: bool, over: bool, winner: int, groups: int,
           push: bool) -> None:
-    out[C_LEGAL] = legal
-    out[C_FOUL] = foul
-    out[C_REASON] = reason
-    out[C_FOULS] = fouls
-    out[C_SHOOTER] = shooter
-    out[C_TURN_OVER] = turn_over
-    out[C_NEXT] = nxt
-    out[C_BIH] = bih
-    out[C_RESPOT] = respot
-    out[C_CUE_POCKETED] = cue_pocketed
-    out[C_OVER] = over
-    out[C_WINNER] = winner
-    out[C_GROUPS] = groups
-    out[C_PUSH] = push
+    out["legal"] = legal
+    out["foul"] = foul
+    out["reason"] = reason
+    out["fouls"] = fouls
+    out["shooter"] = shooter
+    out["turn_over"] = turn_over
+    out["next"] = nxt
+    out["bih"] = bih
+    out["respot"] = respot
+    out["cue_pocketed"] = cue_pocketed
+    out["over"] = over
+    out["winner"] = winner
+    out["groups"] = groups
+    out["push"] = push
 
 
 # The helpers below are called with constants wrapped in ``plain`` (:mod:`billiards_env.physics.plain`): each is
 # compiled once, for int64 and bool, instead of once per combination of literal constants.
 @njit(cache=True)
-def _end(out: np.ndarray, state: np.ndarray, reason: int, winner: int, fouls: int, legal: bool, groups: int,
+def _end(out: np.void, state: np.void, reason: int, winner: int, fouls: int, legal: bool, groups: int,
          cue_pocketed: bool) -> None:
-    s = state[S_SHOOTER]
+    s = state["shooter"]
     _call(out, legal, fouls != 0, reason, fouls, s, plain(True), 1 - s, plain(BIH_NO), plain(0), cue_pocketed,
           plain(True), winner, groups, plain(False))
 
 
 @njit(cache=True)
-def _foul(out: np.ndarray, state: np.ndarray, fouls: int, respot: int, bih: int, groups: int,
+def _foul(out: np.void, state: np.void, fouls: int, respot: int, bih: int, groups: int,
           cue_pocketed: bool) -> None:
-    s = state[S_SHOOTER]
+    s = state["shooter"]
     _call(out, plain(False), plain(True), _first_foul(fouls), fouls, s, plain(True), 1 - s, bih, respot, cue_pocketed,
           plain(False), plain(-1), groups, plain(False))
 
 
 @njit(cache=True)
-def _clean(out: np.ndarray, state: np.ndarray, reason: int, keep: bool, respot: int, groups: int, push: bool) -> None:
-    s = state[S_SHOOTER]
+def _clean(out: np.void, state: np.void, reason: int, keep: bool, respot: int, groups: int, push: bool) -> None:
+    s = state["shooter"]
     _call(out, plain(True), plain(False), reason, plain(0), s, not keep, s if keep else 1 - s, plain(BIH_NO), respot,
           plain(False), plain(False), plain(-1), groups, push)
 
 
 @njit(cache=True)
-def _call_nine(out: np.ndarray, state: np.ndarray, options: np.ndarray, first: int, rails: int, pocketed: np.ndarray,
+def _call_nine(out: np.void, state: np.void, options: np.void, first: int, rails: int, pocketed: np.ndarray,
                n_pocketed: int, cue_pocketed: bool, push: bool) -> None:
     targets = legal_mask(state)
-    if state[S_BREAK]:
-        fouls = _break_fouls(first, rails, n_pocketed, cue_pocketed, targets, plain(True), options[O_BREAK_RAILS])
+    if state["break_shot"]:
+        fouls = _break_fouls(first, rails, n_pocketed, cue_pocketed, targets, plain(True), options["break_rails"])
     elif push:
         fouls = F_SCRATCH if cue_pocketed else 0
     else:
         fouls = _contact_fouls(first, rails, n_pocketed, cue_pocketed, targets)
-    me = state[S_SHOOTER]
-    if fouls and options[O_THREE_FOULS] and state[S_FOULS0 + me] >= 2:
+    me = state["shooter"]
+    if fouls and options["three_fouls"] and _fouls_in_a_row(state, me) >= 2:
         _end(out, state, plain(R_THREE_FOULS), 1 - me, fouls, plain(False), plain(GROUPS_OPEN), cue_pocketed)
         return
-    money = _highest(state[S_ON])
+    money = _highest(state["on"])
     money_down = False
     for i in range(n_pocketed):
         if pocketed[i] == money:
@@ -245,42 +256,42 @@ def _call_nine(out: np.ndarray, state: np.ndarray, options: np.ndarray, first: i
 
 
 @njit(cache=True)
-def _call_eight(out: np.ndarray, state: np.ndarray, options: np.ndarray, first: int, rails: int,
+def _call_eight(out: np.void, state: np.void, options: np.void, first: int, rails: int,
                 pocketed: np.ndarray, pockets: np.ndarray, n_pocketed: int, cue_pocketed: bool, called: int) -> None:
-    me = state[S_SHOOTER]
+    me = state["shooter"]
     eight_at = -1
     for i in range(n_pocketed):
         if pocketed[i] == 8:
             eight_at = i
-    if state[S_BREAK]:
-        fouls = _break_fouls(first, rails, n_pocketed, cue_pocketed, plain(0), plain(False), options[O_BREAK_RAILS])
-        if eight_at >= 0 and not fouls and options[O_EIGHT_BREAK_WINS]:
+    if state["break_shot"]:
+        fouls = _break_fouls(first, rails, n_pocketed, cue_pocketed, plain(0), plain(False), options["break_rails"])
+        if eight_at >= 0 and not fouls and options["eight_break_wins"]:
             _end(out, state, plain(R_EIGHT_ON_BREAK), me, plain(0), plain(True), plain(GROUPS_OPEN), cue_pocketed)
             return
         respot = EIGHT_BIT if eight_at >= 0 else 0
         if fouls:
-            bih = options[O_BREAK_SCRATCH_BIH] if _first_foul(fouls) == R_SCRATCH else options[O_ILLEGAL_BREAK_BIH]
+            bih = options["break_scratch_bih"] if _first_foul(fouls) == R_SCRATCH else options["illegal_break_bih"]
             _foul(out, state, fouls, respot, bih, plain(GROUPS_OPEN), cue_pocketed)
         else:
             _clean(out, state, plain(R_LEGAL), n_pocketed > 0, respot, plain(GROUPS_OPEN), plain(False))
         return
     targets = legal_mask(state)
     fouls = _contact_fouls(first, rails, n_pocketed, cue_pocketed, targets)
-    groups = state[S_GROUPS]
+    groups = state["groups"]
     if eight_at >= 0:  # the game ends: won only on a clean, called shot at the 8
         if targets != EIGHT_BIT:
             _end(out, state, plain(R_EIGHT_EARLY), 1 - me, fouls, plain(False), groups, cue_pocketed)
         elif fouls:
             _end(out, state, plain(R_EIGHT_ON_FOUL), 1 - me, fouls, plain(False), groups, cue_pocketed)
-        elif options[O_CALL_EIGHT] and called < 0:
+        elif options["call_eight"] and called < 0:
             _end(out, state, plain(R_EIGHT_NOT_CALLED), 1 - me, plain(0), plain(False), groups, cue_pocketed)
-        elif options[O_CALL_EIGHT] and pockets[eight_at] != called:
+        elif options["call_eight"] and pockets[eight_at] != called:
             _end(out, state, plain(R_EIGHT_WRONG_POCKET), 1 - me, plain(0), plain(False), groups, cue_pocketed)
         else:
             _end(out, state, plain(R_EIGHT_POCKETED), me, plain(0), plain(True), groups, cue_pocketed)
         return
     if fouls:
-        if options[O_THREE_FOULS] and state[S_FOULS0 + me] >= 2:
+        if options["three_fouls"] and _fouls_in_a_row(state, me) >= 2:
             _end(out, state, plain(R_THREE_FOULS), 1 - me, fouls, plain(False), groups, cue_pocketed)
         else:
             _foul(out, state, fouls, plain(0), plain(BIH_ANYWHERE), groups, cue_pocketed)
@@ -302,49 +313,49 @@ def _call_eight(out: np.ndarray, state: np.ndarray, options: np.ndarray, first: 
 
 
 @njit(cache=True)
-def next_state(state: np.ndarray, options: np.ndarray, call: np.ndarray, pocketed: np.ndarray, n_pocketed: int,
-               out: np.ndarray) -> None:
+def next_state(state: np.void, options: np.void, call: np.void, pocketed: np.ndarray, n_pocketed: int,
+               out: np.void) -> None:
     """The state after ``call`` made on a shot from ``state`` into ``out`` (``Ruleset.next_state``): the pocketed
     balls off the table but the respotted ones, the shooter's fouls in a row counted (or reset), the push-out
     flags, the shot number."""
-    on = state[S_ON]
+    on = state["on"]
     for i in range(n_pocketed):
         on &= ~(1 << pocketed[i])
-    on |= call[C_RESPOT]
-    s = call[C_SHOOTER]
-    fouls0 = state[S_FOULS0]
-    fouls1 = state[S_FOULS1]
+    on |= call["respot"]
+    s = call["shooter"]
+    fouls0 = state["fouls0"]
+    fouls1 = state["fouls1"]
     if s == 0:
-        fouls0 = fouls0 + 1 if call[C_FOUL] else 0
+        fouls0 = fouls0 + 1 if call["foul"] else 0
     else:
-        fouls1 = fouls1 + 1 if call[C_FOUL] else 0
-    push_next = state[S_GAME] == GAME_NINE and state[S_BREAK] != 0 and options[O_PUSH_OUT] != 0 and \
-        not call[C_OVER]
-    out[S_GAME] = state[S_GAME]
-    out[S_ON] = on
-    out[S_SHOOTER] = call[C_NEXT]
-    out[S_BIH] = call[C_BIH]
-    out[S_GROUPS] = call[C_GROUPS]
-    out[S_FOULS0] = fouls0
-    out[S_FOULS1] = fouls1
-    out[S_BREAK] = 0
-    out[S_PUSH_AVAILABLE] = push_next
-    out[S_PUSH_PENDING] = call[C_PUSH] != 0 and not call[C_FOUL] and not call[C_OVER]
-    out[S_OVER] = call[C_OVER]
-    out[S_WINNER] = call[C_WINNER]
-    out[S_SHOT] = state[S_SHOT] + 1
+        fouls1 = fouls1 + 1 if call["foul"] else 0
+    push_next = state["game"] == GAME_NINE and state["break_shot"] != 0 and options["push_out"] != 0 and \
+        not call["over"]
+    out["game"] = state["game"]
+    out["on"] = on
+    out["shooter"] = call["next"]
+    out["bih"] = call["bih"]
+    out["groups"] = call["groups"]
+    out["fouls0"] = fouls0
+    out["fouls1"] = fouls1
+    out["break_shot"] = 0
+    out["push_available"] = push_next
+    out["push_pending"] = call["push"] != 0 and not call["foul"] and not call["over"]
+    out["over"] = call["over"]
+    out["winner"] = call["winner"]
+    out["shot"] = state["shot"] + 1
 
 
 @njit(cache=True)
-def play(state: np.ndarray, options: np.ndarray, first: int, rails: int, pocketed: np.ndarray,
-         pockets: np.ndarray, n_pocketed: int, cue_pocketed: bool, push: bool, called: int, call: np.ndarray,
-         after: np.ndarray) -> None:
+def play(state: np.void, options: np.void, first: int, rails: int, pocketed: np.ndarray,
+         pockets: np.ndarray, n_pocketed: int, cue_pocketed: bool, push: bool, called: int, call: np.void,
+         after: np.void) -> None:
     """The call on a shot (``Ruleset.call``) into ``call`` and the state after it (``Ruleset.next_state``) into
     ``after``. The shot: ``first`` (the number of the first ball hit, -1: none), ``rails`` (bit mask of the numbers
     that reached a cushion after it, the cue ball as 0), the ``n_pocketed`` object balls ``pocketed`` in the order
     they dropped and their ``pockets``, ``cue_pocketed``; the declarations: ``push`` (a push-out, allowed only when
     the state says so: the caller checks), ``called`` (the pocket called for the 8, -1: none)."""
-    if state[S_GAME] == GAME_NINE:
+    if state["game"] == GAME_NINE:
         _call_nine(call, state, options, first, rails, pocketed, n_pocketed, cue_pocketed, push)
     else:
         _call_eight(call, state, options, first, rails, pocketed, pockets, n_pocketed, cue_pocketed, called)
@@ -352,40 +363,70 @@ def play(state: np.ndarray, options: np.ndarray, first: int, rails: int, pockete
 
 
 @njit(cache=True)
-def initial_row(st: np.ndarray, game: int, full: int, first: int) -> None:
+def copy_state(dst: np.void, src: np.void) -> None:
+    """The game state ``src`` into ``dst`` (both :data:`GAME_STATE_ROW` records), field by field."""
+    dst["game"] = src["game"]
+    dst["on"] = src["on"]
+    dst["shooter"] = src["shooter"]
+    dst["bih"] = src["bih"]
+    dst["groups"] = src["groups"]
+    dst["fouls0"] = src["fouls0"]
+    dst["fouls1"] = src["fouls1"]
+    dst["break_shot"] = src["break_shot"]
+    dst["push_available"] = src["push_available"]
+    dst["push_pending"] = src["push_pending"]
+    dst["over"] = src["over"]
+    dst["winner"] = src["winner"]
+    dst["shot"] = src["shot"]
+
+
+@njit(cache=True)
+def initial_row(st: np.void, game: int, full: int, first: int) -> None:
     """Compiled twin of :meth:`~billiards_env.rules.Ruleset.initial_state` ``(first_shooter=first)`` into the state
-    row ``st``: the balls of ``full`` (a mask) on, ball in hand in the kitchen, the break."""
-    st[:] = 0
-    st[S_GAME] = game
-    st[S_ON] = full
-    st[S_SHOOTER] = first
-    st[S_BIH] = BIH_KITCHEN
-    st[S_GROUPS] = GROUPS_OPEN
-    st[S_BREAK] = 1
-    st[S_WINNER] = -1
+    record ``st``: the balls of ``full`` (a mask) on, ball in hand in the kitchen, the break."""
+    st["game"] = game
+    st["on"] = full
+    st["shooter"] = first
+    st["bih"] = BIH_KITCHEN
+    st["groups"] = GROUPS_OPEN
+    st["fouls0"] = 0
+    st["fouls1"] = 0
+    st["break_shot"] = 1
+    st["push_available"] = 0
+    st["push_pending"] = 0
+    st["over"] = 0
+    st["winner"] = -1
+    st["shot"] = 0
 
 
 # --- the Python rules' values --------------------------------------------------------------------------------------
 
-def options_row(rules: Any) -> np.ndarray:
-    """The options row of a ruleset (:class:`NineBall` or :class:`EightBall`)."""
-    out = np.zeros(N_OPTIONS, np.int64)
+def _record(dtype: np.dtype) -> np.void:
+    """A zeroed record of ``dtype`` (a view of a 0-d array, which compiled code writes into in place)."""
+    rec = np.zeros((), dtype)[()]
+    assert isinstance(rec, np.void)
+    return rec
+
+
+def options_row(rules: Any) -> np.void:
+    """The options of a ruleset (:class:`NineBall` or :class:`EightBall`) as a :data:`RULE_OPTIONS` record."""
+    out = _record(RULE_OPTIONS)
     o = rules.options
     if isinstance(rules, NineBall):
         assert isinstance(o, NineBallOptions)
-        out[O_GAME] = GAME_NINE
-        out[O_PUSH_OUT] = o.push_out
-        out[O_THREE_FOULS] = o.three_foul_rule
-        out[O_BREAK_RAILS] = o.break_rail_balls
+        out["game"] = GAME_NINE
+        out["push_out"] = o.push_out
+        out["three_fouls"] = o.three_foul_rule
+        out["break_rails"] = o.break_rail_balls
     elif isinstance(rules, EightBall):
         assert isinstance(o, EightBallOptions)
-        out[O_GAME] = GAME_EIGHT
-        out[O_THREE_FOULS] = o.three_foul_rule
-        out[O_BREAK_RAILS] = o.break_rail_balls
-        out[O_CALL_EIGHT] = o.call_eight
-        out[O_EIGHT_BREAK_WINS] = o.eight_on_break == "win"
-        out[O_BREAK_SCRATCH_BIH] = _BIH_CODE[o.break_scratch_ball_in_hand]
-        out[O_ILLEGAL_BREAK_BIH] = _BIH_CODE[o.illegal_break_ball_in_hand]
+        out["game"] = GAME_EIGHT
+        out["three_fouls"] = o.three_foul_rule
+        out["break_rails"] = o.break_rail_balls
+        out["call_eight"] = o.call_eight
+        out["eight_break_wins"] = o.eight_on_break == "win"
+        out["break_scratch_bih"] = _BIH_CODE[o.break_scratch_ball_in_hand]
+        out["illegal_break_bih"] = _BIH_CODE[o.illegal_break_ball_in_hand]
     else:
         raise TypeError(f"options_row: 9-ball or 8-ball rules expected, got {type(rules).__name__}")
     return out
@@ -404,44 +445,47 @@ def numbers_of(mask: int) -> tuple[int, ...]:
     return tuple(n for n in range(int(mask).bit_length()) if (int(mask) >> n) & 1)
 
 
-def state_row(state: GameState) -> np.ndarray:
-    """The int64 row of a :class:`GameState`."""
-    out = np.zeros(N_STATE, np.int64)
-    out[S_GAME] = GAME_NINE if state.game == NINE_BALL else GAME_EIGHT
-    out[S_ON] = mask_of(state.on_table)
-    out[S_SHOOTER] = state.shooter
-    out[S_BIH] = _BIH_CODE[state.ball_in_hand]
-    out[S_GROUPS] = _GROUPS_VALUE.index(state.groups)
-    out[S_FOULS0], out[S_FOULS1] = state.fouls_in_a_row
-    out[S_BREAK] = state.break_shot
-    out[S_PUSH_AVAILABLE] = state.push_out_available
-    out[S_PUSH_PENDING] = state.push_out_pending
-    out[S_OVER] = state.game_over
-    out[S_WINNER] = -1 if state.winner is None else state.winner
-    out[S_SHOT] = state.shot_number
+def state_row(state: GameState) -> np.void:
+    """The :data:`GAME_STATE_ROW` record of a :class:`GameState`."""
+    out = _record(GAME_STATE_ROW)
+    out["game"] = GAME_NINE if state.game == NINE_BALL else GAME_EIGHT
+    out["on"] = mask_of(state.on_table)
+    out["shooter"] = state.shooter
+    out["bih"] = _BIH_CODE[state.ball_in_hand]
+    out["groups"] = _GROUPS_VALUE.index(state.groups)
+    out["fouls0"] = state.fouls_in_a_row[0]
+    out["fouls1"] = state.fouls_in_a_row[1]
+    out["break_shot"] = state.break_shot
+    out["push_available"] = state.push_out_available
+    out["push_pending"] = state.push_out_pending
+    out["over"] = state.game_over
+    out["winner"] = -1 if state.winner is None else state.winner
+    out["shot"] = state.shot_number
     return out
 
 
-def game_state(row: np.ndarray) -> GameState:
-    """The :class:`GameState` of a state row (the values a ruleset gives: Python ints and bools)."""
-    r = [int(v) for v in row]
-    return GameState.trusted(NINE_BALL if r[S_GAME] == GAME_NINE else EIGHT_BALL, numbers_of(r[S_ON]),
-                              r[S_SHOOTER], _BIH_VALUE[r[S_BIH]], _GROUPS_VALUE[r[S_GROUPS]],
-                              (r[S_FOULS0], r[S_FOULS1]), bool(r[S_BREAK]), bool(r[S_PUSH_AVAILABLE]),
-                              bool(r[S_PUSH_PENDING]), bool(r[S_OVER]), None if r[S_WINNER] < 0 else r[S_WINNER],
-                              r[S_SHOT])
+def game_state(row: np.void) -> GameState:
+    """The :class:`GameState` of a :data:`GAME_STATE_ROW` record (the values a ruleset gives: Python ints and
+    bools)."""
+    r = {name: int(row[name]) for name in row.dtype.names or ()}
+    return GameState.trusted(NINE_BALL if r["game"] == GAME_NINE else EIGHT_BALL, numbers_of(r["on"]),
+                              r["shooter"], _BIH_VALUE[r["bih"]], _GROUPS_VALUE[r["groups"]],
+                              (r["fouls0"], r["fouls1"]), bool(r["break_shot"]), bool(r["push_available"]),
+                              bool(r["push_pending"]), bool(r["over"]), None if r["winner"] < 0 else r["winner"],
+                              r["shot"])
 
 
-def call_of(row: np.ndarray, pocketed: tuple[int, ...]) -> Call:
-    """The :class:`Call` of a call row (``pocketed``: the shot's object balls in the order they dropped)."""
-    r = [int(v) for v in row]
-    return Call(legal=bool(r[C_LEGAL]), foul=bool(r[C_FOUL]), reason=REASONS[r[C_REASON]],
-                fouls=tuple(f for k, f in enumerate(FOULS) if (r[C_FOULS] >> k) & 1), shooter=r[C_SHOOTER],
-                turn_over=bool(r[C_TURN_OVER]), next_shooter=r[C_NEXT], ball_in_hand=_BIH_VALUE[r[C_BIH]],
-                pocketed=tuple(pocketed), respot=tuple(n for n in pocketed if (r[C_RESPOT] >> n) & 1),
-                cue_pocketed=bool(r[C_CUE_POCKETED]), game_over=bool(r[C_OVER]),
-                winner=None if r[C_WINNER] < 0 else r[C_WINNER], groups=_GROUPS_VALUE[r[C_GROUPS]],
-                push_out=bool(r[C_PUSH]))
+def call_of(row: np.void, pocketed: tuple[int, ...]) -> Call:
+    """The :class:`Call` of a :data:`CALL_ROW` record (``pocketed``: the shot's object balls in the order they
+    dropped)."""
+    r = {name: int(row[name]) for name in row.dtype.names or ()}
+    return Call(legal=bool(r["legal"]), foul=bool(r["foul"]), reason=REASONS[r["reason"]],
+                fouls=tuple(f for k, f in enumerate(FOULS) if (r["fouls"] >> k) & 1), shooter=r["shooter"],
+                turn_over=bool(r["turn_over"]), next_shooter=r["next"], ball_in_hand=_BIH_VALUE[r["bih"]],
+                pocketed=tuple(pocketed), respot=tuple(n for n in pocketed if (r["respot"] >> n) & 1),
+                cue_pocketed=bool(r["cue_pocketed"]), game_over=bool(r["over"]),
+                winner=None if r["winner"] < 0 else r["winner"], groups=_GROUPS_VALUE[r["groups"]],
+                push_out=bool(r["push"]))
 
 
 def ball_in_hand_value(code: int) -> Any:
@@ -454,8 +498,8 @@ def groups_value(code: int) -> tuple[str, str] | None:
     return _GROUPS_VALUE[int(code)]
 
 
-__all__ = ["play", "next_state", "initial_row", "legal_mask", "legal_mask_for", "needs_called_pocket",
+__all__ = ["play", "next_state", "initial_row", "copy_state", "legal_mask", "legal_mask_for", "needs_called_pocket",
            "options_row", "state_row", "game_state", "call_of", "mask_of", "numbers_of", "ball_in_hand_value",
-           "groups_value", "REASONS", "N_STATE", "N_CALL", "N_OPTIONS", "GAME_NINE", "GAME_EIGHT", "BIH_NO",
+           "groups_value", "GAME_STATE_ROW", "CALL_ROW", "RULE_OPTIONS", "REASONS", "GAME_NINE", "GAME_EIGHT", "BIH_NO",
            "BIH_ANYWHERE", "BIH_KITCHEN", "GROUPS_OPEN", "GROUPS_SOLIDS", "GROUPS_STRIPES", "SOLIDS_MASK",
            "STRIPES_MASK", "EIGHT_BIT"]

@@ -75,7 +75,7 @@ class Ruleset(ABC):
 
     def initial_state(self, first_shooter: int = 0, on_table: Iterable[int] | None = None) -> GameState:
         """The state before the opening break: ``first_shooter`` breaks with the cue ball in hand behind the head
-        string; ``on_table`` defaults to the full rack. Compiled twin for 9-ball and 8-ball (a state row):
+        string; ``on_table`` defaults to the full rack. Compiled twin for 9-ball and 8-ball (a state record):
         :func:`~billiards_env.rules.pool_judge.initial_row`."""
         balls = self.full_rack if on_table is None else tuple(on_table)
         self._check_balls(tuple(sorted(balls)))

@@ -57,8 +57,8 @@ def _summary(rng: random.Random, state: GameState) -> ShotSummary:
 @pytest.mark.parametrize("game", ["nine_ball", "eight_ball"])
 def test_compiled_calls_equal_the_rules(game):
     rng = random.Random({"nine_ball": 1, "eight_ball": 2}[game])
-    call = np.zeros(pj.N_CALL, np.int64)
-    after = np.zeros(pj.N_STATE, np.int64)
+    call = np.zeros((), pj.CALL_ROW)[()]  # records the compiled rules write into
+    after = np.zeros((), pj.GAME_STATE_ROW)[()]
     reasons: set[str] = set()
     for _ in range(6000):
         rules = _rules(rng, game)
