@@ -8,6 +8,7 @@ the Python around the shot goes (parsing the outcome, building intermediate obje
 """
 from __future__ import annotations
 
+from collections import namedtuple
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
@@ -16,9 +17,7 @@ from billiards_env.physics.batch import new_outputs
 
 from billiards_env.shot_path import CueShot, draw_noise
 
-from ._vector_kernels import (F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP, I_POSITIONS_OBS,
-                              O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, pack_config, pot_step,
-                              pot_step_spin)
+from ._vector_kernels import POT_OUTCOME, POT_SHOT, new_step_outputs, pack_config, pot_step, pot_step_spin
 from .config import ConfigError, EnvConfig
 from .info import shot_info
 from .tasks import PotTask
@@ -27,6 +26,10 @@ if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
 
 _ACTIVE = np.ones(1, np.bool_)
+# The table's records as Python values by field name (one ``item()`` per record: Python floats and ints, as cheap to
+# read as the tuple).
+_Shot = namedtuple("_Shot", POT_SHOT.names)  # type: ignore[misc]
+_Outcome = namedtuple("_Outcome", POT_OUTCOME.names)  # type: ignore[misc]
 
 
 class FastStep(NamedTuple):
@@ -51,12 +54,11 @@ class PotFastStep:
         self.cfg, self.icfg = pack_config(env.config, env.action_type, env.observation_type)
         nb = env.n_balls
         self.out = new_outputs(1, nb)
-        self.fout = np.zeros((1, 7))
-        self.iout = np.zeros((1, 5), np.int64)
+        self.fout, self.iout = new_step_outputs(1)
         self.act = np.zeros((1, env.action_type.n))
         self.shots = np.zeros(1, np.int64)
         self.obs = np.zeros((1,) + env.observation_space.shape, np.float32)
-        self.positions = bool(self.icfg[I_POSITIONS_OBS])
+        self.positions = bool(self.icfg["positions_obs"])
         self.kernel = pot_step_spin if env.physics.has_spin else pot_step
         self.settings = env.table_state.settings
         self.noisy = self.settings.noisy
@@ -83,21 +85,21 @@ class PotFastStep:
         if not self.kernel(self.act, _ACTIVE, *self.table, self.shots, *self.consts, self.noise, out, fout, iout,
                            self.obs):
             raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
-        f = fout[0].tolist()
-        i = iout[0].tolist()
-        terminated = i[O_TERMINATED] != 0
-        truncated = i[O_TRUNCATED] != 0
-        mask = i[O_POCKETED]
+        f = _Shot._make(fout.item(0))
+        i = _Outcome._make(iout.item(0))
+        terminated = i.terminated != 0
+        truncated = i.truncated != 0
+        mask = i.pocketed
         pocketed = self.masks.get(mask)
         if pocketed is None:
             pocketed = self.masks[mask] = (mask >> self.rows) & 1 != 0
-        info = {"is_success": np.array(i[O_SUCCESS] != 0, np.bool_)}
-        info.update(shot_info(pocketed.copy(), i[O_SCRATCH] != 0, int(out[5][0]), int(out[2][0]), float(out[1][0]),
-                              int(out[0][0]), shots + 1, CueShot(f[F_ANGLE], f[F_SPEED], f[F_SIDE], f[F_TOP])))
+        info = {"is_success": np.array(i.success != 0, np.bool_)}
+        info.update(shot_info(pocketed.copy(), i.scratch != 0, int(out[5][0]), int(out[2][0]), float(out[1][0]),
+                              int(out[0][0]), shots + 1, CueShot(f.angle, f.speed, f.side, f.top)))
         self.table_state.changed()
         obs = self.obs[0].copy() if self.positions else self.observation_type.observe(self.table_state)
-        return FastStep(obs, f[F_REWARD], terminated, truncated, info,
-                        (f[F_START_X], f[F_START_Y], f[F_ANGLE], f[F_SPEED]), (f[F_SIDE], f[F_TOP]))
+        return FastStep(obs, f.reward, terminated, truncated, info, (f.start_x, f.start_y, f.angle, f.speed),
+                        (f.side, f.top))
 
 
 def compiled_action(config: EnvConfig) -> bool:

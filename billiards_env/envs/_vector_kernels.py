@@ -16,8 +16,12 @@ test ``tests/envs/test_vector_env.py`` checks it):
   observation. The native vector env uses it when it runs serially, and the single env for its fast path;
   :func:`pot_step_parallel` does the same on several threads (:func:`pot_step_rows` on slices of the tables).
 
-Random numbers come from each sub-env's own ``numpy.random.Generator`` (numba draws from the same bit generator
-state, with numpy's algorithms), in the single env's order.
+The packed configuration is two numpy records read by field name (``cfg["speed_lo"]``, ``icfg["aim"]``; numba
+compiles a record's field to a load at its offset): :data:`POT_FLOATS` and :data:`POT_INTS`, made by
+:func:`pack_config`. Each table's results are one record of :data:`POT_SHOT` (``fout[k]``: the reward, the shot as
+played) and one of :data:`POT_OUTCOME` (``iout[k]``: the flags, the pocketed rows), in the record arrays of
+:func:`new_step_outputs`. Random numbers come from each sub-env's own ``numpy.random.Generator`` (numba draws from
+the same bit generator state, with numpy's algorithms), in the single env's order.
 """
 from __future__ import annotations
 
@@ -78,62 +82,80 @@ def _target(on):
     return -1
 
 
-# Constants of a pot env, packed in one float array (``cfg``) and one int array (``icfg``) by :func:`pack_config`.
-C_SPEED_LO, C_SPEED_SPAN, C_MAX_TIP, C_ANGLE_NOISE, C_SPEED_NOISE, C_TIP_NOISE, C_MAX_GHOST, C_BALL_RADIUS, \
-    C_HEAD_X, C_HEAD_Y, C_WIDTH, C_POT_REWARD, C_SCRATCH_PENALTY, C_MISS_PENALTY, C_STEP_PENALTY, C_SX, C_SY, \
-    C_BALL_MASS, C_SQUIRT, C_CUE_END_MASS = range(20)
-I_AIM, I_SPIN_ACTION, I_SPIN_MODEL, I_SINGLE_SHOT, I_MAX_SHOTS, I_POSITIONS_OBS, I_SPEED_NOISE_ABS = range(7)
-# Columns of the per-table float outputs (``fout``) and int outputs (``iout``).
-F_REWARD, F_ANGLE, F_SPEED, F_SIDE, F_TOP, F_START_X, F_START_Y = range(7)
-O_TERMINATED, O_TRUNCATED, O_SUCCESS, O_SCRATCH, O_POCKETED = range(5)
+#: The floats of a pot env's shot (``cfg``, a record made by :func:`pack_config`): the action type's speed range and
+#: tip scale, the noise, the ghost-ball aim's largest angle, the ball radius, the head spot and the table's width (the
+#: cue ball's re-spot), the rewards and penalties, the observation's scales, the ball mass and the cue's squirt (the
+#: spin model's strike).
+POT_FLOATS = np.dtype([(name, np.float64) for name in (
+    "speed_lo", "speed_span", "max_tip", "angle_noise", "speed_noise", "tip_noise", "ghost", "radius", "head_x",
+    "head_y", "width", "pot_reward", "scratch_penalty", "miss_penalty", "step_penalty", "sx", "sy", "ball_mass",
+    "squirt", "cue_end_mass")])
+#: The ints of a pot env's shot (``icfg``): the aim type (``AIM_*``), spin in the action, the spin model, one shot per
+#: episode, the shot cap, the positions observation made by the kernels, the absolute speed noise (flags are 0/1).
+POT_INTS = np.dtype([(name, np.int64) for name in (
+    "aim", "spin_action", "spin_model", "single_shot", "max_shots", "positions_obs", "speed_noise_abs")])
+#: A table's shot as played (``fout``, one record per table): the reward, the angle, speed and tip offsets after the
+#: noise, and the cue ball's start.
+POT_SHOT = np.dtype([(name, np.float64) for name in (
+    "reward", "angle", "speed", "side", "top", "start_x", "start_y")])
+#: A table's step outcome (``iout``, one record per table): terminated, truncated, success, scratch (0/1) and the
+#: bit mask of the rows pocketed.
+POT_OUTCOME = np.dtype([(name, np.int64) for name in (
+    "terminated", "truncated", "success", "scratch", "pocketed")])
 
 
-def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.ndarray, np.ndarray]:
-    """The constants a pot env's shot needs, as ``(cfg float64, icfg int64)`` (see the ``C_*`` / ``I_*`` indices),
-    from its config ``c``, its action type ``a`` and its observation type."""
+def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.void, np.void]:
+    """The constants a pot env's shot needs, as two records ``(cfg, icfg)`` (:data:`POT_FLOATS`,
+    :data:`POT_INTS`), from its config ``c``, its action type ``a`` and its observation type."""
     from billiards_env.physics.layout import head_spot
 
     table = c.table
     hx, hy = head_spot(table)
-    cfg = np.zeros(20)
-    cfg[C_SPEED_LO] = a.speed_lo
-    cfg[C_SPEED_SPAN] = a.speed_span
-    cfg[C_MAX_TIP] = a.max_tip
-    cfg[C_ANGLE_NOISE] = c.angle_noise
-    cfg[C_SPEED_NOISE] = c.speed_noise
-    cfg[C_TIP_NOISE] = c.tip_noise
-    cfg[C_MAX_GHOST] = float(getattr(a, "max_angle", 0.0))
-    cfg[C_BALL_RADIUS] = c.ball_radius
-    cfg[C_HEAD_X] = hx
-    cfg[C_HEAD_Y] = hy
-    cfg[C_WIDTH] = table.width
-    cfg[C_POT_REWARD] = c.pot_reward
-    cfg[C_SCRATCH_PENALTY] = c.scratch_penalty
-    cfg[C_MISS_PENALTY] = c.miss_penalty
-    cfg[C_STEP_PENALTY] = c.step_penalty
-    cfg[C_SX] = 1.0 / table.length
-    cfg[C_SY] = 1.0 / table.width
-    cfg[C_BALL_MASS] = c.ball_mass
-    cfg[C_SQUIRT] = c.physics.squirt
-    cfg[C_CUE_END_MASS] = c.physics.cue_end_mass
-    icfg = np.zeros(7, np.int64)
-    icfg[I_AIM] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
-    icfg[I_SPIN_ACTION] = int(a.spin)
-    icfg[I_SPIN_MODEL] = int(c.physics.has_spin)
-    icfg[I_SINGLE_SHOT] = int(c.single_shot)
-    icfg[I_MAX_SHOTS] = int(c.max_shots)
-    icfg[I_POSITIONS_OBS] = int(observation_type.name == "positions" and observation_type.n_game == 0)
-    icfg[I_SPEED_NOISE_ABS] = int(c.speed_noise_mode == "absolute")
+    cfg = np.zeros((), POT_FLOATS)[()]  # a record: the floats by name
+    cfg["speed_lo"] = a.speed_lo
+    cfg["speed_span"] = a.speed_span
+    cfg["max_tip"] = a.max_tip
+    cfg["angle_noise"] = c.angle_noise
+    cfg["speed_noise"] = c.speed_noise
+    cfg["tip_noise"] = c.tip_noise
+    cfg["ghost"] = float(getattr(a, "max_angle", 0.0))
+    cfg["radius"] = c.ball_radius
+    cfg["head_x"] = hx
+    cfg["head_y"] = hy
+    cfg["width"] = table.width
+    cfg["pot_reward"] = c.pot_reward
+    cfg["scratch_penalty"] = c.scratch_penalty
+    cfg["miss_penalty"] = c.miss_penalty
+    cfg["step_penalty"] = c.step_penalty
+    cfg["sx"] = 1.0 / table.length
+    cfg["sy"] = 1.0 / table.width
+    cfg["ball_mass"] = c.ball_mass
+    cfg["squirt"] = c.physics.squirt
+    cfg["cue_end_mass"] = c.physics.cue_end_mass
+    icfg = np.zeros((), POT_INTS)[()]
+    icfg["aim"] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
+    icfg["spin_action"] = int(a.spin)
+    icfg["spin_model"] = int(c.physics.has_spin)
+    icfg["single_shot"] = int(c.single_shot)
+    icfg["max_shots"] = int(c.max_shots)
+    icfg["positions_obs"] = int(observation_type.name == "positions" and observation_type.n_game == 0)
+    icfg["speed_noise_abs"] = int(c.speed_noise_mode == "absolute")
     return cfg, icfg
+
+
+def new_step_outputs(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The per-table outputs of a step of ``n`` tables, zeroed: ``(fout, iout)``, record arrays of
+    :data:`POT_SHOT` and :data:`POT_OUTCOME`."""
+    return np.zeros(n, POT_SHOT), np.zeros(n, POT_OUTCOME)
 
 
 @njit(cache=True)
 def draw_noise(active, gens, cfg, noise):
     """The shot noise of every active table from its generator, in the single env's order: the angle's, the
     speed's, then the two tip offsets' (each only when that noise is on): ``noise[k] = (da, ds, dside, dtop)``."""
-    an = cfg[C_ANGLE_NOISE]
-    sn = cfg[C_SPEED_NOISE]
-    tn = cfg[C_TIP_NOISE]
+    an = cfg["angle_noise"]
+    sn = cfg["speed_noise"]
+    tn = cfg["tip_noise"]
     for k in range(noise.shape[0]):
         if not active[k]:
             continue
@@ -151,42 +173,43 @@ def draw_noise(active, gens, cfg, noise):
 def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
     """Table ``k``'s action (clipped float64) as the cue ball's velocity (and spin), as the single env does: the
     aim type's angle, the power's speed, the tip offsets, then the shot noise (``noise[k]``, drawn beforehand:
-    :func:`draw_noise`). Writes the shot as played and the cue ball's start into ``fout[k]``."""
+    :func:`draw_noise`). Writes the shot as played and the cue ball's start into ``fout[k]`` (:data:`POT_SHOT`)."""
     a0 = act[k, 0]
-    speed = power_to_speed(act[k, 1], cfg[C_SPEED_LO], cfg[C_SPEED_SPAN])
+    speed = power_to_speed(act[k, 1], cfg["speed_lo"], cfg["speed_span"])
     side = 0.0
     top = 0.0
-    if icfg[I_SPIN_ACTION]:
+    if icfg["spin_action"]:
         u, v = square_to_disc(act[k, 2], act[k, 3])
-        side = cfg[C_MAX_TIP] * u
-        top = cfg[C_MAX_TIP] * v
+        side = cfg["max_tip"] * u
+        top = cfg["max_tip"] * v
     p = pos[k]
-    aim = icfg[I_AIM]
+    aim = icfg["aim"]
     t = _target(on[k]) if aim != AIM_ABSOLUTE else -1
     if t >= 0:
         angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], p[t, 0], p[t, 1], plain(True), radius[0] + radius[t],
-                             cfg[C_MAX_GHOST])
+                             cfg["ghost"])
     else:
-        angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], 0.0, 0.0, plain(False), 0.0, cfg[C_MAX_GHOST])
+        angle = aim_to_angle(aim, a0, p[0, 0], p[0, 1], 0.0, 0.0, plain(False), 0.0, cfg["ghost"])
     angle, speed, side, top = noisy_shot(angle, speed, side, top, noise[k, 0], noise[k, 1], noise[k, 2],
-                                         noise[k, 3], cfg[C_ANGLE_NOISE] > 0.0, cfg[C_SPEED_NOISE] > 0.0,
-                                         cfg[C_TIP_NOISE] > 0.0, icfg[I_SPEED_NOISE_ABS] != 0)
-    fout[k, F_START_X] = p[0, 0]
-    fout[k, F_START_Y] = p[0, 1]
+                                         noise[k, 3], cfg["angle_noise"] > 0.0, cfg["speed_noise"] > 0.0,
+                                         cfg["tip_noise"] > 0.0, icfg["speed_noise_abs"] != 0)
+    f = fout[k]  # the table's record (a view)
+    f["start_x"] = p[0, 0]
+    f["start_y"] = p[0, 1]
     vel[k, 0, 0] = speed * math.cos(angle)
     vel[k, 0, 1] = speed * math.sin(angle)
-    if icfg[I_SPIN_MODEL]:  # the tip offsets' spin, and the squirt of the physics
-        vx, vy, wx, wy, wz = strike_ball(angle, speed, side, top, radius[0], cfg[C_BALL_MASS], cfg[C_SQUIRT],
-                                         cfg[C_CUE_END_MASS])
+    if icfg["spin_model"]:  # the tip offsets' spin, and the squirt of the physics
+        vx, vy, wx, wy, wz = strike_ball(angle, speed, side, top, radius[0], cfg["ball_mass"], cfg["squirt"],
+                                         cfg["cue_end_mass"])
         vel[k, 0, 0] = vx
         vel[k, 0, 1] = vy
         ang[k, 0, 0] = wx
         ang[k, 0, 1] = wy
         ang[k, 0, 2] = wz
-    fout[k, F_ANGLE] = angle
-    fout[k, F_SPEED] = speed
-    fout[k, F_SIDE] = side
-    fout[k, F_TOP] = top
+    f["angle"] = angle
+    f["speed"] = speed
+    f["side"] = side
+    f["top"] = top
 
 
 @njit(cache=True)
@@ -200,7 +223,8 @@ def prepare_shots(act, active, pos, on, radius, cfg, icfg, noise, vel, ang, fout
 @njit(cache=True)
 def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iout):
     """Score table ``k``'s shot as ``PotTask.on_shot``: balls at rest, a pocketed cue ball re-spotted, reward,
-    termination, truncation, success, scratch and the bit mask of the rows pocketed (``iout[k]``, ``fout[k]``).
+    termination, truncation, success, scratch and the bit mask of the rows pocketed (``fout[k]["reward"]``, the
+    record ``iout[k]``: :data:`POT_OUTCOME`).
     Returns False if the cue ball could not be re-spotted."""
     vel[k] = 0.0
     ang[k] = 0.0
@@ -214,22 +238,23 @@ def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iou
     sc = pocket[k, 0] >= 0
     ok = True
     if sc:
-        ok = spot_cue_row(pos[k], on[k], cfg[C_BALL_RADIUS], plain(0), cfg[C_HEAD_X], cfg[C_HEAD_Y], cfg[C_WIDTH])
+        ok = spot_cue_row(pos[k], on[k], cfg["radius"], plain(0), cfg["head_x"], cfg["head_y"], cfg["width"])
     n_potted = n_pocketed - (1 if sc else 0)
     cleared = True
     for i in range(1, pos.shape[1]):
         if on[k, i]:
             cleared = False
             break
-    r, term, trunc, success = pot_score(n_potted, sc, first[k] < 0, cleared, shots[k], cfg[C_POT_REWARD],
-                                        cfg[C_STEP_PENALTY], cfg[C_SCRATCH_PENALTY], cfg[C_MISS_PENALTY],
-                                        icfg[I_SINGLE_SHOT] != 0, icfg[I_MAX_SHOTS])
-    fout[k, F_REWARD] = r
-    iout[k, O_TERMINATED] = term
-    iout[k, O_TRUNCATED] = trunc
-    iout[k, O_SUCCESS] = success
-    iout[k, O_SCRATCH] = sc
-    iout[k, O_POCKETED] = mask
+    r, term, trunc, success = pot_score(n_potted, sc, first[k] < 0, cleared, shots[k], cfg["pot_reward"],
+                                        cfg["step_penalty"], cfg["scratch_penalty"], cfg["miss_penalty"],
+                                        icfg["single_shot"] != 0, icfg["max_shots"])
+    fout[k]["reward"] = r
+    o = iout[k]  # the table's record (a view)
+    o["terminated"] = term
+    o["truncated"] = trunc
+    o["success"] = success
+    o["scratch"] = sc
+    o["pocketed"] = mask
     return ok
 
 
@@ -257,8 +282,8 @@ def _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, ob
     (:func:`_finish_row`) and the positions observation (when that is the observation type)."""
     store_row(k, res, plain(0), out)
     ok = _finish_row(k, out[3], out[5], pos, on, vel, ang, shots, cfg, icfg, fout, iout)
-    if icfg[I_POSITIONS_OBS]:
-        write_observation(pos[k], on[k], cfg[C_SX], cfg[C_SY], obs[k])
+    if icfg["positions_obs"]:
+        write_observation(pos[k], on[k], cfg["sx"], cfg["sy"], obs[k])
     return ok
 
 
@@ -340,6 +365,7 @@ def pot_step_parallel(spin: bool, threads: int, act: np.ndarray, active: np.ndar
     return all(list(_pool(threads).map(lambda r: bool(kernel(r, act, active, *args)), slices)))
 
 
-__all__ = ["AIM_ABSOLUTE", "AIM_RELATIVE", "AIM_GHOST", "PLACED", "pack_config", "place_tables", "prepare_shots",
+__all__ = ["AIM_ABSOLUTE", "AIM_RELATIVE", "AIM_GHOST", "PLACED", "POT_FLOATS", "POT_INTS", "POT_SHOT", "POT_OUTCOME",
+           "pack_config", "new_step_outputs", "place_tables", "prepare_shots",
            "finish_shots", "observe_positions", "pot_step", "draw_noise",
            "pot_step_spin", "pot_step_rows", "pot_step_rows_spin", "pot_step_parallel"]

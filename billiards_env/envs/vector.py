@@ -49,10 +49,9 @@ from billiards_env.table_state import TableState
 from ._pot_fast import compiled_action
 from ._seeding import np_random
 from ._vector_games import GameTables, InfoColumns, default_threads, native_games, stack_columns, stack_infos
-from ._vector_kernels import (C_SX, C_SY, F_ANGLE, F_REWARD, F_SIDE, F_SPEED, F_START_X, F_START_Y, F_TOP,
-                              I_POSITIONS_OBS, O_POCKETED, O_SCRATCH, O_SUCCESS, O_TERMINATED, O_TRUNCATED, PLACED,
-                              draw_noise, finish_shots, observe_positions, pack_config, place_tables, pot_step,
-                              pot_step_parallel, pot_step_spin, prepare_shots)
+from ._vector_kernels import (PLACED, POT_FLOATS, POT_INTS, draw_noise, finish_shots, new_step_outputs,
+                              observe_positions, pack_config, place_tables, pot_step, pot_step_parallel,
+                              pot_step_spin, prepare_shots)
 from .base import RENDER_MODES, BilliardsEnv, check_options_mapping
 from .config import ConfigError
 
@@ -138,10 +137,12 @@ class BilliardsVectorEnv(VectorEnv):
         self._mass = np.ascontiguousarray(t.balls.mass, dtype=float).reshape(1, nb)
         self._struck = np.zeros(n, np.int64)
         self._out = new_outputs(n, nb)
-        self._fout = np.zeros((n, 7))  # per table: reward, the shot as played, the cue ball's start (F_*)
-        self._iout = np.zeros((n, 5), np.int64)  # per table: terminated, truncated, success, scratch, pocketed (O_*)
+        # Per table: the reward and the shot as played (POT_SHOT); terminated, truncated, success, scratch, pocketed
+        # (POT_OUTCOME).
+        self._fout, self._iout = new_step_outputs(n)
         game = c.task != "pot"
-        self._cfg, self._icfg = (np.zeros(17), np.zeros(7, np.int64)) if game else \
+        # The pot task's packed config (POT_FLOATS, POT_INTS); the games pack their own (GameTables).
+        self._cfg, self._icfg = (np.zeros((), POT_FLOATS)[()], np.zeros((), POT_INTS)[()]) if game else \
             pack_config(t.config, t.action_type, t.observation_type)
         c = t.config
         self._noisy = c.angle_noise > 0.0 or c.speed_noise > 0.0 or c.tip_noise > 0.0
@@ -159,7 +160,7 @@ class BilliardsVectorEnv(VectorEnv):
         self._pockets = np.asarray(lay.pockets, dtype=float).reshape(-1, 2)
         # Shots and scoring.
         self._spin_model = t.physics.has_spin
-        self._positions_obs = bool(self._icfg[I_POSITIONS_OBS])
+        self._positions_obs = bool(self._icfg["positions_obs"])
         self._bits = np.arange(nb, dtype=np.int64)  # a pocketed bit mask -> its row mask
         # Per-sub-env random generators (as each single env's np_random), and the compiled code's view of them.
         self._rngs: list[np.random.Generator | None] = [None] * n
@@ -266,9 +267,9 @@ class BilliardsVectorEnv(VectorEnv):
         self._has_shot |= active
         if render_before is not None:
             self._render_shot(render_before)
-        reward = np.where(active, fout[:, F_REWARD], 0.0)
-        term = active & (iout[:, O_TERMINATED] != 0)
-        trunc = active & (iout[:, O_TRUNCATED] != 0)
+        reward = np.where(active, fout["reward"], 0.0)
+        term = active & (iout["terminated"] != 0)
+        trunc = active & (iout["truncated"] != 0)
         done = term | trunc
         step_info = self._step_info(status, sim_time, n_events, first)
         if split or not self._positions_obs:
@@ -445,8 +446,8 @@ class BilliardsVectorEnv(VectorEnv):
             self.games.observe(rows)
             return
         if self._positions_obs:
-            observe_positions(np.ascontiguousarray(rows, dtype=np.int64), self.pos, self.on_table, self._cfg[C_SX],
-                              self._cfg[C_SY], self._obs)
+            observe_positions(np.ascontiguousarray(rows, dtype=np.int64), self.pos, self.on_table, self._cfg["sx"],
+                              self._cfg["sy"], self._obs)
         else:
             ot = self.template.observation_type
             for k in rows.tolist():
@@ -568,18 +569,18 @@ class BilliardsVectorEnv(VectorEnv):
         shoot are filler)."""
         iout, fout = self._iout, self._fout
         info = {
-            "is_success": iout[:, O_SUCCESS] != 0,
-            "pocketed": (iout[:, O_POCKETED, None] >> self._bits) & 1 != 0,
-            "scratch": iout[:, O_SCRATCH] != 0,
+            "is_success": iout["success"] != 0,
+            "pocketed": (iout["pocketed"][:, None] >> self._bits) & 1 != 0,
+            "scratch": iout["scratch"] != 0,
             "first_contact": first.astype(np.int64),
             "n_events": n_events.astype(np.int64),
             "sim_time": sim_time.astype(np.float64),
             "status": status.astype(np.int64),
             "shots": self.shots.copy(),
-            "angle": fout[:, F_ANGLE].copy(),
-            "speed": fout[:, F_SPEED].copy(),
-            "side": fout[:, F_SIDE].copy(),
-            "top": fout[:, F_TOP].copy(),
+            "angle": fout["angle"].copy(),
+            "speed": fout["speed"].copy(),
+            "side": fout["side"].copy(),
+            "top": fout["top"].copy(),
         }
         assert list(info) == list(self.info_schema)
         return info
@@ -605,8 +606,9 @@ class BilliardsVectorEnv(VectorEnv):
         b.on_table[...] = self.on_table[k]
         self.template.last_shot = None
         if self._has_shot[k]:
-            f = self._fout[k].tolist()
-            self.template.last_shot = (f[F_START_X], f[F_START_Y], f[F_ANGLE], f[F_SPEED])
+            f = self._fout[k]
+            self.template.last_shot = (float(f["start_x"]), float(f["start_y"]), float(f["angle"]),
+                                       float(f["speed"]))
 
     def _render_reset(self, rows: np.ndarray) -> None:
         """The rendered table was reset: start its frame list (``rgb_array_list``) or show it (``human``), as the
