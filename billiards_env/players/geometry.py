@@ -30,6 +30,7 @@ from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between
 from billiards_env.physics.kernel_io import wall_groups
 from billiards_env.physics.layout import free_discs, nearest_free, py_hypot  # noqa: F401 (re-exported)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
+from billiards_env.physics.plain import plain
 
 #: Columns of a shot row.
 COL_TARGET, COL_POCKET, COL_ANGLE, COL_SPEED, COL_NEED, COL_OBJ_ANGLE, COL_CUT, COL_D_CUE, COL_D_OBJ, COL_WINDOW, \
@@ -200,7 +201,7 @@ def _speed_to_travel(d: float, v_end: float, tm: Model) -> float:
 def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: float, w_half: float, w_dist: float,
              pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, tm: Model,
              lo: float, hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool,
-             scratch: np.ndarray, floor: float = -math.inf, obj_clear: int = -1) -> bool:
+             scratch: np.ndarray, floor: float, obj_clear: int) -> bool:
     """The ghost-ball shot from the cue ball at ``(cx, cy)`` sending ball ``j`` into pocket ``p`` through its
     window ``(w_angle, w_half, w_dist)``, written into ``out`` (a row of :data:`N_COLS`); False (and ``out``
     untouched) when there is none: the ghost ball on the cue ball, a cut beyond ``max_cut``, or the ghost ball off
@@ -213,8 +214,10 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     the score divides it by 10 when a path is blocked, by 3 when the speed is out of range and by 2 for the
     scratch risk. ``scratch``: a (2, 2) work array. ``floor``: skip (return False) a shot whose ease cannot
     beat it (the score is at most the tolerance), before its paths and speeds are worked out, or whose path is
-    blocked and a tenth of its ease cannot beat it, before its speeds. ``obj_clear``: the object ball's clear path
-    (:func:`object_path_clear`) when known (0 or 1; -1: work it out), the same from every cue position."""
+    blocked and a tenth of its ease cannot beat it, before its speeds (``-inf``: no floor). ``obj_clear``: the
+    object ball's clear path (:func:`object_path_clear`) when known (0 or 1; -1: work it out), the same from every
+    cue position. No defaults: every compiled caller passes all of them, as plain values, so this is compiled for
+    one signature (:mod:`billiards_env.physics.plain`)."""
     rc = radius[cue]
     mc = mass[cue]
     ox = pos[j, 0]
@@ -342,7 +345,7 @@ def ghost_shots_from(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radi
             if w[WIN_FOUND] == 0.0:
                 continue
             if shot_row(out[n], cx, cy, j, p, w[WIN_ANGLE], w[WIN_HALF], w[WIN_DIST], pos, on, radius, mass, cue,
-                        tm, lo, hi, max_cut, arrive, factors, check_scratch, scratch):
+                        tm, lo, hi, max_cut, arrive, factors, check_scratch, scratch, -math.inf, plain(-1)):
                 n += 1
     return rank_rows(out[:n])
 
@@ -389,7 +392,7 @@ def ghost_shots_windowed(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, 
             c, h, d_in, ok = window_of(ox, oy, radius[j], tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
                                        tm.length, tm.width, WINDOW_SAMPLES, tm.segs, tm.tips)
             if ok and shot_row(out[n], cx, cy, j, p, c, h, d_in, pos, on, radius, mass, cue, tm, lo, hi, max_cut,
-                               arrive, factors, check_scratch, scratch):
+                               arrive, factors, check_scratch, scratch, -math.inf, plain(-1)):
                 n += 1
     return rank_rows(out[:n])
 
@@ -488,7 +491,7 @@ def place_for_shot(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np
                         # A shot whose ease cannot beat the best place so far, nor this place's best shot, cannot
                         # change the choice: skipped before its paths and speeds.
                         if shot_row(row, px, py, j, q, wq[WIN_ANGLE], wq[WIN_HALF], wq[WIN_DIST], pos, on, radius,
-                                    mass, cue, tm, lo, hi, max_cut, arrive, factors, True, scratch,
+                                    mass, cue, tm, lo, hi, max_cut, arrive, factors, plain(True), scratch,
                                     max(best_score, score), obj_clear[q]):
                             if row[COL_SCORE] > score:
                                 score = row[COL_SCORE]
@@ -571,7 +574,7 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
     if not in_hand and cache_have.shape[0] == 0:  # only the windows its shots need
         cx, cy = pos[cue, 0], pos[cue, 1]
         rows = ghost_shots_windowed(cx, cy, pos, on, radius, mass, cue, targets, tm, lo, hi,
-                                    max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+                                    max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, plain(True))
         return _played(rows, px, py, in_hand, cx, cy, pos, on, cue, targets, lo, hi, max_cut)
     if cache_have.shape[0] == 0:
         windows = windows_of(pos, radius, targets, tm)
@@ -590,7 +593,7 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
         cx, cy = pos[cue, 0], pos[cue, 1]
         on2 = on
     rows = ghost_shots_from(cx, cy, pos, on2, radius, mass, cue, targets, windows, tm, lo, hi,
-                            max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+                            max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, plain(True))
     return _played(rows, px, py, in_hand, cx, cy, pos, on2, cue, targets, lo, hi, max_cut)
 
 
