@@ -1,13 +1,15 @@
-"""Where a cold first call's compile time goes: ``python benchmarks/compile_profile.py [--env ID] [--top N]``.
+"""Where a cold first call's compile time goes: ``python benchmarks/compile_profile.py [--env ID] [--warmup]
+[--signatures] [--top N]``.
 
 Runs the first shot (``Simulator(Table(), Physics()).run``; with ``--env ID`` also ``gymnasium.make(ID)``, a
-reset and a step) in this process with numba's cache pointed at an empty temporary directory (unless
-``NUMBA_CACHE_DIR`` is set), listening to numba's compile events. Prints how many compilations ran, of how many
-distinct functions (ours and numba's own overloads of numpy functions), which functions were compiled for more than
-one signature, and the most expensive compilations (CPU seconds, including the functions each one compiled in turn).
+reset and a step; with ``--warmup`` every task of ``python -m billiards_env.warmup``, one after the other) in this
+process with numba's cache pointed at an empty temporary directory (unless ``NUMBA_CACHE_DIR`` is set), listening
+to numba's compile events. Prints how many compilations ran, of how many distinct functions (ours and numba's own
+overloads of numpy functions), which functions were compiled more than once (``--signatures``: for which
+signatures), and the most expensive compilations (CPU seconds, including the functions each one compiled in turn).
 
 Run it as a script from the repository root (not with ``-m``: the clock and the listener start before the package
-is imported).
+is imported), with ``PYTHONPATH=.`` to profile this checkout rather than the installed one.
 """
 from __future__ import annotations
 
@@ -23,6 +25,10 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python benchmarks/compile_profile.py", description=__doc__.splitlines()[0])
     ap.add_argument("--env", help="also make, reset and step this env id")
     ap.add_argument("--no-shot", action="store_true", help="skip the Simulator shot: profile the env's first step alone")
+    ap.add_argument("--warmup", action="store_true",
+                    help="also run every warm-up task (billiards_env.warmup's PHASES) in this process")
+    ap.add_argument("--signatures", action="store_true",
+                    help="list the signatures of each function compiled more than once")
     ap.add_argument("--top", type=int, default=25, help="how many compilations to list (default 25)")
     args = ap.parse_args(argv)
     tmp = None
@@ -61,19 +67,29 @@ def main(argv: list[str] | None = None) -> int:
         env = gym.make(args.env)
         env.reset(seed=0)
         env.step(env.action_space.sample())
+    if args.warmup:
+        from billiards_env import warmup
+
+        for phase in warmup.PHASES:
+            for name in phase:
+                warmup.TASKS[name]()
     t3 = time.perf_counter()
     cpu = time.process_time() - c0
     ours = [r for r in rows if r[0].startswith("billiards_env")]
     per_fn: dict[str, list[str]] = defaultdict(list)
     for name, sig, _, _ in ours:
         per_fn[name].append(sig)
-    print(f"import {t1 - t0:.2f} s, first shot {t2 - t1:.2f} s" + (f", env {t3 - t2:.2f} s" if args.env else "")
+    then = " and ".join(part for part, on in (("env", args.env), ("warm-up tasks", args.warmup)) if on)
+    print(f"import {t1 - t0:.2f} s, first shot {t2 - t1:.2f} s" + (f", {then} {t3 - t2:.2f} s" if then else "")
           + f"; CPU {cpu:.2f} s; cache {os.environ['NUMBA_CACHE_DIR']}")
     print(f"compilations: {len(rows)} ({len(ours)} of {len(per_fn)} billiards_env functions, "
           f"{len(rows) - len(ours)} of numba's own overloads)")
     multi = {k: v for k, v in per_fn.items() if len(v) > 1}
     for name, sigs in sorted(multi.items()):
-        print(f"  {len(sigs)} signatures: {name}")
+        print(f"  {len(sigs)} compilations, {len(set(sigs))} signatures: {name}")
+        if args.signatures:
+            for sig in sorted(set(sigs)):
+                print(f"      {sig}")
     top = sum(r[2] for r in rows if r[3] == 0)
     print(f"top-level compilations: {top:.2f} CPU s; the most expensive (inclusive CPU s, depth):")
     for name, sig, cpu_s, depth in sorted(rows, key=lambda r: -r[2])[:args.top]:

@@ -25,7 +25,7 @@ bit for bit (``tests/envs/test_vector_env.py``):
   :func:`billiards_env.shot_path.noisy_shot`, the exact kernels, :func:`billiards_env.physics.outcome.scan_shot`),
   the call applied to the table (:func:`_judge`: ``PoolSession._call``/``_apply``), the geometric opponent's turn
   (:func:`_opponent_turn`: ``GameTask._opponent_turn`` with
-  :func:`billiards_env.players.geometry.geometric_decision_cached`, its action in the acting type read back), the
+  :func:`billiards_env.players.geometry.geometric_choice_cached`, its action in the acting type read back), the
   reward and its shaping (:func:`_step_table`: ``GameTask._judge``/``_shaping``).
 
 The packed configuration (``cfg``, ``icfg``) is two records declared in :mod:`._game_config`, read by field name. Random numbers come from each
@@ -47,7 +47,7 @@ from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES, place_random_
 from billiards_env.physics.outcome import scan_shot
 from billiards_env.physics.plain import plain
 from billiards_env.physics.spin_collide import strike_ball
-from billiards_env.players.geometry import COL_POCKET, geometric_decision_cached
+from billiards_env.players.geometry import COL_POCKET, geometric_choice_cached
 from billiards_env.players.slots import next_shot_ease
 from billiards_env.rules.pool_judge import (BIH_ANYWHERE, BIH_NO, CALL_ROW, GAME_STATE_ROW, copy_state, initial_row,
                                             legal_mask, needs_called_pocket, play)
@@ -203,7 +203,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
         in_hand = pool_place_area_row(st, cfg["radius"], cfg["kitchen_x"], cfg["length"], cfg["width"], dec_area)
         if not in_hand:
             dec_area[:] = 0.0
-        px, py, placed, angle, speed, kr, rows, status = geometric_decision_cached(
+        px, py, placed, angle, speed, kr, rows, status = geometric_choice_cached(
             pos[k], on[k], radius, mass, plain(0), targets, tm_xy, tm_r, tm_params, cfg["speed_min"], cfg["speed_max"],
             dec_area, in_hand, st["break_shot"] != 0, cfg["max_cut"], wc[0][k], wc[1][k], wc[2][k])
         if status == 1:
@@ -466,7 +466,7 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
     breaks. Both record every shot (``rec_agent``, ``rec_opp``) and, for the positions and candidates observation
     types, write the observation (``obs``). ``wc``: each table's cache of its balls' pocket windows for the
     geometric opponent (``(pos (N, B, 2), windows (N, B, K, 4), have (N, B))``, see
-    :func:`~billiards_env.players.geometry.windows_cached`), kept from call to call: the same decisions, the windows
+    :func:`~billiards_env.players.geometry.cached_window`), kept from call to call: the same decisions, the windows
     of the balls that did not move since the table's last decision not worked out again."""
     fixed_rows, fixed_xy, rand_rows, regions, pockets = layout
     for q in range(rows.shape[0]):

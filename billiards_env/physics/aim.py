@@ -475,8 +475,8 @@ def _window_capture(ox: float, oy: float, radius: float, cx: float, cy: float, p
             for m in range(-2, 3):
                 mask = _mark_crossing(mask, 0.5 * math.pi * m, theta_c, half, step, div)
     # One pass over the samples: the widest run of feasible ones (the first of equals).
-    best_len = 0
-    best_start = plain(0)  # (plain: _window_sample compiled for int64 only)
+    best_len = plain(0)  # (plain: _window_sample and _window_result compiled for int64 only)
+    best_start = plain(0)
     run_start = -1
     flag = False
     for k in range(div + 2):
@@ -510,8 +510,8 @@ def _window_jaws(ox: float, oy: float, radius: float, cx: float, cy: float, pr: 
     div = samples - 1
     step = (half - (-half)) / div
     walls = _window_walls(ox, oy, radius, cx, cy, pr, segs, tips)
-    best_len = 0
-    best_start = 0
+    best_len = plain(0)  # (plain: _window_sample and _window_result compiled for int64 only)
+    best_start = plain(0)
     run_start = -1
     for k in range(div + 2):
         flag = k <= div and _window_sample_clear(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr,

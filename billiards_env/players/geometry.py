@@ -30,6 +30,7 @@ from billiards_env.physics.aim import (WINDOW_SAMPLES, collide_into, cos_between
 from billiards_env.physics.kernel_io import wall_groups
 from billiards_env.physics.layout import free_discs, nearest_free, py_hypot  # noqa: F401 (re-exported)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
+from billiards_env.physics.plain import plain
 
 #: Columns of a shot row.
 COL_TARGET, COL_POCKET, COL_ANGLE, COL_SPEED, COL_NEED, COL_OBJ_ANGLE, COL_CUT, COL_D_CUE, COL_D_OBJ, COL_WINDOW, \
@@ -37,6 +38,8 @@ COL_TARGET, COL_POCKET, COL_ANGLE, COL_SPEED, COL_NEED, COL_OBJ_ANGLE, COL_CUT, 
 N_COLS = 16
 #: Columns of a window row (:func:`target_windows`): centre direction, half-width, distance, found (1.0 / 0.0).
 WIN_ANGLE, WIN_HALF, WIN_DIST, WIN_FOUND = range(4)
+#: ``WIN_FOUND`` of a window that a table's cache has not worked out yet (:func:`cached_window`).
+WIN_UNKNOWN = -1.0
 
 #: The geometric player's cut limits: the easiest shot up to ``MAX_CUT``, else up to ``FALLBACK_CUT``.
 MAX_CUT = math.radians(80.0)
@@ -149,35 +152,47 @@ def windows_of(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Mod
 
 
 @njit(cache=True)
-def windows_cached(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Model, cache_pos: np.ndarray,
-                   cache_win: np.ndarray, cache_have: np.ndarray) -> np.ndarray:
-    """:func:`windows_of` (its samples) with a table's cache of its balls' windows: ball ``j``'s are taken from
-    ``cache_win[j]`` when ``cache_have[j]`` and it stands exactly where they were worked out (``cache_pos[j]``),
-    else worked out and kept. A ball's windows depend on its position alone (the table's model fixed), so they are
-    the same numbers either way."""
-    k_p = tm.pocket_r.shape[0]
-    out = np.zeros((targets.shape[0], k_p, 4))
-    for t in range(targets.shape[0]):
-        j = targets[t]
-        if cache_have[j] and cache_pos[j, 0] == pos[j, 0] and cache_pos[j, 1] == pos[j, 1]:
-            _copy_windows(cache_win[j], out[t])
-            continue
-        pocket_windows(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy, tm.pocket_r, tm.length, tm.width,
-                       WINDOW_SAMPLES, out[t], tm.segs, tm.tips)
-        _copy_windows(out[t], cache_win[j])
+def cached_window(j: int, p: int, pos: np.ndarray, radius: np.ndarray, tm: Model, cache_pos: np.ndarray,
+                  cache_win: np.ndarray, cache_have: np.ndarray) -> np.ndarray:
+    """Ball ``j``'s window into pocket ``p`` (a row of 4, :func:`~billiards_env.physics.aim.window_of`) from a
+    table's cache: ``cache_pos`` (B, 2), ``cache_win`` (B, K, 4), ``cache_have`` (B,) False at first. Worked out
+    the first time it is asked for while the ball stands where it is, and kept in ``cache_win[j, p]``; when ball
+    ``j`` no longer stands at ``cache_pos[j]`` (or ``cache_have[j]`` is False), its windows are forgotten first
+    (``WIN_FOUND`` set to :data:`WIN_UNKNOWN`). A ball's windows depend on its position alone (the table's model
+    fixed), so a cached window is the same numbers as a fresh one; a pocket never asked for costs nothing."""
+    if not (cache_have[j] and cache_pos[j, 0] == pos[j, 0] and cache_pos[j, 1] == pos[j, 1]):
+        for q in range(cache_win.shape[1]):
+            cache_win[j, q, WIN_FOUND] = WIN_UNKNOWN
         cache_pos[j, 0] = pos[j, 0]
         cache_pos[j, 1] = pos[j, 1]
         cache_have[j] = True
-    return out
+    w = cache_win[j, p]
+    if w[WIN_FOUND] == WIN_UNKNOWN:
+        c, h, d_in, ok = window_of(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy[p, 0], tm.pocket_xy[p, 1],
+                                   tm.pocket_r[p], tm.length, tm.width, WINDOW_SAMPLES, tm.segs, tm.tips)
+        w[WIN_ANGLE] = c
+        w[WIN_HALF] = h
+        w[WIN_DIST] = d_in
+        w[WIN_FOUND] = 1.0 if ok else 0.0
+    return w
 
 
 @njit(cache=True)
-def _copy_windows(src: np.ndarray, dst: np.ndarray) -> None:
-    """``dst[:] = src`` for one ball's ``(pockets, 4)`` windows, element by element (an array assignment compiles
-    numba's shape check and its message formatting: seconds of a cold start)."""
-    for p in range(src.shape[0]):
-        for c in range(src.shape[1]):
-            dst[p, c] = src[p, c]
+def windows_cached(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Model, cache_pos: np.ndarray,
+                   cache_win: np.ndarray, cache_have: np.ndarray) -> np.ndarray:
+    """:func:`windows_of` (its samples) with a table's cache of its balls' windows (:func:`cached_window`): the
+    windows of the balls that stand where they stood at an earlier call are not worked out again. The same
+    numbers either way."""
+    k_p = tm.pocket_r.shape[0]
+    out = np.zeros((targets.shape[0], k_p, 4))
+    for t in range(targets.shape[0]):
+        for p in range(k_p):
+            w = cached_window(targets[t], p, pos, radius, tm, cache_pos, cache_win, cache_have)
+            # Element by element: an array assignment compiles numba's shape check and its message formatting
+            # (seconds of a cold start).
+            for c in range(4):
+                out[t, p, c] = w[c]
+    return out
 
 
 @njit(cache=True)
@@ -200,7 +215,7 @@ def _speed_to_travel(d: float, v_end: float, tm: Model) -> float:
 def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: float, w_half: float, w_dist: float,
              pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, tm: Model,
              lo: float, hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool,
-             scratch: np.ndarray, floor: float = -math.inf, obj_clear: int = -1) -> bool:
+             scratch: np.ndarray, floor: float, obj_clear: int) -> bool:
     """The ghost-ball shot from the cue ball at ``(cx, cy)`` sending ball ``j`` into pocket ``p`` through its
     window ``(w_angle, w_half, w_dist)``, written into ``out`` (a row of :data:`N_COLS`); False (and ``out``
     untouched) when there is none: the ghost ball on the cue ball, a cut beyond ``max_cut``, or the ghost ball off
@@ -213,8 +228,10 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     the score divides it by 10 when a path is blocked, by 3 when the speed is out of range and by 2 for the
     scratch risk. ``scratch``: a (2, 2) work array. ``floor``: skip (return False) a shot whose ease cannot
     beat it (the score is at most the tolerance), before its paths and speeds are worked out, or whose path is
-    blocked and a tenth of its ease cannot beat it, before its speeds. ``obj_clear``: the object ball's clear path
-    (:func:`object_path_clear`) when known (0 or 1; -1: work it out), the same from every cue position."""
+    blocked and a tenth of its ease cannot beat it, before its speeds (``-inf``: no floor). ``obj_clear``: the
+    object ball's clear path (:func:`object_path_clear`) when known (0 or 1; -1: work it out), the same from every
+    cue position. No defaults: every compiled caller passes all of them, as plain values, so this is compiled for
+    one signature (:mod:`billiards_env.physics.plain`)."""
     rc = radius[cue]
     mc = mass[cue]
     ox = pos[j, 0]
@@ -342,7 +359,7 @@ def ghost_shots_from(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radi
             if w[WIN_FOUND] == 0.0:
                 continue
             if shot_row(out[n], cx, cy, j, p, w[WIN_ANGLE], w[WIN_HALF], w[WIN_DIST], pos, on, radius, mass, cue,
-                        tm, lo, hi, max_cut, arrive, factors, check_scratch, scratch):
+                        tm, lo, hi, max_cut, arrive, factors, check_scratch, scratch, -math.inf, plain(-1)):
                 n += 1
     return rank_rows(out[:n])
 
@@ -389,7 +406,7 @@ def ghost_shots_windowed(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, 
             c, h, d_in, ok = window_of(ox, oy, radius[j], tm.pocket_xy[p, 0], tm.pocket_xy[p, 1], tm.pocket_r[p],
                                        tm.length, tm.width, WINDOW_SAMPLES, tm.segs, tm.tips)
             if ok and shot_row(out[n], cx, cy, j, p, c, h, d_in, pos, on, radius, mass, cue, tm, lo, hi, max_cut,
-                               arrive, factors, check_scratch, scratch):
+                               arrive, factors, check_scratch, scratch, -math.inf, plain(-1)):
                 n += 1
     return rank_rows(out[:n])
 
@@ -405,6 +422,70 @@ def best_shot_row(rows: np.ndarray, max_cut: float, fallback_cut: float) -> int:
         if rows[i, COL_CUT] <= fallback_cut:
             return i
     return -1
+
+
+@njit(cache=True)
+def best_shot_cached(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray,
+                     cue: int, targets: np.ndarray, tm: Model, lo: float, hi: float, max_cut: float, arrive: float,
+                     factors: np.ndarray, cache_pos: np.ndarray, cache_win: np.ndarray,
+                     cache_have: np.ndarray) -> np.ndarray:
+    """The shot :func:`best_shot_row` picks among the rows of :func:`ghost_shots_from` from ``(cx, cy)`` with cuts
+    up to ``max(max_cut, FALLBACK_CUT)`` (the easiest within ``max_cut``, else the easiest), as a ``(1, N_COLS)``
+    array (``(0, N_COLS)``: no shot), without working out the shots that cannot be it. The windows come from a
+    table's cache (:func:`cached_window`), each worked out only when its shot is tried.
+
+    The (ball, pocket) shots are tried in :func:`ghost_shots_from`'s order. Before any shot within ``max_cut`` is
+    found, a shot is passed over, window and all, when :func:`tolerance_bound` allows it no cut within the 88 deg
+    limit (as :func:`ghost_shots_windowed` does). Once one is found, a shot is passed over when its bound (worked out
+    without the window: an upper bound of its ease, so of its score) does not beat the best score so far or allows
+    it no cut within ``max_cut``, and :func:`shot_row` skips it (its ``floor``) before its paths and speeds when its
+    ease does not. A shot passed over could not have been picked: its score is at most the best so far, and of
+    equal scores :func:`rank_rows` (a stable sort) ranks the earlier shot first. So the row is the one the
+    unbounded search picks, bit for bit (tests/players/test_geometry.py)."""
+    k_p = tm.pocket_r.shape[0]
+    lim = max(max_cut, FALLBACK_CUT)
+    cos_lim = math.cos(lim)
+    cos_max = math.cos(max_cut)
+    out = np.empty((1, N_COLS))
+    row = np.empty(N_COLS)
+    scratch = np.empty((2, 2))
+    rc = radius[cue]
+    found = False
+    within = False  # the shot found is within max_cut
+    best = -math.inf  # its score
+    for t in range(targets.shape[0]):
+        j = targets[t]
+        if not on[j] or j == cue:
+            continue
+        ox = pos[j, 0]
+        oy = pos[j, 1]
+        contact = rc + radius[j]
+        d_co = math.hypot(ox - cx, oy - cy)
+        a_co = math.atan2(oy - cy, ox - cx)
+        for p in range(k_p):
+            bound = tolerance_bound(ox, oy, contact, d_co, a_co, tm.pocket_xy[p, 0], tm.pocket_xy[p, 1],
+                                    tm.pocket_r[p], WINDOW_SAMPLES, cos_max if within else cos_lim)
+            if bound < 0.0 or (within and bound <= best):
+                continue
+            w = cached_window(j, p, pos, radius, tm, cache_pos, cache_win, cache_have)
+            if w[WIN_FOUND] == 0.0:
+                continue
+            if not shot_row(row, cx, cy, j, p, w[WIN_ANGLE], w[WIN_HALF], w[WIN_DIST], pos, on, radius, mass, cue, tm,
+                            lo, hi, max_cut if within else lim, arrive, factors, plain(True), scratch,
+                            best if within else -math.inf, plain(-1)):
+                continue
+            if within:  # (shot_row refused cuts beyond max_cut and eases that cannot beat the best)
+                take = row[COL_SCORE] > best
+            elif row[COL_CUT] <= max_cut:
+                take = within = True
+            else:
+                take = not found or row[COL_SCORE] > best
+            if take:
+                for c in range(N_COLS):
+                    out[0, c] = row[c]
+                best = row[COL_SCORE]
+                found = True
+    return out if found else np.empty((0, N_COLS))
 
 
 @njit(cache=True)
@@ -488,7 +569,7 @@ def place_for_shot(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np
                         # A shot whose ease cannot beat the best place so far, nor this place's best shot, cannot
                         # change the choice: skipped before its paths and speeds.
                         if shot_row(row, px, py, j, q, wq[WIN_ANGLE], wq[WIN_HALF], wq[WIN_DIST], pos, on, radius,
-                                    mass, cue, tm, lo, hi, max_cut, arrive, factors, True, scratch,
+                                    mass, cue, tm, lo, hi, max_cut, arrive, factors, plain(True), scratch,
                                     max(best_score, score), obj_clear[q]):
                             if row[COL_SCORE] > score:
                                 score = row[COL_SCORE]
@@ -524,7 +605,7 @@ def geometric_decision_arrays(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
     ``max(max_cut, 88 deg)``), ``shot_row`` the index of the one played (-1: the break or the fallback direct hit),
     ``status`` 0, or 1 when ball in hand found no legal point."""
     return _decision(pos, on, radius, mass, cue, targets, pocket_xy, pocket_r, params, lo, hi, area, in_hand, is_break,
-                     max_cut, np.zeros((0, 2)), np.zeros((0, 1, 4)), np.zeros(0, np.bool_))  # (no cache)
+                     max_cut, np.zeros((0, 2)), np.zeros((0, 1, 4)), np.zeros(0, np.bool_), plain(False))  # (no cache)
 
 
 @njit(cache=True)
@@ -532,20 +613,35 @@ def geometric_decision_cached(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
                               targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray,
                               lo: float, hi: float, area: np.ndarray, in_hand: bool, is_break: bool, max_cut: float,
                               cache_pos: np.ndarray, cache_win: np.ndarray, cache_have: np.ndarray) -> tuple:
-    """:func:`geometric_decision_arrays` with a table's cache of its balls' pocket windows (:func:`windows_cached`:
+    """:func:`geometric_decision_arrays` with a table's cache of its balls' pocket windows (:func:`cached_window`:
     ``cache_pos`` (B, 2), ``cache_win`` (B, K, 4), ``cache_have`` (B,) False at first), kept between the decisions
-    on one table: the balls that have not moved keep theirs. The same decision, bit for bit."""
+    on one table: the balls that have not moved keep theirs. The same decision, bit for bit, and the same ranked
+    shots (:func:`geometric_choice_cached` gives the decision alone, faster)."""
     return _decision(pos, on, radius, mass, cue, targets, pocket_xy, pocket_r, params, lo, hi, area, in_hand, is_break,
-                     max_cut, cache_pos, cache_win, cache_have)
+                     max_cut, cache_pos, cache_win, cache_have, plain(False))
+
+
+@njit(cache=True)
+def geometric_choice_cached(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int,
+                            targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray,
+                            lo: float, hi: float, area: np.ndarray, in_hand: bool, is_break: bool, max_cut: float,
+                            cache_pos: np.ndarray, cache_win: np.ndarray, cache_have: np.ndarray) -> tuple:
+    """:func:`geometric_decision_cached` without the shots that cannot be played (the native games' opponent):
+    the same ``(place_x, place_y, placed, angle, speed, shot_row, rows, status)`` bit for bit, except that ``rows``
+    holds the played ghost-ball shot alone (``shot_row`` 0; no row and -1 when none is played), found by
+    :func:`best_shot_cached`: the shots whose bound cannot beat the best so far are passed over, and their windows
+    not worked out."""
+    return _decision(pos, on, radius, mass, cue, targets, pocket_xy, pocket_r, params, lo, hi, area, in_hand, is_break,
+                     max_cut, cache_pos, cache_win, cache_have, plain(True))
 
 
 @njit(cache=True)
 def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, targets: np.ndarray,
               pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float, hi: float, area: np.ndarray,
               in_hand: bool, is_break: bool, max_cut: float, cache_pos: np.ndarray, cache_win: np.ndarray,
-              cache_have: np.ndarray) -> tuple:
+              cache_have: np.ndarray, bounded: bool) -> tuple:
     """:func:`geometric_decision_arrays`, with the windows from the cache when one is given (``cache_have`` not
-    empty)."""
+    empty); ``bounded`` (with a cache): the played shot alone (:func:`best_shot_cached`), not every shot ranked."""
     tm = model(pocket_xy, pocket_r, params)
     factors = np.array(SPEED_FACTORS)
     empty = np.empty((0, N_COLS))
@@ -568,15 +664,18 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
         if j < 0:
             j = cue
         return px, py, in_hand, math.atan2(pos[j, 1] - cy, pos[j, 0] - cx), hi, -1, empty, 0
-    if not in_hand and cache_have.shape[0] == 0:  # only the windows its shots need
+    cached = cache_have.shape[0] > 0
+    if not in_hand and not cached:  # only the windows its shots need
         cx, cy = pos[cue, 0], pos[cue, 1]
         rows = ghost_shots_windowed(cx, cy, pos, on, radius, mass, cue, targets, tm, lo, hi,
-                                    max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+                                    max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, plain(True))
         return _played(rows, px, py, in_hand, cx, cy, pos, on, cue, targets, lo, hi, max_cut)
-    if cache_have.shape[0] == 0:
+    if not cached:
         windows = windows_of(pos, radius, targets, tm)
-    else:
+    elif in_hand or not bounded:
         windows = windows_cached(pos, radius, targets, tm, cache_pos, cache_win, cache_have)
+    else:  # (best_shot_cached asks the cache for the windows it needs)
+        windows = np.zeros((0, 1, 4))
     if in_hand:
         backs = np.array(PLACE_BACKS)
         px, py, ok = place_for_shot(pos, on, radius, mass, cue, targets, windows, tm, lo, hi, max_cut, area, backs,
@@ -589,8 +688,12 @@ def _decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndar
     else:
         cx, cy = pos[cue, 0], pos[cue, 1]
         on2 = on
-    rows = ghost_shots_from(cx, cy, pos, on2, radius, mass, cue, targets, windows, tm, lo, hi,
-                            max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, True)
+    if bounded:
+        rows = best_shot_cached(cx, cy, pos, on2, radius, mass, cue, targets, tm, lo, hi, max_cut, ARRIVE_SPEED,
+                                factors, cache_pos, cache_win, cache_have)
+    else:
+        rows = ghost_shots_from(cx, cy, pos, on2, radius, mass, cue, targets, windows, tm, lo, hi,
+                                max(max_cut, FALLBACK_CUT), ARRIVE_SPEED, factors, plain(True))
     return _played(rows, px, py, in_hand, cx, cy, pos, on2, cue, targets, lo, hi, max_cut)
 
 
@@ -895,12 +998,13 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
 
 
 __all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "windows_cached",
-           "geometric_decision_cached", "target_windows", "shot_row",
-           "rank_rows", "ghost_shots_from", "ghost_shots", "ghost_shots_windowed", "best_shot_row", "nearest_target", "py_hypot", "free_discs",
+           "geometric_decision_cached", "geometric_choice_cached", "cached_window", "target_windows", "shot_row",
+           "rank_rows", "ghost_shots_from", "ghost_shots", "ghost_shots_windowed", "best_shot_row", "best_shot_cached",
+           "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "tolerance_bound",
            "pot_chance",
            "layouts_ease", "places_ease", "search_places", "geometric_decision_arrays", "geometric_decision",
            "Decision", "N_COLS", "MAX_CUT", "FALLBACK_CUT", "ARRIVE_SPEED", "SPEED_FACTORS", "DIRECT_HIT_SPEED",
            "PLACE_BACKS", "COL_TARGET", "COL_POCKET", "COL_ANGLE", "COL_SPEED", "COL_NEED", "COL_OBJ_ANGLE", "COL_CUT",
            "COL_D_CUE", "COL_D_OBJ", "COL_WINDOW", "COL_TOL", "COL_CLEAR", "COL_REACH", "COL_RISK", "COL_SCORE",
-           "COL_CLEAR_OBJ", "WIN_ANGLE", "WIN_HALF", "WIN_DIST", "WIN_FOUND"]
+           "COL_CLEAR_OBJ", "WIN_ANGLE", "WIN_HALF", "WIN_DIST", "WIN_FOUND", "WIN_UNKNOWN"]

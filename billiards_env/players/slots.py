@@ -17,6 +17,7 @@ from numba import njit
 
 from billiards_env.physics.aim import segment_blocked_by
 from billiards_env.physics.motion import launch_speed
+from billiards_env.physics.plain import plain
 from billiards_env.physics.pocket_specs import N_RAILS
 from billiards_env.physics.walls import on_rail_span
 
@@ -38,9 +39,9 @@ def shot_slots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.nda
     :data:`billiards_env.players.geometry.N_COLS` columns; a slot's ``clear_obj`` is
     ``COL_CLEAR_OBJ``."""
     tm = model(pocket_xy, pocket_r, params)
-    rows = ghost_shots_from(pos[0, 0], pos[0, 1], pos, on, radius, mass, 0, targets,
+    rows = ghost_shots_from(pos[0, 0], pos[0, 1], pos, on, radius, mass, plain(0), targets,
                             windows_of(pos, radius, targets, tm), tm, lo, hi, FALLBACK_CUT, ARRIVE_SPEED,
-                            np.array(SPEED_FACTORS), True)
+                            np.array(SPEED_FACTORS), plain(True))
     keep = rows[:, COL_CUT] <= MAX_CUT
     if keep.any():
         return rows[keep]
@@ -70,7 +71,7 @@ def in_hand_slots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, targets: 
             oy = pos[j, 1]
             d = w[WIN_DIST]
             clear = not segment_blocked_by(ox, oy, ox + math.cos(w[WIN_ANGLE]) * d, oy + math.sin(w[WIN_ANGLE]) * d,
-                                           pos, on, radius, 0, j, radius[j])
+                                           pos, on, radius, plain(0), j, radius[j])
             out[n, HAND_TARGET] = j
             out[n, HAND_POCKET] = p
             out[n, HAND_OBJ_ANGLE] = w[WIN_ANGLE]
@@ -143,8 +144,8 @@ def kick_candidates(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, targets
                     break
             if near_pocket:
                 continue
-            if segment_blocked_by(cx, cy, px, py, pos, on, radius, 0, j, rc) or \
-                    segment_blocked_by(px, py, tx, ty, pos, on, radius, 0, j, rc):
+            if segment_blocked_by(cx, cy, px, py, pos, on, radius, plain(0), j, rc) or \
+                    segment_blocked_by(px, py, tx, ty, pos, on, radius, plain(0), j, rc):
                 continue
             d = math.hypot(px - cx, py - cy) + math.hypot(tx - px, ty - py)
             v = margin * launch_speed(d, arrival, tm.law, tm.decel, tm.k)
