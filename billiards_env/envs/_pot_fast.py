@@ -8,7 +8,6 @@ the Python around the shot goes (parsing the outcome, building intermediate obje
 """
 from __future__ import annotations
 
-from collections import namedtuple
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
@@ -17,7 +16,7 @@ from billiards_env.physics.batch import new_outputs
 
 from billiards_env.shot_path import CueShot, draw_noise
 
-from ._vector_kernels import POT_OUTCOME, POT_SHOT, new_step_outputs, pack_config, pot_step, pot_step_spin
+from ._vector_kernels import new_step_outputs, pack_config, pot_step, pot_step_spin
 from .config import ConfigError, EnvConfig
 from .info import shot_info
 from .tasks import PotTask
@@ -26,10 +25,29 @@ if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
 
 _ACTIVE = np.ones(1, np.bool_)
-# The table's records as Python values by field name (one ``item()`` per record: Python floats and ints, as cheap to
-# read as the tuple).
-_Shot = namedtuple("_Shot", POT_SHOT.names)  # type: ignore[misc]
-_Outcome = namedtuple("_Outcome", POT_OUTCOME.names)  # type: ignore[misc]
+
+
+class ShotValues(NamedTuple):
+    """A table's :data:`~._vector_kernels.POT_SHOT` record as Python floats (one ``item()``: as cheap to read as
+    the tuple); its fields are the record's, in order (a test holds them equal)."""
+
+    reward: float
+    angle: float
+    speed: float
+    side: float
+    top: float
+    start_x: float
+    start_y: float
+
+
+class OutcomeValues(NamedTuple):
+    """A table's :data:`~._vector_kernels.POT_OUTCOME` record as Python ints, fields in the record's order."""
+
+    terminated: int
+    truncated: int
+    success: int
+    scratch: int
+    pocketed: int
 
 
 class FastStep(NamedTuple):
@@ -85,8 +103,8 @@ class PotFastStep:
         if not self.kernel(self.act, _ACTIVE, *self.table, self.shots, *self.consts, self.noise, out, fout, iout,
                            self.obs):
             raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
-        f = _Shot._make(fout.item(0))
-        i = _Outcome._make(iout.item(0))
+        f = ShotValues._make(fout.item(0))
+        i = OutcomeValues._make(iout.item(0))
         terminated = i.terminated != 0
         truncated = i.truncated != 0
         mask = i.pocketed

@@ -22,7 +22,7 @@ from billiards_env.physics.pocket_specs import N_RAILS
 from billiards_env.physics.walls import on_rail_span
 
 from .geometry import (ARRIVE_SPEED, COL_CUT, COL_SCORE, FALLBACK_CUT, MAX_CUT, N_COLS, SPEED_FACTORS, WIN_ANGLE,
-                       WIN_DIST, WIN_FOUND, WIN_HALF, ghost_shots_from, model, pot_chance, windows_of)
+                       WIN_DIST, WIN_FOUND, WIN_HALF, ghost_shots_windowed, model, pot_chance, windows_of)
 
 #: Columns of an in-hand slot row: target, pocket, object-ball direction, window half-width, distance to the
 #: capture circle, the object ball's path clear (1.0 / 0.0).
@@ -37,11 +37,11 @@ def shot_slots(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.nda
     """The pot slots with the cue ball where it lies: every ghost-ball shot at a legal ball (``targets``) with a
     cut up to 80 degrees, easiest first, or up to 88 degrees when there is none: rows of
     :data:`billiards_env.players.geometry.N_COLS` columns; a slot's ``clear_obj`` is
-    ``COL_CLEAR_OBJ``."""
+    ``COL_CLEAR_OBJ``. A (ball, pocket) window is worked out only for a shot whose cut can be played
+    (:func:`~billiards_env.players.geometry.ghost_shots_windowed`: the same rows as with every window)."""
     tm = model(pocket_xy, pocket_r, params)
-    rows = ghost_shots_from(pos[0, 0], pos[0, 1], pos, on, radius, mass, plain(0), targets,
-                            windows_of(pos, radius, targets, tm), tm, lo, hi, FALLBACK_CUT, ARRIVE_SPEED,
-                            np.array(SPEED_FACTORS), plain(True))
+    rows = ghost_shots_windowed(pos[0, 0], pos[0, 1], pos, on, radius, mass, plain(0), targets, tm, lo, hi,
+                                FALLBACK_CUT, ARRIVE_SPEED, np.array(SPEED_FACTORS), plain(True))
     keep = rows[:, COL_CUT] <= MAX_CUT
     if keep.any():
         return rows[keep]

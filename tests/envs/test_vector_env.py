@@ -437,3 +437,16 @@ def test_native_candidates_kicks(spin):
         assert np.array_equal(x, y)
     _same_info(out[4], out_r[4])
     assert out[4]["first_contact"][0] == 1  # the kick hit the hidden ball (row 1: ball "1")
+
+
+def test_fast_step_values_carry_the_record_fields_in_order():
+    """The single env's compiled step reads a table's shot and outcome records as named tuples made from
+    ``item()``: a field added to, dropped from or moved in a record without the tuple would read the wrong value."""
+    from billiards_env.envs._pot_fast import OutcomeValues, ShotValues
+    from billiards_env.envs._vector_kernels import POT_OUTCOME, POT_SHOT
+
+    assert ShotValues._fields == POT_SHOT.names
+    assert OutcomeValues._fields == POT_OUTCOME.names
+    record = np.zeros((), POT_SHOT)
+    record["speed"] = 2.5
+    assert ShotValues._make(record.item()).speed == 2.5
