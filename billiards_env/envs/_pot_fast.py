@@ -76,7 +76,7 @@ class PotFastStep:
         self.act = np.zeros((1, env.action_type.n))
         self.shots = np.zeros(1, np.int64)
         self.obs = np.zeros((1,) + env.observation_space.shape, np.float32)
-        self.positions = bool(self.icfg["positions_obs"])
+        self.positions = bool(self.icfg[0]["positions_obs"])
         self.kernel = pot_step_spin if env.physics.has_spin else pot_step
         self.settings = env.table_state.settings
         self.noisy = self.settings.noisy

@@ -17,7 +17,7 @@ test ``tests/envs/test_vector_env.py`` checks it):
   :func:`pot_step_parallel` does the same on several threads (:func:`pot_step_rows` on slices of the tables).
 
 The packed configuration is two numpy records read by field name (``cfg["speed_lo"]``, ``icfg["aim"]``; numba
-compiles a record's field to a load at its offset): :data:`POT_FLOATS` and :data:`POT_INTS`, made by
+compiles a record's field to a load at its offset): :data:`POT_FLOATS` and :data:`POT_INTS`, one-record arrays made by
 :func:`pack_config`. Each table's results are one record of :data:`POT_SHOT` (``fout[k]``: the reward, the shot as
 played) and one of :data:`POT_OUTCOME` (``iout[k]``: the flags, the pocketed rows), in the record arrays of
 :func:`new_step_outputs`. Random numbers come from each sub-env's own ``numpy.random.Generator`` (numba draws from
@@ -104,14 +104,17 @@ POT_OUTCOME = np.dtype([(name, np.int64) for name in (
     "terminated", "truncated", "success", "scratch", "pocketed")])
 
 
-def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.void, np.void]:
-    """The constants a pot env's shot needs, as two records ``(cfg, icfg)`` (:data:`POT_FLOATS`,
-    :data:`POT_INTS`), from its config ``c``, its action type ``a`` and its observation type."""
+def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.ndarray, np.ndarray]:
+    """The constants a pot env's shot needs, as two one-record arrays ``(cfgs, icfgs)`` (:data:`POT_FLOATS`,
+    :data:`POT_INTS`), from its config ``c``, its action type ``a`` and its observation type. Arrays, not record
+    scalars: numba types an array argument from a cache, a record scalar anew at every call (about 1 us each, a
+    tenth of the single env's step)."""
     from billiards_env.physics.layout import head_spot
 
     table = c.table
     hx, hy = head_spot(table)
-    cfg = np.zeros((), POT_FLOATS)[()]  # a record: the floats by name
+    cfgs = np.zeros(1, POT_FLOATS)
+    cfg = cfgs[0]  # the record (a view of the array): the floats by name
     cfg["speed_lo"] = a.speed_lo
     cfg["speed_span"] = a.speed_span
     cfg["max_tip"] = a.max_tip
@@ -132,7 +135,8 @@ def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.void, np.void
     cfg["ball_mass"] = c.ball_mass
     cfg["squirt"] = c.physics.squirt
     cfg["cue_end_mass"] = c.physics.cue_end_mass
-    icfg = np.zeros((), POT_INTS)[()]
+    icfgs = np.zeros(1, POT_INTS)
+    icfg = icfgs[0]
     icfg["aim"] = {"absolute": AIM_ABSOLUTE, "relative": AIM_RELATIVE, "ghost": AIM_GHOST}[a.name]
     icfg["spin_action"] = int(a.spin)
     icfg["spin_model"] = int(c.physics.has_spin)
@@ -140,7 +144,7 @@ def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.void, np.void
     icfg["max_shots"] = int(c.max_shots)
     icfg["positions_obs"] = int(observation_type.name == "positions" and observation_type.n_game == 0)
     icfg["speed_noise_abs"] = int(c.speed_noise_mode == "absolute")
-    return cfg, icfg
+    return cfgs, icfgs
 
 
 def new_step_outputs(n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -150,9 +154,10 @@ def new_step_outputs(n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 @njit(cache=True)
-def draw_noise(active, gens, cfg, noise):
+def draw_noise(active, gens, cfgs, noise):
     """The shot noise of every active table from its generator, in the single env's order: the angle's, the
     speed's, then the two tip offsets' (each only when that noise is on): ``noise[k] = (da, ds, dside, dtop)``."""
+    cfg = cfgs[0]
     an = cfg["angle_noise"]
     sn = cfg["speed_noise"]
     tn = cfg["tip_noise"]
@@ -213,8 +218,9 @@ def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
 
 
 @njit(cache=True)
-def prepare_shots(act, active, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
-    """:func:`_prepare_row` for every active table."""
+def prepare_shots(act, active, pos, on, radius, cfgs, icfgs, noise, vel, ang, fout):
+    """:func:`_prepare_row` for every active table (``cfgs``, ``icfgs``: :func:`pack_config`'s arrays)."""
+    cfg, icfg = cfgs[0], icfgs[0]
     for k in range(act.shape[0]):
         if active[k]:
             _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout)
@@ -259,8 +265,9 @@ def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iou
 
 
 @njit(cache=True)
-def finish_shots(active, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iout):
+def finish_shots(active, pocket, first, pos, on, vel, ang, shots, cfgs, icfgs, fout, iout):
     """:func:`_finish_row` for every active table; False if a cue ball could not be re-spotted."""
+    cfg, icfg = cfgs[0], icfgs[0]
     ok = True
     for k in range(pos.shape[0]):
         if active[k]:
@@ -288,12 +295,13 @@ def _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, ob
 
 
 @njit(cache=True)
-def pot_step(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events, cfg,
-             icfg, noise, out, fout, iout, obs):
+def pot_step(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events, cfgs,
+             icfgs, noise, out, fout, iout, obs):
     """One shot on every active table in one call, serially (``noise`` from :func:`draw_noise`):
     :func:`_prepare_row`, the exact kernel (``out``: the
     batch's result arrays, see :func:`billiards_env.physics.batch.new_outputs`) and :func:`_after_shot`. Returns
     False if a cue ball could not be re-spotted."""
+    cfg, icfg = cfgs[0], icfgs[0]
     ok = True
     for k in range(pos.shape[0]):
         if active[k]:
@@ -305,9 +313,10 @@ def pot_step(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, poc
 
 
 @njit(cache=True)
-def pot_step_spin(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events, cfg,
-                  icfg, noise, out, fout, iout, obs):
+def pot_step_spin(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events,
+                  cfgs, icfgs, noise, out, fout, iout, obs):
     """:func:`pot_step` for the spin model (its own kernel: each model compiles only when used)."""
+    cfg, icfg = cfgs[0], icfgs[0]
     ok = True
     for k in range(pos.shape[0]):
         if active[k]:
@@ -320,9 +329,10 @@ def pot_step_spin(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy
 
 @njit(cache=True, nogil=True)
 def pot_step_rows(rows, act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events,
-                  cfg, icfg, noise, out, fout, iout, obs):
+                  cfgs, icfgs, noise, out, fout, iout, obs):
     """:func:`pot_step` on tables ``rows`` only (int64), without the GIL: :func:`pot_step_parallel` runs slices of
     the tables on several Python threads at once (a table's result does not depend on the slice it is in)."""
+    cfg, icfg = cfgs[0], icfgs[0]
     ok = True
     for q in range(rows.shape[0]):
         k = rows[q]
@@ -336,8 +346,9 @@ def pot_step_rows(rows, act, active, pos, vel, ang, on, shots, radius, mass, poc
 
 @njit(cache=True, nogil=True)
 def pot_step_rows_spin(rows, act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params,
-                       max_events, cfg, icfg, noise, out, fout, iout, obs):
+                       max_events, cfgs, icfgs, noise, out, fout, iout, obs):
     """:func:`pot_step_rows` for the spin model."""
+    cfg, icfg = cfgs[0], icfgs[0]
     ok = True
     for q in range(rows.shape[0]):
         k = rows[q]

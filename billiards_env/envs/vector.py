@@ -141,8 +141,8 @@ class BilliardsVectorEnv(VectorEnv):
         # (POT_OUTCOME).
         self._fout, self._iout = new_step_outputs(n)
         game = c.task != "pot"
-        # The pot task's packed config (POT_FLOATS, POT_INTS); the games pack their own (GameTables).
-        self._cfg, self._icfg = (np.zeros((), POT_FLOATS)[()], np.zeros((), POT_INTS)[()]) if game else \
+        # The pot task's packed config (one-record arrays of POT_FLOATS, POT_INTS); the games pack their own.
+        self._cfg, self._icfg = (np.zeros(1, POT_FLOATS), np.zeros(1, POT_INTS)) if game else \
             pack_config(t.config, t.action_type, t.observation_type)
         c = t.config
         self._noisy = c.angle_noise > 0.0 or c.speed_noise > 0.0 or c.tip_noise > 0.0
@@ -160,7 +160,7 @@ class BilliardsVectorEnv(VectorEnv):
         self._pockets = np.asarray(lay.pockets, dtype=float).reshape(-1, 2)
         # Shots and scoring.
         self._spin_model = t.physics.has_spin
-        self._positions_obs = bool(self._icfg["positions_obs"])
+        self._positions_obs = bool(self._icfg[0]["positions_obs"])
         self._bits = np.arange(nb, dtype=np.int64)  # a pocketed bit mask -> its row mask
         # Per-sub-env random generators (as each single env's np_random), and the compiled code's view of them.
         self._rngs: list[np.random.Generator | None] = [None] * n
@@ -446,8 +446,8 @@ class BilliardsVectorEnv(VectorEnv):
             self.games.observe(rows)
             return
         if self._positions_obs:
-            observe_positions(np.ascontiguousarray(rows, dtype=np.int64), self.pos, self.on_table, self._cfg["sx"],
-                              self._cfg["sy"], self._obs)
+            observe_positions(np.ascontiguousarray(rows, dtype=np.int64), self.pos, self.on_table,
+                              self._cfg[0]["sx"], self._cfg[0]["sy"], self._obs)
         else:
             ot = self.template.observation_type
             for k in rows.tolist():
