@@ -6,7 +6,8 @@
 The base commit is checked out (``git worktree add --detach``) into a temporary directory; each round runs one child
 process per tree (alternating which goes first) that times, for every id both trees have, ``env.step`` with random
 actions on the single env (seeded resets at episode ends), a seeded ``reset`` + ``step`` episode on the one-ball
-env, and the native vector env (256 tables) of the pot scenes. The table gives, per measurement, each tree's best
+env, and the native vector env (256 tables, one thread) of the pot scenes and of the games (against their default
+geometric opponent; a step is an agent step, its opponent's turns included). The table gives, per measurement, each tree's best
 rate over the rounds (the run least disturbed by other work on a shared machine) and their ratio (after / before).
 Not part of the default benchmark run.
 """
@@ -70,7 +71,7 @@ def child(seconds: float) -> dict[str, float]:
         return 1
 
     out["episode BilliardsOneBall-v0 (seeded reset + step)"] = _rate(episode, seconds)
-    for env_id in POT:
+    for env_id in POT + GAMES:
         vec = gym.make_vec(env_id, 256, vectorization_mode="vector_entry_point", threads=1)
         vec.reset(seed=0)
         acts_v = rng.uniform(-1, 1, (256,) + vec.single_action_space.shape).astype(np.float32)
