@@ -276,12 +276,17 @@ def _replay_decisions(decide: Any, pos: np.ndarray, on: np.ndarray, radius: np.n
                       targets: np.ndarray, counts: np.ndarray, area: np.ndarray, in_hand: np.ndarray,
                       is_break: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float,
                       hi: float, max_cut: float) -> int:
-    """Every recorded geometric decision through ``decide`` (``geometric_decision_arrays``), as the games' kernel
-    calls it."""
+    """Every recorded geometric decision through ``decide`` (``geometric_choice_cached``), in the order one table
+    made them, as the games' kernel calls it: with one table's cache of its balls' pocket windows, empty at the
+    start of the pass and kept from decision to decision (a ball that did not move keeps its windows)."""
+    nb = radius.shape[0]
+    cache_pos = np.zeros((nb, 2))
+    cache_win = np.zeros((nb, pocket_r.shape[0], 4))
+    cache_have = np.zeros(nb, np.bool_)
     placed = 0
     for i in range(pos.shape[0]):
-        got = decide(pos[i], on[i], radius, mass, 0, targets[i, :counts[i]].copy(), pocket_xy,
-                                        pocket_r, params, lo, hi, area[i], in_hand[i], is_break[i], max_cut)
+        got = decide(pos[i], on[i], radius, mass, 0, targets[i, :counts[i]].copy(), pocket_xy, pocket_r, params, lo,
+                     hi, area[i], in_hand[i], is_break[i], max_cut, cache_pos, cache_win, cache_have)
         placed += got[2]
     return placed
 
@@ -292,15 +297,15 @@ class GameRecord:
     Seeded single envs with the geometric opponent (each equal, bit for bit, to a vector env table with the same
     seed and actions) play ``steps`` agent steps of uniform random actions, every shot's start state (the agent's,
     the opponent's, breaks) and every geometric decision's inputs recorded. :meth:`replay` then runs the shots
-    through the exact kernel alone and the decisions through ``geometric_decision_arrays`` alone, each in one
-    compiled loop, and adds up their CPU time (call it between the slices of :func:`vector_rate`, so that both run
+    through the exact kernel alone and the decisions through ``geometric_choice_cached`` alone (as the kernel's
+    opponent decides: one table's window cache carried from decision to decision), each in one compiled loop, and adds up their CPU time (call it between the slices of :func:`vector_rate`, so that both run
     under the same load)."""
 
     def __init__(self, env_id: str, steps: int, seed: int = 0) -> None:
         import gymnasium as gym
 
         from billiards_env.players import geometric as geo_module
-        from billiards_env.players.geometry import MAX_CUT, geometric_decision_arrays, state_model
+        from billiards_env.players.geometry import MAX_CUT, geometric_choice_cached, state_model
 
         env = gym.make(env_id)
         u = env.unwrapped
@@ -349,7 +354,7 @@ class GameRecord:
         tm = state_model(u.table_state)
         lo, hi = u.table_state.settings.speed_range
         self.decision_args = (
-            geometric_decision_arrays, np.stack([d[0] for d in decisions]), np.stack([d[1] for d in decisions]),
+            geometric_choice_cached, np.stack([d[0] for d in decisions]), np.stack([d[1] for d in decisions]),
             radius, mass, targets, counts,
             np.array([d[3] if d[3] is not None else (0.0, 0.0, 0.0, 0.0) for d in decisions], dtype=float),
             np.array([d[3] is not None for d in decisions], np.bool_), np.array([d[4] for d in decisions], np.bool_),
@@ -653,7 +658,8 @@ def render_markdown(doc: dict[str, Any]) -> str:
                   "built as arrays, and the autoreset). The physics alone: seeded single envs with the geometric "
                   "opponent (each a vector env table, bit for bit) play uniform random actions with every shot's "
                   "start state and every geometric decision recorded, then the shots are replayed through the exact "
-                  "kernel alone and the decisions through `geometric_decision_arrays` alone (compiled loops, CPU "
+                  "kernel alone and the decisions through `geometric_choice_cached` alone, as the kernel's "
+                  "opponent makes them (one table's window cache kept from decision to decision; compiled loops, CPU "
                   "time), once after each slice of the vector env's timing, so that both see the same load (the "
                   "mean of the passes). The rest of the kernel (the kernel less the two: the rules, the action "
                   "types, the observations, the bookkeeping) is small, within the noise of a shared machine (it can "
