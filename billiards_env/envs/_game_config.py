@@ -6,6 +6,8 @@ packs them.
 """
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 #: The ``candidates`` action type (``icfg["aim"]``).
@@ -34,4 +36,16 @@ KICK_CACHE = np.dtype([(name, np.float64) for name in (
     "valid", "found", "target", "angle", "speed", "length", "lo", "hi")])
 
 
-__all__ = ["AIM_CANDIDATES", "GAME_FLOATS", "GAME_INTS", "KICK_CACHE"]
+
+def put_shot_fields(cfg: Any, a: Any, c: Any) -> None:
+    """The fields every compiled config shares (:data:`GAME_FLOATS`, the pot task's ``POT_FLOATS``) into the record
+    ``cfg``: the action type ``a``'s power and tip ranges and the config ``c``'s shot noise."""
+    cfg["speed_lo"] = a.speed_lo
+    cfg["speed_span"] = a.speed_span
+    cfg["max_tip"] = a.max_tip
+    cfg["angle_noise"] = c.angle_noise
+    cfg["speed_noise"] = c.speed_noise
+    cfg["tip_noise"] = c.tip_noise
+
+
+__all__ = ["AIM_CANDIDATES", "GAME_FLOATS", "GAME_INTS", "KICK_CACHE", "put_shot_fields"]

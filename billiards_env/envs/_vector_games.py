@@ -119,12 +119,7 @@ class GameTables:
         hx, hy = head_spot(table)
         fx, fy = foot_spot(table)
         cfg = np.zeros((), gc.GAME_FLOATS)[()]  # a record: the floats by name
-        cfg["speed_lo"] = at.speed_lo
-        cfg["speed_span"] = at.speed_span
-        cfg["max_tip"] = at.max_tip
-        cfg["angle_noise"] = c.angle_noise
-        cfg["speed_noise"] = c.speed_noise
-        cfg["tip_noise"] = c.tip_noise
+        gc.put_shot_fields(cfg, at, c)
         cfg["ghost"] = at.max_angle
         cfg["act_ghost"] = acting.max_angle
         cfg["radius"] = r

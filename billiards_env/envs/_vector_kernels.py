@@ -38,6 +38,7 @@ from billiards_env.physics.layout import place_random_rows, spot_cue_row
 from billiards_env.physics.plain import plain
 from billiards_env.physics.spin_collide import strike_ball
 
+from ._game_config import put_shot_fields
 from ._kernels import write_observation
 from billiards_env.shot_path import noisy_shot
 
@@ -115,12 +116,7 @@ def pack_config(c: Any, a: Any, observation_type: Any) -> tuple[np.ndarray, np.n
     hx, hy = head_spot(table)
     cfgs = np.zeros(1, POT_FLOATS)
     cfg = cfgs[0]  # the record (a view of the array): the floats by name
-    cfg["speed_lo"] = a.speed_lo
-    cfg["speed_span"] = a.speed_span
-    cfg["max_tip"] = a.max_tip
-    cfg["angle_noise"] = c.angle_noise
-    cfg["speed_noise"] = c.speed_noise
-    cfg["tip_noise"] = c.tip_noise
+    put_shot_fields(cfg, a, c)
     cfg["ghost"] = float(getattr(a, "max_angle", 0.0))
     cfg["radius"] = c.ball_radius
     cfg["head_x"] = hx

@@ -477,7 +477,7 @@ def _window_capture(ox: float, oy: float, radius: float, cx: float, cy: float, p
     # One pass over the samples: the widest run of feasible ones (the first of equals).
     best_len = plain(0)  # (plain: _window_sample and _window_result compiled for int64 only)
     best_start = plain(0)
-    run_start = -1
+    run_start = plain(-1)
     flag = False
     for k in range(div + 2):
         if k > div:
@@ -485,13 +485,7 @@ def _window_capture(ox: float, oy: float, radius: float, cx: float, cy: float, p
         elif mask == -1 or (mask >> k) & 1:
             flag = _window_sample_ok(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr, length,
                                      width, radius)
-        if flag and run_start < 0:
-            run_start = k
-        elif not flag and run_start >= 0:
-            if k - run_start > best_len:
-                best_len = k - run_start
-                best_start = run_start
-            run_start = -1
+        run_start, best_start, best_len = _track_run(flag, k, run_start, best_start, best_len)
     return _window_result(best_start, best_len, div, theta_c, half, step, ox, oy, cx, cy, pr, dist)
 
 
@@ -512,18 +506,26 @@ def _window_jaws(ox: float, oy: float, radius: float, cx: float, cy: float, pr: 
     walls = _window_walls(ox, oy, radius, cx, cy, pr, segs, tips)
     best_len = plain(0)  # (plain: _window_sample and _window_result compiled for int64 only)
     best_start = plain(0)
-    run_start = -1
+    run_start = plain(-1)
     for k in range(div + 2):
         flag = k <= div and _window_sample_clear(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr,
                                                  radius, segs, tips, walls)
-        if flag and run_start < 0:
-            run_start = k
-        elif not flag and run_start >= 0:
-            if k - run_start > best_len:
-                best_len = k - run_start
-                best_start = run_start
-            run_start = -1
+        run_start, best_start, best_len = _track_run(flag, k, run_start, best_start, best_len)
     return _window_result(best_start, best_len, div, theta_c, half, step, ox, oy, cx, cy, pr, dist)
+
+
+@njit(cache=True)
+def _track_run(flag: bool, k: int, run_start: int, best_start: int, best_len: int) -> tuple:
+    """One sample ``k`` of the scan for a window's widest run of feasible samples (the first of equals):
+    ``(run_start, best_start, best_len)`` after it (``run_start`` -1 outside a run)."""
+    if flag and run_start < 0:
+        run_start = k
+    elif not flag and run_start >= 0:
+        if k - run_start > best_len:
+            best_len = k - run_start
+            best_start = run_start
+        run_start = -1
+    return run_start, best_start, best_len
 
 
 @njit(cache=True)

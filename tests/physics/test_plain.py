@@ -76,6 +76,7 @@ ONE_SIGNATURE = (
     "billiards_env.physics.stronge._first_root",
     "billiards_env.physics.aim._window_sample",
     "billiards_env.physics.aim._window_result",
+    "billiards_env.physics.aim._track_run",
     "billiards_env.physics.aim.segment_blocked_by",
     "billiards_env.players.geometry.ghost_shots_from",
     "billiards_env.players.geometry.shot_row",
