@@ -48,6 +48,8 @@ POWER_DRAG = 0.35
 #: Power below which a release cancels the shot instead of playing it (with ball in hand: puts the cue ball there).
 MIN_POWER = 0.02
 PANEL_HEIGHT = 56
+#: The window's width when none is given, narrowed to fit the screen's height (:func:`~.render.window.fitted_width`).
+DEFAULT_WIDTH = 1000
 PANEL_BG = (28, 28, 32)
 TEXT = (226, 226, 220)
 BAR_BG = (60, 60, 66)
@@ -80,11 +82,14 @@ class PlayApp:
     own, ``geometric``) or ``"human"`` (nobody plays automatically: two people take turns). ``spin`` plays with
     the spin model and tip offsets (``friction="spin"``, ``spin_action=True``).
 
+    ``width``: the window's width in pixels; None (the default) is :data:`DEFAULT_WIDTH`, narrowed until the window
+    fits the screen's height (a 1366 x 768 laptop gets the whole table and the turn log).
+
     Without a display the constructor raises :class:`~billiards_env.render.window.HeadlessDisplayError` unless
     ``allow_headless`` (default: the ``BILLIARDS_ALLOW_HEADLESS`` environment variable) is true.
     """
 
-    def __init__(self, env_id: str = "BilliardsOneBall-v0", seed: int | None = None, width: int = 800,
+    def __init__(self, env_id: str = "BilliardsOneBall-v0", seed: int | None = None, width: int | None = None,
                  speedup: float = 1.0, realtime: bool = True, allow_headless: bool | None = None,
                  opponent: str | None = None, spin: bool = False, breaker: str = "alternate",
                  **env_kwargs: Any) -> None:
@@ -92,7 +97,7 @@ class PlayApp:
         import pygame
 
         import billiards_env  # noqa: F401  (registers the ids)
-        from billiards_env.render.window import require_display
+        from billiards_env.render.window import fitted_width, require_display, screen_height
 
         if opponent is not None and opponent not in OPPONENTS:
             raise ValueError(f"opponent: unknown {opponent!r}; use one of {', '.join(OPPONENTS)}")
@@ -107,10 +112,20 @@ class PlayApp:
         self.pg = pygame
         self.env_id = env_id
         try:
-            self.env = gym.make(env_id, render_mode="human", render_width=width, render_speedup=speedup,
-                                **env_kwargs)
+            self.env = gym.make(env_id, render_mode="human", render_width=width or DEFAULT_WIDTH,
+                                render_speedup=speedup, **env_kwargs)
             self.core = self.env.unwrapped
             self.is_game = hasattr(self.core.task, "game_state")
+            screen = screen_height() if width is None else None
+            for _ in range(3):  # the default width, narrowed until the window fits the screen's height
+                w, h = self.core.renderer.size  # (the image's height rounds: a second pass settles it)
+                fit = fitted_width(w, h, self._panel_height(), screen)
+                if fit >= w:
+                    break
+                self.env.close()
+                self.env = gym.make(env_id, render_mode="human", render_width=fit, render_speedup=speedup,
+                                    **env_kwargs)
+                self.core = self.env.unwrapped
             if opponent is not None and not self.is_game:
                 from billiards_env.games import GAMES
 
@@ -141,7 +156,7 @@ class PlayApp:
         self.realtime = realtime
         w, h = self.renderer.size
         self.table_size = (w, h)
-        self.panel_height = PANEL_HEIGHT + (LOG_LINES * LOG_LINE + 8 if self.is_game else 0)
+        self.panel_height = self._panel_height()
         pygame.font.init()
         self.screen = pygame.display.set_mode((w, h + self.panel_height))
         pygame.display.set_caption(f"billiards-play: {env_id}")
@@ -605,6 +620,10 @@ class PlayApp:
         return {"shots": self.shots, "opponent_shots": self.opponent_shots, "return": self.total, "done": self.done,
                 "is_success": self.success, "frames_shown": self.frames_shown}
 
+    def _panel_height(self) -> int:
+        """The panel's height below the table (px): the status lines, and the turn log in a game."""
+        return PANEL_HEIGHT + (LOG_LINES * LOG_LINE + 8 if self.is_game else 0)
+
     def close(self) -> None:
         self.env.close()
         self.pg.display.quit()
@@ -755,7 +774,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--spin", action="store_true",
                    help="the spin model with tip offsets (friction='spin', spin_action=True): draw, follow, english")
     p.add_argument("--seed", type=int, default=None, help="seed of the first episode (default: random)")
-    p.add_argument("--width", type=int, default=1000, help="window width in pixels")
+    p.add_argument("--width", type=int, default=None,
+                   help=f"window width in pixels (default: {DEFAULT_WIDTH}, narrower if the window would not fit "
+                        "the screen's height)")
     p.add_argument("--speedup", type=float, default=2.0,
                    help="animation playback speed (simulated seconds per second; 1 = real time)")
     p.add_argument("--config", default=None, help="a YAML file of env config keys layered over the scene's")

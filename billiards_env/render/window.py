@@ -121,6 +121,36 @@ def require_display(what: str, instead: str, allow_headless: bool | None = None,
         f"session, DISPLAY=:0, or a virtual one: xvfb-run); {hint}.")
 
 
+#: Room a window leaves on the screen's height for a title bar and a task bar (px).
+SCREEN_MARGIN = 80
+#: The narrowest window :func:`fitted_width` gives (px).
+MIN_FIT_WIDTH = 320
+
+
+def screen_height() -> int | None:
+    """The height of the (first) desktop in pixels, or None when no display tells it."""
+    try:
+        if not pygame.display.get_init():
+            pygame.display.init()
+        sizes = pygame.display.get_desktop_sizes()
+    except pygame.error:
+        return None
+    return int(sizes[0][1]) if sizes and sizes[0][1] > 0 else None
+
+
+def fitted_width(width: int, table_height: int, panel_height: int, screen: int | None) -> int:
+    """The widest window up to ``width`` that fits a screen ``screen`` px high (less :data:`SCREEN_MARGIN`): the
+    table image is ``table_height`` px high at ``width`` and scales with the width; the panel below it
+    (``panel_height``) does not. ``width`` when the screen's height is unknown or the window fits; at least
+    :data:`MIN_FIT_WIDTH`."""
+    if screen is None:
+        return width
+    room = screen - SCREEN_MARGIN - panel_height
+    if table_height <= room:
+        return width
+    return max(MIN_FIT_WIDTH, min(width, int(width * room / table_height)))
+
+
 class HumanWindow:
     """A pygame window that shows rendered frames at a steady rate and notices when the user closes it.
 
