@@ -75,11 +75,10 @@ def draw_ring(surface: pygame.Surface, centre: np.ndarray, radius_px: float, wid
     aa_ring(surface, colour, centre, radius_px, width_px, alpha=235)
 
 
-def draw_pocket_labels(surface: pygame.Surface, pockets_px: np.ndarray, outward: np.ndarray, size: int) -> None:
-    """Pocket numbers 1..n (the order of the table's pockets and of keys 1-6 in billiards-play) on the rail,
-    ``outward`` (n, 2) pixel offsets from each pocket's centre."""
-    for k, (p, o) in enumerate(zip(pockets_px, outward)):
-        pos = p + o
+def draw_pocket_labels(surface: pygame.Surface, centres_px: np.ndarray, size: int) -> None:
+    """Pocket numbers 1..n (the order of the table's pockets and of keys 1-6 in billiards-play) at ``centres_px``
+    (n, 2), the label discs' centres."""
+    for k, pos in enumerate(centres_px):
         aa_disc(surface, (12, 12, 12), pos, 0.62 * size)
         text(surface, str(k + 1), size, LABEL, (pos[0], pos[1] + 1), anchor="centre")
 

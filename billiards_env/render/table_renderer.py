@@ -310,18 +310,31 @@ class TableRenderer:
                 draw_ring(frame, self.to_pixels_float(pos[k])[0], 1.5 * r, max(1.5, 0.2 * r))
         if hud.get("call_pocket"):
             pockets = np.asarray(self.table.pocket_xy, dtype=float)
-            centre = np.array([self.length / 2.0, self.width / 2.0])
-            away = pockets - centre
-            away = np.sign(away) * (np.abs(away) > 1e-9)  # corners diagonally, side pockets straight out
-            away /= np.maximum(np.linalg.norm(away, axis=1), 1e-12)[:, None]
-            size = max(10, int(round(0.42 * BORDER * self.pixels_per_metre)))
-            reach = np.asarray(self.table.pocket_radius) * 1.32 * self.pixels_per_metre + 0.62 * size + 1.0
-            offset = away * reach[:, None] * np.array([1.0, -1.0])
             called = hud.get("called_pocket")
             if called is not None and 0 <= int(called) < len(pockets):
                 r = float(self.table.pocket_radius[int(called)]) * self.pixels_per_metre
                 draw_ring(frame, self.to_pixels_float(pockets[int(called)])[0], 1.25 * r, max(2.0, 0.15 * r))
-            draw_pocket_labels(frame, self.to_pixels_float(pockets), offset, size)
+            centres, size = self.pocket_label_centres()
+            draw_pocket_labels(frame, centres, size)
+
+    def pocket_label_centres(self) -> tuple[np.ndarray, int]:
+        """Where the pocket numbers go, ``(centres (n, 2) px, label size px)``: on the rail beside each pocket,
+        out of its mouth (corners diagonally outwards; side pockets along the rail, whose far side is the image's
+        edge), and inside the table image."""
+        pockets = np.asarray(self.table.pocket_xy, dtype=float)
+        centre = np.array([self.length / 2.0, self.width / 2.0])
+        away = pockets - centre
+        away = np.sign(away) * (np.abs(away) > 1e-9)  # corners diagonally
+        side = away[:, 0] == 0.0
+        away[side] = (1.0, 0.0)  # side pockets: along the rail
+        away /= np.maximum(np.linalg.norm(away, axis=1), 1e-12)[:, None]
+        size = max(10, int(round(0.42 * BORDER * self.pixels_per_metre)))
+        reach = np.asarray(self.table.pocket_radius) * 1.32 * self.pixels_per_metre + 0.62 * size + 1.0
+        centres = self.to_pixels_float(pockets) + away * reach[:, None] * np.array([1.0, -1.0])
+        r = 0.62 * size + 1.0
+        centres[:, 0] = np.clip(centres[:, 0], r, self.width_px - r)
+        centres[:, 1] = np.clip(centres[:, 1], r, self.table_height_px - r)
+        return centres, size
 
     def _blit_shadow(self, frame: pygame.Surface, centre: np.ndarray, radius_px: float) -> None:
         key = radius_key(radius_px)
