@@ -298,8 +298,9 @@ class GameRecord:
     seed and actions) play ``steps`` agent steps of uniform random actions, every shot's start state (the agent's,
     the opponent's, breaks) and every geometric decision's inputs recorded. :meth:`replay` then runs the shots
     through the exact kernel alone and the decisions through ``geometric_choice_cached`` alone (as the kernel's
-    opponent decides: one table's window cache carried from decision to decision), each in one compiled loop, and adds up their CPU time (call it between the slices of :func:`vector_rate`, so that both run
-    under the same load)."""
+    opponent decides: one table's window cache carried from decision to decision), each in one compiled loop, and
+    adds up their CPU time (call it between the slices of :func:`vector_rate`, so that both run under the same
+    load)."""
 
     def __init__(self, env_id: str, steps: int, seed: int = 0) -> None:
         import gymnasium as gym
