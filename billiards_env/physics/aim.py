@@ -37,7 +37,7 @@ from .collide import resolve_ball_ball
 from .motion import speed_after_distance, stop_distance
 from .roots import ray_circle_below
 from .plain import plain
-from .walls import normal_at, on_seg, ray_line_hit, ray_tip_below, ray_walls_hit
+from .walls import GRAZE, normal_at, on_seg, ray_line_hit, ray_tip_below, ray_walls_hit
 
 if TYPE_CHECKING:
     from .model import Physics
@@ -375,14 +375,20 @@ def _window_sample_clear(ox: float, oy: float, a: float, cx: float, cy: float, p
         return False
     n_s = segs.shape[0]
     for k in range(n_s):
-        if walls != -1 and not (walls >> k) & 1:
-            continue
+        if walls != -1:
+            if walls >> k == 0:  # no wall left
+                return True
+            if not (walls >> k) & 1:
+                continue
         d = ray_line_hit(ox, oy, ux, uy, radius, segs[k])
         if d + 1e-9 < t_in and on_seg(ox + d * ux, oy + d * uy, segs[k]):
             return False
     for k in range(tips.shape[0]):
-        if walls != -1 and not (walls >> (n_s + k)) & 1:
-            continue
+        if walls != -1:
+            if walls >> (n_s + k) == 0:
+                return True
+            if not (walls >> (n_s + k)) & 1:
+                continue
         if ray_tip_below(ox, oy, ux, uy, radius, tips[k], t_in) + 1e-9 < t_in:
             return False
     return True
@@ -425,9 +431,10 @@ def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: flo
     line: also where the direction crosses an axis, as the cushion ahead changes). Only the first sample after
     each such direction, and the first, second and last samples (the tangent directions, decided by round-off), are
     ray-tested (:func:`_window_sample_ok`); every other sample has the test of the one before. The result is
-    bit-identical to ray-testing every sample. On a jaw table (``segs``, ``tips``: its walls) every sample is
-    ray-tested against the rails, jaw faces and tips (:func:`_window_jaws`): the window is the run of directions
-    that pass the mouth. The table model is chosen once per window, so a capture table's loops carry no walls.
+    bit-identical to ray-testing every sample. On a jaw table (``segs``, ``tips``: its walls) the window is the run
+    of directions that pass the mouth, and the samples to ray-test against the rails, jaw faces and tips are chosen
+    the same way, next to the directions where a wall's verdict may change (:func:`_window_jaws`). The table model
+    is chosen once per window, so a capture table's loops carry no walls.
     """
     if segs.shape[0] > 0 or tips.shape[0] > 0:
         return _window_jaws(ox, oy, radius, cx, cy, pr, samples, segs, tips)
@@ -492,8 +499,10 @@ def _window_capture(ox: float, oy: float, radius: float, cx: float, cy: float, p
 @njit(cache=True)
 def _window_jaws(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, samples: int,
                  segs: np.ndarray, tips: np.ndarray) -> tuple:
-    """:func:`window_of` on a jaw table: every sample ray-tested (:func:`_window_sample_clear`) against the walls
-    that may lie in the window's way (:func:`_window_walls`, worked out once for all the samples)."""
+    """:func:`window_of` on a jaw table: the samples next to a direction where a wall's verdict may change
+    (:func:`_jaw_crossings`), and the first, second and last, are ray-tested (:func:`_window_sample_clear`) against
+    the walls that may lie in the window's way (:func:`_window_walls`, worked out once for all the samples); every
+    other sample has the test of the one before."""
     vx = cx - ox
     vy = cy - oy
     dist = math.hypot(vx, vy)
@@ -504,14 +513,149 @@ def _window_jaws(ox: float, oy: float, radius: float, cx: float, cy: float, pr: 
     div = samples - 1
     step = (half - (-half)) / div
     walls = _window_walls(ox, oy, radius, cx, cy, pr, segs, tips)
+    if samples > _MASK_SAMPLES or not step > 0.0 or dist - pr < JAW_EXACT_NEAR:
+        mask = -1
+    else:
+        mask = _jaw_crossings(1 | 2 | (1 << div), ox, oy, radius, cx, cy, pr, segs, tips, walls, theta_c, half,
+                              step, div)
     best_len = plain(0)  # (plain: _window_sample and _window_result compiled for int64 only)
     best_start = plain(0)
     run_start = plain(-1)
+    flag = False
     for k in range(div + 2):
-        flag = k <= div and _window_sample_clear(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr,
-                                                 radius, segs, tips, walls)
+        if k > div:
+            flag = False
+        elif mask == -1 or (mask >> k) & 1:
+            flag = _window_sample_clear(ox, oy, _window_sample(k, div, theta_c, half, step), cx, cy, pr, radius,
+                                        segs, tips, walls)
         run_start, best_start, best_len = _track_run(flag, k, run_start, best_start, best_len)
     return _window_result(best_start, best_len, div, theta_c, half, step, ox, oy, cx, cy, pr, dist)
+
+
+#: A ball nearer than this (m) to a pocket's circle has every sample of its jaw window ray-tested: its circle entry
+#: is then within the 1e-9 m slack of the ray test, where :func:`_jaw_crossings`' directions do not hold.
+JAW_EXACT_NEAR = 1e-6
+#: How far (m) a point may lie on the wrong side of a circle or beyond a segment's end and still be taken as a
+#: direction where a wall's verdict may change (:func:`_jaw_crossings`): far above round-off and the ends' slack.
+JAW_TOL = 1e-6
+
+
+@njit(cache=True)
+def _jaw_crossings(mask: int, ox: float, oy: float, radius: float, cx: float, cy: float, pr: float,
+                   segs: np.ndarray, tips: np.ndarray, walls: int, theta_c: float, half: float, step: float,
+                   div: int) -> int:
+    """``mask`` with the samples of a jaw window marked (:func:`_mark_crossing`) next to every direction where a
+    wall of ``walls`` (:func:`_window_walls`' bits) may change its verdict on a sample (:func:`_window_sample_clear`).
+
+    A wall fails a direction when the ball meets it before it enters the circle. Between the directions below that
+    verdict cannot change, as the contact point moves continuously along the wall and cannot pass the circle or
+    the wall's end unseen:
+
+    - a segment (the line ``radius`` off it, where the ball's centre touches it): the directions parallel to it
+      (where the ray starts or stops approaching it), to its ends when they lie outside the circle, and to where
+      it crosses the circle within its ends; a ball already within ``radius`` of its line meets it at once, so only
+      the parallel directions count;
+    - a tip (the circle ``radius + tip radius`` round it): the directions where the ray starts approaching it, its
+      tangents when they touch it outside the pocket's circle, and where the two circles cross.
+
+    Directions outside the window (give or take two samples) mark nothing and are passed over before their angle
+    is worked out (two cross products against the window's widened edges)."""
+    reach = half + 2.0 * step
+    wide = reach >= 0.5 * math.pi - 1e-3  # (the edge test needs a range narrower than a half turn)
+    lo_x = math.cos(theta_c - reach)
+    lo_y = math.sin(theta_c - reach)
+    hi_x = math.cos(theta_c + reach)
+    hi_y = math.sin(theta_c + reach)
+    n_s = segs.shape[0]
+    for k in range(n_s):
+        if walls != -1 and not (walls >> k) & 1:
+            continue
+        ax = segs[k, 0]
+        ay = segs[k, 1]
+        bx = segs[k, 2]
+        by = segs[k, 3]
+        nx = segs[k, 4]
+        ny = segs[k, 5]
+        gap = (ox - ax) * nx + (oy - ay) * ny - radius
+        if gap < -radius:  # behind the line: the segment never meets the ball
+            continue
+        for sgn in (-1.0, 1.0):
+            mask = _mark_toward(mask, ox - sgn * ny, oy + sgn * nx, ox, oy, lo_x, lo_y, hi_x, hi_y, wide, theta_c,
+                                half, step, div)
+        if gap <= 0.0:
+            continue
+        for e in range(2):
+            ex = (ax if e == 0 else bx) + radius * nx
+            ey = (ay if e == 0 else by) + radius * ny
+            if (ex - cx) ** 2 + (ey - cy) ** 2 >= (pr - JAW_TOL) ** 2:
+                mask = _mark_toward(mask, ex, ey, ox, oy, lo_x, lo_y, hi_x, hi_y, wide, theta_c, half, step, div)
+        off = (cx - ax) * nx + (cy - ay) * ny - radius  # the circle's centre from the contact line
+        if abs(off) > pr + JAW_TOL:
+            continue
+        chord = math.sqrt(max(pr * pr - off * off, 0.0))
+        length = math.sqrt((bx - ax) ** 2 + (by - ay) ** 2)
+        for sgn in (-1.0, 1.0):
+            qx = cx - off * nx - sgn * chord * ny
+            qy = cy - off * ny + sgn * chord * nx
+            along = ((qx - ax) * (bx - ax) + (qy - ay) * (by - ay)) / length
+            if -JAW_TOL <= along <= length + JAW_TOL:
+                mask = _mark_toward(mask, qx, qy, ox, oy, lo_x, lo_y, hi_x, hi_y, wide, theta_c, half, step, div)
+    for k in range(tips.shape[0]):
+        if walls != -1 and not (walls >> (n_s + k)) & 1:
+            continue
+        tx = tips[k, 0]
+        ty = tips[k, 1]
+        rho = radius + tips[k, 2]
+        dx = ox - tx
+        dy = oy - ty
+        d = math.sqrt(dx * dx + dy * dy)
+        if d == 0.0:  # (the ray never approaches a tip it is centred on)
+            continue
+        if d < rho:  # already touching: met at once while approaching; the switch is exactly where it starts
+            g = math.acos(min(1.0, max(-1.0, -GRAZE * rho / d)))
+            phi = math.atan2(dy, dx)
+            mask = _mark_crossing(mask, phi + g, theta_c, half, step, div)
+            mask = _mark_crossing(mask, phi - g, theta_c, half, step, div)
+            continue
+        for sgn in (-1.0, 1.0):  # (starts approaching: perpendicular to the tip, to far below a sample)
+            mask = _mark_toward(mask, ox - sgn * dy, oy + sgn * dx, ox, oy, lo_x, lo_y, hi_x, hi_y, wide, theta_c,
+                                half, step, div)
+        # The tangent points: rho / d of the way along (o - tip) turned by the tangent angle.
+        along = rho * rho / d
+        across = rho * math.sqrt(max(d * d - rho * rho, 0.0)) / d
+        ux = dx / d
+        uy = dy / d
+        for sgn in (-1.0, 1.0):
+            qx = tx + along * ux - sgn * across * uy
+            qy = ty + along * uy + sgn * across * ux
+            if (qx - cx) ** 2 + (qy - cy) ** 2 >= (pr - JAW_TOL) ** 2:
+                mask = _mark_toward(mask, qx, qy, ox, oy, lo_x, lo_y, hi_x, hi_y, wide, theta_c, half, step, div)
+        # Where the tip's circle crosses the pocket's.
+        ex = cx - tx
+        ey = cy - ty
+        e = math.sqrt(ex * ex + ey * ey)
+        if e == 0.0 or e > rho + pr + JAW_TOL or e < abs(rho - pr) - JAW_TOL:
+            continue
+        a = (rho * rho - pr * pr + e * e) / (2.0 * e)
+        h = math.sqrt(max(rho * rho - a * a, 0.0))
+        for sgn in (-1.0, 1.0):
+            qx = tx + (a * ex - sgn * h * ey) / e
+            qy = ty + (a * ey + sgn * h * ex) / e
+            mask = _mark_toward(mask, qx, qy, ox, oy, lo_x, lo_y, hi_x, hi_y, wide, theta_c, half, step, div)
+    return mask
+
+
+@njit(cache=True)
+def _mark_toward(mask: int, qx: float, qy: float, ox: float, oy: float, lo_x: float, lo_y: float, hi_x: float,
+                 hi_y: float, wide: bool, theta_c: float, half: float, step: float, div: int) -> int:
+    """``mask`` with the samples next to the direction from ``(ox, oy)`` to ``(qx, qy)`` marked
+    (:func:`_mark_crossing`), when that direction lies between the edges ``lo`` and ``hi`` (unit vectors; always
+    when ``wide``)."""
+    vx = qx - ox
+    vy = qy - oy
+    if not wide and (lo_x * vy - lo_y * vx < 0.0 or vx * hi_y - vy * hi_x < 0.0):
+        return mask
+    return _mark_crossing(mask, math.atan2(vy, vx), theta_c, half, step, div)
 
 
 @njit(cache=True)

@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 import pytest
+from numba import njit
 
 from billiards_env.physics import Balls, Physics, Simulator, Table, aim
 from billiards_env.physics.codes import EV_COLLISION, EV_CUSHION
@@ -386,6 +387,103 @@ def test_jaw_window_with_culled_walls_is_the_window_of_every_wall(preset):
             assert got[0] == pytest.approx(centre, abs=1e-12)
             assert got[1] == pytest.approx(0.5 * length * step, abs=1e-12)
     assert 0.3 * checked < found < checked
+
+
+@njit(cache=True)
+def _jaw_runs_every_sample(balls, radius, pocket_xy, pocket_r, samples, segs, tips):
+    """Compiled twin of :func:`_jaw_window_every_wall` for many balls: ``(N, K, 2)`` rows (start, length) of the
+    widest run of samples that enter each pocket's circle before the first wall ahead of all walls (length 0: no
+    window, -1: the ball is inside the circle). Every sample is ray-tested."""
+    out = np.zeros((balls.shape[0], pocket_r.shape[0], 2), np.int64)
+    for i in range(balls.shape[0]):
+        ox = balls[i, 0]
+        oy = balls[i, 1]
+        for p in range(pocket_r.shape[0]):
+            cx = pocket_xy[p, 0]
+            cy = pocket_xy[p, 1]
+            pr = pocket_r[p]
+            dist = math.hypot(cx - ox, cy - oy)
+            if dist <= pr:
+                out[i, p, 1] = -1
+                continue
+            half = math.asin(min(1.0, pr / dist))
+            theta_c = math.atan2(cy - oy, cx - ox)
+            div = samples - 1
+            best_len = 0
+            best_start = 0
+            run_start = -1
+            for k in range(samples + 1):
+                flag = False
+                if k < samples:
+                    a = theta_c + half if k == div else theta_c + (k * (2.0 * half / div) - half)
+                    ux = math.cos(a)
+                    uy = math.sin(a)
+                    t_in = aim.ray_circle_entry(ox, oy, ux, uy, cx, cy, pr)
+                    flag = math.isfinite(t_in) and t_in <= aim.cushion_ahead(ox, oy, ux, uy, 0.0, 0.0, radius, segs,
+                                                                             tips)[0] + 1e-9
+                if flag and run_start < 0:
+                    run_start = k
+                elif not flag and run_start >= 0:
+                    if k - run_start > best_len:
+                        best_len = k - run_start
+                        best_start = run_start
+                    run_start = -1
+            out[i, p, 0] = best_start
+            out[i, p, 1] = best_len
+    return out
+
+
+@pytest.mark.parametrize("preset", ["wpa", "snooker_match", "pooltool"])
+def test_jaw_window_tests_only_where_a_wall_may_change_its_verdict(preset):
+    # window_of on a jaw table ray-tests only the samples next to a direction where a wall's verdict may change (the
+    # contact line's ends and crossings with the pocket's circle, a tip's tangents and crossings, where a ray starts
+    # approaching a wall) and the first, second and last; every other sample copies the one before. The widest run
+    # must be the one of testing every sample against the first wall of all, on thousands of balls: anywhere, next
+    # to a mouth, hugging a rail or just off a cushion line, for three ball sizes and three sample counts.
+    from billiards_env.physics.scene import parse_table
+
+    table = parse_table({"preset": preset})
+    segs, tips = (np.ascontiguousarray(a, dtype=np.float64) for a in table.walls())
+    pxy = np.ascontiguousarray(table.pocket_xy, dtype=np.float64)
+    prs = np.ascontiguousarray(table.pocket_radius, dtype=np.float64)
+    rng = np.random.default_rng(11)
+    n = 1500
+    for radius in (0.02625, R, 0.05):
+        spread = rng.uniform([-0.01, -0.01], [table.length + 0.01, table.width + 0.01], (n, 2))
+        mouths = pxy[rng.integers(len(prs), size=n)] + rng.normal(0.0, 0.08, (n, 2))
+        rails = rng.uniform([0.0, 0.0], [table.length, table.width], (n, 2))
+        side = rng.integers(4, size=n)
+        rails[side == 0, 0] = radius + rng.exponential(1e-3, (side == 0).sum())
+        rails[side == 1, 0] = table.length - radius
+        rails[side == 2, 1] = radius + rng.normal(0.0, 1e-3, (side == 2).sum())
+        rails[side == 3, 1] = table.width - radius - rng.exponential(1e-3, (side == 3).sum())
+        balls = np.concatenate([spread, mouths, rails])
+        for samples in (aim.WINDOW_SAMPLES, 21, 62):
+            runs = _jaw_runs_every_sample(balls, radius, pxy, prs, samples, segs, tips)
+            found = 0
+            for i in range(balls.shape[0]):
+                ox, oy = balls[i]
+                for p in range(len(prs)):
+                    got = aim.window_of(ox, oy, radius, pxy[p, 0], pxy[p, 1], prs[p], table.length, table.width,
+                                        samples, segs, tips)
+                    start, length = runs[i, p]
+                    if length == 0:
+                        assert not got[3], (preset, radius, samples, i, p)
+                        continue
+                    found += 1
+                    if length < 0:
+                        assert got[1] == math.pi / 2
+                        continue
+                    dist = math.hypot(pxy[p, 0] - ox, pxy[p, 1] - oy)
+                    half = math.asin(min(1.0, prs[p] / dist))
+                    step = 2.0 * half / (samples - 1)
+                    centre = math.atan2(pxy[p, 1] - oy, pxy[p, 0] - ox) + (start + (length - 1) / 2) * step - half
+                    assert got[3], (preset, radius, samples, i, p)
+                    assert got[0] == pytest.approx(centre, abs=1e-12), (preset, radius, samples, i, p)
+                    assert got[1] == pytest.approx(0.5 * length * step, abs=1e-12), (preset, radius, samples, i, p)
+            # Not vacuous: many windows, and many of them cut short by a wall (a run shorter than the samples).
+            assert 0.15 * runs.shape[0] * len(prs) < found < runs.shape[0] * len(prs)
+            assert ((runs[:, :, 1] > 0) & (runs[:, :, 1] < samples)).sum() > 0.05 * runs.shape[0] * len(prs)
 
 
 @pytest.mark.parametrize("preset", ["wpa", "snooker_match"])
