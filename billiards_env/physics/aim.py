@@ -633,14 +633,14 @@ def _jaw_crossings(mask: int, ox: float, oy: float, radius: float, cx: float, cy
         # Where the tip's circle crosses the pocket's.
         ex = cx - tx
         ey = cy - ty
-        e = math.sqrt(ex * ex + ey * ey)
-        if e == 0.0 or e > rho + pr + JAW_TOL or e < abs(rho - pr) - JAW_TOL:
+        sep = math.sqrt(ex * ex + ey * ey)
+        if sep == 0.0 or sep > rho + pr + JAW_TOL or sep < abs(rho - pr) - JAW_TOL:
             continue
-        a = (rho * rho - pr * pr + e * e) / (2.0 * e)
+        a = (rho * rho - pr * pr + sep * sep) / (2.0 * sep)
         h = math.sqrt(max(rho * rho - a * a, 0.0))
         for sgn in (-1.0, 1.0):
-            qx = tx + (a * ex - sgn * h * ey) / e
-            qy = ty + (a * ey + sgn * h * ex) / e
+            qx = tx + (a * ex - sgn * h * ey) / sep
+            qy = ty + (a * ey + sgn * h * ex) / sep
             mask = _mark_toward(mask, qx, qy, ox, oy, lo_x, lo_y, hi_x, hi_y, wide, theta_c, half, step, div)
     return mask
 
