@@ -1,4 +1,4 @@
-"""Before/after env rates: this tree's envs against another commit's, in interleaved rounds.
+"""Before/after env rates: this tree's envs (and pocket windows) against another commit's, in interleaved rounds.
 
     python -m benchmarks.env_ab --base 22b30d2            # the commit before the env-layer redesign
     python -m benchmarks.env_ab --base main --seconds 1   # quicker
@@ -7,7 +7,9 @@ The base commit is checked out (``git worktree add --detach``) into a temporary 
 process per tree (alternating which goes first) that times, for every id both trees have, ``env.step`` with random
 actions on the single env (seeded resets at episode ends), a seeded ``reset`` + ``step`` episode on the one-ball
 env, and the native vector env (256 tables, one thread) of the pot scenes and of the games (against their default
-geometric opponent; a step is an agent step, its opponent's turns included). The table gives, per measurement, each tree's best
+geometric opponent; a step is an agent step, its opponent's turns included), and the pocket windows the players
+aim through (``physics.aim.window_of`` from random balls into every pocket, on the WPA jaw table and on capture
+circles of its size). The table gives, per measurement, each tree's best
 rate over the rounds (the run least disturbed by other work on a shared machine) and their ratio (after / before).
 Not part of the default benchmark run.
 """
@@ -71,6 +73,7 @@ def child(seconds: float) -> dict[str, float]:
         return 1
 
     out["episode BilliardsOneBall-v0 (seeded reset + step)"] = _rate(episode, seconds)
+    out.update(_window_rates(seconds))
     for env_id in POT + GAMES:
         vec = gym.make_vec(env_id, 256, vectorization_mode="vector_entry_point", threads=1)
         vec.reset(seed=0)
@@ -82,6 +85,40 @@ def child(seconds: float) -> dict[str, float]:
 
         out[f"vector 256 {env_id} (1 thread)"] = _rate(vstep, seconds)
         vec.close()
+    return out
+
+
+def _window_rates(seconds: float) -> dict[str, float]:
+    """Pocket windows per second (``physics.aim.window_of``, in one compiled loop) from 500 seeded random balls into
+    the 6 pockets of the WPA jaw table, and into the same table's capture circles (no walls)."""
+    import numpy as np
+    from numba import njit
+
+    from billiards_env.physics import aim
+    from billiards_env.physics.scene import parse_table
+
+    @njit
+    def windows(balls, r, pxy, prs, length, width, segs, tips):  # type: ignore[no-untyped-def]
+        total = 0.0
+        for i in range(balls.shape[0]):
+            for p in range(prs.shape[0]):
+                total += aim.window_of(balls[i, 0], balls[i, 1], r, pxy[p, 0], pxy[p, 1], prs[p], length, width,
+                                       aim.WINDOW_SAMPLES, segs, tips)[1]
+        return total
+
+    table = parse_table({"preset": "wpa"})
+    segs, tips = (np.ascontiguousarray(a, dtype=np.float64) for a in table.walls())
+    pxy = np.ascontiguousarray(table.pocket_xy, dtype=np.float64)
+    prs = np.ascontiguousarray(table.pocket_radius, dtype=np.float64)
+    r = 0.028575
+    balls = np.random.default_rng(0).uniform([r, r], [table.length - r, table.width - r], (500, 2))
+    out = {}
+    for name, walls in (("jaw table", (segs, tips)), ("capture circles", (np.zeros((0, 6)), np.zeros((0, 3))))):
+        def run(walls: tuple = walls) -> int:
+            windows(balls, r, pxy, prs, table.length, table.width, *walls)
+            return balls.shape[0] * prs.shape[0]
+
+        out[f"pocket windows ({name}, 500 balls x 6 pockets)"] = _rate(run, seconds)
     return out
 
 
