@@ -98,7 +98,7 @@ def _window_rates(seconds: float) -> dict[str, float]:
     from billiards_env.physics.scene import parse_table
 
     @njit
-    def windows(balls, r, pxy, prs, length, width, segs, tips):  # type: ignore[no-untyped-def]
+    def windows(balls, r, pxy, prs, length, width, segs, tips):  # (compiled: numba types the arguments)
         total = 0.0
         for i in range(balls.shape[0]):
             for p in range(prs.shape[0]):
