@@ -411,23 +411,18 @@ def _jaw_runs_every_sample(balls, radius, pocket_xy, pocket_r, samples, segs, ti
             div = samples - 1
             best_len = 0
             best_start = 0
-            run_start = -1
-            for k in range(samples + 1):
-                flag = False
-                if k < samples:
-                    a = theta_c + half if k == div else theta_c + (k * (2.0 * half / div) - half)
-                    ux = math.cos(a)
-                    uy = math.sin(a)
-                    t_in = aim.ray_circle_entry(ox, oy, ux, uy, cx, cy, pr)
-                    flag = math.isfinite(t_in) and t_in <= aim.cushion_ahead(ox, oy, ux, uy, 0.0, 0.0, radius, segs,
-                                                                             tips)[0] + 1e-9
-                if flag and run_start < 0:
-                    run_start = k
-                elif not flag and run_start >= 0:
-                    if k - run_start > best_len:
-                        best_len = k - run_start
-                        best_start = run_start
-                    run_start = -1
+            current = 0  # the length of the run of feasible samples ending at k (its own scan: a streak count)
+            for k in range(samples):
+                a = theta_c + half if k == div else theta_c + (k * (2.0 * half / div) - half)
+                ux = math.cos(a)
+                uy = math.sin(a)
+                t_in = aim.ray_circle_entry(ox, oy, ux, uy, cx, cy, pr)
+                ok = math.isfinite(t_in) and t_in <= aim.cushion_ahead(ox, oy, ux, uy, 0.0, 0.0, radius, segs,
+                                                                       tips)[0] + 1e-9
+                current = current + 1 if ok else 0
+                if current > best_len:  # (strictly: the first of equal runs)
+                    best_len = current
+                    best_start = k - current + 1
             out[i, p, 0] = best_start
             out[i, p, 1] = best_len
     return out
