@@ -1,6 +1,6 @@
 """One line on stderr when this process starts compiling the package's kernels because numba's cache is cold.
 
-The first env (or first shot) on a fresh install compiles the numba kernels for this machine (15-40 s; cached
+The first env (or first shot) on a fresh install compiles the numba kernels for this machine (30-60 s; cached
 after, so once per install and source change); without a word the program seems to hang. Importing this module
 (``billiards_env.physics`` does, before any kernel) registers a numba compile listener: at the first compilation of
 a cached ``billiards_env`` kernel (numba compiles only on a cache miss; a warm cache loads and fires no event) it
@@ -16,7 +16,7 @@ import sys
 from numba.core import event
 
 #: What the user reads.
-NOTICE = ("billiards_env: compiling the numba kernels for this machine (once: 15-40 s for a first env, cached for "
+NOTICE = ("billiards_env: compiling the numba kernels for this machine (once: 30-60 s for a first env, cached for "
           "next time); `python -m billiards_env.warmup` does it ahead of time")
 _state = {"installed": False, "said": False}
 
