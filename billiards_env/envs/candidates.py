@@ -210,9 +210,13 @@ def kick_of(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarra
     for r in range(rows.shape[0]):
         d, target, a0, sp = rows[r, 0], int(rows[r, 1]), rows[r, 2], rows[r, 3]
         for f in range(nf):
-            p2[:] = pos
+            # Element by element: an array-to-array assignment compiles numba's shape check and its message
+            # formatting (seconds of a cold start).
+            for b in range(nb):
+                p2[b, 0] = pos[b, 0]
+                p2[b, 1] = pos[b, 1]
+                o2[b] = on[b]
             v2[:] = 0.0
-            o2[:] = on
             a = a0 + _FAN[f]
             v2[0, 0] = sp * math.cos(a)
             v2[0, 1] = sp * math.sin(a)

@@ -118,7 +118,8 @@ def _position_map(grid: np.ndarray, rows: np.ndarray, pos: np.ndarray, on: np.nd
     for i in range(min(rows.shape[0], n_slots)):
         j = int(rows[i, COL_TARGET])
         nxt = next_rows(targets, numbers, on, j)
-        on2[:] = on
+        for b in range(on.shape[0]):  # (element by element: no shape check and its message compiled)
+            on2[b] = on[b]
         on2[j] = False
         for q in range(g):
             places[q, 0] = grid[i, q, 2]

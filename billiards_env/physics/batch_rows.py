@@ -65,11 +65,12 @@ def _append_log(k, res, log):
         grown_t = np.empty(cap)
         grown_s = np.empty(cap)
         grown_i = np.empty((3, cap), np.int64)
-        grown_t[:m] = ev_t[:m]
-        grown_s[:m] = ev_s[:m]
-        grown_i[0, :m] = ev_k[:m]
-        grown_i[1, :m] = ev_b[:m]
-        grown_i[2, :m] = ev_o[:m]
+        for e in range(m):  # (element by element: no shape check and its message compiled)
+            grown_t[e] = ev_t[e]
+            grown_s[e] = ev_s[e]
+            grown_i[0, e] = ev_k[e]
+            grown_i[1, e] = ev_b[e]
+            grown_i[2, e] = ev_o[e]
         ev_t, ev_k, ev_b, ev_o, ev_s = grown_t, grown_i[0], grown_i[1], grown_i[2], grown_s
     for e in range(ne):
         ev_t[m + e] = res.ev_time[e]
