@@ -381,7 +381,7 @@ def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg
                 if not spot_cue_row(pos[k], on[k], cfg["radius"], plain(0), cfg["head_x"], cfg["head_y"], cfg["width"]):
                     tout[k]["error"] = E_CUE_RESPOT
                     return
-            on_mask = 0
+            on_mask = plain(0)
             for j in range(1, pos.shape[1]):
                 if on[k, j]:
                     on_mask |= 1 << j

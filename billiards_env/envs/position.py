@@ -21,6 +21,7 @@ from numba import njit
 
 from billiards_env.physics.aim import ghost_point
 from billiards_env.physics.cue_rest import MAX_BOUNCES, cue_rest
+from billiards_env.physics.plain import plain
 from billiards_env.players.geometry import (COL_D_OBJ, COL_OBJ_ANGLE, COL_SPEED, COL_TARGET, MAX_CUT, places_ease,
                                             state_model)
 
@@ -65,7 +66,7 @@ def rest_grid(cx: float, cy: float, rows: np.ndarray, opos: np.ndarray, contact:
             for t in range(n_t):
                 x, y, pocket, pots = cue_rest(cx, cy, gx, gy, r[COL_OBJ_ANGLE], r[COL_D_OBJ], speed,
                                               tops[t] * max_tip, rc, mc, mo, length, width, e_cushion, e_ball,
-                                              pocket_xy, pocket_r, law, a, k, v_min, params, MAX_BOUNCES)
+                                              pocket_xy, pocket_r, law, a, k, v_min, params, plain(MAX_BOUNCES))
                 o = out[i, p * n_t + t]
                 o[0] = 1.0 if pots else 0.0
                 o[1] = pocket
@@ -125,7 +126,7 @@ def _position_map(grid: np.ndarray, rows: np.ndarray, pos: np.ndarray, on: np.nd
             places[q, 0] = grid[i, q, 2]
             places[q, 1] = grid[i, q, 3]
         if nxt.shape[0]:
-            ease = places_ease(places, pos, on2, radius, 0, nxt, pocket_xy, pocket_r, params, sigma, MAX_CUT)
+            ease = places_ease(places, pos, on2, radius, plain(0), nxt, pocket_xy, pocket_r, params, sigma, MAX_CUT)
         else:
             ease = np.ones(g)  # the pot clears the table
         for q in range(g):

@@ -11,6 +11,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 from numba import njit
+from numba.np.random.random_methods import random_interval
 
 from billiards_env.physics.layout import (DIAMOND_ORDER, RACK_ORDER, head_string_x, spot_cue_ball,
                                           spot_object_ball)
@@ -130,6 +131,21 @@ RACK_NINE, RACK_EIGHT = 1, 2
 
 
 @njit(cache=True)
+def permutation_of(g: np.random.Generator, n: int) -> np.ndarray:
+    """``g.permutation(n)`` with numpy's draws: Fisher-Yates from the last slot down, each swap partner drawn by
+    the bounded masked draw numpy's ``shuffle`` uses (``random_interval``). Written out rather than numba's
+    ``Generator.permutation``, whose generic n-dimensional shuffle costs seconds of compile for the same values."""
+    perm = np.arange(n)
+    for i in range(n - 1, 0, -1):
+        j = np.int64(random_interval(g.bit_generator, i))
+        if j != i:
+            t = perm[i]
+            perm[i] = perm[j]
+            perm[j] = t
+    return perm
+
+
+@njit(cache=True)
 def rack_rows(k: int, g: np.random.Generator, pos: np.ndarray, rack_slots: np.ndarray, mode: int) -> None:
     """Compiled twin of :meth:`PoolSession.order_rack` (with :meth:`NineBallSession.rack_order` for
     :data:`RACK_NINE`, :meth:`EightBallSession.rack_order` for :data:`RACK_EIGHT`) on table ``k`` of ``pos``: the
@@ -154,7 +170,7 @@ def rack_rows(k: int, g: np.random.Generator, pos: np.ndarray, rack_slots: np.nd
             if n != 8 and n != solid and n != stripe:
                 free[m] = n
                 m += 1
-    perm = g.permutation(free.shape[0])
+    perm = permutation_of(g, free.shape[0])
     m = 0
     for slot in range(n_slots):
         if number[slot] == 0:

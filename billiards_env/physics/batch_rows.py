@@ -19,6 +19,7 @@ from numba import njit, prange
 from .codes import EV_COLLISION, EV_CUSHION
 from .exact import simulate_exact
 from .exact_spin import simulate_exact_spin
+from .plain import plain
 
 
 @njit(cache=True)
@@ -90,7 +91,7 @@ def rows_linear(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, ma
     for k in range(pos.shape[0]):
         r = 0 if shared else k
         res = simulate_exact(pos[k], vel[k], ang[0], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                             max_events, False)
+                             max_events, plain(False))
         store_row(k, res, struck[k], out)
         if keep:
             log = _append_log(k, res, log)
@@ -104,7 +105,7 @@ def rows_linear_parallel(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, p
     for k in prange(pos.shape[0]):
         r = np.int64(0) if shared else np.int64(k)  # (a prange index may be unsigned: keep r an int64)
         res = simulate_exact(pos[k], vel[k], ang[0], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                             max_events, False)
+                             max_events, plain(False))
         store_row(np.int64(k), res, struck[k], out)
 
 
@@ -115,7 +116,7 @@ def rows_spin(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_
     for k in range(pos.shape[0]):
         r = 0 if shared else k
         res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                                  max_events, False)
+                                  max_events, plain(False))
         store_row(k, res, struck[k], out)
         if keep:
             log = _append_log(k, res, log)
@@ -129,5 +130,5 @@ def rows_spin_parallel(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, par
     for k in prange(pos.shape[0]):
         r = np.int64(0) if shared else np.int64(k)
         res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                                  max_events, False)
+                                  max_events, plain(False))
         store_row(np.int64(k), res, struck[k], out)

@@ -43,6 +43,7 @@ from .cushion_models import wall_hit
 from .spin_collide import wall_normal
 from .walls import has_walls, normal_at, path_wall_time, walls_of
 from .motion import launch_speed, speed_after_distance, stop_distance
+from .plain import plain
 from .spin_collide import ball_hit
 from .spin_motion import slip, spin_decay_rate, wz_after
 
@@ -82,7 +83,7 @@ def speed_spin_at(speed: float, w0: float, d: float, law: int, a: float, k: floa
     v1 = speed - sigma * k * tau
     v2 = v1 * v1 - 2.0 * a * (d - d_slide)
     if v2 <= v_min * v_min:
-        return 0.0, 0.0, False, d_slide + stop_distance(v1, ROLLING, a, 0.0, v_min)
+        return 0.0, 0.0, False, d_slide + stop_distance(v1, plain(ROLLING), a, 0.0, v_min)
     v = math.sqrt(v2)
     return v, v, True, d
 
@@ -102,7 +103,7 @@ def _walk(x: float, y: float, ux: float, uy: float, length: float, speed: float,
     s = speed
     left = length
     for _ in range(max_bounces + 1):
-        reach = left if fixed else stop_distance(s, ROLLING, a, 0.0, v_min)
+        reach = left if fixed else stop_distance(s, plain(ROLLING), a, 0.0, v_min)
         t_wall, cushion = cushion_ahead(x, y, ux, uy, table_l, table_w, radius, segs, tips)
         pocket, best = first_pocket_on_ray(x, y, ux, uy, t_wall + 1e-9, pocket_xy, pocket_r)
         if pocket >= 0 and best < reach:
@@ -127,7 +128,7 @@ def _walk(x: float, y: float, ux: float, uy: float, length: float, speed: float,
         if fixed:
             left -= t_wall
         else:
-            s = speed_after_distance(s, t_wall, ROLLING, a, 0.0) * f
+            s = speed_after_distance(s, t_wall, plain(ROLLING), a, 0.0) * f
         ux = vx / f
         uy = vy / f
     return x, y, ux, uy, fx, fy, -1
@@ -270,7 +271,7 @@ def lone_ball_rest(x: float, y: float, vx: float, vy: float, wx: float, wy: floa
             else:
                 nx_, ny_ = wall_normal(cushion)
                 d = r
-            wall_hit(vel, ang, 0, nx_, ny_, d, r, m, e_c, prm, scratch)
+            wall_hit(vel, ang, plain(0), nx_, ny_, d, r, m, e_c, prm, scratch)
             vx, vy = vel[0, 0], vel[0, 1]
             wx, wy, wz = ang[0, 0], ang[0, 1], ang[0, 2]
         elif su <= _SLIP_TOL or f_slide <= 0.0:
@@ -310,7 +311,8 @@ def cue_rest(cx: float, cy: float, gx: float, gy: float, obj_angle: float, d_obj
         vel[0, 1] = v * ey
         ang[0, 0] = -w * ey / rc  # rolling-equivalent spin R w along the line: (wx, wy) = z^ x (w e) / R
         ang[0, 1] = w * ex / rc
-        ball_hit(vel, ang, 0, 1, -ox, -oy, mc, mo, rc, rc, params[0], params[0].speed_floor, False)
+        ball_hit(vel, ang, plain(0), plain(1), -ox, -oy, mc, mo, rc, rc, params[0], params[0].speed_floor,
+                 plain(False))
         v_obj = math.hypot(vel[1, 0], vel[1, 1])
         pots = v_obj > 0.0 and v_obj >= launch_speed(d_obj, _ARRIVE, law, a, k)
         x, y, pocket = lone_ball_rest(gx, gy, vel[0, 0], vel[0, 1], ang[0, 0], ang[0, 1], ang[0, 2], rc, mc,
