@@ -6,7 +6,8 @@ reset and a step; with ``--warmup`` every task of ``python -m billiards_env.warm
 process with numba's cache pointed at an empty temporary directory (unless ``NUMBA_CACHE_DIR`` is set), listening
 to numba's compile events. Prints how many compilations ran, of how many distinct functions (ours and numba's own
 overloads of numpy functions), which functions were compiled more than once (``--signatures``: for which
-signatures), and the most expensive compilations (CPU seconds, including the functions each one compiled in turn).
+signatures), the most expensive compilations (CPU seconds, including the functions each one compiled in turn) and
+the functions whose own compile (without the functions it compiled in turn) costs most.
 
 Run it as a script from the repository root (not with ``-m``: the clock and the listener start before the package
 is imported), with ``PYTHONPATH=.`` to profile this checkout rather than the installed one.
@@ -38,17 +39,20 @@ def main(argv: list[str] | None = None) -> int:
     t0, c0 = time.perf_counter(), time.process_time()
     from numba.core import event
 
-    stack: list[tuple[str, float]] = []
-    rows: list[tuple[str, str, float, int]] = []
+    stack: list[list] = []  # [name, CPU clock at the start, CPU seconds of the compilations it ran in turn]
+    rows: list[tuple[str, str, float, int, float]] = []  # name, signature, inclusive CPU s, depth, exclusive CPU s
 
     class Listener(event.Listener):
         def on_start(self, ev: event.Event) -> None:
             d = ev.data["dispatcher"]
-            stack.append((f"{d.py_func.__module__}.{d.py_func.__qualname__}", time.process_time()))
+            stack.append([f"{d.py_func.__module__}.{d.py_func.__qualname__}", time.process_time(), 0.0])
 
         def on_end(self, ev: event.Event) -> None:
-            name, c = stack.pop()
-            rows.append((name, str(ev.data.get("args")), time.process_time() - c, len(stack)))
+            name, c, inner = stack.pop()
+            spent = time.process_time() - c
+            if stack:
+                stack[-1][2] += spent
+            rows.append((name, str(ev.data.get("args")), spent, len(stack), spent - inner))
 
     event.register("numba:compile", Listener())
     from billiards_env.physics import Balls, Physics, Simulator, Table
@@ -77,7 +81,7 @@ def main(argv: list[str] | None = None) -> int:
     cpu = time.process_time() - c0
     ours = [r for r in rows if r[0].startswith("billiards_env")]
     per_fn: dict[str, list[str]] = defaultdict(list)
-    for name, sig, _, _ in ours:
+    for name, sig, *_ in ours:
         per_fn[name].append(sig)
     then = " and ".join(part for part, on in (("env", args.env), ("warm-up tasks", args.warmup)) if on)
     print(f"import {t1 - t0:.2f} s, first shot {t2 - t1:.2f} s" + (f", {then} {t3 - t2:.2f} s" if then else "")
@@ -92,8 +96,15 @@ def main(argv: list[str] | None = None) -> int:
                 print(f"      {sig}")
     top = sum(r[2] for r in rows if r[3] == 0)
     print(f"top-level compilations: {top:.2f} CPU s; the most expensive (inclusive CPU s, depth):")
-    for name, sig, cpu_s, depth in sorted(rows, key=lambda r: -r[2])[:args.top]:
+    for name, sig, cpu_s, depth, _ in sorted(rows, key=lambda r: -r[2])[:args.top]:
         print(f"  {cpu_s:6.2f}  d{depth}  {name} {sig[:70]}")
+    own: dict[str, float] = defaultdict(float)
+    for name, _, _, _, excl in rows:
+        own[name] += excl
+    print("the most expensive functions by their own compile (exclusive CPU s, all signatures; the rest of an "
+          "inclusive figure is the functions compiled in turn):")
+    for name, excl in sorted(own.items(), key=lambda kv: -kv[1])[:args.top]:
+        print(f"  {excl:6.2f}  {name}")
     if tmp is not None:
         tmp.cleanup()
     return 0

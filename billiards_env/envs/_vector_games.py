@@ -14,7 +14,6 @@ for (``BilliardsVectorEnv.sub_infos``).
 """
 from __future__ import annotations
 
-from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -23,6 +22,7 @@ from billiards_env.games.infos import conform, unstack
 from billiards_env.games.pool import RACK_EIGHT, RACK_NINE, EightBallSession, NineBallSession, pool_features
 from billiards_env.physics.batch import use_parallel
 from billiards_env.physics.errors import SceneError
+from billiards_env.physics.threads import default_threads, on_slices
 from billiards_env.physics.layout import DIAMOND_ORDER, RACK_ORDER, foot_spot, head_spot, head_string_x
 from billiards_env.players.geometric import GeometricPlayer
 from billiards_env.players.geometry import MAX_CUT, state_model
@@ -75,25 +75,6 @@ def native_games(env: "BilliardsEnv", render_mode: str | None) -> str | None:
     if c.n_object_balls != len(full) or tuple(env.table_state.numbers) != tuple(range(len(full) + 1)):
         return "the ball set"
     return None
-
-
-#: One pool of worker threads per thread count, kept for the process (a step is too short to start threads).
-_POOLS: dict[int, ThreadPoolExecutor] = {}
-
-
-def _pool(threads: int) -> ThreadPoolExecutor:
-    """The pool of ``threads`` worker threads that runs slices of the tables."""
-    if threads not in _POOLS:
-        _POOLS[threads] = ThreadPoolExecutor(threads, thread_name_prefix="billiards-tables")
-    return _POOLS[threads]
-
-
-def default_threads() -> int:
-    """Threads for a parallel step when the env leaves it open (``threads=None``): numba's thread count, the
-    cores it may use."""
-    import numba
-
-    return int(numba.get_num_threads())
 
 
 class GameTables:
@@ -247,11 +228,8 @@ class GameTables:
         shared = (self.kc, v.pos, v.vel, v.ang, v.on_table, v.shots, *self.consts, v.generators(), self.gst, self.opts,
                   self.cfg, self.icfg, *self.tables, self.layout, self.rack_slots, self.full, self.rec_agent,
                   self.rec_opp, self.reward, self.tout, v.observations, self.windows)
-        if threads == 1:
-            gk.play_tables(rows, resets, act, *shared)
-        else:  # slices of the tables on threads (the kernel releases the GIL); each table's result is the same
-            slices = np.array_split(np.arange(len(rows)), threads)
-            list(_pool(threads).map(lambda s: gk.play_tables(rows[s], resets[s], act, *shared), slices))
+        # Slices of the tables on threads (the kernel releases the GIL); each table's result is the same.
+        on_slices(lambda s: gk.play_tables(rows[s], resets[s], act, *shared), len(rows), threads)
         self._check(rows)
         for k in rows.tolist():
             self.states[k].changed()

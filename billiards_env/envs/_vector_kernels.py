@@ -37,6 +37,7 @@ from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.layout import place_random_rows, spot_cue_row
 from billiards_env.physics.plain import plain
 from billiards_env.physics.spin_collide import strike_ball
+from billiards_env.physics.threads import on_slices
 
 from ._game_config import put_shot_fields
 from ._kernels import write_observation
@@ -361,15 +362,9 @@ def pot_step_parallel(spin: bool, threads: int, act: np.ndarray, active: np.ndar
     one compiled call (:func:`pot_step_rows`, which releases the GIL) per slice, as the games' vector kernel runs
     (threads rather than numba's ``prange``). ``args``: :func:`pot_step`'s arguments after ``active``. Every table
     is struck, simulated and scored by the same code as serially, so the results do not depend on ``threads``."""
-    from ._vector_games import _pool
-
     kernel = pot_step_rows_spin if spin else pot_step_rows
     rows = np.flatnonzero(active).astype(np.int64)
-    threads = max(1, min(threads, rows.size))
-    if threads == 1:
-        return bool(kernel(rows, act, active, *args))
-    slices = np.array_split(rows, threads)
-    return all(list(_pool(threads).map(lambda r: bool(kernel(r, act, active, *args)), slices)))
+    return all(on_slices(lambda s: bool(kernel(rows[s], act, active, *args)), rows.size, threads))
 
 
 __all__ = ["AIM_ABSOLUTE", "AIM_RELATIVE", "AIM_GHOST", "PLACED", "POT_FLOATS", "POT_INTS", "POT_SHOT", "POT_OUTCOME",

@@ -15,7 +15,7 @@ the same observations, rewards, terminations, truncations and info, bit for bit,
 difference is speed: for the pot task (``BilliardsOneBall-v0``, ``BilliardsThreeBalls-v0``, ``BilliardsRack-v0``
 and any config of them) a step runs the actions, noise, strikes, scoring, re-spotting, resets and observations
 of all tables in compiled array code, and every table's shot in one call of the batch physics
-(:mod:`billiards_env.physics.batch`, spread over numba's threads); each sub-env draws from its own
+(:mod:`billiards_env.physics.batch`, slices of the tables on threads); each sub-env draws from its own
 ``numpy.random.Generator``, seeded as the single env is. 9-ball and 8-ball (``Billiards9Ball-v0``,
 ``Billiards8Ball-v0``) against the geometric opponent or alone run whole games per table in compiled code, the
 opponent's turns inside the step (:mod:`._vector_games`, :mod:`._game_kernels`: the rules compiled, the geometric
@@ -43,12 +43,13 @@ from numba import typed
 from billiards_env.physics.balls import Balls
 from billiards_env.physics.batch import new_outputs, simulate_into, use_parallel
 from billiards_env.physics.layout import PLACE_BATCH, PLACE_TRIES
+from billiards_env.physics.threads import default_threads
 from billiards_env.registration import ENVS, vector_entry_point
 from billiards_env.table_state import TableState
 
 from ._pot_fast import compiled_action
 from ._seeding import np_random
-from ._vector_games import GameTables, InfoColumns, default_threads, native_games, stack_columns, stack_infos
+from ._vector_games import GameTables, InfoColumns, native_games, stack_columns, stack_infos
 from ._vector_kernels import (PLACED, POT_FLOATS, POT_INTS, draw_noise, finish_shots, new_step_outputs,
                               observe_positions, pack_config, place_tables, pot_step, pot_step_parallel,
                               pot_step_spin, prepare_shots)
@@ -74,7 +75,7 @@ class BilliardsVectorEnv(VectorEnv):
             raise ValueError(f"render_env: the sub-env to draw must be in [0, {num_envs}), got {render_env}")
         if threads is not None and (isinstance(threads, bool) or not isinstance(threads, (int, np.integer))
                                     or threads < 1):
-            raise ValueError(f"threads: numba threads for the physics, an integer >= 1 or None (chosen by the load), "
+            raise ValueError(f"threads: threads for the physics, an integer >= 1 or None (chosen by the load), "
                              f"got {threads!r}")
         if max_episode_steps is not None:
             raise ValueError("max_episode_steps: the billiards envs end episodes themselves; set the max_shots "

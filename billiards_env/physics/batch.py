@@ -22,8 +22,7 @@ from __future__ import annotations
 
 import math
 import os
-from contextlib import contextmanager
-from typing import Iterator, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 from numba import njit
@@ -35,6 +34,7 @@ from .errors import SceneError
 from .result import EventLog
 from .simulate import Simulator
 from .spin_collide import MAX_TIP_OFFSET, strike_ball
+from .threads import default_threads, on_slices
 
 #: Event kinds counted per row (the columns of :attr:`BatchResult.event_counts`, see :data:`.codes.EVENT_KINDS`).
 N_KINDS = len(EVENT_KINDS)
@@ -133,27 +133,11 @@ def _as_rows(name: str, values, n: int | None, dtype=float) -> np.ndarray:
     return arr
 
 
-@contextmanager
-def _thread_count(threads: int | None) -> Iterator[None]:
-    """numba's thread count set to ``threads`` (None: leave it) for the duration of the block."""
-    if threads is None:
-        yield
-        return
-    import numba
-
-    before = numba.get_num_threads()
-    numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
-    try:
-        yield
-    finally:
-        numba.set_num_threads(before)
-
-
 def use_parallel(n: int, threads: int | None) -> bool:
     """Whether ``n`` rows run on several threads: ``threads`` > 1 asks for it, 1 forbids it; None decides: at
-    least :data:`PARALLEL_MIN_ROWS` rows, more than one numba thread, and a core left idle by the rest of the
-    machine (1-minute load average below the core count less one half). numba's threads wait for the slowest
-    one, so on cores busy with other work a parallel batch is slower than a serial one."""
+    least :data:`PARALLEL_MIN_ROWS` rows, more than one core for numba (:func:`.threads.default_threads`), and a
+    core left idle by the rest of the machine (1-minute load average below the core count less one half). A
+    parallel batch waits for its slowest slice, so on cores busy with other work it is slower than a serial one."""
     if threads is not None:
         if threads < 1:
             raise ValueError(f"threads: must be >= 1 (or None to decide by the batch and the machine), got {threads}")
@@ -194,12 +178,18 @@ def simulate_into(sim: Simulator, pos: np.ndarray, vel: np.ndarray, on: np.ndarr
     (a vector env): simulate every row in place into ``out`` (from :func:`new_outputs`). ``radius``/``mass``:
     ``(1, B)`` or ``(N, B)``; ``ang``: ``(N, B, 3)`` (read only under the spin model); ``struck``: ``(N,)`` int64."""
     ks = sim.kernels
-    common = (radius, mass, sim.pocket_xy, sim.pocket_r, sim.params, int(sim.max_events), struck, out)
-    if use_parallel(pos.shape[0], threads):
-        with _thread_count(threads):
-            ks.rows_parallel(pos, vel, ang, on, *common)
-    else:
-        ks.rows(pos, vel, ang, on, *common, False, _NO_LOG)
+    consts = (sim.pocket_xy, sim.pocket_r, sim.params, int(sim.max_events))
+    n = pos.shape[0]
+    if not use_parallel(n, threads):
+        ks.rows(pos, vel, ang, on, radius, mass, *consts, struck, out, False, _NO_LOG)
+        return
+
+    def rows(s: slice) -> None:
+        """The rows of slice ``s``: per-row arrays sliced (views: the kernel writes through them), shared ones whole."""
+        ks.rows(pos[s], vel[s], ang[s] if ang.shape[0] == n else ang, on[s], radius[s] if radius.shape[0] == n else radius,
+                mass[s] if mass.shape[0] == n else mass, *consts, struck[s], tuple(o[s] for o in out), False, _NO_LOG)
+
+    on_slices(rows, n, threads or default_threads())
 
 
 def _simulate_rows(sim: Simulator, pos, vel, ang, on, radius, mass, struck, events: bool,
@@ -226,8 +216,8 @@ def run_shots(sim: Simulator, balls: Balls, angles, speeds, *, ball: str | int =
     (see :meth:`.Balls.strike`). Row ``k`` equals ``sim.run(balls.strike(ball, angles[k], speeds[k]))``.
 
     ``events``: also return every row's event log (the rows then run on one thread). ``threads``: 1 runs the rows
-    serially, more spreads them over numba's threads, None decides (see :func:`use_parallel`); the results do not
-    depend on it. ``validate``: check ``balls`` first.
+    serially, more spreads slices of them over that many threads, None decides (see :func:`use_parallel`); the
+    results do not depend on it. ``validate``: check ``balls`` first.
     """
     spin = _check_simulator(sim)
     if validate:

@@ -1,11 +1,11 @@
-"""The batch API's compiled row drivers (:mod:`.batch`): every row through one model's exact kernel, serially (with
-the event logs on request) or spread over numba's threads, and each row's summary (:func:`store_row`).
+"""The batch API's compiled row drivers (:mod:`.batch`): every row through one model's exact kernel (with the event
+logs on request), and each row's summary (:func:`store_row`).
 
-One pair of drivers per model (serial, and parallel over rows), so that a process compiles only the kernels of the
-models it runs; :data:`.kernels.KERNELS` says which model uses which. ``out`` is the tuple of result arrays filled
-row by row (see :func:`store_row`); ``radius`` and ``mass`` have one row per table or one row for all; ``ang`` has one
-row per table under the spin model, one (unused) row for all otherwise. The serial drivers also keep the event logs
-on request.
+One driver per model, so that a process compiles only the kernels of the models it runs; :data:`.kernels.KERNELS`
+says which model uses which. The drivers release the GIL: :func:`.batch.simulate_into` spreads a batch over threads
+by calling them on slices of the rows (:mod:`.threads`). ``out`` is the tuple of result arrays filled row by row (see
+:func:`store_row`); ``radius`` and ``mass`` have one row per table or one row for all; ``ang`` has one row per table
+under the spin model, one (unused) row for all otherwise.
 
 The drivers pass ``record`` as the constant ``False`` (a literal to numba), not :func:`.plain.plain`: the kernels
 compiled for it, with the state log's branches gone, run a batch about 8% faster (measured 2026-12-05), which is
@@ -14,12 +14,11 @@ worth one more compile of each kernel in the processes that run batches.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from .codes import EV_COLLISION, EV_CUSHION
 from .exact import simulate_exact
 from .exact_spin import simulate_exact_spin
-from .plain import plain
 
 
 @njit(cache=True)
@@ -83,7 +82,7 @@ def _append_log(k, res, log):
     return offsets, ev_t, ev_k, ev_b, ev_o, ev_s
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def rows_linear(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out, keep, log):
     """Rows one after the other through the rolling/drag kernel (``keep``: append each row's events to ``log``,
     returned)."""
@@ -91,44 +90,22 @@ def rows_linear(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, ma
     for k in range(pos.shape[0]):
         r = 0 if shared else k
         res = simulate_exact(pos[k], vel[k], ang[0], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                             max_events, plain(False))
+                             max_events, False)
         store_row(k, res, struck[k], out)
         if keep:
             log = _append_log(k, res, log)
     return log
 
 
-@njit(cache=True, parallel=True)
-def rows_linear_parallel(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out):
-    """Rows spread over numba's threads (each row on one thread: the result does not depend on their number)."""
-    shared = radius.shape[0] == 1
-    for k in prange(pos.shape[0]):
-        r = np.int64(0) if shared else np.int64(k)  # (a prange index may be unsigned: keep r an int64)
-        res = simulate_exact(pos[k], vel[k], ang[0], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                             max_events, plain(False))
-        store_row(np.int64(k), res, struck[k], out)
-
-
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def rows_spin(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out, keep, log):
     """:func:`rows_linear` for the spin model (angular velocities ``ang`` updated in place too)."""
     shared = radius.shape[0] == 1
     for k in range(pos.shape[0]):
         r = 0 if shared else k
         res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                                  max_events, plain(False))
+                                  max_events, False)
         store_row(k, res, struck[k], out)
         if keep:
             log = _append_log(k, res, log)
     return log
-
-
-@njit(cache=True, parallel=True)
-def rows_spin_parallel(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out):
-    """:func:`rows_linear_parallel` for the spin model."""
-    shared = radius.shape[0] == 1
-    for k in prange(pos.shape[0]):
-        r = np.int64(0) if shared else np.int64(k)
-        res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                                  max_events, plain(False))
-        store_row(np.int64(k), res, struck[k], out)

@@ -11,7 +11,6 @@ model up here and calls, whatever the model:
     res = ks.exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, params, max_events, record)
     res = ks.step(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, params, dt, contact, record_dt)
     log = ks.rows(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out, keep, log)
-    ks.rows_parallel(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, max_events, struck, out)
 
 ``ang`` (angular velocities) is state only where ``ks.spin`` is True; the linear kernels do not read it (the batch
 drivers of the linear set read one row, ``ang[0]``, for all tables). Compiled code cannot take a kernel as an
@@ -23,7 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from .batch_rows import rows_linear, rows_linear_parallel, rows_spin, rows_spin_parallel
+from .batch_rows import rows_linear, rows_spin
 from .codes import DRAG, ROLLING, SPIN
 from .exact import simulate_exact
 from .exact_spin import simulate_exact_spin
@@ -42,12 +41,11 @@ class KernelSet:
     spin: bool  #: balls carry angular velocities: ``ang`` is read and updated, strikes put spin on the ball
     exact: Any  #: event-driven solver (:func:`.exact.simulate_exact`'s arguments)
     step: Any  #: per-frame solver (:func:`.step.simulate_step`'s arguments)
-    rows: Any  #: batch driver, rows one after the other (:mod:`.batch_rows`)
-    rows_parallel: Any  #: batch driver, rows over numba's threads
+    rows: Any  #: batch driver, rows one after the other (:mod:`.batch_rows`; on slices of the rows for threads)
 
 
-LINEAR = KernelSet("linear", False, simulate_exact, simulate_step, rows_linear, rows_linear_parallel)
-SPINNING = KernelSet("spin", True, simulate_exact_spin, simulate_step_spin, rows_spin, rows_spin_parallel)
+LINEAR = KernelSet("linear", False, simulate_exact, simulate_step, rows_linear)
+SPINNING = KernelSet("spin", True, simulate_exact_spin, simulate_step_spin, rows_spin)
 
 #: Friction-law code (:data:`.codes.FRICTION_LAWS`) -> its kernel set.
 KERNELS: dict[int, KernelSet] = {ROLLING: LINEAR, DRAG: LINEAR, SPIN: SPINNING}
