@@ -146,7 +146,7 @@ def candidate_speed(base: float, a: float, cfg: np.ndarray) -> float:
     return min(max(base * math.exp(a * cfg["log_factor"]), cfg["cand_lo"]), cfg["cand_hi"])
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def candidates_shot(k, a, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r,
                     params, holes, area, kc):
     """Compiled twin of :meth:`CandidateShots.shot <billiards_env.envs.actions.CandidateShots.shot>` for table

@@ -231,7 +231,7 @@ def _opponent_turn(k, pos, vel, ang, on, radius, mass, gens, gst, opts, cfg, icf
 
 # --- a step of one table ----------------------------------------------------------------------------------------------
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r,
                 params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout, obs, wc):
     """One ``env.step`` of table ``k`` (see :func:`play_tables`)."""
@@ -305,11 +305,13 @@ def _step_table(k, act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, o
 
 # --- a reset of one table --------------------------------------------------------------------------------------------
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _reset_table(k, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy, pocket_r, params,
-                 tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions, pockets, rack_slots, full,
-                 rec_agent, rec_opp, tout, kc, obs, wc):
-    """One ``env.reset()`` of table ``k`` (no options; see :func:`reset_tables`)."""
+                 tm, holes, layout, rack_slots, full, rec_agent, rec_opp, tout, kc, obs, wc):
+    """One ``env.reset()`` of table ``k`` (no options; see :func:`play_tables`; ``tm``: ``(tm_xy, tm_r,
+    tm_params)``)."""
+    tm_xy, tm_r, tm_params = tm
+    fixed_rows, fixed_xy, rand_rows, regions, pockets = layout
     call = np.zeros(1, CALL_ROW)
     after = np.zeros(1, GAME_STATE_ROW)
     buf = np.zeros((2, pos.shape[1]), np.int64)
@@ -468,12 +470,11 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
     geometric opponent (``(pos (N, B, 2), windows (N, B, K, 4), have (N, B))``, see
     :func:`~billiards_env.players.geometry.cached_window`), kept from call to call: the same decisions, the windows
     of the balls that did not move since the table's last decision not worked out again."""
-    fixed_rows, fixed_xy, rand_rows, regions, pockets = layout
+    tm = (tm_xy, tm_r, tm_params)
     for q in range(rows.shape[0]):
         if resets[q]:
             _reset_table(rows[q], pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg, pocket_xy,
-                         pocket_r, params, tm_xy, tm_r, tm_params, holes, fixed_rows, fixed_xy, rand_rows, regions,
-                         pockets, rack_slots, full, rec_agent, rec_opp, tout, kc, obs, wc)
+                         pocket_r, params, tm, holes, layout, rack_slots, full, rec_agent, rec_opp, tout, kc, obs, wc)
         else:
             _step_table(rows[q], act, kc, pos, vel, ang, on, shots, radius, mass, gens, gst, opts, cfg, icfg,
                         pocket_xy, pocket_r, params, tm_xy, tm_r, tm_params, holes, rec_agent, rec_opp, reward, tout,

@@ -367,7 +367,7 @@ def kick_cached(k, targets, pos, on, radius, mass, lo, hi, cfg, icfg, tm_xy, tm_
     return found, j, angle, speed, length
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def candidates_features_row(k, st, pos, on, radius, mass, cfg, icfg, tm_xy, tm_r, tm_params, pocket_xy, pocket_r,
                          params, area, kc, out):
     """Compiled twin of :func:`slot_features` of :func:`candidate_slots` (the ``candidates`` observation's slot
