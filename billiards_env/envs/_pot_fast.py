@@ -1,5 +1,5 @@
 """The single env's fast step: a pot-task shot in one compiled call, the native vector env's
-(:func:`._vector_kernels.pot_step`) on the env's one table.
+(:func:`._vector_kernels.pot_step_rows`) on the env's one table.
 
 ``BilliardsEnv.step`` takes it when nothing else is needed: the pot task on the exact solver, not recording. The
 shot noise is drawn from ``env.np_random`` here, in the single env's order, and handed to the compiled code. It returns exactly what the Python path returns (the vector env tests compare
@@ -16,7 +16,7 @@ from billiards_env.physics.batch import new_outputs
 
 from billiards_env.shot_path import CueShot, draw_noise
 
-from ._vector_kernels import new_step_outputs, pack_config, pot_step, pot_step_spin
+from ._vector_kernels import new_step_outputs, pack_config, pot_step_rows, pot_step_rows_spin
 from .config import ConfigError, EnvConfig
 from .info import shot_info
 from .tasks import PotTask
@@ -25,6 +25,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from .base import BilliardsEnv
 
 _ACTIVE = np.ones(1, np.bool_)
+_ROWS = np.zeros(1, np.int64)  # the one table's row
 
 
 class ShotValues(NamedTuple):
@@ -77,7 +78,7 @@ class PotFastStep:
         self.shots = np.zeros(1, np.int64)
         self.obs = np.zeros((1,) + env.observation_space.shape, np.float32)
         self.positions = bool(self.icfg[0]["positions_obs"])
-        self.kernel = pot_step_spin if env.physics.has_spin else pot_step
+        self.kernel = pot_step_rows_spin if env.physics.has_spin else pot_step_rows
         self.settings = env.table_state.settings
         self.noisy = self.settings.noisy
         b = env.balls  # the live arrays (updated in place), as one-table batches
@@ -100,7 +101,7 @@ class PotFastStep:
             self.noise[0] = draw_noise(np_random, self.settings)
         self.shots[0] = shots
         fout, iout, out = self.fout, self.iout, self.out
-        if not self.kernel(self.act, _ACTIVE, *self.table, self.shots, *self.consts, self.noise, out, fout, iout,
+        if not self.kernel(_ROWS, self.act, _ACTIVE, *self.table, self.shots, *self.consts, self.noise, out, fout, iout,
                            self.obs):
             raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
         f = ShotValues._make(fout.item(0))

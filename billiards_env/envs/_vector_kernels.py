@@ -12,9 +12,9 @@ test ``tests/envs/test_vector_env.py`` checks it):
 - :func:`finish_shots` is the rest of :func:`~billiards_env.shot_path.play_shot` and ``PotTask.on_shot`` (re-spotting a pocketed cue ball
   with :func:`~billiards_env.physics.layout.spot_cue_row`, the single env's code), and :func:`observe_positions`
   the positions observation;
-- :func:`pot_step` (:func:`pot_step_spin`) does all of a step's shots in one serial call: strike, physics, score,
-  observation. The native vector env uses it when it runs serially, and the single env for its fast path;
-  :func:`pot_step_parallel` does the same on several threads (:func:`pot_step_rows` on slices of the tables).
+- :func:`pot_step_rows` (:func:`pot_step_rows_spin`) does a step's shots on a list of tables in one compiled call:
+  strike, physics, score, observation. :func:`pot_step` runs it for the native vector env, serially or on slices of
+  the tables from several threads; the single env calls it on its one table for its fast path.
 
 The packed configuration is two numpy records read by field name (``cfg["speed_lo"]``, ``icfg["aim"]``; numba
 compiles a record's field to a load at its offset): :data:`POT_FLOATS` and :data:`POT_INTS`, one-record arrays made by
@@ -291,44 +291,13 @@ def _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, ob
     return ok
 
 
-@njit(cache=True)
-def pot_step(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events, cfgs,
-             icfgs, noise, out, fout, iout, obs):
-    """One shot on every active table in one call, serially (``noise`` from :func:`draw_noise`):
-    :func:`_prepare_row`, the exact kernel (``out``: the
-    batch's result arrays, see :func:`billiards_env.physics.batch.new_outputs`) and :func:`_after_shot`. Returns
-    False if a cue ball could not be re-spotted."""
-    cfg, icfg = cfgs[0], icfgs[0]
-    ok = True
-    for k in range(pos.shape[0]):
-        if active[k]:
-            _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
-            res = simulate_exact(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
-                                 max_events, plain(False))
-            ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
-    return ok
-
-
-@njit(cache=True)
-def pot_step_spin(act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events,
-                  cfgs, icfgs, noise, out, fout, iout, obs):
-    """:func:`pot_step` for the spin model (its own kernel: each model compiles only when used)."""
-    cfg, icfg = cfgs[0], icfgs[0]
-    ok = True
-    for k in range(pos.shape[0]):
-        if active[k]:
-            _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
-            res = simulate_exact_spin(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
-                                      max_events, plain(False))
-            ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
-    return ok
-
-
 @njit(cache=True, nogil=True)
 def pot_step_rows(rows, act, active, pos, vel, ang, on, shots, radius, mass, pocket_xy, pocket_r, params, max_events,
                   cfgs, icfgs, noise, out, fout, iout, obs):
-    """:func:`pot_step` on tables ``rows`` only (int64), without the GIL: :func:`pot_step_parallel` runs slices of
-    the tables on several Python threads at once (a table's result does not depend on the slice it is in)."""
+    """One shot on each active table of ``rows`` (int64), one after the other, without the GIL (``noise`` from
+    :func:`draw_noise`): :func:`_prepare_row`, the exact kernel (``out``: the batch's result arrays, see
+    :func:`billiards_env.physics.batch.new_outputs`) and :func:`_after_shot`. Returns False if a cue ball could not
+    be re-spotted. :func:`pot_step` calls it on the active tables, or on slices of them from several threads."""
     cfg, icfg = cfgs[0], icfgs[0]
     ok = True
     for q in range(rows.shape[0]):
@@ -357,11 +326,12 @@ def pot_step_rows_spin(rows, act, active, pos, vel, ang, on, shots, radius, mass
     return ok
 
 
-def pot_step_parallel(spin: bool, threads: int, act: np.ndarray, active: np.ndarray, *args: Any) -> bool:
-    """:func:`pot_step` spread over ``threads`` Python threads: the active tables in ``threads`` contiguous slices,
-    one compiled call (:func:`pot_step_rows`, which releases the GIL) per slice, as the games' vector kernel runs
-    (threads rather than numba's ``prange``). ``args``: :func:`pot_step`'s arguments after ``active``. Every table
-    is struck, simulated and scored by the same code as serially, so the results do not depend on ``threads``."""
+def pot_step(spin: bool, threads: int, act: np.ndarray, active: np.ndarray, *args: Any) -> bool:
+    """One shot on every active table: :func:`pot_step_rows` (:func:`pot_step_rows_spin` when ``spin``) on the
+    active tables, in one call or, with ``threads`` > 1, in that many contiguous slices on Python threads (the
+    kernel releases the GIL; threads rather than numba's ``prange``, as the games' vector kernel runs). ``args``:
+    :func:`pot_step_rows`' arguments after ``active``. Every table is struck, simulated and scored by the same code
+    whatever ``threads``, so the results do not depend on it. Returns False if a cue ball could not be re-spotted."""
     kernel = pot_step_rows_spin if spin else pot_step_rows
     rows = np.flatnonzero(active).astype(np.int64)
     return all(on_slices(lambda s: bool(kernel(rows[s], act, active, *args)), rows.size, threads))
@@ -370,4 +340,4 @@ def pot_step_parallel(spin: bool, threads: int, act: np.ndarray, active: np.ndar
 __all__ = ["AIM_ABSOLUTE", "AIM_RELATIVE", "AIM_GHOST", "PLACED", "POT_FLOATS", "POT_INTS", "POT_SHOT", "POT_OUTCOME",
            "pack_config", "new_step_outputs", "place_tables", "prepare_shots",
            "finish_shots", "observe_positions", "pot_step", "draw_noise",
-           "pot_step_spin", "pot_step_rows", "pot_step_rows_spin", "pot_step_parallel"]
+           "pot_step_rows", "pot_step_rows_spin"]

@@ -51,8 +51,7 @@ from ._pot_fast import compiled_action
 from ._seeding import np_random
 from ._vector_games import GameTables, InfoColumns, native_games, stack_columns, stack_infos
 from ._vector_kernels import (PLACED, POT_FLOATS, POT_INTS, draw_noise, finish_shots, new_step_outputs,
-                              observe_positions, pack_config, place_tables, pot_step, pot_step_parallel,
-                              pot_step_spin, prepare_shots)
+                              observe_positions, pack_config, place_tables, pot_step, prepare_shots)
 from .base import RENDER_MODES, BilliardsEnv, check_options_mapping
 from .config import ConfigError
 
@@ -256,11 +255,9 @@ class BilliardsVectorEnv(VectorEnv):
                           out, self.threads)
             ok = finish_shots(active, out[3], out[5], self.pos, self.on_table, self.vel, self.ang, self.shots,
                               self._cfg, self._icfg, fout, iout)
-        elif use_parallel(n, self.threads):
-            ok = pot_step_parallel(self._spin_model, self.threads or default_threads(), act, active, *step_args)
         else:
-            step = pot_step_spin if self._spin_model else pot_step
-            ok = step(act, active, *step_args)
+            threads = (self.threads or default_threads()) if use_parallel(n, self.threads) else 1
+            ok = pot_step(self._spin_model, threads, act, active, *step_args)
         if not ok:
             raise ConfigError(f"{self.env_id}: could not re-spot the cue ball: the head of the table is full")
         status, sim_time, n_events, _, _, first = out[:6]
