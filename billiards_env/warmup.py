@@ -108,8 +108,8 @@ def _candidates() -> None:
 
 
 def _vector_pots() -> None:
-    """The native vector env's pot-scene kernels: serial (one call per step), parallel, with shot noise, and the
-    spin model."""
+    """The native vector env's pot-scene kernels: serial, on two threads (the same kernel on slices of the tables),
+    with shot noise, and the spin model."""
     import gymnasium as gym
 
     import billiards_env  # noqa: F401

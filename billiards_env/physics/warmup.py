@@ -49,7 +49,8 @@ def warm_up(kernels: tuple[str, ...] = KERNELS) -> float:
 
 
 def _warm_batch(sim: Simulator, balls: Balls) -> None:
-    """The batch drivers of ``sim``'s model (:mod:`.batch`): serial with the event log, and parallel."""
+    """The batch drivers of ``sim``'s model (:mod:`.batch`): serial with the event log, and on two threads
+    (the same driver on slices of the rows)."""
     from .batch import run_shots
 
     spin = sim.physics.has_spin
