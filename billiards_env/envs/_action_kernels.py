@@ -25,6 +25,7 @@ from billiards_env.players.slots import HAND_OBJ_ANGLE, HAND_POCKET, HAND_TARGET
 from .actions import (AIM_ABSOLUTE, FALLBACK_SPEED, PLACE_BACK, PLACE_MAX_CUT, PLACED_MAX_CUT, aim_to_angle,
                       angle_to_aim, disc_to_square, power_to_speed, square_to_disc)
 from .candidates import kick_cached, pool_targets_row
+from billiards_env.physics.kernel_logs import leaf_public
 
 _SPEED_FACTORS = np.array(SPEED_FACTORS)
 
@@ -50,7 +51,7 @@ def aim_of_angle(code: int, angle: float, cx: float, cy: float, t: int, pos: np.
     return angle_to_aim(code, angle, cx, cy, pos[t, 0], pos[t, 1], plain(True), radius[0] + radius[t], max_ghost)
 
 
-@njit(cache=True)
+@leaf_public
 def legal_place(x: float, y: float, pos: np.ndarray, on: np.ndarray, radius: np.ndarray, area: np.ndarray,
                 holes: np.ndarray) -> tuple:
     """Compiled twin of :meth:`TableState.legal_cue_position <billiards_env.table_state.TableState.legal_cue_position>`
@@ -58,7 +59,7 @@ def legal_place(x: float, y: float, pos: np.ndarray, on: np.ndarray, radius: np.
     return nearest_free_xy(x, y, pos, on, radius, plain(0), area[0], area[1], area[2], area[3], 1e-6, holes)
 
 
-@njit(cache=True)
+@leaf_public
 def shot_of_action(a: np.ndarray, code: int, max_ghost: float, st: np.void, pos: np.ndarray, on: np.ndarray,
                    radius: np.ndarray, cfg: np.ndarray, icfg: np.ndarray, holes: np.ndarray,
                    area: np.ndarray) -> tuple:
@@ -89,7 +90,7 @@ def shot_of_action(a: np.ndarray, code: int, max_ghost: float, st: np.void, pos:
     return found, angle, speed, side, top, True, px, py, pocket, push
 
 
-@njit(cache=True)
+@leaf_public
 def action_of_shot(code: int, max_ghost: float, angle: float, speed: float, placed: bool, px: float, py: float,
                    pocket: int, st: np.void, pos: np.ndarray, on: np.ndarray, radius: np.ndarray,
                    cfg: np.ndarray, icfg: np.ndarray, holes: np.ndarray, area: np.ndarray, out: np.ndarray) -> bool:

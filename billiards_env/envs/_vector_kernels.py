@@ -34,6 +34,7 @@ from numba import njit
 from billiards_env.physics.batch import store_row
 from billiards_env.physics.exact import simulate_exact
 from billiards_env.physics.exact_spin import simulate_exact_spin
+from billiards_env.physics.kernel_logs import leaf
 from billiards_env.physics.layout import place_random_rows, spot_cue_row
 from billiards_env.physics.plain import plain
 from billiards_env.physics.spin_collide import strike_ball
@@ -171,7 +172,7 @@ def draw_noise(active, gens, cfgs, noise):
             noise[k, 3] = g.normal(0.0, tn)
 
 
-@njit(cache=True)
+@leaf
 def _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout):
     """Table ``k``'s action (clipped float64) as the cue ball's velocity (and spin), as the single env does: the
     aim type's angle, the power's speed, the tip offsets, then the shot noise (``noise[k]``, drawn beforehand:
@@ -223,7 +224,7 @@ def prepare_shots(act, active, pos, on, radius, cfgs, icfgs, noise, vel, ang, fo
             _prepare_row(k, act, pos, on, radius, cfg, icfg, noise, vel, ang, fout)
 
 
-@njit(cache=True)
+@leaf
 def _finish_row(k, pocket, first, pos, on, vel, ang, shots, cfg, icfg, fout, iout):
     """Score table ``k``'s shot as ``PotTask.on_shot``: balls at rest, a pocketed cue ball re-spotted, reward,
     termination, truncation, success, scratch and the bit mask of the rows pocketed (``fout[k]["reward"]``, the
@@ -280,7 +281,7 @@ def observe_positions(rows, pos, on, sx, sy, out):
         write_observation(pos[k], on[k], sx, sy, out[k])
 
 
-@njit(cache=True)
+@leaf
 def _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs):
     """Table ``k`` after its shot: the kernel result into ``out`` (as the batch stores it), the score
     (:func:`_finish_row`) and the positions observation (when that is the observation type)."""

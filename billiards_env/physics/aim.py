@@ -38,6 +38,7 @@ from .motion import speed_after_distance, stop_distance
 from .roots import ray_circle_below
 from .plain import plain
 from .walls import GRAZE, normal_at, on_seg, ray_line_hit, ray_tip_below, ray_walls_hit
+from .kernel_logs import leaf_public
 
 if TYPE_CHECKING:
     from .model import Physics
@@ -111,7 +112,7 @@ def cushion_ahead(px: float, py: float, ux: float, uy: float, length: float, wid
     return ray_cushion_hit(px, py, ux, uy, length, width, r)
 
 
-@njit(cache=True)
+@leaf_public
 def bounce_off(vx: float, vy: float, x: float, y: float, cushion: int, length: float, width: float, r: float,
                e_cushion: float, segs: np.ndarray, tips: np.ndarray) -> tuple[float, float]:
     """A rolling ball's velocity after it meets ``cushion`` (from :func:`cushion_ahead`) at ``(x, y)``: the normal
@@ -320,7 +321,7 @@ def _segments_distance(ax: float, ay: float, bx: float, by: float, cx: float, cy
                _point_segment_distance(cx, cy, ax, ay, bx, by), _point_segment_distance(dx, dy, ax, ay, bx, by))
 
 
-@njit(cache=True)
+@leaf_public
 def _window_walls(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, segs: np.ndarray,
                   tips: np.ndarray) -> int:
     """The walls of a jaw table a ball of ``radius`` rolling from ``(ox, oy)`` into the circle ``(cx, cy, pr)`` may
@@ -360,7 +361,7 @@ def _window_walls(ox: float, oy: float, radius: float, cx: float, cy: float, pr:
     return walls
 
 
-@njit(cache=True)
+@leaf_public
 def _window_sample_clear(ox: float, oy: float, a: float, cx: float, cy: float, pr: float, radius: float,
                          segs: np.ndarray, tips: np.ndarray, walls: int) -> bool:
     """:func:`_window_sample_ok` on a jaw table: whether the ball enters the pocket's circle before it touches a rail,
@@ -419,7 +420,7 @@ def _mark_crossing(mask: int, angle: float, theta_c: float, half: float, step: f
     return mask
 
 
-@njit(cache=True)
+@leaf_public
 def window_of(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, length: float, width: float,
               samples: int, segs: np.ndarray, tips: np.ndarray) -> tuple:
     """:func:`pocket_window` for the capture circle ``(cx, cy, pr)``: ``(centre, half-width, distance, found)``.
@@ -496,7 +497,7 @@ def _window_capture(ox: float, oy: float, radius: float, cx: float, cy: float, p
     return _window_result(best_start, best_len, div, theta_c, half, step, ox, oy, cx, cy, pr, dist)
 
 
-@njit(cache=True)
+@leaf_public
 def _window_jaws(ox: float, oy: float, radius: float, cx: float, cy: float, pr: float, samples: int,
                  segs: np.ndarray, tips: np.ndarray) -> tuple:
     """:func:`window_of` on a jaw table: the samples next to a direction where a wall's verdict may change
@@ -689,7 +690,7 @@ def _window_result(best_start: int, best_len: int, div: int, theta_c: float, hal
     return centre, width_, d_in, True
 
 
-@njit(cache=True)
+@leaf_public
 def pocket_windows(ox: float, oy: float, radius: float, pocket_xy: np.ndarray, pocket_r: np.ndarray, length: float,
                    width: float, samples: int, out: np.ndarray, segs: np.ndarray, tips: np.ndarray) -> None:
     """:func:`window_of` for every pocket: ``out[p] = (centre, half-width, distance, found)`` (``found`` 1.0 or
@@ -761,7 +762,7 @@ def segment_distance(px: float, py: float, ax: float, ay: float, abx: float, aby
     return math.hypot(px - (ax + t * abx), py - (ay + t * aby))
 
 
-@njit(cache=True)
+@leaf_public
 def segment_blocked_by(ax: float, ay: float, bx: float, by: float, pos: np.ndarray, on: np.ndarray,
                        radius: np.ndarray, skip1: int, skip2: int, r_moving: float) -> bool:
     """Whether a ball of ``radius`` ``r_moving`` rolling from ``a`` to ``b`` touches a ball of the table
@@ -826,7 +827,7 @@ def path_clear(a: Vec2, b: Vec2, others: np.ndarray, clearance: np.ndarray) -> b
 
 # --- collisions (the engine's law, :mod:`.collide`) --------------------------------------------------------------
 
-@njit(cache=True)
+@leaf_public
 def collide_into(vel: np.ndarray, v1x: float, v1y: float, v2x: float, v2y: float, nx: float, ny: float, m1: float,
                  m2: float, e: float) -> None:
     """Velocities after balls 1, 2 collide along the unit normal ``n`` (from 2 to 1), by the solvers' own law,
@@ -885,7 +886,7 @@ def lone_path_pocket(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, 
                                     v_min, max_bounces, segs, tips, np.zeros((0, 3)))
 
 
-@njit(cache=True)
+@leaf_public
 def lone_path_pocket_grouped(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
                              max_bounces, segs, tips, groups):
     """:func:`lone_path_pocket` with a jaw table's wall groups (``groups``: :func:`.kernel_io.wall_groups`, or
@@ -915,7 +916,7 @@ def lone_path_pocket_grouped(x, y, vx, vy, radius, length, width, e_cushion, poc
     return -1
 
 
-@njit(cache=True)
+@leaf_public
 def _lone_path_capture(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy, pocket_r, law, a, k, v_min,
                        max_bounces):
     """:func:`lone_path_pocket` on a capture table: the four cushion lines (:func:`ray_cushion_hit`), each bounce
@@ -946,7 +947,7 @@ def _lone_path_capture(x, y, vx, vy, radius, length, width, e_cushion, pocket_xy
     return -1
 
 
-@njit(cache=True)
+@leaf_public
 def walls_ahead(px: float, py: float, ux: float, uy: float, r: float, segs: np.ndarray, tips: np.ndarray,
                 groups: np.ndarray) -> tuple:
     """The first wall of a jaw table a ball of radius ``r`` rolling along the ray meets: :func:`.walls.ray_walls_hit`'s

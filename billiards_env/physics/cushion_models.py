@@ -37,7 +37,7 @@ from __future__ import annotations
 import math
 
 from .codes import CU_IMPULSE, CU_MATHAVAN, CU_STRONGE
-from .kernel_logs import internal
+from .kernel_logs import internal, leaf
 from .spin_collide import resolve_wall_spin, wall_normal
 from .stronge import BETA, compliant_impact
 
@@ -75,7 +75,7 @@ def _apply_contact_impulse(vel, ang, i, r, n3x, n3y, n3z, jx, jy, jz):
     ang[i, 2] += k * (n3x * jy - n3y * jx)
 
 
-@internal
+@leaf
 def _impulse_tilted(vel, ang, i, nx, ny, d, r, e_c, mu_c, h):
     """The ``impulse`` law with the nose at height ``h``, ``d`` across (the contact normal tilted)."""
     nx, ny, c, s = contact_normal(nx, ny, d, r, h)
@@ -104,7 +104,7 @@ def _impulse_tilted(vel, ang, i, nx, ny, d, r, e_c, mu_c, h):
     return -(vx * nx + vy * ny)
 
 
-@internal
+@leaf
 def _stronge(vel, ang, i, nx, ny, d, r, e_c, mu_c, h, omega_ratio):
     """The ``stronge`` law (see the module docstring)."""
     nx, ny, c, s = contact_normal(nx, ny, d, r, h)
@@ -151,7 +151,7 @@ def _mathavan_step(m, r, mu_s, mu_w, sin_t, cos_t, s, dp):
     s[4] = wz + f * mu_w * cp * cos_t * dp
 
 
-@internal
+@leaf
 def _mathavan_solve(m, r, h, e_c, mu_s, mu_w, s, scratch):
     """Mathavan's impact on ``s = [vx, vy, wx, wy, wz]`` (cushion frame, ``vy > 0`` into it), in place."""
     sin_t = (h - r) / r
@@ -197,7 +197,7 @@ def _mathavan_solve(m, r, h, e_c, mu_s, mu_w, s, scratch):
         done += dp * abs(s[1]) * cos_t
 
 
-@internal
+@leaf
 def _mathavan(vel, ang, i, nx, ny, r, m, e_c, mu_c, mu_s, h, scratch):
     """The ``mathavan`` law (see the module docstring); ``scratch``: 10 floats."""
     vx = vel[i, 0]
@@ -231,7 +231,7 @@ def cushion_hit(vel, ang, i, cushion, r, m, e_c, prm, scratch):
     return wall_hit(vel, ang, i, nx, ny, r, r, m, e_c, prm, scratch)
 
 
-@internal
+@leaf
 def wall_hit(vel, ang, i, nx, ny, d, r, m, e_c, prm, scratch):
     """Ball ``i`` (radius ``r``, mass ``m``) hits a cushion whose horizontal contact normal (into the table, away
     from the cushion) is the unit ``(nx, ny)`` (a straight cushion, a rail, a jaw face, or a jaw tip's normal at the

@@ -25,7 +25,7 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_STOP, ROLLIN
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS, resolve_ball_ball, resolve_cushion
 from .kernel_io import KernelResult
-from .kernel_logs import (contact_cluster, count_burst, inlined, internal, next_event, pocket_holding,
+from .kernel_logs import (contact_cluster, count_burst, inlined, internal, leaf, next_event, pocket_holding,
                           reserve_events, rescan_row, reserve_states, set_pair)
 from .motion import (distance, drag_phi, drag_time_for_phi, speed_after, stop_distance, time_for_distance,
                      time_to_stop)
@@ -92,7 +92,7 @@ def _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min):
         tstop[i] = t0[i] + time_to_stop(s, law, a, k, v_min)
 
 
-@internal
+@leaf
 def predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy, pocket_r, prm):
     """Next stop, cushion or pocket event of ball ``i``: ``(time, kind, other)``."""
     vx = v0[i, 0]
@@ -143,7 +143,7 @@ def predict_ball(i, t0, p0, v0, sp0, tstop, radius, pocket_xy, pocket_r, prm):
     return t_stop, EV_STOP, -1
 
 
-@internal
+@leaf
 def _predict_pair(i, j, t, t0, p0, v0, sp0, tstop, ball_t, radius, prm):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (stop, cushion, pocket), since that event recomputes the pair anyway."""
@@ -155,7 +155,7 @@ def _predict_pair(i, j, t, t0, p0, v0, sp0, tstop, ball_t, radius, prm):
     return _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm)
 
 
-@internal
+@leaf
 def _pair_time(i, j, t, xi, yi, vxi, vyi, xj, yj, vxj, vyj, ball_t, radius, prm):
     """:func:`_predict_pair` from both balls' states at ``t`` (``i < j``), so that a ball's state is computed once
     for all its pairs."""

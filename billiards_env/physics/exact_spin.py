@@ -26,7 +26,7 @@ from .codes import (EV_COLLISION, EV_CUSHION, EV_JAM, EV_POCKET, EV_ROLL, EV_SPI
                     STATUS_TIME_CAP)
 from .collide import JAM_EVENTS
 from .kernel_io import N_STATE_COLS_SPIN, KernelResult
-from .kernel_logs import (carve, contact_cluster, count_burst, inlined, internal, next_event, pocket_holding,
+from .kernel_logs import (carve, contact_cluster, count_burst, inlined, internal, leaf, next_event, pocket_holding,
                           rescan_row, reserve_events, reserve_states, set_pair)
 from .roots import first_entry
 from .cushion_models import wall_hit
@@ -49,7 +49,7 @@ N_COLS = 14
 _TRANSITION = 100
 
 
-@internal
+@leaf
 def _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin):
     """Start ball ``i`` on the ``state`` piece from its stored state (made exact by :func:`piece_of`)."""
     c = piece_of(state, bs[i, VX], bs[i, VY], bs[i, WX], bs[i, WY], bs[i, WZ], r, f_slide, f_roll, f_spin)
@@ -66,7 +66,7 @@ def _set_piece(bs, st, i, state, r, f_slide, f_roll, f_spin):
     st[i] = state
 
 
-@internal
+@leaf
 def _classify_piece(bs, st, i, r, f_slide, f_roll, f_spin):
     """Start ball ``i`` on the piece its stored state calls for (a ball found rolling, its slip round-off, is
     put on rolling by :func:`.spin_motion.roll_on`)."""
@@ -100,7 +100,7 @@ def _move_to(bs, i, t):
     bs[i, T0] = t
 
 
-@internal
+@leaf
 def predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time, prm):
     """Next own event of ball ``i``: ``(time, kind, other)``: pocket, cushion, or its motion transition."""
     t0 = bs[i, T0]
@@ -182,7 +182,7 @@ def predict_ball(i, bs, st, radius, pocket_xy, pocket_r, length, width, max_time
     return t_end, _TRANSITION, -1
 
 
-@internal
+@leaf
 def _predict_pair(i, j, t, bs, ball_t, radius, max_time):
     """Time of the next collision of balls ``i`` and ``j`` after ``t``; ``inf`` if none before either ball's
     next own event (which recomputes the pair anyway)."""
@@ -251,7 +251,7 @@ def _slow_run(i, j, slow, slow_with, slow_runs):
     return min(slow_runs[i], slow_runs[j])
 
 
-@internal
+@leaf
 def _copy_motion(bs, st, src, dst, radius, f_slide, f_roll, f_spin):
     """Give ball ``dst``, which has the velocity and surface velocity ``R (wx, wy)`` of ``src``, the piece of
     ``src`` (acceleration and end), so a merged pair or cluster moves as one: its gaps stay exactly as they
@@ -283,7 +283,7 @@ def _touching_wall(x, y, r, length, width, wall):
     return y >= width - r
 
 
-@internal
+@leaf
 def _jaw_jam_velocity(bs, radius, involved, count, cx, cy, qx, qy, prm):
     """A jammed cluster's velocity ``(cx, cy)`` and mean surface velocity ``(qx, qy)`` on a jaw table: less any
     component into a wall a member touches, and less the surface velocity's part that drives the cluster into it

@@ -23,7 +23,7 @@ import math
 import numpy as np
 from numba import njit
 
-from .kernel_logs import inlined, internal, rewind_time
+from .kernel_logs import inlined, internal, leaf, rewind_time
 from .roots import first_entry, quadratic_roots_in, ray_circle_below
 
 #: A ball whose centre's projection lies this far (m) beyond a segment's end still counts as on the segment: the
@@ -171,7 +171,7 @@ def ray_walls_hit(px, py, ux, uy, r, segs, tips):
     return ray_walls_below(px, py, ux, uy, r, segs, tips, math.inf)
 
 
-@internal
+@leaf
 def ray_walls_below(px, py, ux, uy, r, segs, tips, limit):
     """:func:`ray_walls_hit` among the hits nearer than ``limit``: ``(limit, -1)`` if none. A segment's line hit is
     tested for lying on the segment only when it is the nearest so far (the same answer, fewer tests)."""
@@ -266,7 +266,7 @@ def pushes_into_walls(x, y, r, vx, vy, prm):
     return False
 
 
-@internal
+@leaf
 def cluster_off_walls(px, py, radius, involved, count, cx, cy, prm):
     """The velocity ``(cx, cy)`` of a jammed cluster (members ``involved[:count]``, centres ``px``, ``py``) with no
     component into any wall a member touches. :func:`without_push_into_walls` member by member takes out one wall's

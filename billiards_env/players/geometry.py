@@ -31,6 +31,7 @@ from billiards_env.physics.kernel_io import wall_groups
 from billiards_env.physics.layout import free_discs, nearest_free, py_hypot  # noqa: F401 (re-exported)
 from billiards_env.physics.motion import launch_speed, speed_after_distance
 from billiards_env.physics.plain import plain
+from billiards_env.physics.kernel_logs import leaf_public
 
 #: Columns of a shot row.
 COL_TARGET, COL_POCKET, COL_ANGLE, COL_SPEED, COL_NEED, COL_OBJ_ANGLE, COL_CUT, COL_D_CUE, COL_D_OBJ, COL_WINDOW, \
@@ -211,7 +212,7 @@ def _speed_to_travel(d: float, v_end: float, tm: Model) -> float:
     return launch_speed(d, v_end, tm.law, tm.decel, tm.k)
 
 
-@njit(cache=True)
+@leaf_public
 def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: float, w_half: float, w_dist: float,
              pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, cue: int, tm: Model,
              lo: float, hi: float, max_cut: float, arrive: float, factors: np.ndarray, check_scratch: bool,
@@ -322,7 +323,7 @@ def shot_row(out: np.ndarray, cx: float, cy: float, j: int, p: int, w_angle: flo
     return True
 
 
-@njit(cache=True)
+@leaf_public
 def object_path_clear(ox: float, oy: float, ux: float, uy: float, w_dist: float, pos: np.ndarray, on: np.ndarray,
                       radius: np.ndarray, cue: int, j: int) -> bool:
     """Whether ball ``j`` at ``(ox, oy)`` rolls ``w_dist`` along ``(ux, uy)`` (its pocket window's centre) without

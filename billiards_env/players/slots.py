@@ -23,6 +23,7 @@ from billiards_env.physics.walls import on_rail_span
 
 from .geometry import (ARRIVE_SPEED, COL_CUT, COL_SCORE, FALLBACK_CUT, MAX_CUT, N_COLS, SPEED_FACTORS, WIN_ANGLE,
                        WIN_DIST, WIN_FOUND, WIN_HALF, ghost_shots_windowed, model, pot_chance, windows_of)
+from billiards_env.physics.kernel_logs import leaf_public
 
 #: Columns of an in-hand slot row: target, pocket, object-ball direction, window half-width, distance to the
 #: capture circle, the object ball's path clear (1.0 / 0.0).
@@ -166,7 +167,7 @@ def kick_candidates(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, targets
     return out[:n]
 
 
-@njit(cache=True)
+@leaf_public
 def next_shot_ease(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass: np.ndarray, targets: np.ndarray,
                    pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray, lo: float, hi: float,
                    sigma: float) -> float:

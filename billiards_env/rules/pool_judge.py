@@ -33,6 +33,7 @@ from .state import (ANYWHERE, EIGHT_BALL, EIGHT_EARLY, EIGHT_NOT_CALLED, EIGHT_O
                     EIGHT_POCKETED, EIGHT_WRONG_POCKET, FOULS, ILLEGAL_BREAK, KITCHEN, LEGAL, NINE_BALL, NINE_POCKETED,
                     NO_CONTACT, NO_RAIL, PUSH_OUT, SCRATCH, SOLIDS, STRIPES, THREE_FOULS, WRONG_BALL_FIRST, Call,
                     BallInHand, GameState)
+from billiards_env.physics.kernel_logs import leaf_public
 
 #: A game state: the game, the balls on the table (a mask of their numbers), the shooter, ball in hand, the groups,
 #: each player's fouls in a row, the break, a push-out available, a push-out pending, game over, the winner, the shot.
@@ -224,7 +225,7 @@ def _clean(out: np.void, state: np.void, reason: int, keep: bool, respot: int, g
           plain(False), plain(False), plain(-1), groups, push)
 
 
-@njit(cache=True)
+@leaf_public
 def _call_nine(out: np.void, state: np.void, options: np.void, first: int, rails: int, pocketed: np.ndarray,
                n_pocketed: int, cue_pocketed: bool, push: bool) -> None:
     targets = legal_mask(state)
@@ -255,7 +256,7 @@ def _call_nine(out: np.void, state: np.void, options: np.void, first: int, rails
         _clean(out, state, plain(R_LEGAL), n_pocketed > 0, respot, plain(GROUPS_OPEN), plain(False))
 
 
-@njit(cache=True)
+@leaf_public
 def _call_eight(out: np.void, state: np.void, options: np.void, first: int, rails: int,
                 pocketed: np.ndarray, pockets: np.ndarray, n_pocketed: int, cue_pocketed: bool, called: int) -> None:
     me = state["shooter"]
