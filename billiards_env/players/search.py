@@ -165,7 +165,8 @@ class Judge:
     and the rows of the balls that player may hit first. Outcomes are :func:`shot_keys` rows: after the break only
     whether some ball reached a cushion after the first contact counts, not which (the rules ask no more; a test
     holds them to it: tests/players/test_search_fast.py), so one verdict serves all the shots that differ only
-    there (the summary judged is the first such shot's)."""
+    there (the summary judged is the first such shot's); the same for the pockets the balls dropped into, unless
+    the rules read them (``Ruleset.reads_pockets``: a called pocket)."""
 
     def __init__(self, ctx: ShotContext) -> None:
         game = ctx.game
@@ -173,6 +174,8 @@ class Judge:
         self.numbers = np.ascontiguousarray(game.numbers, dtype=np.int64)
         #: Whether the verdict may depend on which balls reached a cushion (the break), not only on whether one did.
         self.rail_detail = bool(game.game_state.break_shot)
+        #: Whether it may depend on the pockets the balls dropped into (a called pocket), not only on which dropped.
+        self.pocket_detail = bool(game.rules.reads_pockets(game.game_state))
         self.verdicts: dict[bytes, int] = {}  #: outcome key -> index into the lists below
         self.values: list[float] = []
         self.next: list[int] = []
@@ -192,8 +195,14 @@ class Judge:
 
     def ids(self, keys: np.ndarray, masks: np.ndarray) -> np.ndarray:
         """The verdict index of each outcome key (judging the new ones; ``masks``: the shots' cushion bit masks,
-        :func:`shot_keys`)."""
-        keys = np.ascontiguousarray(keys, dtype=np.int64)
+        :func:`shot_keys`). Unless the rules read pockets here (:attr:`pocket_detail`), keys that differ only in the
+        pockets share a verdict (judged with pocket 0 for every ball that dropped)."""
+        keys = np.array(keys, dtype=np.int64)  # a copy: the pockets may be blanked below
+        if not self.pocket_detail and keys.ndim == 2:
+            b = len(self.numbers)
+            pockets = keys[:, 4 + b:]
+            pockets[pockets >= 0] = 0  # the balls' pockets, as "dropped"
+            keys[:, 1] = np.where(keys[:, 1] >= 0, 0, -1)  # the cue ball's: whether it dropped
         w = keys.shape[1] * keys.itemsize if keys.ndim == 2 else 0
         buf = keys.tobytes()  # the rows' bytes in one call: row k is buf[k * w:(k + 1) * w] (its tobytes())
         verdicts = self.verdicts

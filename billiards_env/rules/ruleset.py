@@ -99,6 +99,13 @@ class Ruleset(ABC):
         called pockets: never."""
         return False
 
+    def reads_pockets(self, state: GameState) -> bool:
+        """Whether the call on a shot from ``state`` may depend on which pocket a ball (or the cue ball) dropped
+        into, not only on which balls dropped: here only with a called pocket. A game whose rules read pockets
+        otherwise (one-pocket, bank pool) says so; the search player judges outcomes that differ only in their
+        pockets once when this is False."""
+        return self.needs_called_pocket(state)
+
     @abstractmethod
     def call(self, state: GameState, summary: ShotSummary, shot_info: ShotInfo | None = None) -> Call:
         """The call on the shot ``summary`` played from ``state`` with the declarations ``shot_info``."""

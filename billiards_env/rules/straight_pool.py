@@ -227,6 +227,11 @@ class StraightPool:
         """Every shot is called (ball and pocket)."""
         return not state.game_over
 
+    def reads_pockets(self, state: StraightPoolState) -> bool:
+        """Whether the call may depend on the pockets the balls dropped into: yes, every shot calls its pocket
+        (``Ruleset.reads_pockets``)."""
+        return True
+
     def call(self, state: StraightPoolState, summary: ShotSummary, called: CalledShot | None = None
              ) -> StraightPoolCall:
         """The call on the shot ``summary`` played from ``state`` with the declaration ``called``."""

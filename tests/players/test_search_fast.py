@@ -17,7 +17,7 @@ import billiards_env  # noqa: F401  (registers the ids)
 from billiards_env.physics.batch import run_shots
 from billiards_env.players import make_player, shot_context
 from billiards_env.players.search import Playable, SearchPlayer, SearchSettings, _key_from_log, shot_keys
-from billiards_env.rules import ShotInfo, ShotSummary
+from billiards_env.rules import STRIPES, SOLIDS, EightBall, GameState, NineBall, ShotInfo, ShotSummary
 from golden import reference_players as reference
 
 QUICK = SearchSettings(n_geometric=3, sweep_angles=24, robust_samples=3, top_k=3)
@@ -136,6 +136,43 @@ def test_after_the_break_the_rules_read_only_whether_a_ball_reached_a_cushion():
                 assert len(calls) == 1
                 checked += 1
     assert checked >= 100
+
+
+def test_without_a_called_pocket_the_rules_read_no_pocket():
+    """The search judges shots that differ only in the pockets their balls dropped into once when
+    ``reads_pockets`` says the rules read none (9-ball; 8-ball off the 8): the call must not depend on them then.
+    On the 8 with calls on, it does (the called pocket), and ``reads_pockets`` says so."""
+    rng = np.random.default_rng(8)
+    checked = 0
+    for env_id in ("Billiards9Ball-v0", "Billiards8Ball-v0"):
+        for env, _, _ in _decisions(env_id, range(70, 76), 8):
+            game = shot_context(env).game
+            state = game.game_state
+            on = list(state.on_table)
+            for _ in range(20):
+                first = int(rng.choice(on)) if rng.random() < 0.9 else None
+                pocketed = tuple(int(n) for n in rng.permutation(on)[:int(rng.integers(1, 3))])
+                if rng.random() < 0.3 and 8 in on and 8 not in pocketed:
+                    pocketed = pocketed + (8,)
+                rails = tuple(sorted(rng.permutation(on)[:2].tolist()))
+                scratch = rng.random() < 0.3
+                calls = set()
+                for _ in range(4):
+                    pockets = tuple(int(p) for p in rng.integers(0, 6, len(pocketed)))
+                    cue = int(rng.integers(0, 6)) if scratch else -1
+                    summary = ShotSummary(first, rails, pocketed, pockets, scratch, cue)
+                    calls.add(game.rules.call(state, summary, game.declared_for(summary)))
+                if not game.rules.reads_pockets(state):
+                    assert len(calls) == 1, (state, calls)
+                    checked += 1
+    assert checked >= 200
+    # On the 8 with calls on: the 8 into the called pocket wins, into another loses.
+    rules = EightBall()
+    on_8 = GameState("eight_ball", (3, 8), shooter=0, ball_in_hand=False, groups=(STRIPES, SOLIDS), break_shot=False)
+    assert rules.reads_pockets(on_8) and not NineBall().reads_pockets(NineBall().initial_state(0))
+    calls = {rules.call(on_8, ShotSummary(8, (8,), (8,), (p,), False, -1), ShotInfo(called_pocket=2)).winner
+             for p in (2, 4)}
+    assert calls == {0, 1}
 
 
 @pytest.mark.parametrize("kw", [dict(), dict(friction="spin", spin_action=True)])
