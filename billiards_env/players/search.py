@@ -27,7 +27,9 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics.batch import BatchResult, run_shots
-from billiards_env.rules import ShotSummary, summarize_arrays
+from billiards_env.physics.plain import plain
+from billiards_env.rules import EightBall, NineBall, ShotSummary, summarize_arrays
+from billiards_env.rules import pool_judge as pj
 
 from .context import BasePlayer, ShotContext, shot_context, to_action
 from .geometric import break_shot, context_model
@@ -147,6 +149,60 @@ def _key_from_log(events: np.ndarray, pocket: np.ndarray, numbers: np.ndarray, c
     return key, mask
 
 
+@njit(cache=True)
+def judge_rows(keys: np.ndarray, masks: np.ndarray, rows: np.ndarray, states: np.ndarray, options: np.ndarray,
+               row_of: np.ndarray, calls: np.ndarray, afters: np.ndarray, values: np.ndarray, nxt: np.ndarray,
+               t_len: np.ndarray, t_rows: np.ndarray) -> None:
+    """:meth:`Judge._judge` of the outcome keys ``keys[rows]`` (:func:`shot_keys` rows; ``masks``: their cushion
+    bit masks) in one compiled call, for 9-ball and 8-ball: :func:`billiards_env.rules.pool_judge.play` (the
+    Python rules' call and next state on integers, held equal to them by ``tests/rules/test_pool_judge.py``) from
+    the decision's state (``states[0]``, a ``GAME_STATE_ROW`` record) with the options (``options[0]``), the
+    shooter's declaration as ``PoolSession.declared_for`` makes it (on the 8 with calls on: the 8's pocket). Writes
+    per row its value, who shoots next (1, 0, -1) and the rows of the balls that player may hit first
+    (``t_rows[q, :t_len[q]]``, by ascending number; ``row_of``: the row of each number). ``calls``, ``afters``:
+    one-record scratch arrays (records are passed in arrays: numba types an array argument once, a record at
+    every call)."""
+    state, opts, call, after = states[0], options[0], calls[0], afters[0]
+    b = (keys.shape[1] - 4) // 2
+    pocketed = np.empty(b, np.int64)
+    pockets = np.empty(b, np.int64)
+    on_call = pj.needs_called_pocket(state, opts)
+    for q in range(rows.shape[0]):
+        k = rows[q]
+        n = keys[k, 3]
+        called = -1
+        for i in range(n):
+            pocketed[i] = keys[k, 4 + i]
+            pockets[i] = keys[k, 4 + b + i]
+            if on_call and pocketed[i] == 8:
+                called = pockets[i]
+        pj.play(state, opts, keys[k, 0], masks[k], pocketed, pockets, n, keys[k, 1] >= 0, plain(False), called,
+                call, after)
+        t_len[q] = 0
+        if call["over"]:
+            values[q] = WIN_VALUE if call["winner"] == call["shooter"] else -WIN_VALUE
+            nxt[q] = -1
+        elif call["foul"]:
+            values[q] = FOUL_VALUE
+            nxt[q] = -1
+        else:
+            legal = pj.legal_mask(after)
+            for number in range(row_of.shape[0]):
+                if (legal >> number) & 1:
+                    t_rows[q, t_len[q]] = row_of[number]
+                    t_len[q] += 1
+            if call["turn_over"]:
+                values[q] = 0.0
+                nxt[q] = 0
+            else:
+                kept = 0  # the balls pocketed and not respotted
+                for i in range(n):
+                    if not (call["respot"] >> pocketed[i]) & 1:
+                        kept += 1
+                values[q] = KEEP_VALUE + BALL_VALUE * kept
+                nxt[q] = 1
+
+
 def _rails(mask: int) -> tuple[int, ...]:
     """The ball numbers of a bit mask, ascending."""
     out = _RAILS.get(mask)
@@ -181,6 +237,15 @@ class Judge:
         self.next: list[int] = []
         self.targets: list[np.ndarray] = []
         self._after: dict[Any, np.ndarray] = {}  # call -> legal rows after it
+        #: 9-ball and 8-ball: the compiled rules' inputs (:func:`judge_rows`): the state and options records, the
+        #: row of each number, scratch call and state records; None: the Python rules judge (:meth:`_judge`).
+        self._compiled: tuple | None = None
+        if type(game.rules) in (NineBall, EightBall):
+            row_of = np.full(int(self.numbers.max()) + 1, -1, np.int64)
+            row_of[self.numbers] = np.arange(len(self.numbers))
+            state, options = np.zeros(1, pj.GAME_STATE_ROW), np.zeros(1, pj.RULE_OPTIONS)
+            state[0], options[0] = pj.state_row(game.game_state), pj.options_row(game.rules)
+            self._compiled = (state, options, row_of, np.zeros(1, pj.CALL_ROW), np.zeros(1, pj.GAME_STATE_ROW))
         self._groups: tuple[int, np.ndarray, np.ndarray] | None = None  # (verdicts, t_flat, t_off) of groups()
 
     def groups(self) -> tuple[np.ndarray, np.ndarray]:
@@ -207,13 +272,31 @@ class Judge:
         buf = keys.tobytes()  # the rows' bytes in one call: row k is buf[k * w:(k + 1) * w] (its tobytes())
         verdicts = self.verdicts
         out = [0] * len(keys)
+        new: list[int] = []  # the first shot of each new outcome, in the order its verdict index was given
         for k in range(len(keys)):
             kb = buf[k * w:(k + 1) * w]
             v = verdicts.get(kb)
             if v is None:
-                v = verdicts[kb] = self._judge(keys[k], int(masks[k]))
+                v = verdicts[kb] = len(self.values) + len(new)
+                new.append(k)
             out[k] = v
+        if new and self._compiled is not None:
+            self._judge_compiled(keys, np.asarray(masks, dtype=np.int64), np.array(new, dtype=np.int64))
+        else:
+            for k in new:
+                self._judge(keys[k], int(masks[k]))
         return np.array(out, dtype=np.int64)
+
+    def _judge_compiled(self, keys: np.ndarray, masks: np.ndarray, rows: np.ndarray) -> None:
+        """The verdicts of the outcomes ``keys[rows]`` appended, from one :func:`judge_rows` call."""
+        state, options, row_of, call, after = self._compiled  # type: ignore[misc]
+        n = len(rows)
+        values, nxt, t_len = np.empty(n), np.empty(n, np.int64), np.empty(n, np.int64)
+        t_rows = np.empty((n, len(self.numbers)), np.int64)
+        judge_rows(keys, masks, rows, state, options, row_of, call, after, values, nxt, t_len, t_rows)
+        self.values.extend(values.tolist())
+        self.next.extend(nxt.tolist())
+        self.targets.extend(t_rows[q, :t_len[q]].copy() for q in range(n))
 
     def _judge(self, key: np.ndarray, mask: int) -> int:
         game = self.ctx.game

@@ -35,7 +35,9 @@ def warm_up() -> float:
     res = run_shots(Simulator(table, physics), balls, np.array([0.1, 1.0]), np.array([2.0, 3.0]), validate=False)
     numbers = np.arange(len(balls), dtype=np.int64)
     for detail in (True, False):
-        search.shot_keys(res.first_contact, res.rail_after_contact, res.pocket, res.pocketed_at, numbers, 0, detail)
+        keys, masks, _ = search.shot_keys(res.first_contact, res.rail_after_contact, res.pocket, res.pocketed_at,
+                                          numbers, 0, detail)
+    _judge_rows(keys, masks)
     search.next_shot_ease(table, balls.radius, res.pos, res.on_table, 0, [[1, 2], [3]], 0.002)
     from .geometry import places_ease, search_places
 
@@ -43,6 +45,22 @@ def warm_up() -> float:
                               np.array([0.25, 0.5]), np.array([0.0, 0.4]))
     places_ease(places, balls.pos, balls.on_table, balls.radius, 0, targets, *tm, 0.002, 1.39)
     return time.perf_counter() - start
+
+
+def _judge_rows(keys: np.ndarray, masks: np.ndarray) -> None:
+    """The search's compiled 9-ball and 8-ball verdicts (:func:`~.search.judge_rows`) on outcome keys."""
+    from billiards_env.rules import NineBall
+    from billiards_env.rules import pool_judge as pj
+
+    from .search import judge_rows
+
+    rules = NineBall()
+    state, options = np.zeros(1, pj.GAME_STATE_ROW), np.zeros(1, pj.RULE_OPTIONS)
+    state[0], options[0] = pj.state_row(rules.initial_state(0, on_table=(1, 2, 3))), pj.options_row(rules)
+    n, b = len(keys), (keys.shape[1] - 4) // 2
+    judge_rows(np.ascontiguousarray(keys), masks, np.arange(n, dtype=np.int64), state, options,
+               np.arange(b, dtype=np.int64), np.zeros(1, pj.CALL_ROW), np.zeros(1, pj.GAME_STATE_ROW), np.empty(n),
+               np.empty(n, np.int64), np.empty(n, np.int64), np.empty((n, b), np.int64))
 
 
 __all__ = ["warm_up"]

@@ -16,7 +16,8 @@ import pytest
 import billiards_env  # noqa: F401  (registers the ids)
 from billiards_env.physics.batch import run_shots
 from billiards_env.players import make_player, shot_context
-from billiards_env.players.search import Playable, SearchPlayer, SearchSettings, _key_from_log, shot_keys
+from billiards_env.players.search import (Judge, Playable, SearchPlayer, SearchSettings, _key_from_log,
+                                          _simulate_judged, shot_keys)
 from billiards_env.rules import STRIPES, SOLIDS, EightBall, GameState, NineBall, ShotInfo, ShotSummary
 from golden import reference_players as reference
 
@@ -136,6 +137,41 @@ def test_after_the_break_the_rules_read_only_whether_a_ball_reached_a_cushion():
                 assert len(calls) == 1
                 checked += 1
     assert checked >= 100
+
+
+def test_compiled_verdicts_equal_the_python_rules():
+    """The search's 9-ball and 8-ball verdicts come from the compiled rules (``judge_rows``): the same value, next
+    shooter and legal balls after, shot for shot, as the Python rules give (``Judge._judge``), on random shots from
+    the positions of seeded games (breaks included, ball in hand, fouls, wins)."""
+    rng = np.random.default_rng(9)
+    checked = set()
+    for env_id in ("Billiards9Ball-v0", "Billiards8Ball-v0"):
+        env = gym.make(env_id)
+        env.action_space.seed(9)
+        try:
+            for seed in range(90, 94):
+                env.reset(seed=seed)
+                for _ in range(6):
+                    ctx = shot_context(env)
+                    n = 120
+                    angles, speeds = rng.uniform(0, 2 * math.pi, n), rng.uniform(0.3, 6.0, n)
+                    fast, slow = Judge(ctx), Judge(ctx)
+                    assert fast._compiled is not None
+                    slow._compiled = None
+                    a = _simulate_judged(ctx, angles, speeds, judge=fast)
+                    b = _simulate_judged(ctx, angles, speeds, judge=slow)
+                    assert np.array_equal(a.values, b.values) and np.array_equal(a.next, b.next)
+                    for k in range(n):
+                        assert np.array_equal(a.t_flat[a.t_off[a.group[k]]:a.t_off[a.group[k] + 1]],
+                                              b.t_flat[b.t_off[b.group[k]]:b.t_off[b.group[k] + 1]])
+                    checked |= set(zip(a.values.tolist(), a.next.tolist()))
+                    _, _, term, trunc, _ = env.step(env.action_space.sample())
+                    if term or trunc:
+                        break
+        finally:
+            env.close()
+    # wins, fouls, turns kept and lost all judged
+    assert {v for v, _ in checked} >= {-3.0, 0.0} and any(v >= 1.0 for v, _ in checked), checked
 
 
 def test_without_a_called_pocket_the_rules_read_no_pocket():
