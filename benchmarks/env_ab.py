@@ -135,13 +135,19 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--base", default="HEAD", help="the commit to compare with (default HEAD)")
     p.add_argument("--rounds", type=int, default=3)
     p.add_argument("--seconds", type=float, default=2.0, help="timing per measurement and round")
+    p.add_argument("--base-tree", type=Path, default=None,
+                   help="an existing checkout of the base (e.g. a git worktree), used instead of a new worktree of "
+                        "--base; warmed up as a new one is")
     args = p.parse_args(argv)
     with tempfile.TemporaryDirectory() as tmp:
-        base = Path(tmp) / "base"
-        subprocess.run(["git", "-C", str(REPO), "worktree", "add", "--detach", "-q", str(base), args.base], check=True)
+        base = args.base_tree.resolve() if args.base_tree else Path(tmp) / "base"
+        if args.base_tree is None:
+            subprocess.run(["git", "-C", str(REPO), "worktree", "add", "--detach", "-q", str(base), args.base],
+                           check=True)
+        label = args.base if args.base_tree is None else str(base)
         (base / "benchmarks" / "env_ab.py").write_text(Path(__file__).read_text())  # the same timing code
         try:
-            print(f"[env_ab] warming up the base tree {args.base} (its kernels compile once)", file=sys.stderr)
+            print(f"[env_ab] warming up the base tree {label} (its kernels compile once)", file=sys.stderr)
             subprocess.run([sys.executable, "-m", "billiards_env.warmup"], cwd=str(base), check=True,
                            env={**os.environ, "PYTHONPATH": str(base)}, capture_output=True)
             best: dict[str, dict[str, float]] = {"before": {}, "after": {}}
@@ -153,8 +159,9 @@ def main(argv: list[str] | None = None) -> int:
                         best[name][key] = max(best[name].get(key, 0.0), rate)
                 print(f"[env_ab] round {r + 1}/{args.rounds} done", file=sys.stderr)
         finally:
-            subprocess.run(["git", "-C", str(REPO), "worktree", "remove", "--force", str(base)], check=False)
-    print(f"env rates, best of {args.rounds} interleaved rounds of {args.seconds:g} s (base {args.base}):\n")
+            if args.base_tree is None:
+                subprocess.run(["git", "-C", str(REPO), "worktree", "remove", "--force", str(base)], check=False)
+    print(f"env rates, best of {args.rounds} interleaved rounds of {args.seconds:g} s (base {label}):\n")
     print("| measurement | before (/s) | after (/s) | after / before |")
     print("|---|---:|---:|---:|")
     for key in best["after"]:
