@@ -354,15 +354,16 @@ class GameTables:
 
         counts = self.tout["n_opp"][rows]
         turn = np.arange(self.cap) < counts[:, None]  # the opponent's shots of each table's reply
-        opp = self.rec_opp[rows]
+        # The two fields read, each indexed alone: indexing the records would copy every field of every shot slot.
+        opp_pocketed, opp_foul = self.rec_opp["pocketed"][rows], self.rec_opp["foul"][rows]
         put("is_success", over & (winner == 0))
         put("winner", np.where(winner < 0, -1, winner))
         put("shooter", st["shooter"])
         put("legal_targets", (np.where(over, 0, self.legal[rows])[:, None] >> self._numbers) & 1 != 0)
         put("opponent_shots", counts)
         put("opponent_pocketed", self._row_masks(np.bitwise_or.reduce(
-            np.where(turn, opp["pocketed"], 0).astype(np.int64), axis=1)))
-        put("opponent_fouls", (turn & (opp["foul"] != 0)).sum(axis=1))
+            np.where(turn, opp_pocketed, 0).astype(np.int64), axis=1)))
+        put("opponent_fouls", (turn & (opp_foul != 0)).sum(axis=1))
         put("ball_in_hand", np.where(over, pj.BIH_NO, st["bih"]))
         put("groups", st["groups"])
         if step:

@@ -19,9 +19,10 @@ from numba import njit
 from .codes import EV_COLLISION, EV_CUSHION
 from .exact import simulate_exact
 from .exact_spin import simulate_exact_spin
+from .kernel_logs import leaf_public
 
 
-@njit(cache=True)
+@leaf_public
 def store_row(k, res, struck, out):
     """Row ``k`` of the result arrays ``out`` from kernel result ``res`` (``struck``: the ball whose first contact
     counts): status, time, event count, pockets, first contact, cushion hits (and after the first contact), and
