@@ -19,11 +19,11 @@ internal = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True)
 #: The same, inlined into the caller by numba (in its own IR): for small helpers of the kernels' hot loops, which
 #: a call would slow down.
 inlined = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, inline="always")
-#: The same for hot helpers that read and write arrays but never make, keep or return one (nor get one from a call):
-#: compiled without numba's reference counting (``_nrt=False``), so a call no longer increments and decrements the
-#: count of each array argument (an atomic operation each, which numba's pruning leaves in a function of several
-#: exits: a tenth of a one-ball shot's time). The caller holds the arrays for the call. numba refuses an allocation
-#: in such a function; ``tests/physics/test_leaf_helpers.py`` checks that none returns an array.
+#: Like :data:`internal`, for hot helpers that read and write arrays but never make, keep or return one (nor get one
+#: from a call): compiled without numba's reference counting (``_nrt=False``), so a call no longer increments and
+#: decrements the count of each array argument (an atomic operation each, which numba's pruning leaves in a function
+#: of several exits: a tenth of a one-ball shot's time). The caller holds the arrays for the call. numba refuses an
+#: allocation in such a function; ``tests/physics/test_leaf_helpers.py`` checks that none returns an array.
 leaf = njit(cache=True, no_cpython_wrapper=True, no_cfunc_wrapper=True, _nrt=False)
 #: :data:`leaf` with its Python entry kept, for such helpers that Python calls too (the players, the tests).
 leaf_public = njit(cache=True, _nrt=False)
