@@ -468,7 +468,7 @@ def play_tables(rows, resets, act, kc, pos, vel, ang, on, shots, radius, mass, g
     breaks. Both record every shot (``rec_agent``, ``rec_opp``) and, for the positions and candidates observation
     types, write the observation (``obs``). ``wc``: each table's cache of its balls' pocket windows for the
     geometric opponent (``(pos (N, B, 2), windows (N, B, K, 4), have (N, B))``, see
-    :func:`~billiards_env.players.geometry.cached_window`), kept from call to call: the same decisions, the windows
+    :func:`~billiards_env.players.geometry.fill_window`), kept from call to call: the same decisions, the windows
     of the balls that did not move since the table's last decision not worked out again."""
     tm = (tm_xy, tm_r, tm_params)
     for q in range(rows.shape[0]):

@@ -65,7 +65,7 @@ def ray_circle_entry(px: float, py: float, ux: float, uy: float, cx: float, cy: 
 
 
 
-@njit(cache=True)
+@leaf_public
 def first_pocket_on_ray(x: float, y: float, ux: float, uy: float, limit: float, pocket_xy: np.ndarray,
                         pocket_r: np.ndarray) -> tuple:
     """The first pocket whose capture circle the ray from ``(x, y)`` along the unit ``(ux, uy)`` enters within
@@ -541,7 +541,7 @@ JAW_EXACT_NEAR = 1e-6
 JAW_TOL = 1e-6
 
 
-@njit(cache=True)
+@leaf_public
 def _jaw_crossings(mask: int, ox: float, oy: float, radius: float, cx: float, cy: float, pr: float,
                    segs: np.ndarray, tips: np.ndarray, walls: int, theta_c: float, half: float, step: float,
                    div: int) -> int:

@@ -39,7 +39,7 @@ COL_TARGET, COL_POCKET, COL_ANGLE, COL_SPEED, COL_NEED, COL_OBJ_ANGLE, COL_CUT, 
 N_COLS = 16
 #: Columns of a window row (:func:`target_windows`): centre direction, half-width, distance, found (1.0 / 0.0).
 WIN_ANGLE, WIN_HALF, WIN_DIST, WIN_FOUND = range(4)
-#: ``WIN_FOUND`` of a window that a table's cache has not worked out yet (:func:`cached_window`).
+#: ``WIN_FOUND`` of a window that a table's cache has not worked out yet (:func:`fill_window`).
 WIN_UNKNOWN = -1.0
 
 #: The geometric player's cut limits: the easiest shot up to ``MAX_CUT``, else up to ``FALLBACK_CUT``.
@@ -152,47 +152,46 @@ def windows_of(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Mod
     return out
 
 
-@njit(cache=True)
-def cached_window(j: int, p: int, pos: np.ndarray, radius: np.ndarray, tm: Model, cache_pos: np.ndarray,
-                  cache_win: np.ndarray, cache_have: np.ndarray) -> np.ndarray:
-    """Ball ``j``'s window into pocket ``p`` (a row of 4, :func:`~billiards_env.physics.aim.window_of`) from a
-    table's cache: ``cache_pos`` (B, 2), ``cache_win`` (B, K, 4), ``cache_have`` (B,) False at first. Worked out
-    the first time it is asked for while the ball stands where it is, and kept in ``cache_win[j, p]``; when ball
-    ``j`` no longer stands at ``cache_pos[j]`` (or ``cache_have[j]`` is False), its windows are forgotten first
-    (``WIN_FOUND`` set to :data:`WIN_UNKNOWN`). A ball's windows depend on its position alone (the table's model
-    fixed), so a cached window is the same numbers as a fresh one; a pocket never asked for costs nothing."""
+@leaf_public
+def fill_window(j: int, p: int, pos: np.ndarray, radius: np.ndarray, tm: Model, cache_pos: np.ndarray,
+                cache_win: np.ndarray, cache_have: np.ndarray) -> None:
+    """Ball ``j``'s window into pocket ``p`` (a row of 4, :func:`~billiards_env.physics.aim.window_of`) in a table's
+    cache, read as ``cache_win[j, p]``: ``cache_pos`` (B, 2), ``cache_win`` (B, K, 4), ``cache_have`` (B,) False at
+    first. Worked out the first time it is asked for while the ball stands where it is; when ball ``j`` no longer
+    stands at ``cache_pos[j]`` (or ``cache_have[j]`` is False), its windows are forgotten first (``WIN_FOUND`` set to
+    :data:`WIN_UNKNOWN`). A ball's windows depend on its position alone (the table's model fixed), so a cached window
+    is the same numbers as a fresh one; a pocket never asked for costs nothing. Returns nothing (a leaf helper: the
+    caller reads the cache), so a call counts no array references."""
     if not (cache_have[j] and cache_pos[j, 0] == pos[j, 0] and cache_pos[j, 1] == pos[j, 1]):
         for q in range(cache_win.shape[1]):
             cache_win[j, q, WIN_FOUND] = WIN_UNKNOWN
         cache_pos[j, 0] = pos[j, 0]
         cache_pos[j, 1] = pos[j, 1]
         cache_have[j] = True
-    w = cache_win[j, p]
-    if w[WIN_FOUND] == WIN_UNKNOWN:
+    if cache_win[j, p, WIN_FOUND] == WIN_UNKNOWN:
         c, h, d_in, ok = window_of(pos[j, 0], pos[j, 1], radius[j], tm.pocket_xy[p, 0], tm.pocket_xy[p, 1],
                                    tm.pocket_r[p], tm.length, tm.width, WINDOW_SAMPLES, tm.segs, tm.tips)
-        w[WIN_ANGLE] = c
-        w[WIN_HALF] = h
-        w[WIN_DIST] = d_in
-        w[WIN_FOUND] = 1.0 if ok else 0.0
-    return w
+        cache_win[j, p, WIN_ANGLE] = c
+        cache_win[j, p, WIN_HALF] = h
+        cache_win[j, p, WIN_DIST] = d_in
+        cache_win[j, p, WIN_FOUND] = 1.0 if ok else 0.0
 
 
 @njit(cache=True)
 def windows_cached(pos: np.ndarray, radius: np.ndarray, targets: np.ndarray, tm: Model, cache_pos: np.ndarray,
                    cache_win: np.ndarray, cache_have: np.ndarray) -> np.ndarray:
-    """:func:`windows_of` (its samples) with a table's cache of its balls' windows (:func:`cached_window`): the
+    """:func:`windows_of` (its samples) with a table's cache of its balls' windows (:func:`fill_window`): the
     windows of the balls that stand where they stood at an earlier call are not worked out again. The same
     numbers either way."""
     k_p = tm.pocket_r.shape[0]
     out = np.zeros((targets.shape[0], k_p, 4))
     for t in range(targets.shape[0]):
         for p in range(k_p):
-            w = cached_window(targets[t], p, pos, radius, tm, cache_pos, cache_win, cache_have)
+            fill_window(targets[t], p, pos, radius, tm, cache_pos, cache_win, cache_have)
             # Element by element: an array assignment compiles numba's shape check and its message formatting
             # (seconds of a cold start).
             for c in range(4):
-                out[t, p, c] = w[c]
+                out[t, p, c] = cache_win[targets[t], p, c]
     return out
 
 
@@ -433,7 +432,7 @@ def best_shot_cached(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radi
     """The shot :func:`best_shot_row` picks among the rows of :func:`ghost_shots_from` from ``(cx, cy)`` with cuts
     up to ``max(max_cut, FALLBACK_CUT)`` (the easiest within ``max_cut``, else the easiest), as a ``(1, N_COLS)``
     array (``(0, N_COLS)``: no shot), without working out the shots that cannot be it. The windows come from a
-    table's cache (:func:`cached_window`), each worked out only when its shot is tried.
+    table's cache (:func:`fill_window`), each worked out only when its shot is tried.
 
     The (ball, pocket) shots are tried in :func:`ghost_shots_from`'s order. Before any shot within ``max_cut`` is
     found, a shot is passed over, window and all, when :func:`tolerance_bound` allows it no cut within the 88 deg
@@ -468,10 +467,11 @@ def best_shot_cached(cx: float, cy: float, pos: np.ndarray, on: np.ndarray, radi
                                     tm.pocket_r[p], WINDOW_SAMPLES, cos_max if within else cos_lim)
             if bound < 0.0 or (within and bound <= best):
                 continue
-            w = cached_window(j, p, pos, radius, tm, cache_pos, cache_win, cache_have)
-            if w[WIN_FOUND] == 0.0:
+            fill_window(j, p, pos, radius, tm, cache_pos, cache_win, cache_have)
+            if cache_win[j, p, WIN_FOUND] == 0.0:
                 continue
-            if not shot_row(row, cx, cy, j, p, w[WIN_ANGLE], w[WIN_HALF], w[WIN_DIST], pos, on, radius, mass, cue, tm,
+            if not shot_row(row, cx, cy, j, p, cache_win[j, p, WIN_ANGLE], cache_win[j, p, WIN_HALF],
+                            cache_win[j, p, WIN_DIST], pos, on, radius, mass, cue, tm,
                             lo, hi, max_cut if within else lim, arrive, factors, plain(True), scratch,
                             best if within else -math.inf, plain(-1)):
                 continue
@@ -614,7 +614,7 @@ def geometric_decision_cached(pos: np.ndarray, on: np.ndarray, radius: np.ndarra
                               targets: np.ndarray, pocket_xy: np.ndarray, pocket_r: np.ndarray, params: np.ndarray,
                               lo: float, hi: float, area: np.ndarray, in_hand: bool, is_break: bool, max_cut: float,
                               cache_pos: np.ndarray, cache_win: np.ndarray, cache_have: np.ndarray) -> tuple:
-    """:func:`geometric_decision_arrays` with a table's cache of its balls' pocket windows (:func:`cached_window`:
+    """:func:`geometric_decision_arrays` with a table's cache of its balls' pocket windows (:func:`fill_window`:
     ``cache_pos`` (B, 2), ``cache_win`` (B, K, 4), ``cache_have`` (B,) False at first), kept between the decisions
     on one table: the balls that have not moved keep theirs. The same decision, bit for bit, and the same ranked
     shots (:func:`geometric_choice_cached` gives the decision alone, faster)."""
@@ -999,7 +999,7 @@ def geometric_decision(pos: np.ndarray, on: np.ndarray, radius: np.ndarray, mass
 
 
 __all__ = ["Model", "TableModel", "table_model", "state_model", "model", "windows_of", "windows_cached",
-           "geometric_decision_cached", "geometric_choice_cached", "cached_window", "target_windows", "shot_row",
+           "geometric_decision_cached", "geometric_choice_cached", "fill_window", "target_windows", "shot_row",
            "rank_rows", "ghost_shots_from", "ghost_shots", "ghost_shots_windowed", "best_shot_row", "best_shot_cached",
            "nearest_target", "py_hypot", "free_discs",
            "nearest_free", "pocket_holes", "place_for_shot", "choose_place", "layout_tolerance", "tolerance_bound",
