@@ -3,8 +3,8 @@
 
 Runs the first shot (``Simulator(Table(), Physics()).run``; with ``--env ID`` also ``gymnasium.make(ID)``, a
 reset and a step; with ``--warmup`` every task of ``python -m billiards_env.warmup``, one after the other) in this
-process with numba's cache pointed at an empty temporary directory (unless ``NUMBA_CACHE_DIR`` is set), listening
-to numba's compile events. Prints how many compilations ran, of how many distinct functions (ours and numba's own
+process with numba's cache pointed at an empty temporary directory (unless ``NUMBA_CACHE_DIR`` is set) and the
+prebuilt kernels off (``BILLIARDS_PREBUILT=0`` unless set), listening to numba's compile events. Prints how many compilations ran, of how many distinct functions (ours and numba's own
 overloads of numpy functions), which functions were compiled more than once (``--signatures``: for which
 signatures), the most expensive compilations (CPU seconds, including the functions each one compiled in turn) and
 the functions whose own compile (without the functions it compiled in turn) costs most.
@@ -36,6 +36,7 @@ def main(argv: list[str] | None = None) -> int:
     if "NUMBA_CACHE_DIR" not in os.environ:
         tmp = tempfile.TemporaryDirectory(prefix="numba-cold-")
         os.environ["NUMBA_CACHE_DIR"] = tmp.name
+    os.environ.setdefault("BILLIARDS_PREBUILT", "0")  # compiled here, not unpacked from the prebuilt kernels
     t0, c0 = time.perf_counter(), time.process_time()
     from numba.core import event
 

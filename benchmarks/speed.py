@@ -284,7 +284,7 @@ def run_latency(quick: bool, env_id: str = "BilliardsOneBall-v0") -> dict[str, A
     cold = []
     for _ in range(n["latency_cold"]):
         with tempfile.TemporaryDirectory(prefix="numba-cold-") as d:
-            cold.append(probe_first_call({"NUMBA_CACHE_DIR": d}))
+            cold.append(probe_first_call({"NUMBA_CACHE_DIR": d, "BILLIARDS_PREBUILT": "0"}))
     out["cold"] = median_rows(cold)
     log(f"[latency] cold: import + first shot {fmt_time(out['cold']['total_s'])}")
     try:
@@ -542,7 +542,8 @@ def render_markdown(doc: dict[str, Any], accuracy: dict[str, Any] | None) -> str
         L.append("`python benchmarks/first_call.py` in a subprocess: import the physics package (numpy, "
                  "numba, and gymnasium through `billiards_env/__init__`), build a table and a simulator, run one "
                  "shot. Warm: the default numba cache (`__pycache__`), primed by a first run. Cold: "
-                 "`NUMBA_CACHE_DIR` pointed at an empty temporary directory, so every kernel compiles.")
+                 "`NUMBA_CACHE_DIR` pointed at an empty temporary directory and `BILLIARDS_PREBUILT=0` (the "
+                 "prebuilt kernels not unpacked), so every kernel compiles.")
         L.append("")
         L.append("| cache | runs | import | first shot | import + first shot | whole process |")
         L.append("|---|---|---|---|---|---|")

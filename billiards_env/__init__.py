@@ -13,8 +13,10 @@ Importing the package registers the environment ids with Gymnasium (the list: :d
     env = gym.make("BilliardsOneBall-v0")  # every id: billiards_env.ENV_IDS
 """
 from ._openmp import default_wait_policy
+from .kernel_cache import install_prebuilt
 
 default_wait_policy()  # before numba's thread pool starts (see ._openmp)
+install_prebuilt()  # before any kernel compiles or loads: the prebuilt kernels, if they fit (see .kernel_cache)
 
 from .registration import ENV_IDS, register_envs  # noqa: E402
 

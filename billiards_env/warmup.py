@@ -8,55 +8,15 @@ from the cache instead of compiling it again.
 from __future__ import annotations
 
 import argparse
-import hashlib
 import multiprocessing
 import os
-import re
 import sys
 import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
-from pathlib import Path
 
+from .kernel_cache import clear_stale_cache
 from .registration import ENV_IDS
-
-_PACKAGE = Path(__file__).resolve().parent
-_STAMP = _PACKAGE / "__pycache__" / "kernels.sha256"
-
-
-#: A line that compiles a function: ``@njit(...)`` or ``@numba.njit(...)``.
-_COMPILED = re.compile(r"^\s*@(?:numba\.)?njit\b", re.MULTILINE)
-
-
-def kernel_sources() -> list[Path]:
-    """Every module of the package with compiled code (an ``@njit`` decorator), and all of ``physics/``."""
-    out = set((_PACKAGE / "physics").glob("*.py"))
-    for path in _PACKAGE.rglob("*.py"):
-        if _COMPILED.search(path.read_text()):
-            out.add(path)
-    return sorted(out)
-
-
-def clear_stale_cache() -> bool:
-    """Delete numba's cached machine code if a kernel source (:func:`kernel_sources`) changed since it was compiled.
-
-    numba keys each cached function on its own file only, so a kernel that calls into another module would
-    otherwise keep stale code after that module changes. Returns True if the cache was cleared.
-    """
-    digest = hashlib.sha256()
-    for path in kernel_sources():
-        digest.update(path.relative_to(_PACKAGE).as_posix().encode())
-        digest.update(path.read_bytes())
-    want = digest.hexdigest()
-    if _STAMP.exists() and _STAMP.read_text() == want:
-        return False
-    for pattern in ("*.nbi", "*.nbc"):
-        for f in _PACKAGE.rglob(pattern):
-            f.unlink(missing_ok=True)
-    _STAMP.parent.mkdir(exist_ok=True)
-    _STAMP.write_text(want)
-    return True
-
 
 def _physics(*kernels: str) -> Callable[[], None]:
     """A task: the physics kernels ``kernels`` (:data:`billiards_env.physics.warmup.KERNELS`)."""

@@ -15,7 +15,8 @@ SCRIPT = ("from billiards_env.physics import Balls, Table, validate_balls; "
 
 
 def _run(cache: Path, notice: str | None) -> str:
-    env = {"NUMBA_CACHE_DIR": str(cache), "PATH": "/usr/bin:/bin", "PYTHONPATH": str(REPO)}
+    env = {"NUMBA_CACHE_DIR": str(cache), "PATH": "/usr/bin:/bin", "PYTHONPATH": str(REPO),
+           "BILLIARDS_PREBUILT": "0"}  # compiled here: the prebuilt kernels would leave nothing to compile
     if notice is not None:
         env["BILLIARDS_COMPILE_NOTICE"] = notice
     out = subprocess.run([sys.executable, "-c", SCRIPT], env=env, cwd=REPO, capture_output=True, text=True,

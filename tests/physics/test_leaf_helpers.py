@@ -87,6 +87,7 @@ def _run(*args: str, cache_dir: str | None = None) -> dict:
     env = {**os.environ, "NUMBA_NRT_STATS": "1", "SDL_VIDEODRIVER": "dummy"}
     if cache_dir is not None:
         env["NUMBA_CACHE_DIR"] = cache_dir  # an empty cache: every function compiled in the process
+        env["BILLIARDS_PREBUILT"] = "0"  # (not unpacked from the prebuilt kernels)
     out = subprocess.run([sys.executable, "-c", _SCRIPT, *args], capture_output=True, text=True, cwd=REPO, env=env,
                          timeout=1800)
     assert out.returncode == 0, out.stderr[-3000:]

@@ -108,7 +108,7 @@ print(json.dumps({f"{o.py_func.__module__}.{o.py_func.__qualname__}": [str(s) fo
 def test_after_the_warm_up_the_shared_kernels_have_one_signature(tmp_path):
     """Every warm-up task in one process on an empty cache (minutes: it compiles everything)."""
     env = {"NUMBA_CACHE_DIR": str(tmp_path), "PATH": "/usr/bin:/bin", "PYTHONPATH": str(REPO),
-           "SDL_VIDEODRIVER": "dummy", "BILLIARDS_COMPILE_NOTICE": "0"}
+           "SDL_VIDEODRIVER": "dummy", "BILLIARDS_COMPILE_NOTICE": "0", "BILLIARDS_PREBUILT": "0"}
     out = subprocess.run([sys.executable, "-c", _SCRIPT], env=env, cwd=REPO, capture_output=True, text=True,
                          timeout=3600)
     assert out.returncode == 0, out.stderr[-3000:]
