@@ -2,6 +2,11 @@
 
     python -m benchmarks.env_ab --base 22b30d2            # the commit before the env-layer redesign
     python -m benchmarks.env_ab --base main --seconds 1   # quicker
+    python -m benchmarks.env_ab --cpu                     # this tree: prebuilt kernels against compiled here
+
+With ``--cpu`` the two sides are this tree's kernels from the prebuilt archive (built for numba's generic CPU:
+"before") and compiled here for this CPU (``BILLIARDS_PREBUILT=0``: "after"), each in an empty numba cache of its
+own (the compiled side's warm-up compiles every kernel: 3-4 minutes).
 
 The base commit is checked out (``git worktree add --detach``) into a temporary directory; each round runs one child
 process per tree (alternating which goes first) that times, for every id both trees have, ``env.step`` with random
@@ -122,8 +127,16 @@ def _window_rates(seconds: float) -> dict[str, float]:
     return out
 
 
-def _run(tree: Path, seconds: float) -> dict[str, float]:
-    env = {**os.environ, "PYTHONPATH": str(tree), "SDL_VIDEODRIVER": "dummy"}
+def _environ(tree: Path, extra: dict[str, str]) -> dict[str, str]:
+    """A child's environment: ``tree`` on the path, ``extra`` on top of this process's environment (without the
+    numba CPU this process's import of the package may have set, when ``extra`` says where the cache is)."""
+    drop = ("NUMBA_CPU_NAME", "NUMBA_CPU_FEATURES", "BILLIARDS_PREBUILT") if "NUMBA_CACHE_DIR" in extra else ()
+    return {**{k: v for k, v in os.environ.items() if k not in drop}, "PYTHONPATH": str(tree),
+            "SDL_VIDEODRIVER": "dummy", **extra}
+
+
+def _run(tree: Path, seconds: float, extra: dict[str, str]) -> dict[str, float]:
+    env = _environ(tree, extra)
     res = subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {str(tree)!r}); "
                           f"from benchmarks.env_ab import child; import json; print(json.dumps(child({seconds})))"],
                          cwd=str(tree), env=env, capture_output=True, text=True, check=True)
@@ -138,28 +151,41 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--base-tree", type=Path, default=None,
                    help="an existing checkout of the base (e.g. a git worktree), used instead of a new worktree of "
                         "--base; warmed up as a new one is")
+    p.add_argument("--cpu", action="store_true",
+                   help="compare this tree's prebuilt kernels (generic CPU) with kernels compiled here for this CPU "
+                        "instead of two commits")
     args = p.parse_args(argv)
+    worktree = args.base_tree is None and not args.cpu
     with tempfile.TemporaryDirectory() as tmp:
-        base = args.base_tree.resolve() if args.base_tree else Path(tmp) / "base"
-        if args.base_tree is None:
+        base = REPO if args.cpu else args.base_tree.resolve() if args.base_tree else Path(tmp) / "base"
+        if worktree:
             subprocess.run(["git", "-C", str(REPO), "worktree", "add", "--detach", "-q", str(base), args.base],
                            check=True)
-        label = args.base if args.base_tree is None else str(base)
-        (base / "benchmarks" / "env_ab.py").write_text(Path(__file__).read_text())  # the same timing code
+        label = ("prebuilt kernels (before) against compiled for this CPU (after)" if args.cpu
+                 else args.base if worktree else str(base))
+        sides: dict[str, tuple[Path, dict[str, str]]] = {"before": (base, {}), "after": (REPO, {})}
+        if args.cpu:
+            sides = {"before": (REPO, {"NUMBA_CACHE_DIR": f"{tmp}/prebuilt"}),
+                     "after": (REPO, {"NUMBA_CACHE_DIR": f"{tmp}/compiled", "BILLIARDS_PREBUILT": "0"})}
+        else:
+            (base / "benchmarks" / "env_ab.py").write_text(Path(__file__).read_text())  # the same timing code
         try:
-            print(f"[env_ab] warming up the base tree {label} (its kernels compile once)", file=sys.stderr)
-            subprocess.run([sys.executable, "-m", "billiards_env.warmup"], cwd=str(base), check=True,
-                           env={**os.environ, "PYTHONPATH": str(base)}, capture_output=True)
+            for name, (tree, extra) in sides.items():
+                if tree != REPO or extra:
+                    print(f"[env_ab] warming up {name}: {tree} {extra} (its kernels compile once)", file=sys.stderr)
+                    subprocess.run([sys.executable, "-m", "billiards_env.warmup"], cwd=str(tree), check=True,
+                                   env=_environ(tree, extra), capture_output=True)
             best: dict[str, dict[str, float]] = {"before": {}, "after": {}}
             for r in range(args.rounds):
-                order = [("before", base), ("after", REPO)] if r % 2 == 0 else [("after", REPO), ("before", base)]
-                for name, tree in order:
-                    got = _run(tree, args.seconds)
+                order = ["before", "after"] if r % 2 == 0 else ["after", "before"]
+                for name in order:
+                    tree, extra = sides[name]
+                    got = _run(tree, args.seconds, extra)
                     for key, rate in got.items():
                         best[name][key] = max(best[name].get(key, 0.0), rate)
                 print(f"[env_ab] round {r + 1}/{args.rounds} done", file=sys.stderr)
         finally:
-            if args.base_tree is None:
+            if worktree:
                 subprocess.run(["git", "-C", str(REPO), "worktree", "remove", "--force", str(base)], check=False)
     print(f"env rates, best of {args.rounds} interleaved rounds of {args.seconds:g} s (base {label}):\n")
     print("| measurement | before (/s) | after (/s) | after / before |")

@@ -7,7 +7,8 @@
 # the package's source without importing it: no numba, no torch, no kernels to compile).
 # `--clients`: the same plus the clients extra (TorchRL, Tianshou, skrl, Minari's collector, RL Zoo: the libraries
 # tests/clients runs) in .venv-clients, so their pins never move .venv's.
-# It says what it is doing at each step (a first set-up takes a few minutes, 3-4 of them compiling kernels).
+# It says what it is doing at each step (a first set-up takes a few minutes installing; the kernels come prebuilt:
+# seconds, or 3-4 minutes compiling where the prebuilt ones do not fit, see billiards_env/kernel_cache.py).
 # TORCH_INDEX_URL: where torch comes from (e.g. PyTorch's CPU wheel index, see the README), if the default index
 # would give a CUDA build (PyPI on Linux does).
 set -euo pipefail
@@ -50,8 +51,9 @@ else
   say "$VENV is up to date"
 fi
 if [ $docs -eq 1 ]; then exit 0; fi  # the site reads the sources: no kernels to compile
-# Compile the physics kernels into numba's cache now, so the first shot a user runs is fast.
-say "compiling the physics kernels into numba's cache (3-4 min the first time on 2 cores, seconds after that)"
+# Load every physics kernel into numba's cache now (the prebuilt ones, or compiled here), so the first shot is fast.
+say "$("$VENV/bin/python" -m billiards_env.prebuilt status)"
+say "loading the physics kernels into numba's cache (seconds with the prebuilt kernels; 3-4 min compiling without)"
 start=$SECONDS
 "$VENV/bin/python" -m billiards_env.warmup
-say "compiled in $((SECONDS - start)) s"
+say "kernels ready in $((SECONDS - start)) s"

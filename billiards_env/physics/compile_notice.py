@@ -17,7 +17,8 @@ from numba.core import event
 
 #: What the user reads.
 NOTICE = ("billiards_env: compiling the numba kernels for this machine (once: 30-60 s for a first env, cached for "
-          "next time); `python -m billiards_env.warmup` does it ahead of time")
+          "next time); `python -m billiards_env.warmup` does it ahead of time, `python -m billiards_env.prebuilt "
+          "status` says why the prebuilt kernels are not used")
 _state = {"installed": False, "said": False}
 
 
