@@ -170,10 +170,13 @@ def _install() -> str:
             return ("not used: numba set up its code generator for this CPU before billiards_env was imported "
                     "(import billiards_env before compiling anything else with numba)")
     manifest = json.loads(manifest_file.read_text())
-    dirs = {rel: cache_dir(source) for rel, source in source_dirs().items()}
+    want = f"{tag} {manifest['kernels_digest']}"
+    if "numba" not in sys.modules and not os.environ.get("NUMBA_CACHE_DIR") and all(
+            _read(PACKAGE / rel / "__pycache__" / MARKER) == want for rel in manifest["dirs"]):
+        return "used: unpacked before"  # in the directories numba uses by default: no need to import numba to ask
+    dirs = {rel: cache_dir(PACKAGE / rel / "__init__.py") for rel in manifest["dirs"]}
     if any(d is None for d in dirs.values()):
         return "not used: numba has no writable cache directory for the package (or custom cache locators)"
-    want = f"{tag} {manifest['kernels_digest']}"
     todo = {rel: d for rel, d in dirs.items() if d is not None and _read(d / MARKER) != want}
     if not todo:
         return "used: unpacked before"
@@ -246,7 +249,7 @@ def build(out_dir: Path = PREBUILT_DIR, workers: int | None = None) -> Path:
     archive = out_dir / f"{tag}.tar.xz"
     archive.write_bytes(buf.getvalue())
     manifest = {"tag": tag, "archive": archive.name, "cpu": CPU, "kernels_digest": kernels_digest(),
-                "files": len(members), "bytes": size, "archive_bytes": archive.stat().st_size,
+                "dirs": sorted({name.rpartition("/")[0] for name, _ in members}), "files": len(members), "bytes": size, "archive_bytes": archive.stat().st_size,
                 "built": time.strftime("%Y-%m-%d %H:%M:%S %z"), "build_s": round(time.perf_counter() - start, 1)}
     path = manifest_path(tag) if out_dir == PREBUILT_DIR else out_dir / f"{tag}.json"
     path.write_text(json.dumps(manifest, indent=1) + "\n")
