@@ -24,6 +24,7 @@ from __future__ import annotations
 import hashlib
 import io
 import json
+import lzma
 import os
 import re
 import subprocess
@@ -169,12 +170,16 @@ def _install() -> str:
         if built_for != (CPU, ""):  # numba's code generator was made before: it keeps this CPU's features
             return ("not used: numba set up its code generator for this CPU before billiards_env was imported "
                     "(import billiards_env before compiling anything else with numba)")
-    manifest = json.loads(manifest_file.read_text())
-    want = f"{tag} {manifest['kernels_digest']}"
+    try:
+        manifest = json.loads(manifest_file.read_text())
+        want = f"{tag} {manifest['kernels_digest']}"
+        archive, manifest_dirs = PREBUILT_DIR / manifest["archive"], list(manifest["dirs"])
+    except (OSError, ValueError, KeyError, TypeError) as err:
+        return f"not used: unreadable manifest {manifest_file.name} ({err!r})"
     if "numba" not in sys.modules and not os.environ.get("NUMBA_CACHE_DIR") and all(
-            _read(PACKAGE / rel / "__pycache__" / MARKER) == want for rel in manifest["dirs"]):
+            _read(PACKAGE / rel / "__pycache__" / MARKER) == want for rel in manifest_dirs):
         return "used: unpacked before"  # in the directories numba uses by default: no need to import numba to ask
-    dirs = {rel: cache_dir(PACKAGE / rel / "__init__.py") for rel in manifest["dirs"]}
+    dirs = {rel: cache_dir(PACKAGE / rel / "__init__.py") for rel in manifest_dirs}
     if any(d is None for d in dirs.values()):
         return "not used: numba has no writable cache directory for the package (or custom cache locators)"
     todo = {rel: d for rel, d in dirs.items() if d is not None and _read(d / MARKER) != want}
@@ -187,13 +192,13 @@ def _install() -> str:
     try:
         if _STAMP.parent in dirs.values() and clear_stale_cache(digest):  # code compiled from other sources: gone
             todo = {rel: d for rel, d in dirs.items() if d is not None and _read(d / MARKER) != want}
-        _unpack(PREBUILT_DIR / manifest["archive"], todo)
+        _unpack(archive, todo)
         for d in todo.values():
             _write_atomic(d / MARKER, want.encode())
         if _STAMP.parent in todo.values():  # the in-tree cache now holds code compiled from these very sources
             _write_atomic(_STAMP, digest.encode())
-    except OSError as err:
-        return f"not used: could not unpack into numba's cache ({err})"
+    except (OSError, EOFError, tarfile.TarError, lzma.LZMAError) as err:  # unwritable cache, damaged archive
+        return f"not used: could not unpack {archive.name} into numba's cache ({err!r})"
     return f"used: unpacked into {len(todo)} cache director{'y' if len(todo) == 1 else 'ies'}"
 
 

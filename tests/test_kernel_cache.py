@@ -140,3 +140,22 @@ def test_a_rebuild_packs_the_same_kernels(tmp_path):
     with tarfile.open(tmp_path / built["archive"], "r:xz") as a, \
             tarfile.open(kernel_cache.PREBUILT_DIR / shipped["archive"], "r:xz") as b:
         assert a.getnames() == b.getnames()
+
+
+@for_this_platform
+def test_a_damaged_archive_or_manifest_is_reported_not_raised(tmp_path, monkeypatch):
+    from numba.core import config
+
+    monkeypatch.setattr(config, "CACHE_DIR", str(tmp_path / "cache"))
+    shipped = tmp_path / "prebuilt"
+    shipped.mkdir()
+    manifest = json.loads(HERE.read_text())
+    (shipped / HERE.name).write_text(json.dumps(manifest))
+    data = (kernel_cache.PREBUILT_DIR / manifest["archive"]).read_bytes()
+    (shipped / manifest["archive"]).write_bytes(data[: len(data) // 2])  # cut short
+    monkeypatch.setattr(kernel_cache, "PREBUILT_DIR", shipped)
+    got = kernel_cache.install_prebuilt()
+    assert got.startswith(f"not used: could not unpack {manifest['archive']}"), got
+    assert not any((tmp_path / "cache").rglob(kernel_cache.MARKER))  # tried again next time
+    (shipped / HERE.name).write_text("{not json")
+    assert kernel_cache.install_prebuilt().startswith(f"not used: unreadable manifest {HERE.name}")
