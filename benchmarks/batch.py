@@ -343,7 +343,7 @@ def render_markdown(doc: dict[str, Any]) -> str:
     if fc:
         L += ["## First call", "", "`benchmarks/first_call.py` in a fresh process (import of the physics package, "
               "numpy and numba included, then a table, two balls and the first shot); cold: `NUMBA_CACHE_DIR` "
-              "pointed at an empty directory, `BILLIARDS_PREBUILT=0` (every kernel compiled).", "", "| cache | import | first shot | total |", "|---|---|---|---|"]
+              "pointed at an empty directory, every kernel compiled (runs since 2026-12-07 set `BILLIARDS_PREBUILT=0`).", "", "| cache | import | first shot | total |", "|---|---|---|---|"]
         for k in ("warm", "cold"):
             if k in fc:
                 r = fc[k]

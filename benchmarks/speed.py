@@ -542,8 +542,8 @@ def render_markdown(doc: dict[str, Any], accuracy: dict[str, Any] | None) -> str
         L.append("`python benchmarks/first_call.py` in a subprocess: import the physics package (numpy, "
                  "numba, and gymnasium through `billiards_env/__init__`), build a table and a simulator, run one "
                  "shot. Warm: the default numba cache (`__pycache__`), primed by a first run. Cold: "
-                 "`NUMBA_CACHE_DIR` pointed at an empty temporary directory and `BILLIARDS_PREBUILT=0` (the "
-                 "prebuilt kernels not unpacked), so every kernel compiles.")
+                 "`NUMBA_CACHE_DIR` pointed at an empty temporary directory, so every kernel compiles (runs since "
+                 "2026-12-07 set `BILLIARDS_PREBUILT=0`: the prebuilt kernels not unpacked).")
         L.append("")
         L.append("| cache | runs | import | first shot | import + first shot | whole process |")
         L.append("|---|---|---|---|---|---|")

@@ -10,7 +10,8 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_setup_says_each_step():
-    """On a set-up machine (CI runs it first) the script checks the venv and compiles the kernels: both said."""
+    """On a set-up machine (CI runs it first) the script checks the venv, says whether the prebuilt kernels are used
+    and loads the kernels: all said."""
     if not (ROOT / ".venv" / "bin" / "python").exists():
         pytest.skip("no .venv in this checkout (scripts/setup.sh makes it; CI has one)")
     proc = subprocess.run(["bash", "scripts/setup.sh"], cwd=ROOT, capture_output=True, text=True, timeout=900)
@@ -18,7 +19,9 @@ def test_setup_says_each_step():
     lines = proc.stdout.splitlines()
     assert any(line.startswith("setup: .venv is up to date") or line.startswith("setup: installing billiards_env")
                for line in lines), lines
-    assert any(line.startswith("setup: compiling the physics kernels") for line in lines), lines
+    assert any(line.startswith("setup: platform ") and "prebuilt kernels: " in line for line in lines), lines
+    assert any(line.startswith("setup: loading the physics kernels") for line in lines), lines
+    assert any(line.startswith("setup: kernels ready in ") for line in lines), lines
 
 
 def _test_sh(tmp_path: Path, rllib_venv: bool, args: list[str], env: dict[str, str]) -> tuple[str, list[str]]:
