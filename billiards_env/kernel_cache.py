@@ -224,7 +224,7 @@ def build(out_dir: Path = PREBUILT_DIR, workers: int | None = None) -> Path:
     """Compile every kernel (``python -m billiards_env.warmup``) for the generic CPU into an empty cache and pack it
     as this platform's archive in ``out_dir``, with its manifest; returns the manifest's path."""
     start = time.perf_counter()
-    tag = platform_tag()
+    tag, digest = platform_tag(), kernels_digest()
     with tempfile.TemporaryDirectory(prefix="billiards-prebuilt-") as cache:
         env = {**os.environ, "NUMBA_CACHE_DIR": cache, "NUMBA_CPU_NAME": CPU, "NUMBA_CPU_FEATURES": "",
                "BILLIARDS_PREBUILT": "0", "BILLIARDS_COMPILE_NOTICE": "0", "SDL_VIDEODRIVER": "dummy"}
@@ -250,12 +250,15 @@ def build(out_dir: Path = PREBUILT_DIR, workers: int | None = None) -> Path:
                 info.size, info.mode = len(data), 0o644
                 tar.addfile(info, io.BytesIO(data))
         size = sum(f.stat().st_size for _, f in members)
+    if kernels_digest() != digest:
+        raise RuntimeError("a kernel source changed while the prebuilt kernels were being built: build them again")
     out_dir.mkdir(parents=True, exist_ok=True)
     archive = out_dir / f"{tag}.tar.xz"
     archive.write_bytes(buf.getvalue())
-    manifest = {"tag": tag, "archive": archive.name, "cpu": CPU, "kernels_digest": kernels_digest(),
-                "dirs": sorted({name.rpartition("/")[0] for name, _ in members}), "files": len(members), "bytes": size, "archive_bytes": archive.stat().st_size,
+    manifest = {"tag": tag, "archive": archive.name, "cpu": CPU, "kernels_digest": digest,
+                "dirs": sorted({name.rpartition("/")[0] for name, _ in members}), "files": len(members),
+                "bytes": size, "archive_bytes": archive.stat().st_size,
                 "built": time.strftime("%Y-%m-%d %H:%M:%S %z"), "build_s": round(time.perf_counter() - start, 1)}
-    path = manifest_path(tag) if out_dir == PREBUILT_DIR else out_dir / f"{tag}.json"
+    path = out_dir / f"{tag}.json"
     path.write_text(json.dumps(manifest, indent=1) + "\n")
     return path
