@@ -37,7 +37,7 @@ from .train import REPO_ROOT, train
 DEFAULT_CONFIG = REPO_ROOT / "configs" / "train" / "one_ball_sac_path.yaml"
 THREE_BALLS_CONFIG = REPO_ROOT / "configs" / "train" / "three_balls_sac.yaml"
 
-#: The one-ball targets (issue 22): the trained policy's pocket rate on the job's tables, its decision time, and
+#: The one-ball targets: the trained policy's pocket rate on the job's tables, its decision time, and
 #: the whole job's wall time on 2 cores.
 TARGET_RATE = 0.985
 TARGET_MS = 1.0

@@ -48,7 +48,7 @@ DISTILL_CONFIG = REPO_ROOT / "configs" / "train" / "nine_ball_distill.yaml"
 DEFAULT_SECONDS = 1800.0
 BASELINES = ("random", "geometric", "search")
 SETTINGS = (("no_noise", "0"), ("olympiad", "olympiad"))
-#: The 9-ball targets (issue 22): the trained policy alone against the geometric player, the search with the
+#: The 9-ball targets: the trained policy alone against the geometric player, the search with the
 #: learned prior against the search player, the job's wall time on 2 cores.
 TARGET_VS_GEOMETRIC = 0.60
 TARGET_PRIOR_VS_SEARCH = 0.55

@@ -8,7 +8,7 @@ report's JSON, the other sections keeping their earlier figures and time stamps)
 Without ``--only`` every part runs: the accuracy suite (speed against error, ``speed_vs_error.md/.json/.png``),
 then time per shot, ``env.step`` per second, pooltool and the first-call latency (``speed.md/.json``), then the
 spin model's speed (against pooltool) and speed against error (``spin.md/.json``), then the batch API, the native
-vector env, the search player, the single env and the first call against the targets of issue 12
+vector env, the search player, the single env and the first call against their targets
 (``batch.md/.json``). ``--only profile`` (not part of the default run) profiles the exact solvers per event
 (``benchmarks/solver_profile.py``, ``solver_profile.md/.json``).
 ``--only cold_start`` (not part of the default run: it compiles every kernel from an empty cache, about ten

@@ -1,4 +1,4 @@
-"""The batch and vector-env benchmark (issue 12): ``python -m benchmarks --only batch --write``
+"""The batch and vector-env benchmark: ``python -m benchmarks --only batch --write``
 writes ``docs/bench/batch.md`` and ``batch.json``.
 
 Every target of the issue, measured in one run on this machine, with pooltool 0.6.0 timed in the same run:

@@ -1,4 +1,4 @@
-"""The games at engine speed (issue 21), from the repository root:
+"""The games at engine speed, from the repository root:
 
     python -m benchmarks --only games [--quick] [--write | --out DIR]
 
@@ -18,7 +18,7 @@
 - the 9-ball training job's env (``configs/train/nine_ball_sac.yaml``, run-out practice, and
   ``nine_ball_sac_vs_geometric.yaml``, games against the geometric player): its ``n_envs`` single envs stepped in
   turn as SB3's DummyVecEnv steps them, random actions, shots per CPU-second. *Before*: the same envs with the Python
-  of before issue 21 swapped in (``benchmarks/reference_players.py``: the candidate slot lists, the ``candidates``
+  of before the games were compiled (2026-12-02) swapped in (``benchmarks/reference_players.py``: the candidate slot lists, the ``candidates``
   observation's loop and the next shot's ease in Python, and the geometric opponent of before, observed for at every
   shot); *after*: as they are; and the native vector env of the same tables.
 
@@ -419,7 +419,7 @@ def job_env_kwargs(path: str) -> tuple[str, dict[str, Any], int]:
 
 
 class _ReferenceGeometric(BasePlayer):
-    """The geometric player of before issue 21 (``benchmarks/reference_players.py``), playing in the action type it is
+    """The geometric player of before the games were compiled (2026-12-02) (``benchmarks/reference_players.py``), playing in the action type it is
     given."""
 
     name = "geometric"
@@ -435,7 +435,7 @@ class _ReferenceGeometric(BasePlayer):
 
 
 def _reference_slots(state: Any, n: int, speed_range: tuple[float, float] | None = None) -> Any:
-    """``envs.candidates.candidate_slots`` on the Python slot lists of before issue 21 (memoised as it is)."""
+    """``envs.candidates.candidate_slots`` on the Python slot lists of before the games were compiled (2026-12-02) (memoised as it is)."""
     from billiards_env.envs import candidates as envc
     from benchmarks import reference_players as ref
 
@@ -457,7 +457,7 @@ def _reference_slots(state: Any, n: int, speed_range: tuple[float, float] | None
 
 
 def _reference_slot_values(self: Any, state: Any) -> np.ndarray:
-    """``CandidateFeatures.features`` as the Python loop over the slots of before issue 21."""
+    """``CandidateFeatures.features`` as the Python loop over the slots of before the games were compiled (2026-12-02)."""
     from benchmarks import reference_players as ref
 
     cands = _reference_slots(state, self.n_slots, self.speed_range)
@@ -467,7 +467,7 @@ def _reference_slot_values(self: Any, state: Any) -> np.ndarray:
 @contextlib.contextmanager
 def before_issue_21() -> Iterator[None]:
     """The envs' candidate slot lists, the ``candidates`` observation's values and the next shot's ease as the
-    Python of before issue 21, for the block."""
+    Python of before the games were compiled (2026-12-02), for the block."""
     from billiards_env.envs import actions, games, observations
     from benchmarks import reference_players as ref
 

@@ -1,4 +1,4 @@
-"""The players of snooker and three-cushion, measured (issue 24), from the repository root:
+"""The players of snooker and three-cushion, measured, from the repository root:
 
     python -m benchmarks.new_games [--three-cushion N] [--frames F] [--match-frames M] [--seed S] [--json out.json]
 

@@ -1,4 +1,4 @@
-"""Decision time of the baseline players (issue 21): the compiled geometry and search against today's Python path,
+"""Decision time of the baseline players: the compiled geometry and search against today's Python path,
 in one run.
 
     python -m benchmarks --only players [--quick]
@@ -10,7 +10,7 @@ action), breaks and ball in hand included. On each table, interleaved:
 - the geometric decision: ``geometric_decision`` on arrays (what a caller holding the table state calls), the same
   on the capture circles of a table of that size when the game's table has jaws (what the jaws cost the player),
   ``GeometricPlayer.decide`` on the env's table (with ``shot_context``), and today's Python
-  (``benchmarks/reference_players.py``: ``GeometricPlayer.act`` before issue 21 without the action); median of repeats per
+  (``benchmarks/reference_players.py``: ``GeometricPlayer.act`` before the games were compiled (2026-12-02) without the action); median of repeats per
   table, then the median and the worst over the tables;
 - the search decision (not on breaks): ``SearchPlayer.act`` and today's ``ReferenceSearchPlayer.act`` (one run each
   per table), the search's time in the batch simulation (``run_shots``) and its own, and how many shots it simulates.
@@ -29,7 +29,7 @@ import numpy as np
 from .common import fmt_time, load_now, log, machine_info, machine_markdown, publish, rerender, time_call
 
 GAMES = ("Billiards9Ball-v0", "Billiards8Ball-v0")
-#: Targets of issue 21 (seconds).
+#: The players' targets (seconds).
 TARGETS = {"geometric_median": 1e-4, "geometric_worst": 2e-3, "search_median_9ball": 1e-2}
 
 

@@ -35,7 +35,7 @@ from billiards_env.players.shots import MAX_CUT, ShotCandidate, pot_probability
 
 def to_action(env: Any, angle: float, speed: float, place: tuple[float, float] | None = None,
               pocket: int | None = None, side: float = 0.0, top: float = 0.0) -> np.ndarray:
-    """The env's action for a shot, as the players made it before issue 21 (through the env's action type, the
+    """The env's action for a shot, as the players made it before the games were compiled (2026-12-02) (through the env's action type, the
     tip offsets dropped without spin dims, clipped to the action space)."""
     u = env.unwrapped
     at = u.action_type
@@ -314,7 +314,7 @@ def choose_placement(env: Any, ctx: ShotContext, max_cut: float = MAX_CUT,
 
 
 def reference_geometric_act(env: Any, max_cut: float = MAX_CUT):
-    """``GeometricPlayer.act`` before issue 21, without the final action: ``(place, angle, speed, candidate)``."""
+    """``GeometricPlayer.act`` before the games were compiled (2026-12-02), without the final action: ``(place, angle, speed, candidate)``."""
     ctx = shot_context(env)
     u = env.unwrapped
     if ctx.game is not None and ctx.game.game_state.break_shot:
@@ -326,7 +326,7 @@ def reference_geometric_act(env: Any, max_cut: float = MAX_CUT):
     return place, angle, speed, last
 
 
-# --- the search player (billiards_env/players/search.py before issue 21) --------------------------------------------
+# --- the search player (billiards_env/players/search.py before the games were compiled (2026-12-02)) --------------------------------------------
 
 #: Tip offsets ``(side, top)`` (fractions of R) tried with every ghost-ball shot under the spin model: stun, draw,
 #: follow, left and right english.
@@ -802,7 +802,7 @@ class ReferenceSearchPlayer:
 
 
 
-# --- the candidates types' slots (billiards_env/envs/candidates.py before issue 21) ---------------------------------
+# --- the candidates types' slots (billiards_env/envs/candidates.py before the games were compiled (2026-12-02)) ---------------------------------
 # The Python slot lists of the ``candidates`` action and observation types, kept for tests/players/test_slots.py
 # (the compiled players/slots.py must equal them). They run on a table state and the reference geometry above.
 
@@ -973,7 +973,7 @@ def _path_clear(b: Any, j: int, obj_angle: float, d_obj: float) -> bool:
 
 
 def reference_slot_values(state: Any, cands: Any, n_slots: int, speed_max: float) -> np.ndarray:
-    """The ``candidates`` observation's slot values as the Python loop over the slots made them (before issue 21)."""
+    """The ``candidates`` observation's slot values as the Python loop over the slots made them (before the games were compiled (2026-12-02))."""
     from billiards_env.envs.candidates import EASY_TOLERANCE, SLOT_FEATURES
     from billiards_env.physics.aim import wrap_angle
 

@@ -13,11 +13,12 @@ animation (e.g. the opponent's reply).
 Keys: R starts a new episode (a new game), Esc / Q (or closing the window) quits. The turn log under a game's
 panel scrolls: mouse wheel, Page Up / Page Down, Home (the first shot) / End (the newest).
 
-Games: --env Billiards9Ball-v0, Billiards8Ball-v0, BilliardsSnooker-v0 or BilliardsThreeCushion-v0. Snooker: the
-cue ball starts in hand in the D (drag it there); pot a red, then a colour; the log names the balls potted and
-their points, a foul the points it gives away. Three-cushion: no pockets and no ball in hand; you play the white,
-the opponent the yellow; a point needs both other balls met and three cushions before the second; the log gives
-the point (or not) and the cushions of every shot.
+Games: --env Billiards9Ball-v0, Billiards8Ball-v0, BilliardsSnooker-v0, BilliardsThreeCushion-v0 or
+BilliardsStraightPool-v0. Snooker: the cue ball starts in hand in the D (drag it there); pot a red, then a colour;
+the log names the balls potted and their points, a foul the points it gives away. Three-cushion: no pockets and no
+ball in hand; you play the white, the opponent the yellow; a point needs both other balls met and three cushions
+before the second; the log gives the point (or not) and the cushions of every shot. Straight pool: every shot calls
+a ball and a pocket: the ball is the one you aim at, the pocket the one you click (or press 1-6) before shooting.
 --opponent geometric|search|random plays against a baseline player (its shots animate after yours),
 --opponent human lets two people play at one window, taking turns. The break alternates between the players from
 game to game (you break the first; --breaker you|opponent|random chooses otherwise). The panel under the table

@@ -35,8 +35,8 @@ def potted_names(pocketed: Iterable[Any]) -> list[str]:
     out = []
     for b in pocketed or ():
         name = str(b)
-        if name in ("cue", "0", "white", "yellow"):  # the cue ball (three-cushion pockets nothing)
-            continue
+        if name in ("cue", "0"):  # the cue ball (its id in every pocket game, or its number); snooker's yellow is
+            continue              # a colour, and three-cushion, whose white and yellow are cue balls, pockets nothing
         out.append(re.sub(r"^([a-z]+)\d+$", r"\1", name))  # red11 -> red
     return out
 

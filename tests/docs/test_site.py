@@ -108,6 +108,20 @@ def test_no_issue_numbers_where_users_read():
     assert not bad, "say what changed (and when) instead of an issue number:\n" + "\n".join(bad)
 
 
+#: The code a user runs and reads the help of: the package, the agents' and benchmarks' commands, the scripts, configs.
+CODE_DIRS = ["billiards_env", "agents", "benchmarks", "scripts", "configs"]
+
+
+def test_no_issue_numbers_in_the_code_users_run():
+    files = sorted(p for d in CODE_DIRS for p in (ROOT / d).rglob("*")
+                   if p.is_file() and p.suffix in (".py", ".sh", ".yaml", ".yml"))
+    assert len(files) > 50
+    bad = [f"{p.relative_to(ROOT)}:{n}: {line.strip()[:100]}" for p in files
+           for n, line in enumerate(p.read_text().splitlines(), 1) if ISSUE.search(line)]
+    assert not bad, "docstrings, help and comments: say what changed (and when), not an issue number:\n" + \
+        "\n".join(bad)
+
+
 #: Results pages: the figures they hold name the date and the commit they were measured at.
 RESULTS = ["docs/benchmarks.md", "docs/training.md", "docs/games.md", "docs/rllib.md", "docs/stability.md",
            "docs/physics-engine.md",

@@ -35,6 +35,16 @@ def _shoot(app: play.PlayApp, angle: float, speed: float) -> dict:
 def test_ball_ids_become_names():
     assert potted_names(("red11", "blue", "cue")) == ["red", "blue"]
     assert potted_names((3, "9", "cue")) == ["3", "9"]
+    assert potted_names(("yellow", "red3", "white")) == ["yellow", "red", "white"]  # snooker's yellow is a colour
+
+
+def test_every_snooker_colour_is_named_when_potted():
+    """Each colour potted alone reads as a pot of that colour, with its points and the shooter going on."""
+    base = {"foul": False, "foul_reason": None, "scratch": False, "shooter": 1, "foul_points": 0, "call": "pot",
+            "turn_over": False}
+    for value, colour in enumerate(("yellow", "green", "brown", "blue", "pink", "black"), start=2):
+        line = turn_line({**base, "pocketed": (colour,), "points": value}, NAMES)[0]
+        assert line == f"geometric: potted {colour} ({value}) - shoots again"
 
 
 def test_snooker_lines_name_the_balls_and_points():
