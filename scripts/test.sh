@@ -25,6 +25,11 @@ if [ $rllib -eq 1 ]; then
 else
   echo "test: the default test set in .venv (the RLlib tests and .venv-rllib left out)"
 fi
+if [ $# -eq 0 ] && [ ! -x .venv-clients/bin/python ]; then
+  echo "test: the client libraries' tests too: this first sets up .venv-clients (TorchRL, Tianshou, skrl, Minari," \
+       "RL Zoo: 2.4 GB, ~3 minutes) and .venv-docs (the docs site's tools, 170 MB)." \
+       "Pass pytest args (e.g. bash scripts/test.sh -q) to run the default set alone."
+fi
 bash scripts/setup.sh
 if [ $rllib -eq 1 ]; then bash scripts/setup.sh --rllib; fi
 if [ $# -eq 0 ]; then bash scripts/setup.sh --clients; bash scripts/setup.sh --docs; fi

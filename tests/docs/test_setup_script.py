@@ -24,7 +24,8 @@ def test_setup_says_each_step():
     assert any(line.startswith("setup: kernels ready in ") for line in lines), lines
 
 
-def _test_sh(tmp_path: Path, rllib_venv: bool, args: list[str], env: dict[str, str]) -> tuple[str, list[str]]:
+def _test_sh(tmp_path: Path, rllib_venv: bool, args: list[str], env: dict[str, str], clients_venv: bool = True
+             ) -> tuple[str, list[str]]:
     """``scripts/test.sh`` in a copy whose set-up script and venvs' pythons only record their calls: what it says
     first, and what it ran."""
     (tmp_path / "scripts").mkdir()
@@ -33,9 +34,12 @@ def _test_sh(tmp_path: Path, rllib_venv: bool, args: list[str], env: dict[str, s
     stub = '#!/usr/bin/env bash\necho "{venv} $*" >> {calls}\n'
     make_rllib = (f'mkdir -p .venv-rllib/bin; printf \'{stub.format(venv=".venv-rllib", calls=calls)}\' '
                   '> .venv-rllib/bin/python; chmod +x .venv-rllib/bin/python')
+    make_clients = (f'mkdir -p .venv-clients/bin; printf \'{stub.format(venv=".venv-clients", calls=calls)}\' '
+                    '> .venv-clients/bin/python; chmod +x .venv-clients/bin/python')
     (tmp_path / "scripts" / "setup.sh").write_text(f'echo "setup $*" >> {calls}\n'
-                                                   f'if [ "${{1:-}}" = --rllib ]; then {make_rllib}; fi\n')
-    tools = [(".venv", "python"), (".venv-clients", "python"), (".venv-docs", "mkdocs")]
+                                                   f'if [ "${{1:-}}" = --rllib ]; then {make_rllib}; fi\n'
+                                                   f'if [ "${{1:-}}" = --clients ]; then {make_clients}; fi\n')
+    tools = [(".venv", "python"), (".venv-docs", "mkdocs")] + ([(".venv-clients", "python")] if clients_venv else [])
     for venv, tool in tools + ([(".venv-rllib", "python")] if rllib_venv else []):
         py = tmp_path / venv / "bin" / tool
         py.parent.mkdir(parents=True)
@@ -54,6 +58,17 @@ def test_test_sh_says_it_sets_up_rllib_before_it_starts(tmp_path):
     assert "BILLIARDS_SKIP_RLLIB=1" in first
     assert calls[:2] == ["setup ", "setup --rllib"]
     assert any(c.startswith(".venv-rllib -m pytest") for c in calls)
+
+
+def test_test_sh_says_it_sets_up_the_clients_venv_before_it_starts(tmp_path):
+    out, calls = _test_sh(tmp_path, True, [], {}, clients_venv=False)
+    said = [line for line in out.splitlines() if line.startswith("test: the client libraries' tests too")]
+    assert len(said) == 1 and ".venv-clients" in said[0] and "2.4 GB" in said[0]
+    assert out.splitlines().index(said[0]) < 2  # before any set-up runs
+    assert "setup --clients" in calls and any(c.startswith(".venv-clients -m pytest") for c in calls)
+    (tmp_path / "again").mkdir()
+    again, _ = _test_sh(tmp_path / "again", True, [], {}, clients_venv=True)
+    assert not any(line.startswith("test: the client libraries' tests too") for line in again.splitlines())
 
 
 def test_test_sh_says_when_the_rllib_venv_is_there_already(tmp_path):
