@@ -384,7 +384,8 @@ def _replays() -> dict[str, Any]:
 
     @njit
     def alloc_linear(n, reps):
-        """The rolling kernel's allocations for ``n`` balls (as :func:`.exact.simulate_exact` makes them)."""
+        """The rolling kernel's allocations for ``n`` balls (:func:`.exact.exact_scratch`, as
+        :func:`.exact.simulate_exact` makes them for a shot; the batch rows and the pot step make them once a call)."""
         acc = 0
         for _ in range(reps):
             fw = np.empty((7, n))

@@ -32,7 +32,7 @@ import numpy as np
 from numba import njit
 
 from billiards_env.physics.batch import store_row
-from billiards_env.physics.exact import simulate_exact
+from billiards_env.physics.exact import exact_scratch, simulate_exact_in
 from billiards_env.physics.exact_spin import simulate_exact_spin
 from billiards_env.physics.kernel_logs import leaf
 from billiards_env.physics.layout import place_random_rows, spot_cue_row
@@ -301,12 +301,13 @@ def pot_step_rows(rows, act, active, pos, vel, ang, on, shots, radius, mass, poc
     be re-spotted. :func:`pot_step` calls it on the active tables, or on slices of them from several threads."""
     cfg, icfg = cfgs[0], icfgs[0]
     ok = True
+    scratch = exact_scratch(pos.shape[1])  # the kernel's arrays, made once for the tables of this call
     for q in range(rows.shape[0]):
         k = rows[q]
         if active[k]:
             _prepare_row(k, act, pos, on, radius[0], cfg, icfg, noise, vel, ang, fout)
-            res = simulate_exact(pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r, params,
-                                 max_events, plain(False))
+            res = simulate_exact_in(scratch, pos[k], vel[k], ang[k], radius[0], mass[0], on[k], pocket_xy, pocket_r,
+                                    params, max_events, plain(False))
             ok = _after_shot(k, res, pos, vel, ang, on, shots, cfg, icfg, out, fout, iout, obs) and ok
     return ok
 

@@ -17,7 +17,7 @@ import numpy as np
 from numba import njit
 
 from .codes import EV_COLLISION, EV_CUSHION
-from .exact import simulate_exact
+from .exact import exact_scratch, simulate_exact_in
 from .exact_spin import simulate_exact_spin
 from .kernel_logs import leaf_public
 
@@ -88,10 +88,11 @@ def rows_linear(pos, vel, ang, on, radius, mass, pocket_xy, pocket_r, params, ma
     """Rows one after the other through the rolling/drag kernel (``keep``: append each row's events to ``log``,
     returned)."""
     shared = radius.shape[0] == 1
+    scratch = exact_scratch(pos.shape[1])  # one for every row: the kernel's arrays made once, not each shot
     for k in range(pos.shape[0]):
         r = 0 if shared else k
-        res = simulate_exact(pos[k], vel[k], ang[0], radius[r], mass[r], on[k], pocket_xy, pocket_r, params,
-                             max_events, False)
+        res = simulate_exact_in(scratch, pos[k], vel[k], ang[0], radius[r], mass[r], on[k], pocket_xy, pocket_r,
+                                params, max_events, False)
         store_row(k, res, struck[k], out)
         if keep:
             log = _append_log(k, res, log)

@@ -299,6 +299,21 @@ def _log_state(n_sc, sc_t, sc_ball, sc_state, t, i, p0, v0, on_table):
     sc_state[n_sc, 4] = 1.0 if on_table[i] else 0.0
 
 
+#: Events the event log has room for before it grows (by doubling, in the shot that needs it).
+_EVENT_ROOM = 64
+
+
+@internal
+def exact_scratch(n):
+    """The rolling kernel's scratch arrays for ``n`` balls, one allocation per array (:func:`simulate_exact_in`
+    reads and writes them; every value is set in a shot before it is read, so one scratch serves shot after shot):
+    the per-ball float and int rows, the start positions and velocities, the pairs' times, the balls' states at the
+    current event, the event log, and the state log of a shot not recorded (a shot recorded makes its own)."""
+    return (np.empty((7, n)), np.empty((6, n), np.int64), np.empty((n, 2)), np.empty((n, 2)), np.empty((n, n)),
+            np.empty((n, 5)), np.empty(_EVENT_ROOM), np.empty((_EVENT_ROOM, 3), np.int64), np.empty(_EVENT_ROOM),
+            np.empty(1), np.empty(1, np.int64), np.empty((1, 5)))
+
+
 @njit(cache=True)
 def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, params, max_events, record):
     """Simulate one shot from ``pos``/``vel`` (updated in place to the final state) until rest or a cap.
@@ -310,6 +325,16 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     event log (time; kind, ball, other; impact speed) and, when ``record``, the log of state changes (time,
     ball, ``x y vx vy on_table`` after each event) from which the trajectory is exact.
     """
+    return simulate_exact_in(exact_scratch(pos.shape[0]), pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r,
+                             params, max_events, record)
+
+
+@internal
+def simulate_exact_in(scratch, pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, params, max_events,
+                      record):
+    """:func:`simulate_exact` in the scratch arrays ``scratch`` (:func:`exact_scratch` of the balls' count): callers
+    that simulate shot after shot (the batch rows, the pot scenes' step) make them once, not a dozen arrays a shot.
+    The result's arrays are views of the scratch (or of a grown event log): read them before the next shot."""
     prm = params[0]
     n = pos.shape[0]
     law = prm.law
@@ -324,9 +349,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
 
     # Per-ball scratch rows: one allocation per type (fewer allocations per shot, fewer functions to compile). (Not
     # one buffer for everything, as the spin kernel's: here its views' reshapes cost more than the allocations.)
-    cap = 64
-    sc_cap = 2 * n + 16 if record else 1
-    fw = np.empty((7, n))
+    fw, iw, p0, v0, pair_t, st, ev_t, ev_int, ev_speed, sc_t, sc_ball, sc_state = scratch
     t0 = fw[0]
     t_hit = fw[1]  # time of each ball's last collision (ball or cushion)
     tstop = fw[2]
@@ -334,7 +357,6 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
     ball_t = fw[4]
     row_t = fw[5]  # each pair row's earliest collision (kernel_logs.set_pair), at pair (i, row_j[i])
     sp0 = fw[6]  # each ball's speed at its last event: hypot of v0 (set with it)
-    iw = np.empty((6, n), np.int64)
     burst = iw[0]  # collisions of each ball in its current contact cluster
     pocket_of = iw[1]
     ball_kind = iw[2]
@@ -351,8 +373,11 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
         pocket_of[i] = -1
         ball_kind[i] = -1
         ball_other[i] = -1
-    p0 = pos.copy()
-    v0 = vel.copy()
+    for i in range(n):
+        p0[i, 0] = pos[i, 0]
+        p0[i, 1] = pos[i, 1]
+        v0[i, 0] = vel[i, 0]
+        v0[i, 1] = vel[i, 1]
     for i in range(n):
         if on_table[i]:
             _set_stop_time(i, t0, v0, sp0, tstop, law, a, k, v_min)
@@ -361,8 +386,7 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
             v0[i, 1] = 0.0
             sp0[i] = 0.0
 
-    pair_t = np.empty((n, n))
-    st = np.empty((n, 5))  # the balls' states at the current event (x, y, vx, vy, speed)
+    # pair_t: the pairs' collision times; st: the balls' states at the current event (x, y, vx, vy, speed).
     for i in range(n):
         for j in range(n):
             pair_t[i, j] = math.inf
@@ -378,12 +402,10 @@ def simulate_exact(pos, vel, ang, radius, mass, on_table, pocket_xy, pocket_r, p
                 pair_t[i, j] = _predict_pair(i, j, 0.0, t0, p0, v0, sp0, tstop, ball_t, radius, prm)
         rescan_row(pair_t, row_t, row_j, i)
 
-    ev_t = np.empty(cap)
-    ev_int = np.empty((cap, 3), np.int64)
-    ev_speed = np.empty(cap)
-    sc_t = np.empty(sc_cap)
-    sc_ball = np.empty(sc_cap, np.int64)
-    sc_state = np.empty((sc_cap, 5))
+    if record:  # room for every ball's start and a few events (grown by doubling when full)
+        sc_t = np.empty(2 * n + 16)
+        sc_ball = np.empty(2 * n + 16, np.int64)
+        sc_state = np.empty((2 * n + 16, 5))
     n_sc = _ZERO
     if record:
         for i in range(n):
