@@ -347,8 +347,8 @@ def simulate_exact_in(scratch, pos, vel, ang, radius, mass, on_table, pocket_xy,
     floor = prm.speed_floor
     decel = a if law == ROLLING else 0.0
 
-    # Per-ball scratch rows: one allocation per type (fewer allocations per shot, fewer functions to compile). (Not
-    # one buffer for everything, as the spin kernel's: here its views' reshapes cost more than the allocations.)
+    # The scratch's arrays (exact_scratch), as rows per ball: a few arrays rather than one per quantity (fewer to make
+    # and to pass). (Not one buffer for everything, as the spin kernel's: here its views' reshapes cost more.)
     fw, iw, p0, v0, pair_t, st, ev_t, ev_int, ev_speed, sc_t, sc_ball, sc_state = scratch
     t0 = fw[0]
     t_hit = fw[1]  # time of each ball's last collision (ball or cushion)
